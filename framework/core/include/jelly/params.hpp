@@ -1,0 +1,44 @@
+// The declaration of every scene parameter, in one place (house style §14).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "jelly/scene.hpp"
+
+namespace jelly {
+
+enum class ParamType { Real, Integer, Bool, Vector3, Choice, Text };
+
+/// One declared parameter: the loader validates against it, `--set` parses with it, the viewer
+/// draws a widget from it, and `jelly params` prints it.
+struct ParamInfo {
+  std::string key;          ///< dotted name as in the file: "springs.shear.ks", "terrain.floor.epsilon"
+  ParamType type = ParamType::Real;
+  std::string unit;         ///< "N/m", "m", "s", "" for dimensionless
+  std::string default_text; ///< the default, as text
+  double min = 0.0;         ///< lower bound (Real, Integer; per component for Vector3 when bounded)
+  double max = 0.0;         ///< upper bound
+  bool min_inclusive = true;
+  bool max_inclusive = true;
+  bool bounded = false;     ///< whether min/max apply
+  std::vector<std::string> choices;  ///< allowed values for Choice
+  std::string description;  ///< one line for help texts and tooltips
+};
+
+/// Every parameter of `scene`: the global ones, plus terrain.<name>.* for each of its terrains and
+/// the body keys of its body kind. Order is stable (the order of the declaration table).
+std::vector<ParamInfo> scene_parameters(const SceneSpec& scene);
+
+/// The declaration of one key in `scene`, or nullopt when the key is not declared.
+std::optional<ParamInfo> find_parameter(const SceneSpec& scene, std::string_view key);
+
+/// The current value of a parameter as text in the form set_parameter accepts.
+std::optional<std::string> get_parameter(const SceneSpec& scene, std::string_view key);
+
+/// The value of a Real or Integer parameter as a double (for sliders); nullopt otherwise.
+std::optional<double> get_number(const SceneSpec& scene, std::string_view key);
+
+}  // namespace jelly

@@ -1,0 +1,371 @@
+#include "jelly/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "jelly/terrain_geometry.hpp"
+
+namespace jelly {
+
+namespace {
+
+// Grid coordinates of a particle of a cube.
+struct GridCoord {
+  int i, j, k;
+};
+GridCoord grid_coord(const CubeLattice& c, int index) {
+  const int r = index - c.first_index();
+  const int n = c.n();
+  return {r / (n * n), (r / n) % n, r % n};
+}
+
+// A body diagonal joins particles whose grid coordinates differ in all three axes.
+bool is_body_diagonal(const CubeLattice& c, const Spring& s) {
+  const GridCoord a = grid_coord(c, s.a);
+  const GridCoord b = grid_coord(c, s.b);
+  return a.i != b.i && a.j != b.j && a.k != b.k;
+}
+
+// The sphere obstacle seen from particle x: its tangent plane there (the student's plane functions
+// then do the rest). Returns false when x is at the centre (no direction).
+bool tangent_plane(const Sphere& s, const Vec3& x, Plane& out) {
+  const Vec3 d = x - s.center;
+  const double len = d.norm();
+  if (!(len > 0.0)) return false;
+  out.normal = d / len;
+  out.point = s.center + s.radius * out.normal;
+  out.has_hole = false;
+  out.surface = s.surface;
+  return true;
+}
+
+}  // namespace
+
+World::World(TaskTable tasks) : tasks_(tasks) {}
+
+int World::add_cube(const CubeSpec& spec) {
+  const auto first = static_cast<int>(state_.size());
+  cubes_.emplace_back(spec, first);
+  const CubeLattice& lattice = cubes_.back();
+  Vec3Array velocities(3, lattice.particle_count());
+  velocities.colwise() = spec.velocity;
+  add_particles(lattice.initial_positions(), velocities, spec.mass);
+  return static_cast<int>(cubes_.size()) - 1;
+}
+
+int World::add_particles(const Vec3Array& positions, const Vec3Array& velocities, double mass) {
+  const Eigen::Index first = state_.size();
+  const Eigen::Index count = positions.cols();
+  State grown;
+  grown.resize(first + count);
+  grown.x.leftCols(first) = state_.x;
+  grown.v.leftCols(first) = state_.v;
+  grown.x.rightCols(count) = positions;
+  grown.v.rightCols(count) = velocities;
+  state_ = std::move(grown);
+  Eigen::VectorXd m(first + count);
+  m.head(first) = mass_;
+  m.tail(count).setConstant(mass);
+  mass_ = std::move(m);
+  inv_mass_ = mass_.cwiseInverse();
+  for (Eigen::Index i = 0; i < count; ++i)
+    lowest_initial_height_ = (first == 0 && i == 0)
+                                 ? positions(1, i)
+                                 : std::min(lowest_initial_height_, positions(1, i));
+  force_.resize(3, state_.size());
+  pairs_.clear();
+  return static_cast<int>(first);
+}
+
+void World::build_cube_springs(int cube, SpringType type, double ks, double kd) {
+  const CubeLattice& lattice = cubes_.at(static_cast<std::size_t>(cube));
+  SpringGroup group;
+  group.type = type;
+  group.ks = ks;
+  group.kd = kd;
+  group.degenerate_length = 1e-12 * lattice.spacing();
+  const char* builder = "";
+  switch (type) {
+    case SpringType::Structural:
+      builder = "add_structural_springs";
+      tasks_.add_structural_springs(lattice, group.springs);
+      break;
+    case SpringType::Bending:
+      builder = "add_bending_springs";
+      tasks_.add_bending_springs(lattice, group.springs);
+      break;
+    case SpringType::Shear:
+    case SpringType::ShearBody: {
+      builder = "add_shear_springs";
+      tasks_.add_shear_springs(lattice, group.springs);
+      if (type == SpringType::ShearBody) {
+        // Keep the body diagonals here and take them out of the cube's face-shear group.
+        auto& springs = group.springs;
+        springs.erase(std::remove_if(springs.begin(), springs.end(),
+                                     [&](const Spring& s) { return !is_body_diagonal(lattice, s); }),
+                      springs.end());
+        for (SpringGroup& g : groups_) {
+          if (g.type != SpringType::Shear || g.springs.empty()) continue;
+          const int a = g.springs.front().a;
+          if (a < lattice.first_index() || a >= lattice.first_index() + lattice.particle_count())
+            continue;
+          g.springs.erase(std::remove_if(g.springs.begin(), g.springs.end(),
+                                         [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
+                          g.springs.end());
+        }
+      }
+      break;
+    }
+  }
+  // The framework never trusts a builder's output blindly: a bad index would crash the force pass.
+  const int lo = lattice.first_index();
+  const int hi = lo + lattice.particle_count();
+  for (std::size_t k = 0; k < group.springs.size(); ++k) {
+    const Spring& s = group.springs[k];
+    if (s.a < lo || s.a >= hi || s.b < lo || s.b >= hi || s.a == s.b ||
+        !std::isfinite(s.rest_length) || s.rest_length < 0.0) {
+      throw std::runtime_error(
+          std::string(builder) + " produced spring #" + std::to_string(k) + " joining particles " +
+          std::to_string(s.a) + " and " + std::to_string(s.b) + " with rest length " +
+          std::to_string(s.rest_length) + "; expected two different particles in " +
+          std::to_string(lo) + ".." + std::to_string(hi - 1) + " and a finite rest length ≥ 0");
+    }
+  }
+  add_spring_group(std::move(group));
+}
+
+void World::add_spring_group(SpringGroup group) {
+  groups_.push_back(std::move(group));
+  pairs_.clear();
+}
+
+void World::set_gravity(std::optional<Vec3> g) { gravity_ = g; }
+
+void World::add_terrain(Terrain terrain) {
+  terrains_.push_back(std::move(terrain));
+  const std::size_t n = terrains_.size();
+  counters_.collision_queries.resize(n, 0);
+  counters_.contact_queries.resize(n, 0);
+  counters_.collisions.resize(n, 0);
+  counters_.contacts.resize(n, 0);
+  counters_.broadphase_skips.resize(n, 0);
+}
+
+std::size_t World::spring_count() const {
+  std::size_t n = 0;
+  for (const SpringGroup& g : groups_) n += g.springs.size();
+  return n;
+}
+
+void World::reset_counters() {
+  const std::size_t n = terrains_.size();
+  counters_ = EffectCounters{};
+  counters_.collision_queries.assign(n, 0);
+  counters_.contact_queries.assign(n, 0);
+  counters_.collisions.assign(n, 0);
+  counters_.contacts.assign(n, 0);
+  counters_.broadphase_skips.assign(n, 0);
+}
+
+void World::acceleration(const State& s, Vec3Array& a) {
+  ++counters_.acceleration_evaluations;
+  const Eigen::Index n = s.size();
+  force_.resize(3, n);
+  // 1. Gravity (only when the scene has it).
+  if (gravity_) {
+    ++counters_.gravity_applications;
+    for (Eigen::Index i = 0; i < n; ++i) force_.col(i) = mass_[i] * *gravity_;
+  } else {
+    force_.setZero();
+  }
+  // 2. Springs and dampers, one pass per group the scene built.
+  for (const SpringGroup& g : groups_) {
+    ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
+    counters_.springs_evaluated += static_cast<long>(g.springs.size());
+    tasks_.accumulate_spring_forces(g, s, force_);
+  }
+  // 3. Contact forces, terrain by terrain in scene order (contract §5).
+  contact_pass(s, force_);
+  // 4. Divide by the mass.
+  a.resize(3, n);
+  for (Eigen::Index i = 0; i < n; ++i) a.col(i) = force_.col(i) / mass_[i];
+}
+
+void World::contact_pass(const State& s, Vec3Array& f) {
+  if (terrains_.empty()) return;
+  bool box_ready = false;
+  Vec3 lo, hi;
+  const Eigen::Index n = s.size();
+  for (std::size_t t = 0; t < terrains_.size(); ++t) {
+    const Terrain& terrain = terrains_[t];
+    if (!terrain.contact) continue;
+    if (!box_ready) {
+      lo = s.x.rowwise().minCoeff();
+      hi = s.x.rowwise().maxCoeff();
+      box_ready = true;
+    }
+    // Exact broad phase: contact needs φ < ε somewhere in the box.
+    if (!(min_signed_distance(terrain, lo, hi) < terrain.surface().epsilon) ||
+        box_outside_extent(terrain, lo, hi)) {
+      ++counters_.broadphase_skips[t];
+      continue;
+    }
+    counters_.contact_queries[t] += static_cast<long>(n);
+    long hits = 0;
+    if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        Vec3 fi = f.col(i);
+        if (tasks_.contact_plane(*plane, s.x.col(i), s.v.col(i), fi)) {
+          f.col(i) = fi;
+          ++hits;
+        }
+      }
+    } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        Vec3 fi = f.col(i);
+        if (tasks_.contact_bowl(*bowl, s.x.col(i), s.v.col(i), fi)) {
+          f.col(i) = fi;
+          ++hits;
+        }
+      }
+    } else {
+      const auto& sphere = std::get<Sphere>(terrain.shape);
+      Plane tangent;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
+        Vec3 fi = f.col(i);
+        if (tasks_.contact_plane(tangent, s.x.col(i), s.v.col(i), fi)) {
+          f.col(i) = fi;
+          ++hits;
+        }
+      }
+    }
+    counters_.contacts[t] += hits;
+  }
+}
+
+void World::apply_collisions(State& s) {
+  if (terrains_.empty()) return;
+  ++counters_.collision_passes;
+  const Eigen::Index n = s.size();
+  for (std::size_t t = 0; t < terrains_.size(); ++t) {
+    const Terrain& terrain = terrains_[t];
+    if (!terrain.collision && !terrain.project) continue;
+    // The box is recomputed per terrain: an earlier terrain's projection may have moved particles.
+    const Vec3 lo = s.x.rowwise().minCoeff();
+    const Vec3 hi = s.x.rowwise().maxCoeff();
+    const bool may_touch = min_signed_distance(terrain, lo, hi) < terrain.surface().epsilon &&
+                           !box_outside_extent(terrain, lo, hi);
+    if (!may_touch) {
+      ++counters_.broadphase_skips[t];
+      continue;
+    }
+    if (terrain.collision) {
+      counters_.collision_queries[t] += static_cast<long>(n);
+      long hits = 0;
+      if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+          Vec3 vi = s.v.col(i);
+          if (tasks_.collide_plane(*plane, s.x.col(i), vi)) {
+            s.v.col(i) = vi;
+            ++hits;
+          }
+        }
+      } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+          Vec3 vi = s.v.col(i);
+          if (tasks_.collide_bowl(*bowl, s.x.col(i), vi)) {
+            s.v.col(i) = vi;
+            ++hits;
+          }
+        }
+      } else {
+        const auto& sphere = std::get<Sphere>(terrain.shape);
+        Plane tangent;
+        for (Eigen::Index i = 0; i < n; ++i) {
+          if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
+          Vec3 vi = s.v.col(i);
+          if (tasks_.collide_plane(tangent, s.x.col(i), vi)) {
+            s.v.col(i) = vi;
+            ++hits;
+          }
+        }
+      }
+      counters_.collisions[t] += hits;
+    }
+    if (terrain.project) {
+      // Optional effect (contract §5): particles behind the surface, inside the extent, are moved
+      // onto it along the normal.
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const Vec3 x = s.x.col(i);
+        if (!in_extent(terrain, x)) continue;
+        const double phi = signed_distance(terrain, x);
+        if (phi < 0.0) s.x.col(i) = x - phi * surface_normal(terrain, x);
+      }
+    }
+  }
+}
+
+double World::reference_height() const {
+  double ref = lowest_initial_height_;
+  for (const Terrain& t : terrains_)
+    if (const auto low = lowest_point(t)) ref = std::min(ref, *low);
+  return ref;
+}
+
+Energy World::energy(const State& s) const {
+  Energy e;
+  const Eigen::Index n = s.size();
+  for (Eigen::Index i = 0; i < n; ++i) e.kinetic += 0.5 * mass_[i] * s.v.col(i).squaredNorm();
+  if (gravity_) {
+    const double ref = reference_height();
+    // Height along y, the axis every course scene's gravity acts along; a gravity vector with other
+    // components contributes its work through −m g·x.
+    for (Eigen::Index i = 0; i < n; ++i) {
+      Vec3 rel = s.x.col(i);
+      rel.y() -= ref;
+      e.gravitational -= mass_[i] * gravity_->dot(rel);
+    }
+  }
+  for (const SpringGroup& g : groups_) {
+    for (const Spring& sp : g.springs) {
+      const double stretch = (s.x.col(sp.a) - s.x.col(sp.b)).norm() - sp.rest_length;
+      e.spring += 0.5 * g.ks * stretch * stretch;
+    }
+  }
+  return e;
+}
+
+std::vector<std::pair<int, int>> World::jacobian_pattern() const {
+  pattern_cache();
+  return pairs_;
+}
+
+void World::pattern_cache() const {
+  if (!pairs_.empty() || groups_.empty()) return;
+  std::map<std::pair<int, int>, int> index;
+  pair_of_spring_.assign(groups_.size(), {});
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    auto& of = pair_of_spring_[g];
+    of.reserve(groups_[g].springs.size());
+    for (const Spring& s : groups_[g].springs) {
+      const std::pair<int, int> key{std::min(s.a, s.b), std::max(s.a, s.b)};
+      auto [it, inserted] = index.emplace(key, static_cast<int>(pairs_.size()));
+      if (inserted) pairs_.push_back(key);
+      of.push_back(it->second);
+    }
+  }
+}
+
+void World::force_jacobians(const State& s, ForceJacobians& jac) {
+  pattern_cache();
+  jac.set_zero();
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    add_spring_jacobians(groups_[g], s, pair_of_spring_[g], jac);
+}
+
+}  // namespace jelly
