@@ -1,0 +1,140 @@
+// Probes each student task once on a tiny input (see task_probe.hpp).
+#include "jelly/task_probe.hpp"
+
+#include "jelly/test_systems.hpp"
+
+namespace jelly {
+
+namespace {
+
+using SpringBuilder = void (*)(const CubeLattice&, std::vector<Spring>&);
+
+TaskStatus probe_builder(std::string id, std::string name, SpringBuilder fn) {
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  if (!fn) return st;
+  CubeSpec spec;
+  spec.n = 3;  // 3×3×3 has structural, shear and bending springs
+  spec.edge = 2.0;
+  const CubeLattice lattice(spec);
+  std::vector<Spring> out;
+  fn(lattice, out);
+  st.implemented = !out.empty();
+  st.evidence = st.implemented ? std::to_string(out.size()) + " springs for a 3×3×3 lattice"
+                               : "no springs for a 3×3×3 lattice";
+  return st;
+}
+
+TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  if (!fn) return st;
+  // One particle at rest under gravity: any integrator moves it within one step of 0.01 s.
+  FreeFallSystem system(1, Vec3(0.0, -9.8, 0.0));
+  State s;
+  s.resize(1);
+  s.x.setZero();
+  s.v.setZero();
+  const State before = s;
+  Workspace w;
+  w.resize(1);
+  fn(system, s, 0.01, w);
+  const bool changed = !(s.x.array() == before.x.array()).all() ||
+                       !(s.v.array() == before.v.array()).all();
+  st.implemented = changed;
+  st.evidence = changed ? "a falling particle moved in one step"
+                        : "one step under gravity left the state unchanged";
+  return st;
+}
+
+}  // namespace
+
+std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
+  std::vector<TaskStatus> out;
+  out.push_back(probe_builder("A1.T1", "structural springs", t.add_structural_springs));
+  out.push_back(probe_builder("A1.T2", "shear springs", t.add_shear_springs));
+  out.push_back(probe_builder("A1.T3", "bending springs", t.add_bending_springs));
+
+  {  // A1.T4: a spring stretched from rest length 1 to 2 pulls its ends together.
+    TaskStatus st{"A1.T4", "spring force", false, "function missing from the task table"};
+    if (t.spring_force) {
+      const Vec3 f = t.spring_force(Vec3::Zero(), Vec3(2.0, 0.0, 0.0), 10.0, 1.0, 1e-9);
+      st.implemented = !f.isZero(0.0);
+      st.evidence = st.implemented ? "a stretched spring pulls" : "a stretched spring gave zero force";
+    }
+    out.push_back(st);
+  }
+  {  // A1.T5: ends separating along the spring are damped.
+    TaskStatus st{"A1.T5", "damper force", false, "function missing from the task table"};
+    if (t.damper_force) {
+      const Vec3 f = t.damper_force(Vec3::Zero(), Vec3(1.0, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0),
+                                    Vec3(1.0, 0.0, 0.0), 5.0, 1e-9);
+      st.implemented = !f.isZero(0.0);
+      st.evidence = st.implemented ? "separating ends are damped"
+                                   : "separating ends gave zero damping force";
+    }
+    out.push_back(st);
+  }
+
+  Plane plane;  // y = 0, normal +y, no hole, ε = 0.01
+  Bowl bowl;    // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whose bottom is the origin
+  bowl.center = Vec3(0.0, 1.0, 0.0);
+  bowl.radius = 1.0;
+  bowl.rim_height = 1.0;
+  const Vec3 near_bottom(0.0, 0.001, 0.0);  // φ = 0.001 < ε for both
+  {
+    TaskStatus st{"A1.T6", "plane collision", false, "function missing from the task table"};
+    if (t.collide_plane) {
+      Vec3 v(0.0, -1.0, 0.0);
+      st.implemented = t.collide_plane(plane, near_bottom, v) || v != Vec3(0.0, -1.0, 0.0);
+      st.evidence = st.implemented ? "a particle moving into the plane responded"
+                                   : "a particle moving into the plane did not collide";
+    }
+    out.push_back(st);
+  }
+  {
+    TaskStatus st{"A1.T7", "bowl collision", false, "function missing from the task table"};
+    if (t.collide_bowl) {
+      Vec3 v(0.0, -1.0, 0.0);
+      st.implemented = t.collide_bowl(bowl, near_bottom, v) || v != Vec3(0.0, -1.0, 0.0);
+      st.evidence = st.implemented ? "a particle moving into the bowl responded"
+                                   : "a particle moving into the bowl did not collide";
+    }
+    out.push_back(st);
+  }
+  {
+    TaskStatus st{"A1.T8", "plane contact", false, "function missing from the task table"};
+    if (t.contact_plane) {
+      Vec3 f(0.0, -10.0, 0.0);
+      st.implemented = t.contact_plane(plane, near_bottom, Vec3::Zero(), f) ||
+                       f != Vec3(0.0, -10.0, 0.0);
+      st.evidence = st.implemented ? "a particle resting on the plane got a contact force"
+                                   : "a particle pressed onto the plane got no contact force";
+    }
+    out.push_back(st);
+  }
+  {
+    TaskStatus st{"A1.T9", "bowl contact", false, "function missing from the task table"};
+    if (t.contact_bowl) {
+      Vec3 f(0.0, -10.0, 0.0);
+      st.implemented = t.contact_bowl(bowl, near_bottom, Vec3::Zero(), f) ||
+                       f != Vec3(0.0, -10.0, 0.0);
+      st.evidence = st.implemented ? "a particle resting in the bowl got a contact force"
+                                   : "a particle pressed into the bowl got no contact force";
+    }
+    out.push_back(st);
+  }
+  out.push_back(probe_integrator("A1.T10", "explicit Euler", t.explicit_euler_step));
+  out.push_back(probe_integrator("A1.T11", "implicit Euler (predictor-corrector)",
+                                 t.implicit_euler_step));
+  out.push_back(probe_integrator("A1.T12", "midpoint", t.midpoint_step));
+  out.push_back(probe_integrator("A1.T13", "RK4", t.rk4_step));
+  return out;
+}
+
+std::vector<std::string> missing_task_ids(const std::vector<TaskStatus>& statuses) {
+  std::vector<std::string> ids;
+  for (const TaskStatus& s : statuses)
+    if (!s.implemented) ids.push_back(s.id);
+  return ids;
+}
+
+}  // namespace jelly

@@ -1,0 +1,23 @@
+// The task probe against the student stubs: all 13 tasks are reported missing, so the viewer and
+// the CLI can tell a student what to implement first.
+#include <gtest/gtest.h>
+
+#include "jelly/task_probe.hpp"
+
+namespace jelly {
+namespace {
+
+TEST(TaskProbeStubs, EveryStubIsReportedMissing) {
+  const auto statuses = probe_tasks(linked_tasks());
+  ASSERT_EQ(statuses.size(), 13u);
+  for (const TaskStatus& s : statuses) {
+    EXPECT_FALSE(s.implemented) << s.id << " " << s.name << ": " << s.evidence;
+    EXPECT_FALSE(s.name.empty());
+    EXPECT_FALSE(s.evidence.empty());
+  }
+  EXPECT_EQ(missing_task_ids(statuses).size(), 13u);
+  EXPECT_EQ(linked_tasks().origin, "assignments");
+}
+
+}  // namespace
+}  // namespace jelly
