@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package Jelly Lab needs to build, test, grade and run headless.
+# Idempotent: installs only what is missing, runs `apt-get update` once first, prints what it does.
+#
+#   sudo tools/install-deps.sh             # everything needed to build, test and self-check
+#   sudo tools/install-deps.sh --ffmpeg    # also ffmpeg (turning recorded frames into videos)
+#   tools/install-deps.sh --check          # only list what is missing; exit 1 if anything is
+#
+# Nothing is downloaded at build time: CMake finds these system packages.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake g++ pkg-config git
+  libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
+  libseccomp-dev
+  gnuplot-nox xvfb xauth
+  clang libclang-rt-14-dev
+)
+
+check_only=0
+for arg in "$@"; do
+  case "$arg" in
+    --ffmpeg) PACKAGES+=(ffmpeg) ;;
+    --check) check_only=1 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --ffmpeg, --check or --help)" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages are installed."
+  exit 0
+fi
+
+echo "install-deps: missing: ${missing[*]}"
+if [ "$check_only" -eq 1 ]; then
+  exit 1
+fi
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "install-deps: apt-get not found. This script targets Debian 12 (bookworm);" >&2
+  echo "  install the packages above with your system's package manager." >&2
+  exit 1
+fi
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    SUDO=(sudo)
+  else
+    echo "install-deps: run as root (or install sudo) to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+echo "install-deps: apt-get update"
+"${SUDO[@]}" apt-get update
+echo "install-deps: apt-get install -y --no-install-recommends ${missing[*]}"
+DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+echo "install-deps: done."
