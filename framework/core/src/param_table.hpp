@@ -1,0 +1,137 @@
+// Internal to jelly::core: the parameter declaration table behind params.hpp and the scene loader.
+//
+// Every scene parameter is declared once in params.cpp (key pattern, value kind, unit, default,
+// range, description, and how to read and write it in a SceneSpec). The scene loader, set_parameter,
+// get_parameter, scene_parameters, to_toml and docs/scenes.md all go through these declarations.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "jelly/params.hpp"
+#include "jelly/scene.hpp"
+
+namespace jelly::params_detail {
+
+/// What a value looks like. Finer than the public ParamType: the particle body's lists show up
+/// publicly as Text in the form "x,y,z; x,y,z" (Vec3List), "a,b; a,b" (IndexPairList), "r, r" (RealList).
+enum class ValueKind { Real, Integer, Bool, Vector3, Choice, Text, Vec3List, IndexPairList, RealList };
+
+using IndexPair = std::array<long long, 2>;
+/// A typed value: double (Real), long long (Integer), bool, Vec3, string (Choice, Text), or a list.
+using Value = std::variant<double, long long, bool, Vec3, std::string, std::vector<Vec3>,
+                           std::vector<IndexPair>, std::vector<double>>;
+
+/// When a declared key belongs to a scene.
+enum class Scope {
+  Always,      ///< every scene
+  GravityOn,   ///< scenes with gravity
+  Cube,        ///< body.type = cube
+  Particles,   ///< body.type = particles
+  SpringAny,   ///< springs.<type>.*, every spring type
+  SpringOn,    ///< springs.<type>.*, only when that type is in the scene
+  TerrainAny,  ///< terrain.<name>.*, every terrain
+  Plane,       ///< plane terrains
+  PlaneHole,   ///< plane terrains with a hole
+  Bowl,        ///< bowl terrains
+  Sphere,      ///< sphere terrains
+};
+
+/// Which spring type or terrain a wildcard key refers to.
+struct Ctx {
+  SpringType spring = SpringType::Structural;
+  std::size_t terrain = 0;
+};
+
+/// One declared parameter.
+struct Decl {
+  std::string_view pattern;  ///< "simulation.dt", "springs.*.ks", "terrain.*.radius"
+  Scope scope = Scope::Always;
+  ValueKind kind = ValueKind::Real;
+  std::string_view unit;          ///< "m", "s", "N/m", "" for dimensionless
+  std::string_view default_text;  ///< in set_parameter's text form; "" when there is none
+  bool bounded = false;           ///< whether min/max apply (Real, Integer, RealList elements)
+  double min = 0.0;
+  double max = 0.0;
+  bool min_inclusive = true;
+  bool max_inclusive = true;
+  bool nonzero = false;  ///< Vector3 that must have non-zero length
+  std::vector<std::string_view> choices;  ///< Choice values
+  std::string_view description;
+  Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
+  void (*set)(SceneSpec&, const Ctx&, const Value&) = nullptr;
+};
+
+/// A declaration resolved against one scene: the declaration, its context and the full key.
+struct Bound {
+  const Decl* decl = nullptr;
+  Ctx ctx;
+  std::string key;
+};
+
+/// Declarations in table order: scene, simulation, gravity, body (global), per spring type, per terrain.
+const std::vector<Decl>& global_decls();
+const std::vector<Decl>& spring_decls();
+const std::vector<Decl>& terrain_decls();
+
+/// The spring types in the order scenes list them, and their key names.
+inline constexpr std::array<SpringType, 4> kSpringTypes = {
+    SpringType::Structural, SpringType::Shear, SpringType::ShearBody, SpringType::Bending};
+SpringSettings& spring_settings(SceneSpec& s, SpringType t);
+const SpringSettings& spring_settings(const SceneSpec& s, SpringType t);
+std::optional<SpringType> spring_type_from_string(std::string_view name);
+/// "plane", "bowl" or "sphere".
+std::string_view terrain_type_name(const Terrain& t);
+
+/// The declaration with this exact pattern ("terrain.*.epsilon"), or nullptr.
+const Decl* find_decl(std::string_view pattern);
+/// Checks that need the rest of the scene (list lengths that must match); message or nullopt.
+std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, const Value& v);
+
+/// Whether a declaration applies to the scene in context ctx.
+bool applies(const Decl& d, const SceneSpec& s, const Ctx& ctx);
+
+/// Resolves a full key ("springs.shear.ks") against a scene. nullopt when no applicable declaration.
+std::optional<Bound> resolve(const SceneSpec& s, std::string_view key);
+/// Resolves ignoring scope: finds which declaration a key would be, for "not used by this kind" hints.
+std::optional<Bound> resolve_any(const SceneSpec& s, std::string_view key);
+
+/// Checks a value against a declaration's range; returns the message ("must be an integer ≥ 2,
+/// got 1") or nullopt.
+std::optional<std::string> check_value(const Decl& d, const Value& v);
+/// Parses set_parameter text by kind; returns the value or a message saying what was expected.
+std::variant<Value, std::string> parse_text(const Decl& d, std::string_view text);
+/// Formats a value in the text form parse_text accepts.
+std::string format_text(ValueKind kind, const Value& v);
+
+/// Why a key that names a declaration does not apply to this scene ("is a key of a cube body;
+/// this scene's body is particles"), for error messages.
+std::string inapplicable_reason(const Bound& b, const SceneSpec& s);
+
+/// A problem that involves several keys (bowl rim, particle counts, spring table presence).
+struct CrossError {
+  std::string key;
+  std::string message;
+};
+/// Checks the scene as a whole; the first problem or nullopt.
+std::optional<CrossError> check_scene(const SceneSpec& s);
+
+/// Terrain names must be usable inside dotted keys: letters, digits, '_' and '-'.
+bool valid_terrain_name(std::string_view name);
+
+/// A terrain of the given type with that type's default geometry and default surface.
+Terrain default_terrain(std::string_view name, std::string_view type);
+
+/// Shortest text that reads back to the same double ("0.001", "2000", "1e-07").
+std::string format_double(double v);
+/// Describes the kind for messages: "a number", "an integer", "true or false", ...
+std::string expected_text(const Decl& d);
+
+/// Closest candidate within a small edit distance, or "" when none is close.
+std::string closest(std::string_view word, const std::vector<std::string>& candidates);
+
+}  // namespace jelly::params_detail

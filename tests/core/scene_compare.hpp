@@ -1,0 +1,102 @@
+// Test helper: field-by-field comparison of two SceneSpecs, naming the first difference.
+// Compares what a scene means: the body of its kind (the other kind's defaults are not part of
+// it), spring coefficients only for present types, and not `source` (where it was read from).
+#pragma once
+
+#include <string>
+
+#include "jelly/scene.hpp"
+
+namespace jelly::testing {
+
+/// Empty when equal; otherwise the first field that differs, e.g. "terrains[1].radius: 9 vs 8".
+inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
+  const auto num = [](double x) { return std::to_string(x); };
+  const auto v3 = [&](const Vec3& v) { return num(v.x()) + "," + num(v.y()) + "," + num(v.z()); };
+#define JELLY_CMP(expr_a, expr_b, label, fmt) \
+  if (!((expr_a) == (expr_b))) return std::string(label) + ": " + fmt(expr_a) + " vs " + fmt(expr_b);
+  const auto str = [](const std::string& s) { return s; };
+  const auto i = [](long long x) { return std::to_string(x); };
+  JELLY_CMP(a.name, b.name, "name", str);
+  JELLY_CMP(a.description, b.description, "description", str);
+  JELLY_CMP(static_cast<int>(a.integrator), static_cast<int>(b.integrator), "integrator", i);
+  JELLY_CMP(a.dt, b.dt, "dt", num);
+  JELLY_CMP(a.duration, b.duration, "duration", num);
+  JELLY_CMP(a.gravity.has_value(), b.gravity.has_value(), "gravity present", i);
+  if (a.gravity) JELLY_CMP(*a.gravity, *b.gravity, "gravity", v3);
+  JELLY_CMP(static_cast<int>(a.body_kind), static_cast<int>(b.body_kind), "body kind", i);
+  if (a.body_kind == BodyKind::Cube) {
+    JELLY_CMP(a.cube.n, b.cube.n, "cube.n", i);
+    JELLY_CMP(a.cube.edge, b.cube.edge, "cube.edge", num);
+    JELLY_CMP(a.cube.mass, b.cube.mass, "cube.mass", num);
+    JELLY_CMP(a.cube.center, b.cube.center, "cube.center", v3);
+    JELLY_CMP(a.cube.velocity, b.cube.velocity, "cube.velocity", v3);
+    JELLY_CMP(a.cube.rotation_axis, b.cube.rotation_axis, "cube.rotation_axis", v3);
+    JELLY_CMP(a.cube.rotation_degrees, b.cube.rotation_degrees, "cube.rotation_degrees", num);
+  } else {
+    const ParticleBodySpec& p = a.particles;
+    const ParticleBodySpec& q = b.particles;
+    JELLY_CMP(p.mass, q.mass, "particles.mass", num);
+    JELLY_CMP(p.positions.cols(), q.positions.cols(), "particles.positions count", i);
+    if (p.positions != q.positions) return "particles.positions differ";
+    JELLY_CMP(p.velocities.cols(), q.velocities.cols(), "particles.velocities count", i);
+    if (p.velocities != q.velocities) return "particles.velocities differ";
+    JELLY_CMP(static_cast<int>(p.spring_type), static_cast<int>(q.spring_type), "particles.spring_type", i);
+    JELLY_CMP(p.springs.size(), q.springs.size(), "particles.springs count", i);
+    for (std::size_t k = 0; k < p.springs.size(); ++k) {
+      const std::string at = "particles.springs[" + std::to_string(k) + "]";
+      JELLY_CMP(p.springs[k].a, q.springs[k].a, at + ".a", i);
+      JELLY_CMP(p.springs[k].b, q.springs[k].b, at + ".b", i);
+      JELLY_CMP(p.springs[k].rest_length, q.springs[k].rest_length, at + ".rest_length", num);
+    }
+  }
+  const std::pair<const SpringSettings*, const SpringSettings*> springs[] = {
+      {&a.structural, &b.structural}, {&a.shear, &b.shear}, {&a.shear_body, &b.shear_body},
+      {&a.bending, &b.bending}};
+  const char* names[] = {"structural", "shear", "shear_body", "bending"};
+  for (int k = 0; k < 4; ++k) {
+    const std::string at = std::string("springs.") + names[k];
+    JELLY_CMP(springs[k].first->enabled, springs[k].second->enabled, at + ".enabled", i);
+    if (!springs[k].first->enabled) continue;
+    JELLY_CMP(springs[k].first->ks, springs[k].second->ks, at + ".ks", num);
+    JELLY_CMP(springs[k].first->kd, springs[k].second->kd, at + ".kd", num);
+  }
+  JELLY_CMP(a.terrains.size(), b.terrains.size(), "terrain count", i);
+  for (std::size_t k = 0; k < a.terrains.size(); ++k) {
+    const Terrain& s = a.terrains[k];
+    const Terrain& t = b.terrains[k];
+    const std::string at = "terrains[" + std::to_string(k) + "]";
+    JELLY_CMP(s.name, t.name, at + ".name", str);
+    JELLY_CMP(s.shape.index(), t.shape.index(), at + ".type", i);
+    JELLY_CMP(s.collision, t.collision, at + ".collision", i);
+    JELLY_CMP(s.contact, t.contact, at + ".contact", i);
+    JELLY_CMP(s.project, t.project, at + ".project", i);
+    JELLY_CMP(s.surface().epsilon, t.surface().epsilon, at + ".epsilon", num);
+    JELLY_CMP(s.surface().restitution, t.surface().restitution, at + ".restitution", num);
+    JELLY_CMP(s.surface().friction, t.surface().friction, at + ".friction", num);
+    if (const auto* p = std::get_if<Plane>(&s.shape)) {
+      const Plane& q = std::get<Plane>(t.shape);
+      JELLY_CMP(p->point, q.point, at + ".point", v3);
+      JELLY_CMP(p->normal, q.normal, at + ".normal", v3);
+      JELLY_CMP(p->has_hole, q.has_hole, at + ".has_hole", i);
+      if (p->has_hole) {
+        JELLY_CMP(p->hole_center, q.hole_center, at + ".hole_center", v3);
+        JELLY_CMP(p->hole_radius, q.hole_radius, at + ".hole_radius", num);
+      }
+    } else if (const auto* bw = std::get_if<Bowl>(&s.shape)) {
+      const Bowl& q = std::get<Bowl>(t.shape);
+      JELLY_CMP(bw->center, q.center, at + ".center", v3);
+      JELLY_CMP(bw->radius, q.radius, at + ".radius", num);
+      JELLY_CMP(bw->rim_height, q.rim_height, at + ".rim_height", num);
+    } else {
+      const Sphere& p2 = std::get<Sphere>(s.shape);
+      const Sphere& q = std::get<Sphere>(t.shape);
+      JELLY_CMP(p2.center, q.center, at + ".center", v3);
+      JELLY_CMP(p2.radius, q.radius, at + ".radius", num);
+    }
+  }
+#undef JELLY_CMP
+  return {};
+}
+
+}  // namespace jelly::testing
