@@ -89,6 +89,18 @@ bool stable_at(IntegratorKind kind, double h, const std::vector<double>& omegas,
 double StabilityEstimate::critical_step(IntegratorKind kind) const {
   const double inf = std::numeric_limits<double>::infinity();
   if (kind == IntegratorKind::BackwardEuler || !(omega_max > 0.0)) return inf;
+  if (tau == 0.0) {
+    // Undamped: every mode sits on the imaginary axis, where rounding hides the slow growth of
+    // explicit Euler (|R|² = 1 + y²) and midpoint (1 + y⁴/4); use the exact intervals instead.
+    switch (kind) {
+      case IntegratorKind::ExplicitEuler:
+      case IntegratorKind::Midpoint: return 0.0;
+      case IntegratorKind::ImplicitEuler: return 1.0 / omega_max;  // |1 + iy − y²| ≤ 1 ⇔ |y| ≤ 1
+      case IntegratorKind::RK4: return 2.0 * std::sqrt(2.0) / omega_max;
+      case IntegratorKind::SymplecticEuler: return 2.0 / omega_max;
+      default: return inf;
+    }
+  }
   std::vector<double> omegas;
   for (int k = 1; k <= 400; ++k) omegas.push_back(omega_max * k / 400.0);
   for (int k = 0; k < 100; ++k) omegas.push_back(omega_max * std::pow(10.0, -4.0 + 4.0 * k / 100.0));

@@ -178,7 +178,7 @@ void World::acceleration(const State& s, Vec3Array& a) {
   // 1. Gravity (only when the scene has it).
   if (gravity_) {
     ++counters_.gravity_applications;
-    for (Eigen::Index i = 0; i < n; ++i) force_.col(i) = mass_[i] * *gravity_;
+    force_.noalias() = *gravity_ * mass_.transpose();  // column i: m_i g
   } else {
     force_.setZero();
   }
@@ -192,7 +192,7 @@ void World::acceleration(const State& s, Vec3Array& a) {
   contact_pass(s, force_);
   // 4. Divide by the mass.
   a.resize(3, n);
-  for (Eigen::Index i = 0; i < n; ++i) a.col(i) = force_.col(i) / mass_[i];
+  a.array() = force_.array().rowwise() / mass_.transpose().array();
 }
 
 void World::contact_pass(const State& s, Vec3Array& f) {

@@ -37,6 +37,8 @@ class CountingSystem : public System {
 class Simulator {
  public:
   struct Options {
+    Options(IntegratorKind kind = IntegratorKind::ExplicitEuler, double step = 0.001)
+        : integrator(kind), dt(step) {}
     IntegratorKind integrator = IntegratorKind::ExplicitEuler;
     double dt = 0.001;            ///< fixed step h [s]
     bool detect_instability = true;

@@ -1,0 +1,94 @@
+// The windowed app: owns the window backend, the renderer, ImGui, the runs and the camera.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "jelly/render/camera.hpp"
+#include "jelly/render/frame.hpp"
+#include "jelly/render/scene_catalog.hpp"
+#include "jelly/render/session.hpp"
+#include "jelly/render/window_backend.hpp"
+#include "jelly/task_probe.hpp"
+
+namespace jelly::app {
+
+struct AppOptions {
+  std::string scene = "course-2023";         ///< name under the scenes folder, or a path
+  std::filesystem::path scenes_dir;           ///< empty: render::default_scenes_dir()
+  std::string integrator;                     ///< empty: the scene's
+  double dt = 0.0;                            ///< 0: the scene's
+  std::vector<std::string> compare;           ///< 2–4 integrators: start in comparison mode
+  std::string backend = "window";             ///< window | auto (auto falls back to offscreen)
+  int width = 1600, height = 900;
+  bool smoke_test = false;                    ///< scripted run: every integrator 2 s, every scene
+  std::filesystem::path screenshot;           ///< save the last frame here (smoke test, --shot-at)
+  double shot_at = -1.0;                      ///< run to this simulated time, screenshot, exit
+  int benchmark = 0;                          ///< draw N frames of the first state, print fps
+  bool particles = false, springs = false;    ///< initial draw options
+  double factor = 1.0;                        ///< real-time factor
+};
+
+/// Parses the command line; "" on success, "help" for --help, else the error.
+std::string parse_options(int argc, char** argv, AppOptions& options);
+std::string usage();
+/// Runs the app; returns the process exit code.
+int run_app(const AppOptions& options);
+
+/// One slot of comparison mode.
+struct CompareSlot {
+  IntegratorKind integrator = IntegratorKind::ExplicitEuler;
+  double dt = 0.001;
+};
+
+/// Everything the panels edit and the loop reads (one owner, passed explicitly).
+struct AppState {
+  // scenes
+  std::filesystem::path scenes_dir;
+  std::vector<render::SceneEntry> scenes;
+  int scene_index = -1;
+  std::string open_path;          ///< the "open a file" text field
+  std::string scene_error;        ///< last load or --set error, shown in the panel
+  SceneSpec original;             ///< as loaded (the "reset to the scene's values" target)
+  SceneSpec edited;               ///< with the panel's changes
+  // simulation
+  IntegratorKind integrator = IntegratorKind::ExplicitEuler;
+  double dt = 0.001;
+  bool playing = true;
+  bool step_requested = false;
+  bool reset_requested = false;
+  render::RealTimeClock clock;
+  std::vector<std::unique_ptr<render::Run>> runs;
+  // comparison
+  bool comparing = false;
+  std::vector<CompareSlot> slots;
+  // view
+  render::OrbitCamera camera;
+  bool camera_reset_requested = true;
+  render::FrameOptions frame;
+  // student hints
+  std::vector<TaskStatus> tasks;
+  // recording
+  bool recording = false;
+  std::filesystem::path record_dir;
+  int record_frame = 0;
+  std::string record_message;
+  bool screenshot_requested = false;
+  std::string screenshot_message;
+  int panel_width = 400;
+
+  std::vector<render::Run*> run_pointers() const;
+};
+
+/// Loads scene `index` of state.scenes (or the path in open_path when index < 0) into the state.
+bool load_scene_into(AppState& state, int index, const std::string& path = {});
+/// Rebuilds the runs from the edited scene, integrator, step and comparison slots (t = 0).
+void rebuild_runs(AppState& state);
+/// Starts or stops recording PNG frames (and an MP4 when ffmpeg is installed).
+void toggle_recording(AppState& state);
+/// Draws the ImGui side panel.
+void draw_panels(AppState& state, double fps);
+
+}  // namespace jelly::app

@@ -1,0 +1,25 @@
+// jelly-lab: the windowed viewer, or `jelly-lab --headless ...` = `jelly render ...`.
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app.hpp"
+#include "jelly/render/render_command.hpp"
+
+int main(int argc, char** argv) {
+  if (argc >= 2 && (std::strcmp(argv[1], "--headless") == 0 || std::strcmp(argv[1], "render") == 0)) {
+    // Same path as `jelly render`: argv[0] becomes the command name.
+    return jelly::render_command(argc - 1, argv + 1);
+  }
+  jelly::app::AppOptions options;
+  if (const std::string err = jelly::app::parse_options(argc, argv, options); !err.empty()) {
+    if (err == "help") {
+      std::cout << jelly::app::usage();
+      return 0;
+    }
+    std::cerr << "jelly-lab: " << err << "\n" << jelly::app::usage();
+    return 2;
+  }
+  return jelly::app::run_app(options);
+}

@@ -1,0 +1,333 @@
+// The side panel: scenes, simulation and time, integrator and step, every declared parameter,
+// drawing, plots, comparison mode, recording, and the student hints.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "app.hpp"
+#include "jelly/params.hpp"
+
+namespace jelly::app {
+
+using namespace jelly::render;
+
+namespace {
+
+const ImVec4 kRed{1.0f, 0.42f, 0.38f, 1.0f};
+const ImVec4 kYellow{1.0f, 0.85f, 0.3f, 1.0f};
+const ImVec4 kGreen{0.5f, 0.9f, 0.5f, 1.0f};
+
+bool integrator_combo(const char* label, IntegratorKind& kind) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, std::string(display_name(kind)).c_str())) {
+    for (IntegratorKind k : kAllIntegrators) {
+      if (ImGui::Selectable(std::string(display_name(k)).c_str(), k == kind)) {
+        changed = k != kind;
+        kind = k;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+bool step_input(const char* label, double& dt) {
+  double ms = dt * 1e3;
+  const double lo = 0.01, hi = 20.0;
+  bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &ms, &lo, &hi, "%.4g ms",
+                                     ImGuiSliderFlags_Logarithmic);
+  if (changed) dt = std::clamp(ms, lo, hi) * 1e-3;
+  return ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive());
+}
+
+/// One widget per declared parameter; applies the change through set_parameter (so the panel
+/// validates exactly like a scene file). Returns true when a value changed.
+bool parameter_widgets(AppState& s) {
+  bool changed = false;
+  std::string group;
+  for (const ParamInfo& p : scene_parameters(s.edited)) {
+    // Group by the first part of the key ("springs", "body", "terrain.floor", ...).
+    std::string g = p.key.substr(0, p.key.find('.'));
+    if (g == "terrain") g = p.key.substr(0, p.key.find('.', 8));
+    if (g != group) {
+      group = g;
+      ImGui::Separator();
+      ImGui::TextDisabled("%s", group.c_str());
+    }
+    const std::string label = p.key.substr(group.size() + (p.key.size() > group.size() ? 1 : 0)) +
+                              (p.unit.empty() ? "" : " [" + p.unit + "]") + "##" + p.key;
+    std::string text;
+    bool edited = false;
+    switch (p.type) {
+      case ParamType::Real: {
+        double v = get_number(s.edited, p.key).value_or(0.0);
+        if (p.bounded && std::isfinite(p.min) && std::isfinite(p.max)) {
+          const bool log = p.min > 0.0 && p.max / p.min > 100.0;
+          ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &p.min, &p.max, "%.5g",
+                              log ? ImGuiSliderFlags_Logarithmic : 0);
+        } else {
+          ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, "%.5g");
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+          char buf[64];
+          std::snprintf(buf, sizeof buf, "%.17g", v);
+          text = buf;
+          edited = true;
+        }
+        break;
+      }
+      case ParamType::Integer: {
+        int v = static_cast<int>(get_number(s.edited, p.key).value_or(0.0));
+        if (p.bounded && std::isfinite(p.max) && p.max - p.min <= 100) {
+          const int lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
+          ImGui::SliderInt(label.c_str(), &v, lo, hi);
+        } else {
+          ImGui::InputInt(label.c_str(), &v);
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+          text = std::to_string(v);
+          edited = true;
+        }
+        break;
+      }
+      case ParamType::Bool: {
+        bool v = get_parameter(s.edited, p.key).value_or("false") == "true";
+        if (ImGui::Checkbox(label.c_str(), &v)) {
+          text = v ? "true" : "false";
+          edited = true;
+        }
+        break;
+      }
+      case ParamType::Vector3: {
+        double v[3] = {0, 0, 0};
+        const std::string cur = get_parameter(s.edited, p.key).value_or("0,0,0");
+        std::sscanf(cur.c_str(), "%lf , %lf , %lf", &v[0], &v[1], &v[2]);
+        ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, v, 3, nullptr, nullptr, "%.4g");
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+          char buf[128];
+          std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
+          text = buf;
+          edited = true;
+        }
+        break;
+      }
+      case ParamType::Choice: {
+        const std::string cur = get_parameter(s.edited, p.key).value_or("");
+        if (ImGui::BeginCombo(label.c_str(), cur.c_str())) {
+          for (const std::string& c : p.choices)
+            if (ImGui::Selectable(c.c_str(), c == cur) && c != cur) {
+              text = c;
+              edited = true;
+            }
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case ParamType::Text:
+        ImGui::LabelText(label.c_str(), "%s", get_parameter(s.edited, p.key).value_or("").c_str());
+        break;
+    }
+    if (ImGui::IsItemHovered() && !p.description.empty()) {
+      std::string tip = p.description + "\ndefault " + p.default_text;
+      if (p.bounded) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "\nrange %s%g, %g%s", p.min_inclusive ? "[" : "(", p.min, p.max,
+                      p.max_inclusive ? "]" : ")");
+        tip += buf;
+      }
+      ImGui::SetTooltip("%s", tip.c_str());
+    }
+    if (edited) {
+      if (auto err = set_parameter(s.edited, p.key, text)) {
+        s.scene_error = err->text();
+      } else {
+        s.scene_error.clear();
+        changed = true;
+      }
+    }
+  }
+  return changed;
+}
+
+void plot(const char* label, const std::deque<RunSample>& h, double RunSample::*field, const char* unit) {
+  const std::size_t n = std::min<std::size_t>(h.size(), 600);
+  std::vector<float> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<float>(h[h.size() - n + i].*field);
+  char overlay[64] = "";
+  if (!v.empty()) std::snprintf(overlay, sizeof overlay, "%.4g %s", v.back(), unit);
+  ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(0, 60));
+}
+
+}  // namespace
+
+void draw_panels(AppState& s, double fps) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.panel_width), io.DisplaySize.y));
+  ImGui::Begin("Jelly Lab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(-170);
+  const std::vector<Run*> runs = s.run_pointers();
+  Run* main_run = runs.empty() ? nullptr : runs.front();
+
+  // ---- student hints ----
+  int missing = 0;
+  for (const TaskStatus& t : s.tasks) missing += t.implemented ? 0 : 1;
+  if (missing > 0 && ImGui::CollapsingHeader("Tasks not implemented yet", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (const TaskStatus& t : s.tasks)
+      if (!t.implemented) {
+        ImGui::TextColored(kYellow, "%s %s", t.id.c_str(), t.name.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.evidence.c_str());
+      }
+  }
+
+  // ---- scenes ----
+  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const char* current = s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
+    if (ImGui::BeginCombo("scene", current)) {
+      for (std::size_t i = 0; i < s.scenes.size(); ++i)
+        if (ImGui::Selectable(s.scenes[i].name.c_str(), static_cast<int>(i) == s.scene_index))
+          load_scene_into(s, static_cast<int>(i));
+      ImGui::EndCombo();
+    }
+    char path[512];
+    std::snprintf(path, sizeof path, "%s", s.open_path.c_str());
+    if (ImGui::InputText("file", path, sizeof path)) s.open_path = path;
+    ImGui::SameLine();
+    if (ImGui::Button("Open") && !s.open_path.empty()) load_scene_into(s, -1, s.open_path);
+    if (!s.edited.description.empty()) ImGui::TextWrapped("%s", s.edited.description.c_str());
+    if (!s.scene_error.empty()) ImGui::TextColored(kRed, "%s", s.scene_error.c_str());
+  }
+
+  // ---- simulation ----
+  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
+    ImGui::SameLine();
+    if (ImGui::Button("Step (N)")) s.step_requested = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)")) s.reset_requested = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Camera (C)")) s.camera_reset_requested = true;
+    if (main_run && main_run->simulator())
+      ImGui::Text("t = %.3f s   step %ld   %.0f fps", main_run->time(), main_run->simulator()->steps(), fps);
+    float factor = static_cast<float>(s.clock.factor);
+    if (ImGui::SliderFloat("real-time factor", &factor, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+      s.clock.factor = factor;
+      s.clock.restart();
+    }
+    if (s.playing && !s.recording) {
+      if (s.clock.behind())
+        ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time", s.clock.achieved_factor());
+      else
+        ImGui::TextColored(kGreen, "running at %.2fx real time", s.clock.achieved_factor());
+    }
+    if (!s.comparing) {
+      if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
+      if (step_input("step h", s.dt)) s.reset_requested = true;
+      if (main_run && main_run->simulator()) {
+        const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
+        if (std::isinf(hc)) ImGui::TextDisabled("stable step estimate: any h");
+        else if (hc > 0.0) ImGui::TextDisabled("stable step estimate: h <= %.3g s", hc);
+      }
+    }
+    // Instability banner with one-click retry.
+    for (Run* r : runs) {
+      if (!r->simulator() || !r->simulator()->instability()) continue;
+      const InstabilityReport& rep = *r->simulator()->instability();
+      ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+      ImGui::TextWrapped("UNSTABLE: %s stopped at step %ld (t = %.3f s, h = %g s): %s",
+                         std::string(display_name(rep.integrator)).c_str(), rep.step, rep.time,
+                         rep.step_size, rep.reason.c_str());
+      ImGui::PopStyleColor();
+      char label[96];
+      std::snprintf(label, sizeof label, "Retry at h = %.3g s##%p", rep.recommended_step, static_cast<void*>(r));
+      if (ImGui::Button(label) && rep.recommended_step > 0.0 && std::isfinite(rep.recommended_step)) {
+        if (s.comparing) {
+          for (CompareSlot& slot : s.slots)
+            if (slot.integrator == rep.integrator) slot.dt = rep.recommended_step;
+        } else {
+          s.dt = rep.recommended_step;
+        }
+        s.reset_requested = true;
+      }
+    }
+    for (Run* r : runs)
+      if (!r->ok()) ImGui::TextColored(kRed, "cannot run: %s", r->error().c_str());
+  }
+
+  // ---- comparison ----
+  if (ImGui::CollapsingHeader("Comparison mode")) {
+    if (ImGui::Checkbox("compare side by side", &s.comparing)) s.reset_requested = true;
+    int count = static_cast<int>(s.slots.size());
+    if (ImGui::SliderInt("runs", &count, 2, 4)) {
+      s.slots.resize(count, CompareSlot{IntegratorKind::RK4, s.dt});
+      s.reset_requested = s.comparing;
+    }
+    for (std::size_t i = 0; i < s.slots.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      if (integrator_combo("integrator", s.slots[i].integrator)) s.reset_requested = s.comparing;
+      if (step_input("step h", s.slots[i].dt)) s.reset_requested = s.comparing;
+      ImGui::PopID();
+    }
+    if (ImGui::Button("Start together")) {
+      s.comparing = true;
+      s.reset_requested = true;
+      s.playing = true;
+    }
+  }
+
+  // ---- parameters ----
+  if (ImGui::CollapsingHeader("Parameters")) {
+    if (ImGui::Button("Reset to the scene's values")) {
+      s.edited = s.original;
+      s.scene_error.clear();
+      s.reset_requested = true;
+    }
+    if (parameter_widgets(s)) s.reset_requested = true;
+  }
+
+  // ---- drawing ----
+  if (ImGui::CollapsingHeader("Draw")) {
+    ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
+    ImGui::Checkbox("particles", &s.frame.draw.particles);
+    static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear", "bending springs"};
+    for (int i = 0; i < 4; ++i) {
+      const auto& c = colors::kSprings[i];
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
+      ImGui::Checkbox(names[i], &s.frame.draw.springs[i]);
+      ImGui::PopStyleColor();
+    }
+    ImGui::Checkbox("ground grid", &s.frame.draw.grid);
+    ImGui::Checkbox("parameters on the frame", &s.frame.caption);
+  }
+
+  // ---- plots ----
+  if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (Run* r : runs) {
+      if (runs.size() > 1) ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
+      ImGui::PushID(r);
+      plot("energy", r->history(), &RunSample::energy, "J");
+      plot("COM height", r->history(), &RunSample::com_height, "m");
+      plot("ms / step", r->history(), &RunSample::ms_per_step, "ms");
+      ImGui::PopID();
+    }
+  }
+
+  // ---- recording ----
+  if (ImGui::CollapsingHeader("Recording")) {
+    if (ImGui::Button(s.recording ? "Stop recording" : "Record PNG frames")) toggle_recording(s);
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (P)")) s.screenshot_requested = true;
+    ImGui::TextWrapped("Frames advance 1/30 s x factor each, so the video plays at the chosen speed; "
+                       "MP4 when ffmpeg is installed.");
+    if (!s.record_message.empty()) ImGui::TextWrapped("%s", s.record_message.c_str());
+    if (!s.screenshot_message.empty()) ImGui::TextWrapped("%s", s.screenshot_message.c_str());
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace jelly::app

@@ -1,0 +1,36 @@
+// One frame of one or more runs: the layout, the worlds, their labels, the printed parameters and
+// the instability banners. The window app and the headless renderer both draw through this.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "jelly/render/renderer.hpp"
+#include "jelly/render/session.hpp"
+
+namespace jelly::render {
+
+struct FrameOptions {
+  DrawOptions draw;
+  bool caption = true;   ///< print the parameters (bottom-left)
+  bool labels = true;    ///< label each viewport with its integrator and cost (comparison mode)
+  std::vector<std::string> hints;  ///< lines shown at the top (e.g. "A1.T4 not implemented yet")
+  /// Space kept free at the left edge [px] (the app's side panel).
+  int left_margin = 0;
+};
+
+/// Text scale for a frame of this height (2× at 720 p).
+float text_scale(int frame_height);
+
+/// Makes sure every run has draw proxies (after a reset).
+void ensure_drawables(Renderer& renderer, const std::vector<Run*>& runs);
+
+/// Draws `runs` side by side into a width×height frame (begin_frame … end_frame included).
+/// The camera is shared so comparison viewports show the same view.
+void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCamera& camera,
+                const FrameOptions& options, int width, int height);
+
+/// The viewports draw_frame uses for `count` runs.
+std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin);
+
+}  // namespace jelly::render

@@ -1,0 +1,16 @@
+// `jelly render` (and `jelly-lab --headless`): draws a scene's frames with no display, through the
+// same renderer as the window (a backend switch, not a second renderer).
+#pragma once
+
+namespace jelly {
+
+/// argv[0] is the command name ("render"); then
+///   SCENE --frames DIR [--width W] [--height H] [--fps F] [--duration T] [--integrator NAME]
+///   [--dt H] [--set key=value ...] [--compare a,b,c] [--backend offscreen|window|null]
+///   [--camera YAW,PITCH,DISTANCE] [--particles] [--springs] [--no-caption] [--no-video]
+///   [--benchmark N]
+/// Writes DIR/frame_00000.png …, DIR/video.mp4 when ffmpeg is on PATH. Returns the exit code
+/// (0 ok, 1 run error or instability, 2 usage error).
+int render_command(int argc, char** argv);
+
+}  // namespace jelly

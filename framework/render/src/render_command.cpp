@@ -1,0 +1,287 @@
+#include "jelly/render/render_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "jelly/render/backend.hpp"
+#include "jelly/render/frame.hpp"
+#include "jelly/render/scene_catalog.hpp"
+#include "jelly/task_probe.hpp"
+
+namespace jelly {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace jelly::render;
+
+constexpr const char* kUsage =
+    "usage: jelly render SCENE --frames DIR [--width W] [--height H] [--fps F] [--duration T]\n"
+    "                    [--integrator NAME] [--dt H] [--set key=value ...] [--compare a,b,c]\n"
+    "                    [--backend offscreen|window|null] [--camera YAW,PITCH,DISTANCE]\n"
+    "                    [--particles] [--springs] [--no-caption] [--no-video] [--benchmark N]\n"
+    "  SCENE    a scene name under scenes/ (course-2023) or a .toml path\n"
+    "  --compare  2 to 4 integrators side by side, e.g. explicit_euler,midpoint,rk4\n"
+    "  --benchmark N  draw N frames of the first state and print frames per second\n";
+
+struct Args {
+  std::string scene;
+  fs::path frames;
+  int width = 1280, height = 720;
+  double fps = 30.0;
+  double duration = -1.0;  // < 0: the scene's
+  std::string integrator, backend = "offscreen", camera;
+  double dt = 0.0;
+  std::vector<std::string> sets, compare;
+  bool particles = false, springs = false, caption = true, video = true;
+  int benchmark = 0;
+};
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+bool parse_number(const std::string& text, double& out) {
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return end && *end == '\0' && !text.empty() && std::isfinite(out);
+}
+
+/// Parses argv; returns an error text or "".
+std::string parse(int argc, char** argv, Args& a) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&](std::string& out) {
+      if (i + 1 >= argc) return false;
+      out = argv[++i];
+      return true;
+    };
+    std::string v;
+    double d = 0.0;
+    if (arg == "--frames") {
+      if (!value(v)) return "--frames needs a folder";
+      a.frames = v;
+    } else if (arg == "--width" || arg == "--height" || arg == "--fps" || arg == "--duration" ||
+               arg == "--dt" || arg == "--benchmark") {
+      if (!value(v) || !parse_number(v, d) || d <= 0.0) return arg + " needs a number > 0, got '" + v + "'";
+      if (arg == "--width") a.width = static_cast<int>(d);
+      if (arg == "--height") a.height = static_cast<int>(d);
+      if (arg == "--fps") a.fps = d;
+      if (arg == "--duration") a.duration = d;
+      if (arg == "--dt") a.dt = d;
+      if (arg == "--benchmark") a.benchmark = static_cast<int>(d);
+    } else if (arg == "--integrator") {
+      if (!value(a.integrator)) return "--integrator needs a name";
+    } else if (arg == "--backend") {
+      if (!value(a.backend)) return "--backend needs a name";
+    } else if (arg == "--camera") {
+      if (!value(a.camera)) return "--camera needs YAW,PITCH,DISTANCE";
+    } else if (arg == "--set") {
+      if (!value(v) || v.find('=') == std::string::npos) return "--set needs key=value, got '" + v + "'";
+      a.sets.push_back(v);
+    } else if (arg == "--compare") {
+      if (!value(v)) return "--compare needs a,b[,c[,d]]";
+      a.compare = split(v, ',');
+      if (a.compare.size() < 2 || a.compare.size() > 4)
+        return "--compare takes 2 to 4 integrators, got " + std::to_string(a.compare.size());
+    } else if (arg == "--particles") {
+      a.particles = true;
+    } else if (arg == "--springs") {
+      a.springs = true;
+    } else if (arg == "--no-caption") {
+      a.caption = false;
+    } else if (arg == "--no-video") {
+      a.video = false;
+    } else if (arg == "-h" || arg == "--help") {
+      return "help";
+    } else if (!arg.empty() && arg[0] == '-') {
+      return "unknown option " + arg;
+    } else if (a.scene.empty()) {
+      a.scene = arg;
+    } else {
+      return "unexpected argument '" + arg + "' (one scene only)";
+    }
+  }
+  if (a.scene.empty()) return "no scene given";
+  if (a.frames.empty() && a.benchmark == 0) return "--frames DIR is required";
+  return {};
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  for (const std::string& dir : split(path, ':')) {
+    std::error_code ec;
+    if (fs::exists(fs::path(dir) / program, ec)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+int render_command(int argc, char** argv) {
+  Args a;
+  if (const std::string err = parse(argc, argv, a); !err.empty()) {
+    if (err == "help") {
+      std::cout << kUsage;
+      return 0;
+    }
+    std::cerr << "jelly render: " << err << "\n" << kUsage;
+    return 2;
+  }
+  SceneResult loaded = resolve_scene(a.scene, default_scenes_dir());
+  if (!loaded) {
+    std::cerr << "jelly render: " << loaded.error->text() << "\n";
+    return 2;
+  }
+  SceneSpec scene = *loaded.scene;
+  for (const std::string& kv : a.sets) {
+    const auto eq = kv.find('=');
+    if (auto err = set_parameter(scene, kv.substr(0, eq), kv.substr(eq + 1))) {
+      std::cerr << "jelly render: " << err->text() << "\n";
+      return 2;
+    }
+  }
+  // The backend and renderer outlive the runs (whose draw proxies hold GL objects).
+  BackendOptions bo;
+  bo.name = a.backend;
+  bo.width = a.width;
+  bo.height = a.height;
+  BackendResult backend = create_backend(bo);
+  if (!backend.backend) {
+    std::cerr << "jelly render: " << backend.error << "\n";
+    return 1;
+  }
+  Backend& be = *backend.backend;
+  Renderer renderer(be.gl());
+
+  RunSetup base = RunSetup::from_scene(scene);
+  if (a.dt > 0.0) base.dt = a.dt;
+  std::vector<std::string> names = a.compare;
+  if (names.empty()) names.push_back(a.integrator.empty() ? std::string(to_string(base.integrator)) : a.integrator);
+  std::vector<std::unique_ptr<Run>> runs;
+  for (const std::string& name : names) {
+    const auto kind = integrator_from_string(name);
+    if (!kind) {
+      std::cerr << "jelly render: unknown integrator '" << name
+                << "' (explicit_euler, implicit_euler, midpoint, rk4, symplectic_euler, backward_euler)\n";
+      return 2;
+    }
+    RunSetup s = base;
+    s.integrator = *kind;
+    runs.push_back(std::make_unique<Run>(s, linked_tasks()));
+    if (!runs.back()->ok()) {
+      std::cerr << "jelly render: " << name << ": " << runs.back()->error() << "\n";
+      return 1;
+    }
+  }
+  std::vector<Run*> run_ptrs;
+  for (auto& r : runs) run_ptrs.push_back(r.get());
+
+  FrameOptions fo;
+  fo.caption = a.caption;
+  fo.draw.particles = a.particles;
+  if (a.springs) fo.draw.springs = {true, true, true, true};
+  const auto missing = missing_task_ids(probe_tasks(linked_tasks()));
+  if (!missing.empty()) {
+    std::string hint = "not implemented yet:";
+    for (const auto& id : missing) hint += " " + id;
+    fo.hints.push_back(hint);
+  }
+
+  OrbitCamera camera;
+  ensure_drawables(renderer, run_ptrs);
+  const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, 0);
+  camera.frame(runs.front()->drawable()->bounds(), vps.front().aspect());
+  if (!a.camera.empty()) {
+    const auto parts = split(a.camera, ',');
+    double y = 0, p = 0, dist = 0;
+    if (parts.size() != 3 || !parse_number(parts[0], y) || !parse_number(parts[1], p) ||
+        !parse_number(parts[2], dist) || dist <= 0) {
+      std::cerr << "jelly render: --camera needs YAW,PITCH,DISTANCE (degrees, degrees, metres)\n";
+      return 2;
+    }
+    camera.yaw_degrees = y;
+    camera.pitch_degrees = p;
+    camera.distance = dist;
+  }
+
+  if (a.benchmark > 0) {
+    // Frames per second of drawing and reading back the first state (no stepping).
+    std::vector<double> ms;
+    for (int i = 0; i < a.benchmark + 3; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
+      const Image img = be.read_pixels();
+      be.present();
+      const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      if (i >= 3) ms.push_back(dt);  // the first frames compile shaders and warm caches
+    }
+    std::sort(ms.begin(), ms.end());
+    const double median = ms[ms.size() / 2];
+    std::printf("backend %s, %dx%d, %s\nframes %d, median %.2f ms/frame = %.1f fps (min %.2f, max %.2f ms)\n",
+                std::string(be.name()).c_str(), be.width(), be.height(),
+                be.gl() ? be.gl()->describe().c_str() : "no GL", a.benchmark, median, 1000.0 / median,
+                ms.front(), ms.back());
+    return 0;
+  }
+
+  const double duration = a.duration > 0.0 ? a.duration : scene.duration;
+  const int frames = static_cast<int>(std::floor(duration * a.fps + 1e-9)) + 1;
+  std::error_code ec;
+  fs::create_directories(a.frames, ec);
+  if (ec) {
+    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message() << "\n";
+    return 1;
+  }
+  int status = 0;
+  for (int k = 0; k < frames; ++k) {
+    const double t = k / a.fps;
+    for (Run* r : run_ptrs) r->advance_to(t);
+    draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
+    const Image img = be.read_pixels();
+    be.present();
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", k);
+    if (const std::string err = write_png(a.frames / name, img); !err.empty()) {
+      std::cerr << "jelly render: " << err << "\n";
+      return 1;
+    }
+  }
+  for (Run* r : run_ptrs)
+    if (const auto& inst = r->simulator()->instability()) {
+      std::cerr << inst->message() << "\n";
+      status = 1;
+    }
+  std::cout << "wrote " << frames << " frames to " << a.frames.string() << "\n";
+  if (a.video) {
+    if (on_path("ffmpeg")) {
+      const fs::path mp4 = a.frames / "video.mp4";
+      char fps[32];
+      std::snprintf(fps, sizeof fps, "%g", a.fps);
+      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i '" +
+                              (a.frames / "frame_%05d.png").string() +
+                              "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -c:v libx264 '" +
+                              mp4.string() + "'";
+      if (std::system(cmd.c_str()) == 0) std::cout << "wrote " << mp4.string() << "\n";
+      else std::cerr << "jelly render: ffmpeg failed; the PNG frames are in " << a.frames.string() << "\n";
+    } else {
+      std::cout << "(no ffmpeg on PATH: PNG frames only)\n";
+    }
+  }
+  return status;
+}
+
+}  // namespace jelly

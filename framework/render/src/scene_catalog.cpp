@@ -1,0 +1,81 @@
+#include "jelly/render/scene_catalog.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <system_error>
+
+namespace jelly::render {
+
+namespace fs = std::filesystem;
+
+fs::path default_scenes_dir() {
+  if (const char* env = std::getenv("JELLY_SCENES"); env && *env) return env;
+#ifdef JELLY_SCENES_DIR
+  if (fs::is_directory(JELLY_SCENES_DIR)) return JELLY_SCENES_DIR;
+#endif
+  return "scenes";
+}
+
+SceneSpec builtin_course_2023() {
+  SceneSpec s;
+  s.name = "course-2023";
+  s.description = "The 2023 course scene (built in): a 10×10×10 jelly falls onto a floor with a "
+                  "hole, over a bowl.";
+  s.integrator = IntegratorKind::ExplicitEuler;
+  s.dt = 0.001;
+  s.duration = 10.0;
+  s.gravity = Vec3(0.0, -9.8, 0.0);
+  s.body_kind = BodyKind::Cube;
+  s.cube.n = 10;
+  s.cube.edge = 4.0;
+  s.cube.mass = 1.0;
+  s.cube.center = Vec3(-4.8, 11.0, 0.0);
+  s.cube.rotation_degrees = 0.0;
+  for (SpringSettings* ss : {&s.structural, &s.shear, &s.bending}) *ss = SpringSettings{true, 2000.0, 60.0};
+  s.terrains = {*terrain_preset("course-2023-floor"), *terrain_preset("course-2023-bowl")};
+  return s;
+}
+
+std::vector<SceneEntry> list_scenes(const fs::path& dir) {
+  std::vector<SceneEntry> out;
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) {
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+      if (!it->is_regular_file() || it->path().extension() != ".toml") continue;
+      std::string name = fs::relative(it->path(), dir).replace_extension().generic_string();
+      out.push_back({name, it->path()});
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
+  const bool has_course = std::any_of(out.begin(), out.end(), [](const SceneEntry& e) { return e.name == "course-2023"; });
+  if (!has_course) out.insert(out.begin(), SceneEntry{"builtin:course-2023", {}});
+  return out;
+}
+
+SceneResult load_entry(const SceneEntry& e) {
+  if (e.path.empty()) {
+    SceneResult r;
+    r.scene = builtin_course_2023();
+    return r;
+  }
+  return load_scene(e.path);
+}
+
+SceneResult resolve_scene(std::string_view what, const fs::path& dir) {
+  const std::string s(what);
+  if (s == "builtin:course-2023") return load_entry({s, {}});
+  std::error_code ec;
+  if (fs::is_regular_file(s, ec)) return load_scene(s);
+  const fs::path in_dir = dir / (s + ".toml");
+  if (fs::is_regular_file(in_dir, ec)) return load_scene(in_dir);
+  if (s == "course-2023") return load_entry({s, {}});  // no file yet: the built-in copy
+  SceneResult r;
+  r.error = SceneError{s, "", 0, 0,
+                       "no such scene: not a file, and no " + in_dir.string() +
+                           " (list them with `jelly-lab --list-scenes`)"};
+  return r;
+}
+
+}  // namespace jelly::render

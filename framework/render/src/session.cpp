@@ -1,0 +1,178 @@
+#include "jelly/render/session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace jelly::render {
+
+Run::Run(RunSetup setup, TaskTable tasks) : setup_(std::move(setup)), tasks_(tasks) { reset(); }
+
+void Run::reset(RunSetup setup) {
+  setup_ = std::move(setup);
+  reset();
+}
+
+void Run::reset() {
+  sim_.reset();
+  drawable_.reset();
+  history_.clear();
+  ms_per_step_ = 0.0;
+  error_.clear();
+  try {
+    Simulator::Options o;
+    o.integrator = setup_.integrator;
+    o.dt = setup_.dt;
+    sim_ = std::make_unique<Simulator>(build_world(setup_.scene, tasks_), o);
+    record(0.0);
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+double Run::com_height() const {
+  if (!sim_) return 0.0;
+  const World& w = sim_->world();
+  const Eigen::VectorXd& m = w.masses();
+  const double total = m.sum();
+  return total > 0.0 ? w.state().x.row(1).dot(m) / total : 0.0;
+}
+
+void Run::record(double ms) {
+  RunSample s;
+  s.time = sim_->time();
+  const Energy e = sim_->energy();
+  s.energy = e.total();
+  s.kinetic = e.kinetic;
+  s.com_height = com_height();
+  s.ms_per_step = ms;
+  history_.push_back(s);
+  while (history_.size() > kHistory) history_.pop_front();
+}
+
+long Run::advance_to(double t_target, double budget_ms) {
+  if (!sim_ || sim_->instability()) return 0;
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const double h = setup_.dt;
+  long steps = 0;
+  double elapsed_ms = 0.0;
+  budget_hit_ = false;
+  while (sim_->time() + 0.5 * h <= t_target) {
+    if (sim_->step() == StepResult::Unstable) {
+      ++steps;
+      break;
+    }
+    ++steps;
+    if (steps % kSampleEvery == 0 && sim_->time() + 0.5 * h <= t_target) record(ms_per_step_);
+    elapsed_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
+    if (elapsed_ms >= budget_ms) {
+      budget_hit_ = sim_->time() + 0.5 * h <= t_target;
+      break;
+    }
+  }
+  if (steps > 0) {
+    elapsed_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
+    const double per = elapsed_ms / static_cast<double>(steps);
+    ms_per_step_ = ms_per_step_ == 0.0 ? per : 0.9 * ms_per_step_ + 0.1 * per;
+    record(per);
+  }
+  return steps;
+}
+
+void Run::step_once() {
+  if (!sim_ || sim_->instability()) return;
+  const auto start = std::chrono::steady_clock::now();
+  sim_->step();
+  record(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+// ------------------------------------------------------------------------------------------------
+double RealTimeClock::target(double sim_time, double wall_dt) {
+  factor = std::clamp(factor, kMinFactor, kMaxFactor);
+  wall_dt_ = std::clamp(wall_dt, 0.0, max_frame_s);
+  return sim_time + factor * wall_dt_;
+}
+
+void RealTimeClock::reached(double before, double after, bool budget_hit) {
+  if (wall_dt_ <= 0.0) return;
+  const double rate = (after - before) / wall_dt_;
+  // Smooth over about a second of 60 Hz frames.
+  achieved_ = fresh_ ? rate : 0.95 * achieved_ + 0.05 * rate;
+  fresh_ = false;
+  short_frames_ = 0.95 * short_frames_ + 0.05 * (budget_hit ? 1.0 : 0.0);
+  behind_ = short_frames_ > 0.3;
+}
+
+void RealTimeClock::restart() {
+  fresh_ = true;
+  short_frames_ = 0.0;
+  behind_ = false;
+  achieved_ = factor;
+}
+
+std::vector<Viewport> comparison_layout(int count, int w, int h) {
+  std::vector<Viewport> out;
+  count = std::clamp(count, 1, 4);
+  const int cols = count == 4 ? 2 : count, rows = count == 4 ? 2 : 1;
+  for (int i = 0; i < count; ++i) {
+    const int c = i % cols, r = i / cols;
+    const int x0 = c * w / cols, x1 = (c + 1) * w / cols;
+    const int y0 = r * h / rows, y1 = (r + 1) * h / rows;
+    out.push_back({x0, y0, x1 - x0, y1 - y0});
+  }
+  return out;
+}
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string step_text(double h) {
+  return h >= 1e-3 ? fmt("%.4g ms", h * 1e3) : fmt("%.4g us", h * 1e6);
+}
+}  // namespace
+
+std::string caption(const RunSetup& s, double time, bool with_integrator) {
+  const SceneSpec& sc = s.scene;
+  std::string out = sc.name.empty() ? std::string("scene") : sc.name;
+  if (with_integrator) out += "   " + std::string(display_name(s.integrator)) + "   h = " + step_text(s.dt);
+  out += "   t = " + fmt("%.3f s", time);
+  if (sc.body_kind == BodyKind::Cube) {
+    out += "\ncube: n = " + std::to_string(sc.cube.n) + ", L = " + fmt("%.3g m", sc.cube.edge) +
+           ", m = " + fmt("%.3g kg", sc.cube.mass) + "\n";
+  } else {
+    out += "\nparticles: " + std::to_string(sc.particles.positions.cols()) +
+           ", m = " + fmt("%.3g kg", sc.particles.mass) + "\n";
+  }
+  const auto springs = [&](const char* name, const SpringSettings& ss) {
+    if (ss.enabled) out += std::string(name) + " ks " + fmt("%g", ss.ks) + " kd " + fmt("%g", ss.kd) + "   ";
+  };
+  springs("structural", sc.structural);
+  springs("shear", sc.shear);
+  springs("shear_body", sc.shear_body);
+  springs("bending", sc.bending);
+  if (!sc.terrains.empty()) {
+    out += "\n";
+    for (const Terrain& t : sc.terrains) {
+      const SurfaceProperties& p = t.surface();
+      out += t.name + ": eps " + fmt("%g", p.epsilon) + " kr " + fmt("%g", p.restitution) +
+             " kf " + fmt("%g", p.friction) + "   ";
+    }
+  }
+  if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
+  return out;
+}
+
+std::string run_label(const Run& run) {
+  std::string out = std::string(display_name(run.setup().integrator)) + "   h = " + step_text(run.setup().dt);
+  if (run.ms_per_step() > 0.0) out += "   " + fmt("%.3f ms/step", run.ms_per_step());
+  out += "   " + std::to_string(evaluations_per_step(run.setup().integrator)) + " evals/step";
+  return out;
+}
+
+}  // namespace jelly::render
