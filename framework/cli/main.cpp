@@ -1,1 +1,62 @@
-int main() { return 0; }
+// `jelly`: the headless command line of Jelly Lab.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "commands.hpp"
+
+#ifdef JELLY_HAVE_RENDER
+#include "jelly/render/render_command.hpp"
+#endif
+#ifdef JELLY_HAVE_STUDY
+#include "study_command.hpp"
+#endif
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: jelly COMMAND [options]
+
+commands:
+  run SCENE      run a scene headless; write the trajectory and a summary as CSV
+  check SCENE    validate a scene; print what it builds and each integrator's stable step size
+  params SCENE   list every declared parameter of a scene (key, value, unit, range, meaning)
+  probe          list which student tasks (A1.T1–A1.T13) look implemented in this build
+  render SCENE   draw frames to PNG without a display (OSMesa)   [when built with the viewer]
+  study ...      accuracy against cost, stability sweeps           [numerics study]
+
+`jelly COMMAND --help` tells more. Scenes live in scenes/; the format is in docs/scenes.md.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace jelly::cli;
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
+      !std::strcmp(argv[1], "help")) {
+    std::fputs(kHelp, argc < 2 ? stderr : stdout);
+    return argc < 2 ? kExitUsage : kExitOk;
+  }
+  const std::string command = argv[1];
+  try {
+    if (command == "run") return run_command(argc, argv);
+    if (command == "check") return check_command(argc, argv);
+    if (command == "params") return params_command(argc, argv);
+    if (command == "probe") return probe_command(argc, argv);
+#ifdef JELLY_HAVE_RENDER
+    if (command == "render") return jelly::render_command(argc - 1, argv + 1);
+#endif
+#ifdef JELLY_HAVE_STUDY
+    if (command == "study") return study_command(argc, argv);
+#endif
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "jelly %s: unexpected error: %s\n", command.c_str(), e.what());
+    return kExitInternal;
+  }
+  if (command == "render" || command == "study") {
+    std::fprintf(stderr, "jelly: '%s' is not part of this build (configure with the viewer/study on)\n",
+                 command.c_str());
+    return kExitUsage;
+  }
+  std::fprintf(stderr, "jelly: unknown command '%s'\n%s", command.c_str(), kHelp);
+  return kExitUsage;
+}

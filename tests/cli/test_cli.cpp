@@ -1,0 +1,189 @@
+// `jelly run` and friends as a user runs them: bad input gives one clear message naming the file
+// and key and writes nothing; an unstable run stops with exit code 3 and keeps what it wrote.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Result jelly(const std::string& arguments) {
+  const std::string command = std::string(JELLY_CLI) + " " + arguments + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (pipe && std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string scene(const std::string& name) { return std::string(JELLY_SOURCE_DIR) + "/scenes/" + name; }
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "cli" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  // Writes a scene file with one line replaced (or appended) and returns its path.
+  std::string variant(const std::string& from, const std::string& old_line, const std::string& new_line) {
+    std::ifstream in(scene(from));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string text = ss.str();
+    const auto at = text.find(old_line);
+    EXPECT_NE(at, std::string::npos) << old_line;
+    text.replace(at, old_line.size(), new_line);
+    const fs::path p = dir_ / ("bad-" + from);
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  std::string out() const { return (dir_ / "out.csv").string(); }
+  fs::path dir_;
+};
+
+TEST_F(Cli, HelpDocumentsEveryOption) {
+  const Result r = jelly("run --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"--integrator", "--dt", "--duration", "--set", "--every", "--out", "--summary",
+                          "explicit_euler", "implicit_euler", "midpoint", "rk4", "symplectic_euler",
+                          "backward_euler", "exit codes"})
+    EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
+}
+
+TEST_F(Cli, RunWritesTrajectoryAndSummaryWithTheDocumentedHeaders) {
+  const Result r = jelly("run " + scene("course-2023.toml") + " --duration 0.05 --every 10 --out " + out() +
+                         " --summary " + (dir_ / "sum.csv").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream traj(out()), sum(dir_ / "sum.csv");
+  std::string line;
+  std::getline(traj, line);
+  EXPECT_EQ(line, "frame,time,particle,x,y,z,vx,vy,vz");
+  long rows = 0;
+  while (std::getline(traj, line)) ++rows;
+  EXPECT_EQ(rows, 6 * 1000);  // frames at steps 0, 10, …, 50 times 1000 particles
+  std::getline(sum, line);
+  EXPECT_EQ(line, "time,com_x,com_y,com_z,kinetic,potential,spring,max_speed");
+}
+
+TEST_F(Cli, SetOverridesAParameterByItsName) {
+  const Result r = jelly("run " + scene("course-2023.toml") +
+                         " --duration 0.01 --set body.center=-5,11,0 --set springs.shear.ks=5000 --every 10 --summary " + out());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream sum(out());
+  std::string header, first;
+  std::getline(sum, header);
+  std::getline(sum, first);
+  // time,com_x,com_y,...: the centre of mass starts at x = −5 (the scene file says −4.8).
+  const double com_x = std::stod(first.substr(first.find(',') + 1));
+  EXPECT_NEAR(com_x, -5.0, 1e-12) << first;
+}
+
+TEST_F(Cli, UnknownIntegratorIsAUsageError) {
+  const Result r = jelly("run " + scene("course-2023.toml") + " --integrator leapfrog --out " + out());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("simulation.integrator"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
+struct BadInput {
+  const char* name;
+  const char* old_line;
+  const char* new_line;
+  const char* key;  // expected in the message
+};
+
+class CliBadScene : public Cli, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(CliBadScene, OneClearMessageNamingFileAndKeyAndNothingWritten) {
+  const BadInput& b = GetParam();
+  const std::string path = variant("course-2023.toml", b.old_line, b.new_line);
+  const Result r = jelly("run " + path + " --out " + out() + " --summary " + (dir_ / "s.csv").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(path), std::string::npos) << "message does not name the file:\n" << r.output;
+  EXPECT_NE(r.output.find(b.key), std::string::npos) << "message does not name " << b.key << ":\n" << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+  EXPECT_FALSE(fs::exists(dir_ / "s.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, CliBadScene,
+    ::testing::Values(BadInput{"malformed", "\nn = 10", "\nn = = 10", ":"},
+                      BadInput{"unknown_key", "\nn = 10", "\nn = 10\nrotation_degree = 3", "rotation_degree"},
+                      BadInput{"wrong_type", "\nn = 10", "\nn = \"ten\"", "body.n"},
+                      BadInput{"n_below_2", "\nn = 10", "\nn = 1", "body.n"},
+                      BadInput{"negative_mass", "\nmass = 1.0", "\nmass = -1.0", "body.mass"},
+                      BadInput{"zero_dt", "\ndt = 0.001", "\ndt = 0.0", "simulation.dt"}),
+    [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
+
+TEST_F(Cli, MissingSceneFile) {
+  const Result r = jelly("run " + (dir_ / "nope.toml").string() + " --out " + out());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("nope.toml"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
+TEST_F(Cli, ZeroLengthNormal) {
+  const std::string p = (dir_ / "plane.toml").string();
+  std::ofstream(p) << "[body]\ntype = \"cube\"\nn = 3\n[[terrain]]\nname = \"floor\"\ntype = \"plane\"\n"
+                      "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\n";
+  const Result r = jelly("run " + p + " --out " + out());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("normal"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
+TEST_F(Cli, BadSetValueIsRejectedBeforeAnythingRuns) {
+  const Result r = jelly("run " + scene("course-2023.toml") + " --set springs.shear.ks=-1 --out " + out());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("springs.shear.ks"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
+TEST_F(Cli, UnstableRunStopsWithItsOwnExitCodeAndKeepsWhatItWrote) {
+  if (std::string(JELLY_CLI_TASKS) != "solutions") GTEST_SKIP() << "needs the reference integrators";
+  // The course's implicit Euler at h = 0.001 diverges after impact (contract §6).
+  const Result r = jelly("run " + scene("course-2023.toml") + " --integrator implicit_euler --every 100 --summary " + out());
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Implicit Euler"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("h = 0.001"), std::string::npos) << r.output;
+  std::ifstream sum(out());
+  std::string line;
+  long rows = -1;
+  while (std::getline(sum, line)) ++rows;
+  EXPECT_GT(rows, 10);  // frames before the detector fired are kept
+}
+
+TEST_F(Cli, CheckPrintsTheStableStepOfEveryIntegrator) {
+  const Result r = jelly("check " + scene("course-2023.toml"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("12876 springs"), std::string::npos) << r.output;
+  for (const char* k : {"explicit_euler", "implicit_euler", "rk4", "backward_euler"})
+    EXPECT_NE(r.output.find(k), std::string::npos) << k;
+}
+
+TEST_F(Cli, ParamsListsDeclaredKeys) {
+  const Result r = jelly("params " + scene("course-2023.toml"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* k : {"body.center", "springs.shear.ks", "terrain.floor.restitution", "simulation.dt"})
+    EXPECT_NE(r.output.find(k), std::string::npos) << k;
+}
+
+}  // namespace
