@@ -5,6 +5,34 @@
 
 namespace jelly::render {
 
+std::string wrap_text(const std::string& text, int max_width, float scale) {
+  std::string out, line, word;
+  const auto flush_word = [&]() {
+    if (word.empty()) return;
+    const std::string candidate = line.empty() ? word : line + " " + word;
+    if (!line.empty() && Renderer::text_size(candidate, scale).x() > max_width) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = candidate;
+    }
+    word.clear();
+  };
+  for (char c : text) {
+    if (c == ' ') {
+      flush_word();
+    } else if (c == '\n') {
+      flush_word();
+      out += line + "\n";
+      line.clear();
+    } else {
+      word += c;
+    }
+  }
+  flush_word();
+  return out + line;
+}
+
 float text_scale(int h) { return std::clamp(static_cast<float>(h) / 360.0f, 1.0f, 2.0f); }
 
 void ensure_drawables(Renderer& renderer, const std::vector<Run*>& runs) {
@@ -30,12 +58,22 @@ void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCa
     const Viewport& vp = vps[i];
     if (run.ok()) renderer.draw(*run.drawable(), run.simulator()->world(), camera, o.draw, vp);
     int y = vp.y + pad;
-    if (o.labels && runs.size() > 1) {
-      renderer.draw_text(run_label(run), vp.x + pad, y, s, {1.0f, 0.95f, 0.75f, 1.0f});
-      y += Renderer::text_size("X", s).y() + pad;
-    }
+    // Text scaled down to fit the viewport's width.
+    const auto fit = [&](const std::string& text) {
+      const float room = static_cast<float>(vp.width - 3 * pad);
+      return std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));
+    };
+    const auto put = [&](const std::string& raw, const Eigen::Vector4f& color, float shrink = 1.0f) {
+      const std::string text = wrap_text(raw, vp.width - 3 * pad, s * shrink);
+      const float ts = std::min(s * shrink, fit(text));
+      renderer.draw_text(text, vp.x + pad, y, ts, color);
+      y += Renderer::text_size(text, ts).y() + pad;
+    };
+    if (o.labels && runs.size() > 1) put(run_label(run), {1.0f, 0.95f, 0.75f, 1.0f});
+    if (i == 0)
+      for (const std::string& hint : o.hints) put(hint, {1.0f, 0.85f, 0.3f, 1.0f});
     if (!run.ok()) {
-      renderer.draw_text("cannot run: " + run.error(), vp.x + pad, y, s, {1.0f, 0.5f, 0.4f, 1.0f});
+      put("cannot run: " + run.error(), {1.0f, 0.5f, 0.4f, 1.0f});
     } else if (const auto& r = run.simulator()->instability()) {
       char buf[256];
       std::snprintf(buf, sizeof buf,
@@ -43,19 +81,14 @@ void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCa
                     "stable step estimate: h <= %.3g s (recommended %.3g s)",
                     std::string(display_name(r->integrator)).c_str(), r->step, r->time, r->step_size,
                     r->reason.c_str(), r->critical_step, r->recommended_step);
-      renderer.draw_text(buf, vp.x + pad, y, s, {1.0f, 0.42f, 0.38f, 1.0f});
+      put(buf, {1.0f, 0.42f, 0.38f, 1.0f}, runs.size() > 1 ? 0.75f : 1.0f);
     }
     if (i > 0) renderer.draw_rect(vp.x - 1, vp.y, 2, vp.height, {0.05f, 0.05f, 0.07f, 1.0f});
   }
-  int y = pad;
-  for (const std::string& hint : o.hints) {
-    renderer.draw_text(hint, o.left_margin + pad, y + (runs.size() > 1 ? 3 * pad : 0) + 
-                       (o.labels && runs.size() > 1 ? Renderer::text_size("X", s).y() : 0),
-                       s, {1.0f, 0.85f, 0.3f, 1.0f});
-    y += Renderer::text_size(hint, s).y() + pad;
-  }
   if (o.caption && !runs.empty()) {
-    const std::string text = caption(runs.front()->setup(), runs.front()->time(), runs.size() == 1);
+    double t = 0.0;  // the furthest run (a stopped run stays behind)
+    for (Run* r : runs) t = std::max(t, r->time());
+    const std::string text = caption(runs.front()->setup(), t, runs.size() == 1);
     // Shrink the caption to fit the width left of the panel.
     const int room = width - o.left_margin - 3 * pad;
     const float cs = std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));

@@ -19,6 +19,9 @@ struct FrameOptions {
   int left_margin = 0;
 };
 
+/// Breaks `text` at spaces so no line is wider than max_width pixels at `scale`.
+std::string wrap_text(const std::string& text, int max_width, float scale);
+
 /// Text scale for a frame of this height (2× at 720 p).
 float text_scale(int frame_height);
 
