@@ -1,0 +1,99 @@
+// The informational course scene: ALL of the student's code together (their springs, forces,
+// collision, contact and explicit Euler) on the 2023 course scene. Contact makes it chaotic, so the
+// orchestrator checks outcomes (finite, where the jelly comes to rest, penetration, first-contact
+// time) and the report plots the centre-of-mass height against the reference.
+#include <cmath>
+
+#include "harness.hpp"
+#include "jelly/recorder.hpp"
+#include "jelly/scene.hpp"
+#include "jelly/simulator.hpp"
+#include "jelly/terrain_geometry.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+SceneSpec course_scene() {
+  SceneSpec s;
+  s.name = "course-2023";
+  s.integrator = IntegratorKind::ExplicitEuler;
+  s.dt = 1e-3;
+  s.gravity = Vec3(0.0, -9.8, 0.0);
+  s.body_kind = BodyKind::Cube;
+  s.cube.center = Vec3(-4.8, 11.0, 0.0);
+  for (SpringSettings* sp : {&s.structural, &s.shear, &s.bending}) {
+    sp->enabled = true;
+    sp->ks = 2000.0;
+    sp->kd = 60.0;
+  }
+  s.terrains = {*terrain_preset("course-2023-floor"), *terrain_preset("course-2023-bowl")};
+  return s;
+}
+
+void run_course(const TaskTable& tasks, Outputs& out) {
+  const SceneSpec spec = course_scene();
+  Simulator::Options o;
+  o.integrator = spec.integrator;
+  o.dt = spec.dt;
+  o.detect_instability = true;
+  Simulator sim(build_world(spec, tasks), o);
+  std::vector<double> t, cy, cx, cz;
+  double first_contact = -1.0, max_penetration = 0.0;
+  const double duration = 10.0;
+  const long steps = std::lround(duration / spec.dt);
+  for (long k = 1; k <= steps; ++k) {
+    if (sim.step() != StepResult::Ok) break;
+    const State& s = sim.state();
+    if (first_contact < 0.0) {
+      long hits = 0;
+      for (long c : sim.world().counters().collisions) hits += c;
+      for (long c : sim.world().counters().contacts) hits += c;
+      if (hits > 0) first_contact = sim.time();
+    }
+    if (k % 50 == 0) {
+      const Vec3 com = s.x.rowwise().mean();
+      t.push_back(sim.time());
+      cx.push_back(com.x());
+      cy.push_back(com.y());
+      cz.push_back(com.z());
+      // Penetration: depth behind the floor outside the hole, or behind the bowl's wall.
+      for (Eigen::Index i = 0; i < s.size(); ++i)
+        for (const Terrain& tr : sim.world().terrains())
+          if (in_extent(tr, s.x.col(i)))
+            max_penetration = std::max(max_penetration, -signed_distance(tr, s.x.col(i)));
+    }
+  }
+  const bool unstable = sim.instability().has_value();
+  // Mean centre of mass over the last 5 s: the jelly still sloshes in the bowl at 10 s, and a
+  // mean is far less sensitive to the chaos of contact than one instant.
+  Vec3 mean = Vec3::Zero();
+  int count = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] > duration - 5.0 + 1e-9) mean += Vec3(cx[i], cy[i], cz[i]), ++count;
+  if (count > 0) mean /= count;
+  const Bowl bowl = std::get<Bowl>(terrain_preset("course-2023-bowl")->shape);
+  const double axis = std::hypot(mean.x() - bowl.center.x(), mean.z() - bowl.center.z());
+  const bool in_bowl = axis < bowl.rim_radius() && mean.y() < bowl.rim_height + 2.0;
+  const Vec3 com = sim.state().x.rowwise().mean();
+  out.value("finished", unstable ? 0.0 : 1.0, "the run reached 10 s without the stability detector firing (1 yes)");
+  out.values("com_time", t, "times of the centre-of-mass samples [s]");
+  out.values("com_y", cy, "centre-of-mass height every 50 ms [m]");
+  out.values("com_x", cx, "centre-of-mass x every 50 ms [m]");
+  out.values("com_z", cz, "centre-of-mass z every 50 ms [m]");
+  out.vec("mean_com_last_5s", mean, "mean centre of mass over the last 5 s (where the jelly settles) [m]");
+  out.value("in_bowl", in_bowl ? 1.0 : 0.0, "the jelly ends up in the bowl (1 yes)");
+  out.vec("final_com", com, "centre of mass at t = 10 s [m]");
+  out.value("first_contact_time", first_contact, "time of the first collision or contact [s]");
+  out.value("max_penetration", max_penetration, "deepest any particle went behind the floor or the bowl's wall [m]");
+  out.value("final_kinetic_energy", sim.energy().kinetic, "kinetic energy at t = 10 s [J]");
+}
+
+}  // namespace
+
+void register_scene_cases(Registry& r) {
+  r.add({"a1.course.scene", "the 2023 course scene with all of your code (explicit Euler, 10 s)", nullptr,
+         [](const TaskTable& t, const Json&, Outputs& o) { run_course(t, o); }});
+}
+
+}  // namespace jelly::grade

@@ -1,0 +1,155 @@
+// A1.T1–T3 cases: the student's builders on lattices the framework makes. Nothing here knows how
+// to build springs: the cases classify what the builder returned (by grid offset, duplicates,
+// indices, rest lengths) and the orchestrator compares that with the reference's classification.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "harness.hpp"
+#include "jelly/cube.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+using Offset = std::array<int, 3>;
+using Builder = void (*)(const CubeLattice&, std::vector<Spring>&);
+
+struct LatticeCase {
+  const char* suffix;
+  const char* what;
+  CubeSpec spec;
+  int first_index;
+};
+
+std::vector<LatticeCase> lattices() {
+  std::vector<LatticeCase> out;
+  for (int n : {2, 3, 4, 10}) {
+    CubeSpec s;
+    s.n = n;
+    s.edge = 4.0;
+    s.center = Vec3(0.0, 9.0, 0.0);
+    out.push_back({n == 2 ? "n2" : n == 3 ? "n3" : n == 4 ? "n4" : "n10", "", s, 0});
+  }
+  CubeSpec r;
+  r.n = 5;
+  r.edge = 2.0;
+  r.center = Vec3(1.0, 2.0, 3.0);
+  r.rotation_axis = Vec3(1.0, 1.0, 0.0);
+  r.rotation_degrees = 30.0;
+  out.push_back({"rotated", "", r, 8});
+  return out;
+}
+
+std::string lattice_words(const LatticeCase& c) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "a %d×%d×%d cube%s%s", c.spec.n, c.spec.n, c.spec.n,
+                c.spec.rotation_degrees != 0.0 ? " rotated 30° about (1,1,0)" : "",
+                c.first_index != 0 ? " whose first particle has index 8 (use cube.index(i, j, k))" : "");
+  return buf;
+}
+
+std::string offset_name(const Offset& o) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "(%d,%d,%d)", o[0], o[1], o[2]);
+  return buf;
+}
+
+// Every grid offset a spring of the jelly cube can have, canonical (first non-zero component > 0).
+const std::vector<Offset>& all_offsets() {
+  static const std::vector<Offset> v = {
+      {1, 0, 0},  {0, 1, 0},  {0, 0, 1},                                       // structural
+      {0, 1, 1},  {0, 1, -1}, {1, 0, 1}, {1, 0, -1}, {1, 1, 0}, {1, -1, 0},   // face shear
+      {1, 1, 1},  {1, 1, -1}, {1, -1, 1}, {1, -1, -1},                        // body shear
+      {2, 0, 0},  {0, 2, 0},  {0, 0, 2}};                                      // bending
+  return v;
+}
+
+// 64-bit FNV-1a over the sorted (min, max) pairs: equal exactly when the sets of pairs are equal.
+std::string pair_set_hash(std::vector<std::pair<int, int>> pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  std::uint64_t h = 1469598103934665603ULL;
+  auto mix = [&](std::uint32_t v) {
+    for (int b = 0; b < 4; ++b) {
+      h ^= (v >> (8 * b)) & 0xffU;
+      h *= 1099511628211ULL;
+    }
+  };
+  for (const auto& p : pairs) {
+    mix(static_cast<std::uint32_t>(p.first));
+    mix(static_cast<std::uint32_t>(p.second));
+  }
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+void classify(const CubeLattice& cube, const std::vector<Spring>& springs, Outputs& out) {
+  const int n = cube.n(), first = cube.first_index(), count = cube.particle_count();
+  std::map<Offset, int> per_offset;
+  int invalid = 0, other = 0, duplicates = 0;
+  double rest_error = 0.0;
+  std::set<std::pair<int, int>> seen;
+  std::vector<std::pair<int, int>> pairs;
+  for (const Spring& s : springs) {
+    if (s.a < first || s.a >= first + count || s.b < first || s.b >= first + count || s.a == s.b) {
+      ++invalid;
+      continue;
+    }
+    const std::pair<int, int> key{std::min(s.a, s.b), std::max(s.a, s.b)};
+    if (!seen.insert(key).second) ++duplicates;
+    pairs.push_back(key);
+    const int ra = s.a - first, rb = s.b - first;
+    Offset o{rb / (n * n) - ra / (n * n), (rb / n) % n - (ra / n) % n, rb % n - ra % n};
+    const int lead = o[0] != 0 ? o[0] : o[1] != 0 ? o[1] : o[2];
+    if (lead < 0)
+      for (int& c : o) c = -c;
+    if (std::find(all_offsets().begin(), all_offsets().end(), o) == all_offsets().end()) ++other;
+    else ++per_offset[o];
+    const double actual = (cube.initial_positions().col(rb) - cube.initial_positions().col(ra)).norm();
+    const double err = std::abs(s.rest_length - actual);
+    rest_error = std::isfinite(err) ? std::max(rest_error, err) : err;
+  }
+  out.value("count", static_cast<double>(springs.size()), "number of springs appended");
+  for (const Offset& o : all_offsets())
+    out.value("offset" + offset_name(o), per_offset[o],
+              "springs joining particles whose grid coordinates differ by " + offset_name(o) +
+                  " (either way round)");
+  out.value("other_offsets", other, "springs joining particles that are not neighbours at any spring offset of the cube");
+  out.value("duplicates", duplicates, "springs that join a pair of particles already joined");
+  out.value("invalid", invalid, "springs with an index outside the cube's particles, or joining a particle to itself");
+  out.value("rest_length_error", rest_error,
+            "largest |rest_length − distance between the two particles at construction| [m]");
+  out.text("pair_set", pair_set_hash(pairs), "the exact set of particle pairs joined (as a hash)");
+}
+
+void add_builder_cases(Registry& r, const char* task_prefix, const char* name,
+                       Builder TaskTable::*member) {
+  for (const LatticeCase& lc : lattices()) {
+    // A 2×2×2 cube has no bending springs: a builder that does nothing would pass.
+    if (member == &TaskTable::add_bending_springs && lc.spec.n == 2) continue;
+    CaseDef def;
+    def.id = std::string(task_prefix) + "." + name + "." + lc.suffix;
+    def.description = std::string(name) + " springs of " + lattice_words(lc);
+    def.run = [lc, member](const TaskTable& tasks, const Json&, Outputs& out) {
+      const CubeLattice cube(lc.spec, lc.first_index);
+      std::vector<Spring> springs;
+      (tasks.*member)(cube, springs);
+      classify(cube, springs, out);
+    };
+    r.add(std::move(def));
+  }
+}
+
+}  // namespace
+
+void register_spring_cases(Registry& r) {
+  add_builder_cases(r, "a1.t1", "structural", &TaskTable::add_structural_springs);
+  add_builder_cases(r, "a1.t2", "shear", &TaskTable::add_shear_springs);
+  add_builder_cases(r, "a1.t3", "bending", &TaskTable::add_bending_springs);
+}
+
+}  // namespace jelly::grade

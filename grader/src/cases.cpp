@@ -1,0 +1,205 @@
+#include "cases.hpp"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <toml++/toml.h>
+
+namespace jelly::grade {
+
+namespace {
+
+std::string where(const std::string& file, const toml::node& node, const std::string& key) {
+  const auto& src = node.source();
+  return file + ":" + std::to_string(src.begin.line) + ": " + key;
+}
+
+Rule parse_rule(const std::string& text, const std::string& context,
+                const std::map<std::string, Tolerance>& tols) {
+  std::istringstream in(text);
+  std::string word;
+  in >> word;
+  Rule r;
+  if (word == "info") {
+    r.kind = Rule::Kind::Info;
+  } else if (word == "range") {
+    r.kind = Rule::Kind::Range;
+    if (!(in >> r.lo >> r.hi)) throw std::runtime_error(context + ": expected \"range LO HI\", got \"" + text + "\"");
+  } else if (word == "tol") {
+    in >> r.tolerance;
+    if (!tols.count(r.tolerance))
+      throw std::runtime_error(context + ": unknown tolerance \"" + r.tolerance + "\" (define it in cases/tolerances.toml)");
+  } else {
+    throw std::runtime_error(context + ": expected \"tol NAME\", \"range LO HI\" or \"info\", got \"" + text + "\"");
+  }
+  return r;
+}
+
+}  // namespace
+
+const Rule CaseSpec::rule_for(const std::string& output) const {
+  for (const auto& [pattern, rule] : rules)
+    if (fnmatch(pattern.c_str(), output.c_str(), 0) == 0) return rule;
+  Rule r;
+  r.tolerance = tolerance;
+  return r;
+}
+
+double Rubric::raw_total() const {
+  double t = 0.0;
+  for (const TaskSpec& s : tasks) t += s.points;
+  return t;
+}
+
+const TaskSpec* Rubric::find(const std::string& id) const {
+  for (const TaskSpec& t : tasks)
+    if (t.id == id) return &t;
+  return nullptr;
+}
+
+CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path) {
+  CaseBook book;
+  // Rubric.
+  const std::string rpath = rubric_path.empty() ? config.rubric_path().string() : rubric_path;
+  toml::table rubric;
+  try {
+    rubric = toml::parse_file(rpath);
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(rpath + ":" + std::to_string(e.source().begin.line) + ": " +
+                             std::string(e.description()));
+  }
+  book.rubric.autograded_total = rubric["autograded_total"].value_or(80.0);
+  book.rubric.hidden_visibility = rubric["hidden_visibility"].value_or(std::string("after_due_date"));
+  const toml::array* tasks = rubric["task"].as_array();
+  if (!tasks) throw std::runtime_error(rpath + ": expected [[task]] entries");
+  for (const toml::node& n : *tasks) {
+    const toml::table& t = *n.as_table();
+    TaskSpec s;
+    s.id = t["id"].value_or(std::string());
+    s.title = t["title"].value_or(std::string());
+    s.category = t["category"].value_or(std::string());
+    s.functions = t["functions"].value_or(std::string());
+    const auto pts = t["points"].value<double>();
+    if (s.id.empty() || !pts || *pts < 0.0)
+      throw std::runtime_error(where(rpath, n, "task") + ": every [[task]] needs an id and points ≥ 0");
+    s.points = *pts;
+    book.rubric.tasks.push_back(s);
+  }
+  // Tolerances, then cases.
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(config.cases_dir()))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& f : files) {
+    toml::table tbl;
+    try {
+      tbl = toml::parse_file(f.string());
+    } catch (const toml::parse_error& e) {
+      throw std::runtime_error(f.string() + ":" + std::to_string(e.source().begin.line) + ": " +
+                               std::string(e.description()));
+    }
+    if (const toml::table* tols = tbl["tolerance"].as_table()) {
+      for (const auto& [key, node] : *tols) {
+        const toml::table* t = node.as_table();
+        Tolerance tol;
+        tol.name = std::string(key.str());
+        const auto atol = t ? (*t)["atol"].value<double>() : std::nullopt;
+        const auto rtol = t ? (*t)["rtol"].value<double>() : std::nullopt;
+        tol.why = t ? (*t)["why"].value_or(std::string()) : std::string();
+        if (!atol || !rtol || tol.why.empty())
+          throw std::runtime_error(where(f.string(), node, "tolerance." + tol.name) +
+                                   ": needs atol, rtol and a one-line why");
+        tol.atol = *atol;
+        tol.rtol = *rtol;
+        book.tolerances[tol.name] = tol;
+      }
+    }
+  }
+  for (const fs::path& f : files) {
+    toml::table tbl = toml::parse_file(f.string());
+    const toml::array* cases = tbl["case"].as_array();
+    if (!cases) continue;
+    for (const toml::node& n : *cases) {
+      const toml::table& t = *n.as_table();
+      CaseSpec c;
+      c.source = f.filename().string();
+      c.id = t["id"].value_or(std::string());
+      c.task = t["task"].value_or(std::string());
+      c.title = t["title"].value_or(std::string());
+      c.weight = t["weight"].value_or(1.0);
+      c.timeout_s = t["timeout"].value_or(0.0);
+      c.tolerance = t["tolerance"].value_or(std::string());
+      const std::string vis = t["visibility"].value_or(std::string("public"));
+      const std::string ctx = where(f.string(), n, "case " + c.id);
+      if (c.id.empty() || c.task.empty()) throw std::runtime_error(ctx + ": needs id and task");
+      if (vis != "public" && vis != "hidden")
+        throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" + vis + "\"");
+      c.hidden = vis == "hidden";
+      if (!book.rubric.find(c.task))
+        throw std::runtime_error(ctx + ": task " + c.task + " is not in the rubric");
+      if (!book.tolerances.count(c.tolerance))
+        throw std::runtime_error(ctx + ": unknown tolerance \"" + c.tolerance + "\"");
+      if (const toml::table* checks = t["checks"].as_table())
+        for (const auto& [pattern, rule] : *checks)
+          c.rules.emplace_back(std::string(pattern.str()),
+                               parse_rule(rule.value_or(std::string()), ctx + ".checks." + std::string(pattern.str()),
+                                          book.tolerances));
+      for (const CaseSpec& other : book.cases)
+        if (other.id == c.id) throw std::runtime_error(ctx + ": duplicate case id");
+      book.cases.push_back(c);
+    }
+  }
+  return book;
+}
+
+std::filesystem::path reference_path(const GradeConfig& config, const CaseSpec& spec) {
+  return config.data_dir() / (spec.hidden ? "hidden" : "public") / (spec.id + ".json");
+}
+
+std::optional<Json> load_reference(const GradeConfig& config, const CaseSpec& spec) {
+  const fs::path p = reference_path(config, spec);
+  std::ifstream in(p);
+  if (!in) return std::nullopt;
+  try {
+    return Json::parse(in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(p.string() + ": not valid JSON: " + e.what());
+  }
+}
+
+std::string fnv_hex(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string harness_digest(const GradeConfig& config) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(config.grader_dir() / "runner"))
+    if (e.is_regular_file()) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::string all;
+  for (const fs::path& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    all += f.filename().string() + "\n" + s.str();
+  }
+  return fnv_hex(all);
+}
+
+std::string case_hash(const std::string& id, const std::string& description, const std::string& digest) {
+  return fnv_hex(id + "\n" + description + "\n" + digest);
+}
+
+}  // namespace jelly::grade

@@ -1,0 +1,89 @@
+// Case specifications (grader/cases/*.toml), named tolerances, the rubric (grader/rubric.toml)
+// and the stored reference data (grader/data/{public,hidden}/<case>.json).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config.hpp"
+
+namespace jelly::grade {
+
+using Json = nlohmann::ordered_json;
+
+/// |a − b| ≤ atol + rtol·|b| (b: the reference), with the reason it is what it is.
+struct Tolerance {
+  std::string name;
+  double atol = 0.0;
+  double rtol = 0.0;
+  std::string why;
+};
+
+/// How one output is judged.
+struct Rule {
+  enum class Kind { Tolerance, Range, Info } kind = Kind::Tolerance;
+  std::string tolerance;  ///< Kind::Tolerance (text outputs always compare exactly)
+  double lo = 0.0, hi = 0.0;  ///< Kind::Range: lo ≤ value ≤ hi (literal, not from the reference)
+};
+
+struct CaseSpec {
+  std::string id;
+  std::string task;        ///< "A1.T4"
+  std::string title;       ///< one line for reports
+  double weight = 1.0;     ///< share of its task's points
+  bool hidden = false;
+  double timeout_s = 0.0;  ///< 0: the command-line default
+  std::string tolerance;   ///< default rule for every output
+  std::vector<std::pair<std::string, Rule>> rules;  ///< output-name pattern → rule (first match)
+  std::string source;      ///< file it came from
+
+  const Rule rule_for(const std::string& output) const;
+};
+
+struct TaskSpec {
+  std::string id;        ///< "A1.T4"
+  std::string title;     ///< "Spring force"
+  std::string category;  ///< "forces"
+  std::string functions; ///< the student's functions, for crash messages
+  double points = 0.0;   ///< rubric points (before scaling)
+};
+
+struct Rubric {
+  double autograded_total = 80.0;  ///< the points the score is scaled to
+  std::string hidden_visibility = "after_due_date";  ///< Gradescope visibility of hidden tests
+  std::vector<TaskSpec> tasks;     ///< in report order
+  double raw_total() const;
+  double scale() const { return raw_total() > 0 ? autograded_total / raw_total() : 0.0; }
+  const TaskSpec* find(const std::string& id) const;
+};
+
+struct CaseBook {
+  std::map<std::string, Tolerance> tolerances;
+  std::vector<CaseSpec> cases;  ///< in file order
+  Rubric rubric;
+};
+
+/// Loads every grader/cases/*.toml and grader/rubric.toml (or `rubric_path`); throws
+/// std::runtime_error naming the file and key on any problem (unknown tolerance, task, ...).
+CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path = {});
+
+/// The reference data of one case, or nullopt when its file is absent (hidden data in a release).
+std::optional<Json> load_reference(const GradeConfig& config, const CaseSpec& spec);
+std::filesystem::path reference_path(const GradeConfig& config, const CaseSpec& spec);
+
+/// Format of the reference data files.
+inline constexpr int kReferenceFormat = 1;
+
+/// 64-bit FNV-1a as 16 hex digits.
+std::string fnv_hex(const std::string& text);
+/// Digest of the runner's case code (grader/runner/*): the reference data records it, and grading
+/// refuses data generated from different case code.
+std::string harness_digest(const GradeConfig& config);
+/// Hash identifying one case: its id, its description from the runner and the harness digest.
+std::string case_hash(const std::string& id, const std::string& description, const std::string& digest);
+
+}  // namespace jelly::grade

@@ -1,0 +1,384 @@
+#include "commands.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include <toml++/toml.h>
+
+#include "report.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string run_text(const std::vector<std::string>& argv, const fs::path& cwd = {}) {
+  Limits lim;
+  lim.timeout_s = 120.0;
+  lim.memory_bytes = 0;
+  lim.limit_files = false;
+  lim.result_pipe = false;
+  lim.keep_output = 16 << 20;
+  const ChildResult c = run_child(argv, lim, cwd);
+  if (c.exit_code != 0) return "";
+  return c.out;
+}
+
+std::string git_commit(const fs::path& dir) {
+  std::string s = run_text({"/usr/bin/git", "-C", dir.string(), "rev-parse", "HEAD"});
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+  return s.empty() ? "unknown" : s;
+}
+
+std::string pts(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
+
+}  // namespace
+
+int generate_reference(const GradeConfig& config, const CaseBook& book) {
+  if (config.reference_runner.empty() || !fs::exists(config.reference_runner)) {
+    std::cerr << "jelly-grade: generate-reference needs the reference runner (solutions/ must exist and "
+                 "jelly-grade-reference-runner must be built)\n";
+    return 2;
+  }
+  const std::string listing = run_text({config.reference_runner.string(), "--list"});
+  std::map<std::string, std::string> descriptions;
+  std::istringstream in(listing);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto tab = line.find('\t');
+    if (tab != std::string::npos) descriptions[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+  const std::string digest = harness_digest(config);
+  const std::string commit = git_commit(config.source_dir);
+  const fs::path work = config.binary_dir / "grader" / "generate";
+  fs::create_directories(work);
+  std::set<fs::path> written;
+  for (const CaseSpec& c : book.cases) {
+    if (!descriptions.count(c.id)) {
+      std::cerr << "jelly-grade: " << c.source << ": case " << c.id << " is not implemented by the runner\n";
+      return 2;
+    }
+    const ChildResult prep = run_case(config.reference_runner, c.id, nullptr, work, 120.0, 0, true);
+    Json input = Json::object();
+    try {
+      input = Json::parse(prep.result).at("input");
+    } catch (const std::exception& e) {
+      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << prep.err << "\n";
+      return 2;
+    }
+    const ChildResult run = run_case(config.reference_runner, c.id, &input, work, 120.0, 0);
+    Json result;
+    try {
+      result = Json::parse(run.result);
+    } catch (const std::exception&) {
+      std::cerr << "jelly-grade: the reference failed on " << c.id << " (exit " << run.exit_code << ", signal "
+                << run.signal << "): " << run.err << "\n";
+      return 2;
+    }
+    if (!result.contains("outputs")) {
+      std::cerr << "jelly-grade: the reference failed on " << c.id << ": " << result.dump() << "\n";
+      return 2;
+    }
+    if (result["outputs"].dump().find("null") != std::string::npos) {
+      std::cerr << "jelly-grade: the reference produced NaN or infinity in " << c.id
+                << "; fix the case before generating reference data\n";
+      return 2;
+    }
+    Json data;
+    data["format_version"] = kReferenceFormat;
+    data["case_id"] = c.id;
+    data["case_hash"] = case_hash(c.id, descriptions[c.id], digest);
+    data["harness_digest"] = digest;
+    data["generator"] = "jelly-grade generate-reference (jelly-grade-reference-runner, solutions/)";
+    data["commit"] = commit;
+    data["compiler"] = config.compiler_id;
+    std::string flags;
+    for (const std::string& f : config.compile_flags) flags += (flags.empty() ? "" : " ") + f;
+    data["flags"] = flags;
+    if (!input.empty()) data["input"] = input;
+    data["outputs"] = result["outputs"];
+    const fs::path p = reference_path(config, c);
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << data.dump(1) << "\n";
+    written.insert(p);
+  }
+  // Remove data of cases that no longer exist.
+  for (const char* vis : {"public", "hidden"}) {
+    const fs::path dir = config.data_dir() / vis;
+    if (!fs::exists(dir)) continue;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".json" && !written.count(e.path())) fs::remove(e.path());
+  }
+  std::cout << "jelly-grade: wrote reference data for " << written.size() << " cases (commit " << commit << ")\n";
+  return 0;
+}
+
+int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out, int jobs,
+          const GradeOptions& options) {
+  std::vector<fs::path> subs;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_directory()) subs.push_back(e.path());
+  std::sort(subs.begin(), subs.end());
+  fs::create_directories(out);
+  const int workers = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<GradeReport> reports(subs.size());
+  std::vector<std::string> errors(subs.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  std::mutex mutex;
+  GradeOptions per = options;
+  per.jobs = 1;  // parallel across students, serial within one
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t i = next++;
+      if (i >= subs.size()) return;
+      const std::string name = subs[i].filename().string();
+      try {
+        reports[i] = grade_submission(config, book, subs[i], fs::path(out) / name / "work", per);
+        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"});
+        fs::remove_all(fs::path(out) / name / "work");
+      } catch (const std::exception& e) {
+        errors[i] = e.what();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      std::cerr << "\r[" << done << "/" << subs.size() << "] " << name << ": "
+                << (errors[i].empty() ? pts(reports[i].score) + " / " + pts(reports[i].max_score) : "grader error")
+                << "            " << std::flush;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int i = 0; i < workers; ++i) threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+  std::cerr << "\n";
+  std::ofstream csv(fs::path(out) / "scores.csv");
+  csv << "student,score,max_score,compiled";
+  for (const TaskSpec& t : book.rubric.tasks) csv << "," << t.id;
+  csv << ",error\n";
+  int status = 0;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    csv << subs[i].filename().string();
+    if (!errors[i].empty()) {
+      csv << ",,,";
+      for (std::size_t k = 0; k < book.rubric.tasks.size(); ++k) csv << ",";
+      csv << ",\"" << errors[i] << "\"\n";
+      status = 1;
+      continue;
+    }
+    csv << "," << pts(reports[i].score) << "," << pts(reports[i].max_score) << "," << (reports[i].compiled ? 1 : 0);
+    for (const TaskResult& t : reports[i].tasks) csv << "," << pts(t.score);
+    csv << ",\n";
+  }
+  std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out << " (scores.csv)\n";
+  return status;
+}
+
+int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
+  const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
+  fs::remove_all(stage);
+  fs::create_directories(stage / "source");
+  // The framework as a student release has it, plus the grader's hidden data; never solutions/.
+  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
+    const fs::path from = config.source_dir / item;
+    if (!fs::exists(from)) continue;
+    fs::copy(from, stage / "source" / item, fs::copy_options::recursive);
+  }
+  fs::remove_all(stage / "source" / "grader" / "tests");
+  std::ofstream(stage / "setup.sh") <<
+      "#!/usr/bin/env bash\n"
+      "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
+      "set -euo pipefail\n"
+      "apt-get update\n"
+      "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev libtomlplusplus-dev "
+      "nlohmann-json3-dev libseccomp-dev\n"
+      "cd /autograder/source\n"
+      "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments -DJELLY_BUILD_TESTS=OFF "
+      "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
+      "cmake --build build -j\"$(nproc)\" --target jelly-grade\n"
+      "# Warm the object cache with the stubs so that unchanged files are never recompiled.\n"
+      "build/grader/jelly-grade grade assignments --visibility public --out /tmp/warm --format gradescope || true\n";
+  std::ofstream(stage / "run_autograder") <<
+      "#!/usr/bin/env bash\n"
+      "# Gradescope entry point: grades /autograder/submission, writes /autograder/results/results.json.\n"
+      "cd /autograder/source\n"
+      "mkdir -p /autograder/results\n"
+      "build/grader/jelly-grade grade /autograder/submission --visibility all --out /autograder/results "
+      "--format gradescope,terminal\n";
+  fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(stage / "run_autograder", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  const fs::path zip = fs::absolute(zip_path);
+  fs::remove(zip);
+  Limits lim;
+  lim.timeout_s = 300;
+  lim.memory_bytes = 0;
+  lim.limit_files = false;
+  lim.result_pipe = false;
+  const ChildResult c = run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "setup.sh", "run_autograder", "source"}, lim, stage);
+  if (c.exit_code != 0) {
+    std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
+    return 2;
+  }
+  std::cout << "jelly-grade: wrote " << zip.string() << " (setup.sh, run_autograder, source/ without solutions/)\n";
+  return 0;
+}
+
+int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path, const std::string& work,
+            int jobs, const GradeOptions& options) {
+  struct Mutant {
+    std::string name, task, file, description;
+    std::vector<std::pair<std::string, std::string>> replacements;
+    fs::path dir;
+    GradeReport report;
+    std::string error;
+  };
+  std::vector<Mutant> list;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(config.grader_dir() / "mutants"))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
+  fs::remove_all(root);
+  // Entry 0: the reference; entry 1: the stubs; then the mutants.
+  list.push_back({"reference", "", "", "solutions/ unchanged", {}, config.solutions_dir(), {}, {}});
+  list.push_back({"stubs", "", "", "assignments/ unchanged", {}, config.assignments_dir(), {}, {}});
+  for (const fs::path& f : files) {
+    toml::table t = toml::parse_file(f.string());
+    Mutant m;
+    m.name = f.stem().string();
+    m.task = t["task"].value_or(std::string());
+    m.file = t["file"].value_or(std::string());
+    m.description = t["description"].value_or(std::string());
+    if (const toml::array* reps = t["replace"].as_array())
+      for (const toml::node& n : *reps) {
+        const toml::table& r = *n.as_table();
+        m.replacements.emplace_back(r["find"].value_or(std::string()), r["with"].value_or(std::string()));
+      }
+    if (m.task.empty() || m.file.empty() || m.replacements.empty()) {
+      std::cerr << "jelly-grade: " << f << ": a mutant needs task, file and at least one [[replace]]\n";
+      return 2;
+    }
+    m.dir = root / m.name / "submission";
+    fs::create_directories(m.dir);
+    for (const std::string& name : task_files())
+      fs::copy_file(config.solutions_dir() / name, m.dir / name, fs::copy_options::overwrite_existing);
+    std::string text = read_text(m.dir / m.file);
+    for (const auto& [find, with] : m.replacements) {
+      const auto at = text.find(find);
+      if (find.empty() || at == std::string::npos) {
+        std::cerr << "jelly-grade: " << f << ": \"" << find << "\" is not in solutions/" << m.file
+                  << " (the mutant no longer applies)\n";
+        return 2;
+      }
+      text.replace(at, find.size(), with);
+    }
+    std::ofstream(m.dir / m.file, std::ios::binary) << text;
+    list.push_back(std::move(m));
+  }
+  const int workers = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  GradeOptions per = options;
+  per.jobs = 1;
+  per.include_hidden = true;
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t i = next++;
+      if (i >= list.size()) return;
+      try {
+        list[i].report = grade_submission(config, book, list[i].dir, root / list[i].name / "work", per);
+      } catch (const std::exception& e) {
+        list[i].error = e.what();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      std::cerr << "  graded " << list[i].name << ": " << pts(list[i].report.score) << "\n";
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int i = 0; i < workers; ++i) threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+
+  auto task_score = [](const GradeReport& r, const std::string& id) {
+    for (const TaskResult& t : r.tasks)
+      if (t.spec->id == id) return t.score;
+    return 0.0;
+  };
+  const GradeReport& ref = list[0].report;
+  bool all_ok = true;
+  std::ostringstream table;
+  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Verdict |\n|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Mutant& m = list[i];
+    const GradeReport& r = m.report;
+    std::string verdict, own = "—", elsewhere, caught;
+    bool ok = m.error.empty();
+    if (!ok) verdict = "grader error: " + m.error;
+    if (ok && i == 0) {
+      ok = r.compiled && std::abs(r.score - r.max_score) < 1e-9;
+      own = pts(r.score) + " / " + pts(r.max_score);
+      verdict = ok ? "full marks ✓" : "NOT full marks ✗";
+      if (!ok)
+        for (const CaseResult& c : r.cases)
+          if (c.status == "failed") caught += c.spec->id + " ";
+    } else if (ok && i == 1) {
+      ok = r.compiled && r.score == 0.0;
+      own = pts(r.score) + " / " + pts(r.max_score);
+      verdict = ok ? "zero ✓" : "NOT zero ✗";
+      for (const CaseResult& c : r.cases)
+        if (c.status == "passed" && c.max_score > 0) caught += c.spec->id + " (passed!) ";
+    } else if (ok) {
+      const double mine = task_score(r, m.task), full = task_score(ref, m.task);
+      own = pts(mine) + " / " + pts(full);
+      const bool lost = r.compiled && mine < full - 1e-9;
+      bool leak = !r.compiled;
+      for (const TaskResult& t : r.tasks) {
+        if (t.spec->id == m.task) continue;
+        const double d = task_score(ref, t.spec->id) - t.score;
+        if (d > 1e-9) {
+          leak = true;
+          elsewhere += t.spec->id + " −" + pts(d) + " ";
+        }
+      }
+      for (const CaseResult& c : r.cases)
+        if (c.status == "failed" && c.spec->task == m.task) caught += c.spec->id + " ";
+      ok = lost && !leak;
+      verdict = ok ? "caught in its task only ✓" : !lost ? "NOT caught ✗" : "loses points elsewhere ✗";
+    }
+    if (elsewhere.empty()) elsewhere = "none";
+    all_ok = all_ok && ok;
+    table << "| " << m.name << " | " << (m.task.empty() ? "all" : m.task) << " | " << m.description << " | " << own
+          << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | " << verdict << " |\n";
+  }
+  std::cout << table.str();
+  if (!table_path.empty()) {
+    std::ofstream f(table_path);
+    f << "# Grader self-test: the mutation table\n\n"
+         "Generated by `jelly-grade mutants --table docs/mutation-table.md` (CTest `grader.mutants` runs the same\n"
+         "checks). Each mutant is a realistic mistake applied to a copy of `solutions/` (specs in\n"
+         "`grader/mutants/*.toml`) and graded with all tests, public and hidden. A mutant must lose points in\n"
+         "its own task and keep every point elsewhere; the reference must score full marks and the stubs zero.\n"
+         "\"Caught by\" lists the failing tests of the mutant's own task.\n\n"
+      << table.str();
+  }
+  std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n" : "jelly-grade: mutation self-test FAILED\n");
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace jelly::grade

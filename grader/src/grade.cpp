@@ -1,0 +1,304 @@
+#include "grade.hpp"
+
+#include <seccomp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <optional>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace jelly::grade {
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+// "element 13 (particle 4, y)" for arrays of 3-vectors.
+std::string element_name(std::size_t k, std::size_t n) {
+  static const char* axis[] = {"x", "y", "z"};
+  if (n == 1) return "";
+  if (n == 3) return std::string(" (") + axis[k] + ")";
+  if (n % 3 == 0) return " [particle " + std::to_string(k / 3) + ", " + axis[k % 3] + "]";
+  return " [" + std::to_string(k) + "]";
+}
+
+std::string describe_syscall_purpose(const std::string& name) {
+  if (name.find("open") != std::string::npos || name == "creat") return "open a file";
+  if (name.find("exec") != std::string::npos) return "start another program";
+  if (name == "fork" || name == "vfork" || name.find("clone") != std::string::npos) return "start a process or thread";
+  if (name == "socket" || name == "connect" || name == "bind") return "use the network";
+  if (name.find("unlink") != std::string::npos || name.find("rename") != std::string::npos ||
+      name.find("mkdir") != std::string::npos)
+    return "change files or folders";
+  if (name.find("kill") != std::string::npos) return "signal another process";
+  return "make a system call the grader does not allow";
+}
+
+// Judges one output; appends failures. Returns false on failure.
+bool judge(const std::string& name, const Json& mine, const Json& ref, const Rule& rule,
+           const std::map<std::string, Tolerance>& tols, std::vector<std::string>& failures) {
+  const std::string note = ref.value("note", std::string());
+  const std::string what = note.empty() ? name : name + " — " + note;
+  if (rule.kind == Rule::Kind::Info) return true;
+  const Json& r = ref.at("value");
+  if (mine.is_null() || !mine.contains("value")) {
+    failures.push_back(what + ": your code produced no value");
+    return false;
+  }
+  const Json& m = mine.at("value");
+  if (r.is_string()) {
+    if (m != r) {
+      failures.push_back(what + ": differs from the reference (expected " + r.get<std::string>() + ", got " +
+                         (m.is_string() ? m.get<std::string>() : m.dump()) + ")");
+      return false;
+    }
+    return true;
+  }
+  std::vector<double> a, b;
+  auto flatten = [](const Json& j, std::vector<double>& out) {
+    if (j.is_array())
+      for (const Json& e : j) out.push_back(e.is_number() ? e.get<double>() : std::nan(""));
+    else
+      out.push_back(j.is_number() ? j.get<double>() : std::nan(""));
+  };
+  flatten(m, a);
+  flatten(r, b);
+  if (rule.kind == Rule::Kind::Range) {
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (!(a[k] >= rule.lo && a[k] <= rule.hi)) {
+        failures.push_back(what + element_name(k, a.size()) + ": got " +
+                           (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity")) +
+                           ", expected between " + fmt(rule.lo) + " and " + fmt(rule.hi));
+        return false;
+      }
+    return true;
+  }
+  if (a.size() != b.size()) {
+    failures.push_back(what + ": expected " + std::to_string(b.size()) + " numbers, got " + std::to_string(a.size()));
+    return false;
+  }
+  const Tolerance& tol = tols.at(rule.tolerance);
+  std::size_t bad = 0, first = 0, worst = 0;
+  double worst_excess = -1.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const double allowed = tol.atol + tol.rtol * std::abs(b[k]);
+    const double diff = std::abs(a[k] - b[k]);
+    if (!std::isfinite(a[k]) || !(diff <= allowed)) {
+      if (bad == 0) first = k;
+      ++bad;
+      const double excess = std::isfinite(diff) ? diff / (allowed > 0 ? allowed : 1e-300) : INFINITY;
+      if (excess > worst_excess) worst_excess = excess, worst = k;
+    }
+  }
+  if (bad == 0) return true;
+  const std::size_t k = std::isfinite(a[first]) ? worst : first;
+  std::string msg = what + element_name(k, a.size()) + ": expected " + fmt(b[k]) + ", got " +
+                    (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity (not a number)"));
+  if (std::isfinite(a[k]))
+    msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " + fmt(tol.atol + tol.rtol * std::abs(b[k])) +
+           " by tolerance '" + tol.name + "')";
+  if (a.size() > 1) msg += "; " + std::to_string(bad) + " of " + std::to_string(a.size()) + " numbers differ";
+  failures.push_back(msg);
+  return false;
+}
+
+}  // namespace
+
+std::string syscall_name(int nr) {
+  char* name = seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, nr);
+  std::string s = name ? name : "syscall " + std::to_string(nr);
+  std::free(name);
+  return s;
+}
+
+ChildResult run_case(const fs::path& runner, const std::string& id, const Json* input, const fs::path& work_dir,
+                     double timeout_s, std::size_t memory_bytes, bool prepare) {
+  std::vector<std::string> argv = {runner.string(), "--case", id, "--result-fd", "3"};
+  if (input && !input->empty()) {
+    const fs::path in = work_dir / ("input-" + id + ".json");
+    std::ofstream(in) << input->dump();
+    argv.insert(argv.end(), {"--input", in.string()});
+  }
+  if (prepare) argv.push_back("--prepare");
+  Limits lim;
+  lim.timeout_s = timeout_s;
+  lim.memory_bytes = memory_bytes;
+  return run_child(argv, lim, work_dir);
+}
+
+GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, const fs::path& submission,
+                             const fs::path& work_dir, const GradeOptions& options) {
+  GradeReport rep;
+  rep.submission = submission.string();
+  rep.visibility = options.include_hidden ? "all" : "public";
+  fs::create_directories(work_dir);
+  const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+  // Select the cases and load their reference data (grader errors surface before any compiling).
+  const std::string digest = harness_digest(config);
+  std::vector<std::optional<Json>> refs;
+  for (const CaseSpec& c : book.cases) {
+    CaseResult r;
+    r.spec = &c;
+    std::optional<Json> ref;
+    if (c.hidden && !options.include_hidden) {
+      r.status = "skipped";
+    } else {
+      ref = load_reference(config, c);
+      if (!ref) {
+        if (!c.hidden)
+          throw std::runtime_error("reference data " + reference_path(config, c).string() +
+                                   " is missing; run `jelly-grade generate-reference`");
+        r.status = "skipped";
+      } else if (ref->value("format_version", 0) != kReferenceFormat) {
+        throw std::runtime_error(reference_path(config, c).string() + ": format_version " +
+                                 std::to_string(ref->value("format_version", 0)) + ", this grader reads " +
+                                 std::to_string(kReferenceFormat) + "; run `jelly-grade generate-reference`");
+      } else if (ref->value("harness_digest", std::string()) != digest) {
+        throw std::runtime_error(reference_path(config, c).string() +
+                                 " was generated from different case code (grader/runner changed); run "
+                                 "`jelly-grade generate-reference`");
+      }
+    }
+    rep.cases.push_back(std::move(r));
+    refs.push_back(std::move(ref));
+  }
+  const bool hidden_missing = std::any_of(rep.cases.begin(), rep.cases.end(), [&](const CaseResult& r) {
+    return r.status == "skipped" && r.spec->hidden && options.include_hidden;
+  });
+  if (hidden_missing)
+    rep.notes.push_back("hidden tests were not run: their reference data is not in this copy of the grader");
+  if (!options.include_hidden)
+    rep.notes.push_back("only the public tests were run (--visibility public); the final grade also has hidden tests");
+
+  // Build.
+  rep.build = build_submission(config, submission, work_dir / "build", jobs);
+  for (const std::string& n : rep.build.notes) rep.notes.push_back(n);
+  rep.compiled = rep.build.ok;
+
+  // Points: a task's points are shared by its selected cases in proportion to their weights.
+  const double scale = book.rubric.scale();
+  for (const TaskSpec& t : book.rubric.tasks) {
+    TaskResult tr;
+    tr.spec = &t;
+    rep.tasks.push_back(tr);
+  }
+  for (CaseResult& r : rep.cases) {
+    for (TaskResult& t : rep.tasks)
+      if (t.spec->id == r.spec->task) t.cases.push_back(&r);
+  }
+  for (TaskResult& t : rep.tasks) {
+    double wsum = 0.0;
+    for (CaseResult* c : t.cases)
+      if (c->status != "skipped") wsum += c->spec->weight;
+    t.max_score = wsum > 0 ? t.spec->points * scale : 0.0;
+    for (CaseResult* c : t.cases)
+      if (c->status != "skipped") c->max_score = t.max_score * c->spec->weight / wsum;
+  }
+
+  if (!rep.compiled) {
+    for (CaseResult& r : rep.cases)
+      if (r.status != "skipped") {
+        r.status = "failed";
+        r.failures.push_back("not run: your code did not compile (see the compiler errors)");
+      }
+  } else {
+    // The runner must know every case.
+    const auto start = std::chrono::steady_clock::now();
+    std::atomic<std::size_t> next{0};
+    std::mutex mutex;
+    auto worker = [&]() {
+      for (;;) {
+        const std::size_t i = next++;
+        if (i >= rep.cases.size()) return;
+        CaseResult& r = rep.cases[i];
+        if (r.status == "skipped") continue;
+        const Json& ref = *refs[i];
+        const TaskSpec* task = book.rubric.find(r.spec->task);
+        const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
+        const Json input = ref.contains("input") ? ref.at("input") : Json::object();
+        const double timeout = r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
+        const ChildResult c = run_case(rep.build.runner, r.spec->id, &input, work_dir, timeout, options.memory_bytes);
+        r.seconds = c.seconds;
+        r.reference = ref.at("outputs");
+        r.printed = c.out.substr(0, 2000);
+        if (!c.err.empty()) r.printed += (r.printed.empty() ? "" : "\n") + c.err.substr(0, 2000);
+        Json result;
+        bool parsed = false;
+        if (!c.result.empty()) {
+          try {
+            result = Json::parse(c.result);
+            parsed = true;
+          } catch (const std::exception&) {
+          }
+        }
+        std::string problem;
+        if (!c.started) problem = "the grader could not start your program: " + c.start_error;
+        else if (parsed && result.contains("forbidden_syscall")) {
+          const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
+          problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " + name + ")" + in_task +
+                    "; reading or writing files, starting programs and networking are not allowed while grading";
+        } else if (c.timed_out) {
+          problem = "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" + in_task;
+        } else if (c.output_flood) {
+          problem = "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
+        } else if (c.signal == SIGXCPU) {
+          problem = "used more than its CPU time limit (an infinite loop?)" + in_task;
+        } else if (c.signal != 0) {
+          problem = "crashed with " + describe_signal(c.signal) + in_task;
+        } else if (!parsed && c.exit_code == 0) {
+          problem = "your code ended the program before the test finished (exit() called?)" + in_task;
+        } else if (!parsed) {
+          problem = "the program ended with exit code " + std::to_string(c.exit_code) +
+                    " before the test finished (exit() called, or out of memory?)" + in_task;
+        } else if (result.contains("error")) {
+          std::string e = result["error"].get<std::string>();
+          if (e.find("bad_alloc") != std::string::npos) e += " (more than the memory limit of 1 GiB?)";
+          problem = e + in_task;
+        }
+        if (!problem.empty()) {
+          r.status = "failed";
+          r.failures.push_back(problem);
+          continue;
+        }
+        r.outputs = result.at("outputs");
+        bool ok = true;
+        for (const auto& [name, refout] : r.reference.items()) {
+          const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
+          ok = judge(name, mine, refout, r.spec->rule_for(name), book.tolerances, r.failures) && ok;
+        }
+        r.status = ok ? "passed" : "failed";
+        r.score = ok ? r.max_score : 0.0;
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
+    for (std::thread& t : threads) t.join();
+    rep.grading_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  for (TaskResult& t : rep.tasks) {
+    for (CaseResult* c : t.cases) t.score += c->score;
+    rep.score += t.score;
+    rep.max_score += t.max_score;
+  }
+  // Sums of scaled shares: round to 1e-9 so that full marks print as full marks.
+  auto tidy = [](double v) { return std::round(v * 1e9) / 1e9; };
+  for (TaskResult& t : rep.tasks) t.score = tidy(t.score), t.max_score = tidy(t.max_score);
+  rep.score = tidy(rep.score);
+  rep.max_score = tidy(rep.max_score);
+  return rep;
+}
+
+}  // namespace jelly::grade

@@ -1,0 +1,65 @@
+// Running the cases against a built runner and judging the outputs against the reference.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "build.hpp"
+#include "cases.hpp"
+#include "process.hpp"
+
+namespace jelly::grade {
+
+struct CaseResult {
+  const CaseSpec* spec = nullptr;
+  std::string status;        ///< "passed", "failed", or "skipped" (hidden data absent)
+  double max_score = 0.0;    ///< scaled points
+  double score = 0.0;
+  std::vector<std::string> failures;  ///< what failed and why, in the student's terms
+  std::string printed;       ///< an excerpt of what the student's code printed
+  Json outputs;              ///< the student's outputs (for plots)
+  Json reference;            ///< the reference outputs
+  double seconds = 0.0;
+};
+
+struct TaskResult {
+  const TaskSpec* spec = nullptr;
+  double max_score = 0.0;
+  double score = 0.0;
+  std::vector<CaseResult*> cases;
+};
+
+struct GradeOptions {
+  bool include_hidden = true;   ///< --visibility all
+  double timeout_s = 10.0;      ///< per case unless the case sets its own
+  int jobs = 0;                 ///< parallel cases (0: all cores)
+  std::size_t memory_bytes = 1ULL << 30;
+};
+
+struct GradeReport {
+  std::string submission;        ///< folder as given
+  bool compiled = false;
+  BuildResult build;
+  std::vector<CaseResult> cases; ///< in case-book order
+  std::vector<TaskResult> tasks; ///< in rubric order
+  double score = 0.0, max_score = 0.0;
+  std::vector<std::string> notes;
+  double grading_seconds = 0.0;  ///< running the cases (not compiling)
+  std::string visibility;        ///< "public" or "all"
+};
+
+/// Builds the submission's runner and runs every selected case. Throws std::runtime_error only
+/// for grader errors (missing or stale reference data, a case the runner does not know).
+GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
+                             const std::filesystem::path& submission, const std::filesystem::path& work_dir,
+                             const GradeOptions& options);
+
+/// Runs one case with a runner binary in the sandbox (also used by generate-reference).
+ChildResult run_case(const std::filesystem::path& runner, const std::string& id, const Json* input,
+                     const std::filesystem::path& work_dir, double timeout_s, std::size_t memory_bytes,
+                     bool prepare = false);
+
+/// Name of a system call number (for "your code tried to open a file").
+std::string syscall_name(int nr);
+
+}  // namespace jelly::grade

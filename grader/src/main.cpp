@@ -1,0 +1,142 @@
+// jelly-grade: the headless autograder (docs/grader.md).
+//
+//   jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]
+//               [--format terminal,gradescope,prairielearn,junit,markdown,html] [--timeout S]
+//               [--jobs N] [--verbose]
+//   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]
+//   jelly-grade generate-reference
+//   jelly-grade gradescope-zip OUT.zip
+//   jelly-grade prairielearn [--student DIR] [--results DIR]
+//   jelly-grade mutants [--table FILE] [--jobs N]
+// Common: [--config grade-config.json] [--rubric rubric.toml]
+//
+// Exit status: 0 when grading ran, whatever the score; 1 when a self-test (mutants) fails or a batch
+// had a grader error; 2 on grader errors (bad arguments, missing or stale reference data).
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "report.hpp"
+
+namespace {
+
+using namespace jelly::grade;
+
+int usage(const char* message = nullptr) {
+  if (message) std::cerr << "jelly-grade: " << message << "\n";
+  std::cerr << "usage:\n"
+               "  jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]\n"
+               "                    [--format terminal,gradescope,prairielearn,junit,markdown,html]\n"
+               "                    [--timeout S] [--jobs N] [--verbose]\n"
+               "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]\n"
+               "  jelly-grade generate-reference\n"
+               "  jelly-grade gradescope-zip OUT.zip\n"
+               "  jelly-grade prairielearn [--student DIR] [--results DIR]\n"
+               "  jelly-grade mutants [--table FILE] [--jobs N]\n"
+               "  common options: --config FILE (grade-config.json), --rubric FILE\n";
+  return 2;
+}
+
+std::set<std::string> split(const std::string& s) {
+  std::set<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.insert(item);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage();
+  const std::string command = argv[1];
+  std::vector<std::string> positional;
+  std::string config_path, rubric_path, out, visibility = "all", formats = "terminal,gradescope", table, student,
+                                             results;
+  double timeout = 10.0;
+  int jobs = 0;
+  bool verbose = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::runtime_error(a + " needs a value");
+      return argv[++i];
+    };
+    try {
+      if (a == "--config") config_path = value();
+      else if (a == "--rubric") rubric_path = value();
+      else if (a == "--out") out = value();
+      else if (a == "--visibility") visibility = value();
+      else if (a == "--format") formats = value();
+      else if (a == "--timeout") timeout = std::stod(value());
+      else if (a == "--jobs") jobs = std::stoi(value());
+      else if (a == "--table") table = value();
+      else if (a == "--student") student = value();
+      else if (a == "--results") results = value();
+      else if (a == "--verbose") verbose = true;
+      else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
+      else positional.push_back(a);
+    } catch (const std::exception& e) {
+      return usage(e.what());
+    }
+  }
+  if (visibility != "public" && visibility != "all") return usage("--visibility must be public or all");
+  if (!(timeout > 0)) return usage("--timeout must be > 0 seconds");
+  try {
+    const GradeConfig config = load_config(config_path);
+    const CaseBook book = load_case_book(config, rubric_path);
+    GradeOptions options;
+    options.include_hidden = visibility == "all";
+    options.timeout_s = timeout;
+    options.jobs = jobs;
+
+    if (command == "grade") {
+      if (positional.size() != 1) return usage("grade needs one SUBMISSION_DIR");
+      const std::set<std::string> f = split(formats);
+      for (const std::string& x : f)
+        if (!std::set<std::string>{"terminal", "gradescope", "prairielearn", "junit", "markdown", "html"}.count(x))
+          return usage(("unknown format " + x).c_str());
+      const fs::path out_dir = out.empty() ? fs::path("grade-results") : fs::path(out);
+      const fs::path work = out_dir / ".work";
+      fs::remove_all(work);
+      const GradeReport r = grade_submission(config, book, positional[0], work, options);
+      std::set<std::string> files = f;
+      files.erase("terminal");
+      if (!files.empty()) write_reports(r, book, out_dir, files);
+      fs::remove_all(work);
+      if (f.count("terminal")) std::cout << terminal_summary(r, verbose);
+      return 0;
+    }
+    if (command == "batch") {
+      if (positional.size() != 1 || out.empty()) return usage("batch needs SUBMISSIONS_DIR and --out DIR");
+      return batch(config, book, positional[0], out, jobs, options);
+    }
+    if (command == "generate-reference") return generate_reference(config, book);
+    if (command == "gradescope-zip") {
+      if (positional.size() != 1) return usage("gradescope-zip needs OUT.zip");
+      return gradescope_zip(config, positional[0]);
+    }
+    if (command == "prairielearn") {
+      const fs::path s = student.empty() ? fs::path("/grade/student") : fs::path(student);
+      const fs::path res = results.empty() ? fs::path("/grade/results") : fs::path(results);
+      fs::create_directories(res);
+      const fs::path work = res / ".work";
+      const GradeReport r = grade_submission(config, book, s, work, options);
+      fs::remove_all(work);
+      std::ofstream(res / "results.json") << prairielearn_results(r).dump(2) << "\n";
+      std::cout << terminal_summary(r, false);
+      return 0;
+    }
+    if (command == "mutants") return mutants(config, book, table, out, jobs, options);
+    return usage(("unknown command " + command).c_str());
+  } catch (const std::exception& e) {
+    std::cerr << "jelly-grade: " << e.what() << "\n";
+    return 2;
+  }
+}

@@ -1,0 +1,149 @@
+#include "process.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+
+namespace jelly::grade {
+
+namespace {
+
+void set_limit(int resource, rlim_t value) {
+  struct rlimit rl {value, value};
+  setrlimit(resource, &rl);
+}
+
+}  // namespace
+
+std::string describe_signal(int sig) {
+  switch (sig) {
+    case SIGSEGV: return "SIGSEGV (segmentation fault: an invalid memory access, e.g. an index out of range)";
+    case SIGABRT: return "SIGABRT (abort: a failed assert or std::terminate)";
+    case SIGFPE: return "SIGFPE (arithmetic error, e.g. an integer division by zero)";
+    case SIGBUS: return "SIGBUS (bus error: an invalid memory access)";
+    case SIGILL: return "SIGILL (illegal instruction)";
+    case SIGKILL: return "SIGKILL (killed)";
+    case SIGXCPU: return "SIGXCPU (CPU time limit exceeded)";
+    case SIGXFSZ: return "SIGXFSZ (tried to write a file)";
+    case SIGSYS: return "SIGSYS (a forbidden system call)";
+    default: return std::string("signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")";
+  }
+}
+
+ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
+                      const std::filesystem::path& cwd) {
+  ChildResult r;
+  int out_pipe[2], err_pipe[2], res_pipe[2] = {-1, -1};
+  if (pipe2(out_pipe, O_CLOEXEC) != 0 || pipe2(err_pipe, O_CLOEXEC) != 0 ||
+      (limits.result_pipe && pipe2(res_pipe, O_CLOEXEC) != 0)) {
+    r.start_error = std::string("pipe: ") + std::strerror(errno);
+    return r;
+  }
+  // Everything the child needs is prepared before fork (no allocation after it).
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const std::string dir = cwd.string();
+  const rlim_t cpu = static_cast<rlim_t>(limits.cpu_s > 0 ? limits.cpu_s : limits.timeout_s + 1.0);
+
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    r.start_error = std::string("fork: ") + std::strerror(errno);
+    return r;
+  }
+  if (pid == 0) {
+    setpgid(0, 0);
+    const int devnull = open("/dev/null", O_RDONLY);
+    if (devnull >= 0) dup2(devnull, 0);
+    dup2(out_pipe[1], 1);
+    dup2(err_pipe[1], 2);
+    if (limits.result_pipe) dup2(res_pipe[1], 3);
+    // Nothing else of the grader is inherited (other jobs' pipes, open files).
+    syscall(SYS_close_range, limits.result_pipe ? 4U : 3U, ~0U, 0U);
+    set_limit(RLIMIT_CORE, 0);
+    set_limit(RLIMIT_CPU, cpu);
+    if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, limits.memory_bytes);
+    if (limits.limit_files) set_limit(RLIMIT_FSIZE, limits.file_size_bytes);
+    if (!dir.empty() && chdir(dir.c_str()) != 0) _exit(126);
+    execv(args[0], args.data());
+    const char msg[] = "jelly-grade: cannot execute the program\n";
+    ssize_t ignored = write(2, msg, sizeof msg - 1);
+    (void)ignored;
+    _exit(127);
+  }
+  setpgid(pid, pid);  // also from the parent, so the group exists before any kill
+  r.started = true;
+  close(out_pipe[1]);
+  close(err_pipe[1]);
+  if (limits.result_pipe) close(res_pipe[1]);
+
+  struct Stream {
+    int fd;
+    std::string* keep;
+    std::size_t* count;
+    bool unlimited;
+  };
+  std::vector<Stream> streams = {{out_pipe[0], &r.out, &r.out_bytes, false},
+                                 {err_pipe[0], &r.err, &r.err_bytes, false}};
+  std::size_t result_bytes = 0;
+  if (limits.result_pipe) streams.push_back({res_pipe[0], &r.result, &result_bytes, true});
+  const auto deadline = start + std::chrono::duration<double>(limits.timeout_s);
+  bool killed = false;
+  char buf[65536];
+  while (!streams.empty()) {
+    std::vector<pollfd> fds;
+    for (const Stream& s : streams) fds.push_back({s.fd, POLLIN, 0});
+    const auto now = std::chrono::steady_clock::now();
+    int wait_ms = 1000;
+    if (!killed) {
+      const double left = std::chrono::duration<double>(deadline - now).count();
+      if (left <= 0.0) {
+        r.timed_out = true;
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+        killed = true;
+      } else {
+        wait_ms = static_cast<int>(left * 1000.0) + 1;
+      }
+    }
+    const int n = poll(fds.data(), fds.size(), wait_ms);
+    if (n < 0 && errno != EINTR) break;
+    for (std::size_t i = fds.size(); i-- > 0;) {
+      if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t got = read(fds[i].fd, buf, sizeof buf);
+      Stream& s = streams[i];
+      if (got <= 0) {
+        close(s.fd);
+        streams.erase(streams.begin() + static_cast<long>(i));
+        continue;
+      }
+      const std::size_t g = static_cast<std::size_t>(got);
+      *s.count += g;
+      const std::size_t cap = s.unlimited ? (16ULL << 20) : limits.keep_output;
+      if (s.keep->size() < cap) s.keep->append(buf, std::min(g, cap - s.keep->size()));
+      if (!killed && r.out_bytes + r.err_bytes > limits.kill_output) {
+        r.output_flood = true;
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+        killed = true;
+      }
+    }
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace jelly::grade

@@ -1,0 +1,296 @@
+#include "report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "plot.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+std::string pts(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
+
+std::string case_name(const CaseResult& c, const TaskSpec* t) {
+  return c.spec->task + (t ? " " + t->title : std::string()) + ": " + c.spec->title + " [" + c.spec->id + "]";
+}
+
+std::string case_output(const CaseResult& c) {
+  std::string o;
+  if (c.status == "passed") o = "Passed.\n";
+  for (std::size_t i = 0; i < c.failures.size() && i < 6; ++i) o += "- " + c.failures[i] + "\n";
+  if (c.failures.size() > 6) o += "- … and " + std::to_string(c.failures.size() - 6) + " more\n";
+  if (!c.printed.empty()) o += "\nYour code printed (first lines):\n" + c.printed.substr(0, 1500) + "\n";
+  return o;
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '&': o += "&amp;"; break;
+      case '"': o += "&quot;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += '?';
+        else o += c;
+    }
+  }
+  return o;
+}
+
+const TaskSpec* task_of(const GradeReport& r, const CaseResult& c) {
+  for (const TaskResult& t : r.tasks)
+    if (t.spec->id == c.spec->task) return t.spec;
+  return nullptr;
+}
+
+std::string base64(const std::string& in) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < in.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(in[i]) << 16) | (static_cast<unsigned char>(in[i + 1]) << 8) |
+                       static_cast<unsigned char>(in[i + 2]);
+    out += t[v >> 18], out += t[(v >> 12) & 63], out += t[(v >> 6) & 63], out += t[v & 63];
+  }
+  if (i < in.size()) {
+    unsigned v = static_cast<unsigned char>(in[i]) << 16;
+    if (i + 1 < in.size()) v |= static_cast<unsigned char>(in[i + 1]) << 8;
+    out += t[v >> 18], out += t[(v >> 12) & 63];
+    out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string terminal_summary(const GradeReport& r, bool verbose) {
+  std::ostringstream o;
+  o << "Jelly Lab autograder — " << r.submission << " (" << r.visibility << " tests)\n";
+  for (const std::string& n : r.notes) o << "  note: " << n << "\n";
+  if (!r.compiled) {
+    o << "\nYour code did not compile. The compiler said:\n" << r.build.errors << "\n";
+  }
+  o << "\n";
+  for (const TaskResult& t : r.tasks) {
+    std::size_t run = 0, passed = 0;
+    for (const CaseResult* c : t.cases)
+      if (c->status != "skipped") ++run, passed += c->status == "passed";
+    if (run == 0) continue;
+    const bool full = t.score >= t.max_score - 1e-9;
+    char line[200];
+    std::snprintf(line, sizeof line, "%-8s %-34s %6s / %-6s %s (%zu/%zu tests)\n", t.spec->id.c_str(),
+                  t.spec->title.c_str(), pts(t.score).c_str(), pts(t.max_score).c_str(),
+                  t.max_score == 0 ? (passed == run ? "ok  " : "FAIL") : full ? "PASS" : "FAIL", passed, run);
+    o << line;
+    for (const CaseResult* c : t.cases) {
+      if (c->status == "failed" && r.compiled) {
+        o << "           ✗ " << c->spec->title << " [" << c->spec->id << "]\n";
+        for (std::size_t i = 0; i < c->failures.size() && i < (verbose ? 20u : 2u); ++i)
+          o << "               " << c->failures[i] << "\n";
+        if (!verbose && c->failures.size() > 2) o << "               (" << c->failures.size() - 2 << " more; --verbose)\n";
+      } else if (verbose && c->status == "passed") {
+        o << "           ✓ " << c->spec->title << "\n";
+      }
+    }
+  }
+  o << "\nTotal: " << pts(r.score) << " / " << pts(r.max_score);
+  if (r.compiled) {
+    char t[64];
+    std::snprintf(t, sizeof t, "   (tests ran in %.1f s, compiling took %.1f s)", r.grading_seconds, r.build.seconds);
+    o << t;
+  }
+  o << "\n";
+  return o.str();
+}
+
+Json gradescope_results(const GradeReport& r, const CaseBook& book) {
+  Json j;
+  j["score"] = r.score;
+  j["execution_time"] = static_cast<long>(std::lround(r.grading_seconds + r.build.seconds));
+  std::string out = "Jelly Lab autograder: " + pts(r.score) + " / " + pts(r.max_score) + "\n";
+  for (const std::string& n : r.notes) out += "Note: " + n + "\n";
+  j["output"] = out;
+  j["stdout_visibility"] = "hidden";
+  Json tests = Json::array();
+  Json compile;
+  compile["name"] = "Compilation of your five task files";
+  compile["status"] = r.compiled ? "passed" : "failed";
+  compile["output"] = r.compiled ? std::string("Your code compiled.\n") : "Your code did not compile:\n" + r.build.errors;
+  compile["visibility"] = "visible";
+  tests.push_back(compile);
+  for (const CaseResult& c : r.cases) {
+    if (c.status == "skipped") continue;
+    Json t;
+    t["name"] = case_name(c, task_of(r, c));
+    t["score"] = std::round(c.score * 1e6) / 1e6;
+    t["max_score"] = std::round(c.max_score * 1e6) / 1e6;
+    t["status"] = c.status;
+    t["output"] = case_output(c);
+    t["visibility"] = c.spec->hidden ? book.rubric.hidden_visibility : std::string("visible");
+    const TaskSpec* ts = task_of(r, c);
+    t["tags"] = Json::array({c.spec->task, ts ? ts->category : std::string()});
+    tests.push_back(t);
+  }
+  j["tests"] = tests;
+  return j;
+}
+
+Json prairielearn_results(const GradeReport& r) {
+  Json j;
+  j["gradable"] = r.compiled;
+  j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
+  j["message"] = r.compiled ? "Graded " + pts(r.score) + " / " + pts(r.max_score) : std::string("Your code did not compile.");
+  std::string out;
+  for (const std::string& n : r.notes) out += "Note: " + n + "\n";
+  if (!r.compiled) out += r.build.errors;
+  j["output"] = out;
+  Json tests = Json::array();
+  for (const CaseResult& c : r.cases) {
+    if (c.status == "skipped") continue;
+    Json t;
+    t["name"] = case_name(c, task_of(r, c));
+    t["description"] = c.spec->title;
+    t["points"] = std::round(c.score * 1e6) / 1e6;
+    t["max_points"] = std::round(c.max_score * 1e6) / 1e6;
+    t["message"] = c.status == "passed" ? std::string("Passed") : (c.failures.empty() ? std::string("Failed") : c.failures.front());
+    t["output"] = case_output(c);
+    tests.push_back(t);
+  }
+  j["tests"] = tests;
+  const std::string svg = com_plot_svg(r);
+  j["images"] = Json::array();
+  if (!svg.empty())
+    j["images"].push_back({{"label", "Centre-of-mass height, course scene: yours and the reference"},
+                           {"url", "data:image/svg+xml;base64," + base64(svg)}});
+  return j;
+}
+
+std::string junit_xml(const GradeReport& r) {
+  std::ostringstream o;
+  o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"jelly-grade\">\n";
+  o << "  <testsuite name=\"compile\" tests=\"1\" failures=\"" << (r.compiled ? 0 : 1) << "\">\n"
+    << "    <testcase classname=\"compile\" name=\"compilation\">";
+  if (!r.compiled) o << "<failure message=\"did not compile\">" << xml_escape(r.build.errors) << "</failure>";
+  o << "</testcase>\n  </testsuite>\n";
+  for (const TaskResult& t : r.tasks) {
+    std::size_t n = 0, failed = 0;
+    for (const CaseResult* c : t.cases)
+      if (c->status != "skipped") ++n, failed += c->status == "failed";
+    if (n == 0) continue;
+    o << "  <testsuite name=\"" << xml_escape(t.spec->id + " " + t.spec->title) << "\" tests=\"" << n
+      << "\" failures=\"" << failed << "\">\n";
+    for (const CaseResult* c : t.cases) {
+      if (c->status == "skipped") continue;
+      o << "    <testcase classname=\"" << xml_escape(t.spec->id) << "\" name=\"" << xml_escape(c->spec->id) << "\">";
+      if (c->status == "failed")
+        o << "<failure message=\"" << xml_escape(c->failures.empty() ? "failed" : c->failures.front()) << "\">"
+          << xml_escape(case_output(*c)) << "</failure>";
+      o << "</testcase>\n";
+    }
+    o << "  </testsuite>\n";
+  }
+  o << "</testsuites>\n";
+  return o.str();
+}
+
+std::string com_plot_svg(const GradeReport& r) {
+  for (const CaseResult& c : r.cases) {
+    if (c.spec->id != "a1.course.scene" || c.reference.is_null()) continue;
+    auto vec = [](const Json& out, const char* key) {
+      std::vector<double> v;
+      if (out.is_object() && out.contains(key))
+        for (const Json& e : out[key]["value"]) v.push_back(e.is_number() ? e.get<double>() : NAN);
+      return v;
+    };
+    std::vector<Series> s;
+    s.push_back({"reference", "#1f77b4", vec(c.reference, "com_time"), vec(c.reference, "com_y"), false});
+    if (!c.outputs.is_null())
+      s.push_back({"yours", "#d62728", vec(c.outputs, "com_time"), vec(c.outputs, "com_y"), true});
+    return svg_plot("Course scene: centre-of-mass height", "time [s]", "height [m]", s);
+  }
+  return "";
+}
+
+std::string markdown_report(const GradeReport& r) {
+  std::ostringstream o;
+  o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score) << " / "
+    << pts(r.max_score) << "** (" << r.visibility << " tests)\n\n";
+  for (const std::string& n : r.notes) o << "> " << n << "\n\n";
+  if (!r.compiled) o << "## Your code did not compile\n\n```\n" << r.build.errors << "```\n\n";
+  o << "| Task | Points | Tests passed |\n|---|---|---|\n";
+  for (const TaskResult& t : r.tasks) {
+    std::size_t n = 0, p = 0;
+    for (const CaseResult* c : t.cases)
+      if (c->status != "skipped") ++n, p += c->status == "passed";
+    if (n) o << "| " << t.spec->id << " " << t.spec->title << " | " << pts(t.score) << " / " << pts(t.max_score)
+             << " | " << p << "/" << n << " |\n";
+  }
+  o << "\n## Failed tests\n\n";
+  for (const CaseResult& c : r.cases)
+    if (c.status == "failed") {
+      o << "### " << c.spec->id << " — " << c.spec->title << "\n\n";
+      for (const std::string& f : c.failures) o << "- " << f << "\n";
+      o << "\n";
+    }
+  if (!com_plot_svg(r).empty())
+    o << "## Course scene\n\n![centre-of-mass height, yours against the reference](com-height.svg)\n\n"
+      << "Frames of the two runs side by side are not included: this grader has no renderer.\n";
+  return o.str();
+}
+
+std::string html_report(const GradeReport& r) {
+  std::ostringstream o;
+  o << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab grading report</title>"
+       "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
+       ".fail{color:#b00}.pass{color:#070}</style></head><body>\n";
+  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>" << pts(r.score) << " / "
+    << pts(r.max_score) << "</b></p>\n";
+  for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
+  if (!r.compiled) o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
+  o << "<table><tr><th>Task</th><th>Points</th><th>Test</th><th>Result</th></tr>\n";
+  for (const TaskResult& t : r.tasks)
+    for (const CaseResult* c : t.cases) {
+      if (c->status == "skipped") continue;
+      o << "<tr><td>" << xml_escape(t.spec->id + " " + t.spec->title) << "</td><td>" << pts(c->score) << " / "
+        << pts(c->max_score) << "</td><td>" << xml_escape(c->spec->title) << "</td><td class=\""
+        << (c->status == "passed" ? "pass\">passed" : "fail\">failed");
+      for (const std::string& f : c->failures) o << "<br>" << xml_escape(f);
+      o << "</td></tr>\n";
+    }
+  o << "</table>\n";
+  const std::string svg = com_plot_svg(r);
+  if (!svg.empty()) o << "<h2>Course scene</h2>\n" << svg;
+  o << "</body></html>\n";
+  return o.str();
+}
+
+void write_reports(const GradeReport& r, const CaseBook& book, const std::filesystem::path& out,
+                   const std::set<std::string>& formats) {
+  std::filesystem::create_directories(out);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream f(out / name, std::ios::binary);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + (out / name).string());
+  };
+  if (formats.count("gradescope")) write("results.json", gradescope_results(r, book).dump(2) + "\n");
+  if (formats.count("prairielearn")) write("prairielearn.json", prairielearn_results(r).dump(2) + "\n");
+  if (formats.count("junit")) write("junit.xml", junit_xml(r));
+  if (formats.count("markdown")) {
+    write("report.md", markdown_report(r));
+    const std::string svg = com_plot_svg(r);
+    if (!svg.empty()) write("com-height.svg", svg);
+  }
+  if (formats.count("html")) write("report.html", html_report(r));
+}
+
+}  // namespace jelly::grade

@@ -1,0 +1,28 @@
+// Every output format of a grading run: terminal summary, Gradescope results.json, PrairieLearn
+// results.json, JUnit XML, Markdown and HTML reports (with the centre-of-mass plot).
+#pragma once
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "grade.hpp"
+
+namespace jelly::grade {
+
+std::string terminal_summary(const GradeReport& r, bool verbose);
+Json gradescope_results(const GradeReport& r, const CaseBook& book);
+Json prairielearn_results(const GradeReport& r);
+std::string junit_xml(const GradeReport& r);
+/// Markdown; the plot is written next to it as com-height.svg.
+std::string markdown_report(const GradeReport& r);
+std::string html_report(const GradeReport& r);
+/// The centre-of-mass height plot (student against reference) of the course scene, or "".
+std::string com_plot_svg(const GradeReport& r);
+
+/// Writes the requested formats into `out` (created): results.json (gradescope),
+/// prairielearn.json, junit.xml, report.md (+ com-height.svg), report.html.
+void write_reports(const GradeReport& r, const CaseBook& book, const std::filesystem::path& out,
+                   const std::set<std::string>& formats);
+
+}  // namespace jelly::grade
