@@ -1,0 +1,259 @@
+// Tests of jelly-grade as a user runs it: the reference scores full marks, the stubs zero, hostile
+// submissions fail their tests with a clear message while every other test still runs, results
+// are reproducible, and the Gradescope / PrairieLearn / JUnit outputs have the documented shape.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+const fs::path kSource = JELLY_SOURCE_DIR;
+const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader";
+
+struct Cmd {
+  int status = -1;
+  std::string out;
+};
+
+Cmd run(const std::string& args) {
+  const std::string cmd = std::string(JELLY_GRADE_EXE) + " " + args + " 2>&1";
+  Cmd r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+Json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  EXPECT_TRUE(in) << p;
+  return Json::parse(in);
+}
+
+// A submission folder: the reference files, with the given hostile files laid over them.
+fs::path submission(const std::string& name, const fs::path& overlay = {}) {
+  const fs::path dir = kWork / "submissions" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir / "nested" / "src");
+  for (const char* f : {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"})
+    fs::copy_file(kSource / "solutions" / f, dir / "nested" / "src" / f);
+  if (!overlay.empty())
+    for (const auto& e : fs::directory_iterator(overlay))
+      fs::copy_file(e.path(), dir / "nested" / "src" / e.path().filename(), fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "README.txt") << "not graded\n";
+  return dir;
+}
+
+Json grade(const fs::path& sub, const std::string& name, const std::string& extra = "") {
+  const fs::path out = kWork / "out" / name;
+  fs::remove_all(out);
+  const Cmd r = run("grade " + sub.string() + " --out " + out.string() +
+                    " --format terminal,gradescope,prairielearn,junit,markdown,html " + extra);
+  EXPECT_EQ(r.status, 0) << r.out;
+  return read_json(out / "results.json");
+}
+
+const Json* find_test(const Json& results, const std::string& id) {
+  for (const Json& t : results["tests"])
+    if (t["name"].get<std::string>().find("[" + id + "]") != std::string::npos) return &t;
+  return nullptr;
+}
+
+// Task score from the Gradescope tests (tag 0 is the task id).
+double task_score(const Json& results, const std::string& task) {
+  double s = 0;
+  for (const Json& t : results["tests"])
+    if (t.contains("tags") && t["tags"][0] == task) s += t["score"].get<double>();
+  return s;
+}
+
+void check_gradescope_schema(const Json& j) {
+  ASSERT_TRUE(j.is_object());
+  ASSERT_TRUE(j["score"].is_number());
+  ASSERT_TRUE(j["execution_time"].is_number());
+  ASSERT_TRUE(j["tests"].is_array());
+  const std::set<std::string> vis = {"hidden", "after_due_date", "after_published", "visible"};
+  for (const Json& t : j["tests"]) {
+    ASSERT_TRUE(t["name"].is_string());
+    ASSERT_TRUE(t["output"].is_string());
+    ASSERT_TRUE(t["status"] == "passed" || t["status"] == "failed") << t.dump();
+    ASSERT_TRUE(vis.count(t["visibility"].get<std::string>()));
+    if (t.contains("score")) {
+      ASSERT_TRUE(t["score"].is_number());
+      ASSERT_TRUE(t["max_score"].is_number());
+      EXPECT_LE(t["score"].get<double>(), t["max_score"].get<double>() + 1e-9);
+    }
+  }
+}
+
+void check_prairielearn_schema(const Json& j) {
+  ASSERT_TRUE(j["gradable"].is_boolean());
+  ASSERT_TRUE(j["score"].is_number());
+  EXPECT_GE(j["score"].get<double>(), 0.0);
+  EXPECT_LE(j["score"].get<double>(), 1.0);
+  ASSERT_TRUE(j["tests"].is_array());
+  for (const Json& t : j["tests"]) {
+    ASSERT_TRUE(t["name"].is_string());
+    ASSERT_TRUE(t["points"].is_number());
+    ASSERT_TRUE(t["max_points"].is_number());
+  }
+  ASSERT_TRUE(j["images"].is_array());
+  for (const Json& i : j["images"]) {
+    ASSERT_TRUE(i["label"].is_string());
+    ASSERT_EQ(i["url"].get<std::string>().rfind("data:image/", 0), 0u);
+  }
+}
+
+}  // namespace
+
+TEST(Grader, ReferenceScoresFullMarksAndOutputsHaveTheirSchemas) {
+  const Json r = grade(submission("reference"), "reference");
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
+  for (const Json& t : r["tests"]) EXPECT_EQ(t["status"], "passed") << t["name"] << "\n" << t["output"];
+  check_gradescope_schema(r);
+  const fs::path out = kWork / "out" / "reference";
+  check_prairielearn_schema(read_json(out / "prairielearn.json"));
+  EXPECT_EQ(read_json(out / "prairielearn.json")["score"].get<double>(), 1.0);
+  std::ifstream junit(out / "junit.xml");
+  std::stringstream x;
+  x << junit.rdbuf();
+  EXPECT_NE(x.str().find("<testsuites"), std::string::npos);
+  EXPECT_EQ(x.str().find("<failure"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "report.md"));
+  EXPECT_TRUE(fs::exists(out / "com-height.svg"));
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+}
+
+TEST(Grader, StubsScoreZeroWithoutCrashing) {
+  const Json r = grade(kSource / "assignments", "stubs");
+  EXPECT_EQ(r["score"].get<double>(), 0.0);
+  check_gradescope_schema(r);
+  for (const Json& t : r["tests"]) {
+    const std::string o = t["output"];
+    EXPECT_EQ(o.find("crashed"), std::string::npos) << t["name"] << o;
+    EXPECT_EQ(o.find("took longer"), std::string::npos) << t["name"] << o;
+  }
+}
+
+TEST(Grader, TwoRunsGiveIdenticalResults) {
+  const fs::path sub = submission("determinism");
+  Json a = grade(sub, "det-a"), b = grade(sub, "det-b");
+  a.erase("execution_time");
+  b.erase("execution_time");
+  EXPECT_EQ(a.dump(), b.dump());
+}
+
+TEST(Grader, PublicVisibilityRunsOnlyPublicTests) {
+  const Json r = grade(submission("public"), "public", "--visibility public");
+  EXPECT_GT(r["score"].get<double>(), 0.0);
+  EXPECT_LT(r["score"].get<double>(), 80.0 + 1e-9);
+  for (const Json& t : r["tests"]) EXPECT_EQ(t["visibility"], "visible") << t["name"];
+  EXPECT_EQ(find_test(r, "a1.t4.spring_force.random"), nullptr);
+}
+
+struct Hostile {
+  const char* name;
+  const char* case_id;         // a test of the attacked task
+  const char* message;         // what its output must say
+  const char* file_tasks;      // the tasks of the attacked file ("A1.T1 A1.T2 "): only these may lose points
+};
+
+class HostileSubmission : public ::testing::TestWithParam<Hostile> {};
+
+TEST_P(HostileSubmission, FailsItsTestsWithAClearMessageAndTheRestStillRun) {
+  const Hostile h = GetParam();
+  fs::remove("/tmp/jelly-grade-hostile-was-here");
+  const Json r = grade(submission(h.name, kSource / "grader" / "tests" / "hostile" / h.name), h.name, "--timeout 3");
+  check_gradescope_schema(r);
+  const Json* t = find_test(r, h.case_id);
+  ASSERT_NE(t, nullptr) << r.dump(1);
+  EXPECT_EQ((*t)["status"], "failed");
+  EXPECT_NE((*t)["output"].get<std::string>().find(h.message), std::string::npos) << (*t)["output"];
+  // The other files' tasks still ran and kept their points.
+  for (const char* task : {"A1.T1", "A1.T4", "A1.T6", "A1.T8", "A1.T13"}) {
+    if (std::string(h.file_tasks).find(std::string(task) + " ") != std::string::npos) continue;
+    EXPECT_GT(task_score(r, task), 0.0) << task << " lost its points in " << h.name;
+  }
+  EXPECT_FALSE(fs::exists("/tmp/jelly-grade-hostile-was-here"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Grader, HostileSubmission,
+    ::testing::Values(
+        Hostile{"segfault", "a1.t4.spring_force.values", "crashed with SIGSEGV", "A1.T4 A1.T5 "},
+        Hostile{"infinite_loop", "a1.t13.rk4.free_fall", "took longer than 3 s", "A1.T10 A1.T11 A1.T12 A1.T13 "},
+        Hostile{"exit_in_function", "a1.t6.collide_plane.eps", "exit() called?", "A1.T6 A1.T7 "},
+        Hostile{"huge_output", "a1.t1.structural.n3", "printed more than 64 MiB", "A1.T1 A1.T2 A1.T3 "},
+        Hostile{"read_reference", "a1.t8.contact_plane.eps", "tried to open a file", "A1.T8 A1.T9 "},
+        Hostile{"write_outside", "a1.t2.shear.n3", "tried to open a file", "A1.T1 A1.T2 A1.T3 "}),
+    [](const ::testing::TestParamInfo<Hostile>& i) { return std::string(i.param.name); });
+
+TEST(Grader, SubmissionThatDoesNotCompileGetsTheErrorsAndZero) {
+  const Json r = grade(submission("no_compile", kSource / "grader" / "tests" / "hostile" / "no_compile"), "no_compile");
+  EXPECT_EQ(r["score"].get<double>(), 0.0);
+  const Json& compile = r["tests"][0];
+  EXPECT_EQ(compile["status"], "failed");
+  const std::string o = compile["output"];
+  EXPECT_NE(o.find("nested/src/integrators.cpp:"), std::string::npos) << o;  // path as in the submission
+  EXPECT_NE(o.find("error"), std::string::npos) << o;
+}
+
+TEST(Grader, IncludingTheHiddenDataIsRefusedBeforeCompiling) {
+  const Json r = grade(submission("include_hidden", kSource / "grader" / "tests" / "hostile" / "include_hidden"),
+                       "include_hidden");
+  EXPECT_EQ(r["score"].get<double>(), 0.0);
+  const std::string o = r["tests"][0]["output"];
+  EXPECT_NE(o.find("is not allowed in a graded file"), std::string::npos) << o;
+  EXPECT_EQ(o.find("format_version"), std::string::npos) << "hidden data leaked: " << o;
+}
+
+TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
+  const fs::path dir = kWork / "batch";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "in");
+  fs::copy(submission("batch-ref"), dir / "in" / "alice", fs::copy_options::recursive);
+  fs::copy(kSource / "assignments", dir / "in" / "bob", fs::copy_options::recursive);
+  const Cmd r = run("batch " + (dir / "in").string() + " --out " + (dir / "out").string() + " --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream csv(dir / "out" / "scores.csv");
+  std::string header, alice, bob;
+  std::getline(csv, header);
+  std::getline(csv, alice);
+  std::getline(csv, bob);
+  EXPECT_EQ(header.rfind("student,score,max_score,compiled,A1.T1", 0), 0u) << header;
+  EXPECT_EQ(alice.rfind("alice,80.00,80.00,1", 0), 0u) << alice;
+  EXPECT_EQ(bob.rfind("bob,0.00,80.00,1", 0), 0u) << bob;
+  EXPECT_TRUE(fs::exists(dir / "out" / "alice" / "results.json"));
+}
+
+TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
+  const fs::path zip = kWork / "autograder.zip";
+  const Cmd r = run("gradescope-zip " + zip.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  FILE* p = popen(("unzip -Z1 " + zip.string()).c_str(), "r");
+  std::string list;
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) list.append(buf, n);
+  pclose(p);
+  EXPECT_NE(list.find("setup.sh\n"), std::string::npos);
+  EXPECT_NE(list.find("run_autograder\n"), std::string::npos);
+  EXPECT_NE(list.find("source/grader/data/hidden/"), std::string::npos);
+  EXPECT_EQ(list.find("solutions/"), std::string::npos);
+  EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
+}
