@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "jelly/auto_step.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
@@ -27,6 +28,9 @@ options:
                         --set body.center=-5,11,0   --set springs.shear.ks=5000
                         --set terrain.floor.restitution=0.5   --set gravity.enabled=false
                       `jelly params SCENE` lists every key with its unit, range and meaning.
+  --auto-dt           choose the step from the stability estimate (as simulation.auto_dt = true):
+                      the largest h ≤ the scene's dt that is at most half of the integrator's
+                      linearised limit, with whole substeps per 1/60 s frame; prints the choice
   --every K           record every K-th step (default: 60 frames per simulated second,
                       i.e. K = round(1 / (60 h)), at least 1); step 0 is always recorded
   --out FILE.csv      trajectory: frame,time,particle,x,y,z,vx,vy,vz (one row per particle per frame)
@@ -49,7 +53,7 @@ stability detector; 1 unexpected failure (e.g. an output file could not be writt
 int run_command(int argc, char** argv) {
   const Args args(argc, argv, 2,
                   {"--integrator", "--dt", "--duration", "--set", "--every", "--out", "--summary"},
-                  {"--help", "--quiet", "--no-detector"});
+                  {"--help", "--quiet", "--no-detector", "--auto-dt"});
   if (args.has("--help")) {
     std::fputs(kRunHelp, stdout);
     return kExitOk;
@@ -74,16 +78,27 @@ int run_command(int argc, char** argv) {
   if (!quiet) print_missing_tasks_note();
 
   std::unique_ptr<Simulator> sim;
+  std::optional<AutoStep> auto_step;
   try {
     Simulator::Options options(scene->integrator, scene->dt);
     options.detect_instability = !args.has("--no-detector");
-    sim = std::make_unique<Simulator>(build_world(*scene, linked_tasks()), options);
+    std::unique_ptr<World> world = build_world(*scene, linked_tasks());
+    if (args.has("--auto-dt") || scene->auto_dt) {
+      // One frame = 1/60 s, the default recording interval; the scene's dt is the largest step.
+      auto_step = choose_step(*world, world->state(), scene->integrator, 1.0 / 60.0, scene->dt);
+      options.dt = auto_step->chosen_h;
+      std::printf("%s\n", auto_step->message().c_str());  // stdout, even with --quiet: what ran
+    }
+    sim = std::make_unique<Simulator>(std::move(world), options);
   } catch (const std::exception& e) {
     // A student's spring builder that produced a bad spring ends up here, with its name.
     std::fprintf(stderr, "jelly run: %s\n", e.what());
     return kExitUsage;
   }
-  const long k = every ? *every : std::max(1L, std::lround(1.0 / (60.0 * scene->dt)));
+  const double h = sim->options().dt;
+  const long k = every ? *every
+                       : auto_step ? auto_step->substeps_per_frame
+                                   : std::max(1L, std::lround(1.0 / (60.0 * h)));
 
   // Outputs are opened only now, after every input was validated: bad input writes nothing.
   std::unique_ptr<CsvWriter> out, summary;
@@ -125,7 +140,7 @@ int run_command(int argc, char** argv) {
         "  final centre of mass (%.6f, %.6f, %.6f), largest speed %.4g m/s\n"
         "  energy: kinetic %.6g J, gravitational %.6g J, spring %.6g J\n",
         scene->name.c_str(), sim->steps(), std::string(to_string(scene->integrator)).c_str(),
-        scene->dt, sim->time(), wall, wall > 0 ? static_cast<double>(sim->steps()) / wall : 0.0,
+        h, sim->time(), wall, wall > 0 ? static_cast<double>(sim->steps()) / wall : 0.0,
         static_cast<std::size_t>(sim->state().size()), sim->world().spring_count(),
         sim->world().terrains().size(), sim->evaluations(), end.com.x(), end.com.y(),
         end.com.z(), end.max_speed, end.kinetic, end.potential, end.spring);

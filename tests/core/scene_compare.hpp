@@ -22,6 +22,7 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
   JELLY_CMP(static_cast<int>(a.integrator), static_cast<int>(b.integrator), "integrator", i);
   JELLY_CMP(a.dt, b.dt, "dt", num);
   JELLY_CMP(a.duration, b.duration, "duration", num);
+  JELLY_CMP(a.auto_dt, b.auto_dt, "auto_dt", i);
   JELLY_CMP(a.gravity.has_value(), b.gravity.has_value(), "gravity present", i);
   if (a.gravity) JELLY_CMP(*a.gravity, *b.gravity, "gravity", v3);
   JELLY_CMP(static_cast<int>(a.body_kind), static_cast<int>(b.body_kind), "body kind", i);

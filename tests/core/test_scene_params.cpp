@@ -36,9 +36,10 @@ TEST(SceneParams, CourseSceneListsItsKeysInAStableOrder) {
   const SceneSpec s = scene("course-2023.toml");
   const std::vector<std::string> keys = keys_of(s);
   ASSERT_GE(keys.size(), 10u);
-  const std::vector<std::string> head(keys.begin(), keys.begin() + 7);
+  const std::vector<std::string> head(keys.begin(), keys.begin() + 8);
   EXPECT_EQ(head, (std::vector<std::string>{"scene.name", "scene.description", "simulation.integrator",
-                                            "simulation.dt", "simulation.duration", "gravity.enabled",
+                                            "simulation.dt", "simulation.duration",
+                                            "simulation.auto_dt", "gravity.enabled",
                                             "gravity.acceleration"}));
   for (const char* k : {"body.type", "body.n", "body.edge", "body.mass", "body.center", "body.velocity",
                         "body.rotation_axis", "body.rotation_degrees", "springs.structural.enabled",
@@ -281,6 +282,34 @@ TEST(SceneParams, DeclaredDefaultsAreTheDefaultsTheCodeUses) {
   SceneSpec g;
   ASSERT_EQ(set_parameter(g, "gravity.enabled", "true"), std::nullopt);
   EXPECT_EQ(get_parameter(g, "gravity.acceleration"), find_parameter(g, "gravity.acceleration")->default_text);
+}
+
+}  // namespace
+}  // namespace jelly
+
+namespace jelly {
+namespace {
+
+TEST(SceneParams, AutoDtIsDeclaredSetAndWrittenBack) {
+  SceneSpec s = scene("course-2023.toml");
+  EXPECT_FALSE(s.auto_dt);  // the course scenes keep their fixed step
+  EXPECT_EQ(get_parameter(s, "simulation.auto_dt"), "false");
+  EXPECT_EQ(find_parameter(s, "simulation.auto_dt")->type, ParamType::Bool);
+  EXPECT_EQ(find_parameter(s, "simulation.auto_dt")->default_text, "false");
+  ASSERT_EQ(set_parameter(s, "simulation.auto_dt", "true"), std::nullopt);
+  EXPECT_TRUE(s.auto_dt);
+  const auto err = set_parameter(s, "simulation.auto_dt", "yes please");
+  ASSERT_TRUE(err);
+  EXPECT_EQ(err->key, "simulation.auto_dt");
+  EXPECT_TRUE(s.auto_dt) << "a rejected value leaves the scene as it was";
+  const SceneResult again = parse_scene(to_toml(s), "round-trip");
+  ASSERT_TRUE(again) << again.error->text();
+  EXPECT_TRUE(again.scene->auto_dt);
+  const SceneResult from_text =
+      parse_scene("[simulation]\nauto_dt = true\ndt = 0.005\n[body]\ntype = \"cube\"\n", "inline");
+  ASSERT_TRUE(from_text) << from_text.error->text();
+  EXPECT_TRUE(from_text.scene->auto_dt);
+  EXPECT_EQ(from_text.scene->dt, 0.005);
 }
 
 }  // namespace

@@ -137,6 +137,11 @@ const std::vector<Decl>& global_decls() {
            "Simulated time a run covers",
            [](const SceneSpec& s, const Ctx&) -> Value { return s.duration; },
            [](SceneSpec& s, const Ctx&, const Value& v) { s.duration = real(v); }),
+      make("simulation.auto_dt", Scope::Always, ValueKind::Bool, "", "false", kAny,
+           "Choose the step automatically: the largest h <= dt that the stability estimate allows "
+           "for the integrator (half its limit), with whole substeps per 1/60 s frame",
+           [](const SceneSpec& s, const Ctx&) -> Value { return s.auto_dt; },
+           [](SceneSpec& s, const Ctx&, const Value& v) { s.auto_dt = flag(v); }),
       // [gravity]
       make("gravity.enabled", Scope::Always, ValueKind::Bool, "", "false", kAny,
            "Whether the scene has gravity (a [gravity] table); true adds it with the default "

@@ -61,11 +61,14 @@ double amplification(IntegratorKind kind, Complex z) {
 
 // Spectral radius of symplectic Euler on x'' = −ω² x − c x'.
 double symplectic_radius(double h, double omega, double c) {
-  const double a11 = 1.0 - h * h * omega * omega, a12 = h * (1.0 - h * c);
-  const double a21 = -h * omega * omega, a22 = 1.0 - h * c;
-  const double tr = a11 + a22, det = a11 * a22 - a12 * a21;
-  const Complex disc = std::sqrt(Complex(tr * tr - 4.0 * det, 0.0));
-  return std::max(std::abs((tr + disc) / 2.0), std::abs((tr - disc) / 2.0));
+  // One-step matrix [[1 − a, h(1 − b)], [−hω², 1 − b]] with a = h²ω², b = hc: trace 2 − a − b,
+  // determinant 1 − b. The discriminant tr² − 4 det equals (a + b)² − 4a; computed that way it
+  // does not cancel the 4s (which made small steps look unstable through rounding).
+  const double a = h * h * omega * omega, b = h * c;
+  const double tr = 2.0 - a - b, det = 1.0 - b;
+  const double disc2 = (a + b) * (a + b) - 4.0 * a;
+  if (disc2 < 0.0) return std::sqrt(std::abs(det));  // complex pair: |λ|² = det
+  return 0.5 * (std::abs(tr) + std::sqrt(disc2));
 }
 
 bool stable_at(IntegratorKind kind, double h, const std::vector<double>& omegas, double tau) {

@@ -46,6 +46,7 @@ struct SceneSpec {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;  ///< simulation.integrator
   double dt = 0.001;        ///< simulation.dt [s]
   double duration = 10.0;   ///< simulation.duration [s]
+  bool auto_dt = false;     ///< simulation.auto_dt: derive a stable step ≤ dt (jelly/auto_step.hpp)
 
   std::optional<Vec3> gravity;  ///< gravity.acceleration; nullopt: no gravity term at all
 

@@ -1,0 +1,215 @@
+// The sweep of `jelly study accuracy`: runs, reference, errors, timings, observed orders.
+#include "study_accuracy.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "jelly/simulator.hpp"
+#include "jelly/task_table.hpp"
+
+namespace jelly::cli::study {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The whole number k with k·h = interval, or throws naming both.
+long steps_per(double interval, double h, const char* what) {
+  const double k = interval / h;
+  const long r = std::lround(k);
+  if (r < 1 || std::abs(k - static_cast<double>(r)) > 1e-6 * k) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s %g s is not a whole multiple of the step %g s", what,
+                  interval, h);
+    throw std::invalid_argument(buf);
+  }
+  return r;
+}
+
+std::string loadavg() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  if (!(in >> a >> b >> c)) return "unknown";
+  return a + " " + b + " " + c;
+}
+
+/// What one run produces besides its row: the samples (reference runs only).
+struct RunOutput {
+  RunRow row;
+  std::vector<Vec3Array> samples;  // positions at t = j · sample_dt, j = 0..J
+  long first_collision_step = -1;
+};
+
+/// Runs one integrator at one step over [0, T]. With `reference`, measures the error at every
+/// sample time; with `keep`, stores the samples. The §8 detector is watched (not obeyed): a run
+/// it flags keeps going so that its error is still measured, and stops only when not finite.
+RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const SweepOptions& o,
+                   const std::vector<Vec3Array>* reference, bool keep) {
+  RunOutput out;
+  RunRow& row = out.row;
+  row.integrator = kind;
+  row.h = h;
+  const long total = steps_per(o.duration, h, "the duration");
+  const long per_sample = steps_per(o.sample_dt, h, "the sample interval");
+  Simulator::Options options(kind, h);
+  options.detect_instability = false;  // watched below, so that the run is not stopped
+  Simulator sim(build_world(scene, linked_tasks()), options);
+  StabilityMonitor monitor(options.monitor);
+  monitor.start(sim.energy().total());
+  const long evaluations0 = sim.evaluations();
+  auto collisions = [&] {
+    const auto& c = sim.world().counters().collisions;
+    return std::accumulate(c.begin(), c.end(), 0L);
+  };
+  if (keep) out.samples.push_back(sim.state().x);
+
+  double sum_sq = 0.0;
+  long count = 0;
+  double wall = 0.0;
+  const int block = std::max(1, monitor.config().sample_every);
+  long step = 0;
+  while (step < total) {
+    // Time a block of steps between watch points; the watching and the error are not timed.
+    const long stop = std::min(total, (step / block + 1) * block);
+    const auto t0 = std::chrono::steady_clock::now();
+    while (step < stop) {
+      sim.step();
+      ++step;
+      if (out.first_collision_step < 0 && collisions() > 0) out.first_collision_step = step;
+      if (step % per_sample == 0 && step < stop) break;  // a sample inside the block
+    }
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const State& s = sim.state();
+    if (monitor.wants_sample(step) || step % per_sample == 0 || step == total) {
+      const bool finite = s.x.allFinite() && s.v.allFinite();
+      if (!finite) {
+        row.finite = false;
+        if (row.stable) {
+          row.stable = false;
+          row.reason = "a position or velocity is not finite";
+          row.detected_at = sim.time();
+        }
+        break;
+      }
+      if (row.stable && monitor.wants_sample(step)) {
+        if (auto reason = monitor.check(sim.energy().total(), true)) {
+          row.stable = false;
+          row.reason = *reason;
+          row.detected_at = sim.time();
+        }
+      }
+    }
+    if (step % per_sample == 0) {
+      const long j = step / per_sample;
+      if (keep) out.samples.push_back(s.x);
+      if (reference) {
+        const Vec3Array& xr = (*reference)[static_cast<std::size_t>(j)];
+        const Eigen::Index n = s.x.cols();
+        double sq = 0.0, worst = 0.0;
+        for (Eigen::Index i = 0; i < n; ++i) {
+          const double d2 = (s.x.col(i) - xr.col(i)).squaredNorm();
+          sq += d2;
+          worst = std::max(worst, d2);
+        }
+        sum_sq += sq / static_cast<double>(n);
+        ++count;
+        if (step == total) row.error_final = std::sqrt(worst);
+      }
+    }
+  }
+  row.sim_time = sim.time();
+  row.wall = wall;
+  row.evaluations = sim.evaluations() - evaluations0;
+  if (const BackwardEulerSolver* be = sim.backward_euler()) row.cg_iterations = be->total_iterations();
+  if (!reference) {
+    row.error_rms = row.error_final = kNaN;
+  } else if (!row.finite) {
+    row.error_rms = row.error_final = kInf;
+  } else {
+    row.error_rms = count > 0 ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0;
+  }
+  return out;
+}
+
+double order(double e_coarse, double e_fine, double h_coarse, double h_fine) {
+  if (!(e_coarse > 0.0 && e_fine > 0.0) || !std::isfinite(e_coarse) || !std::isfinite(e_fine))
+    return kNaN;
+  return std::log(e_coarse / e_fine) / std::log(h_coarse / h_fine);
+}
+
+}  // namespace
+
+SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress) {
+  if (o.steps.empty()) throw std::invalid_argument("no step sizes to sweep");
+  if (!(o.duration > 0.0) || !(o.sample_dt > 0.0) || o.reference_factor < 1 || o.repeats < 1)
+    throw std::invalid_argument("duration, sample interval, reference factor and repeats must be > 0");
+  SweepResult r;
+  r.options = o;
+  std::sort(r.options.steps.begin(), r.options.steps.end(), std::greater<>());
+  r.scene_name = scene.name;
+  r.load_before = loadavg();
+  {
+    const auto world = build_world(scene, linked_tasks());
+    r.particles = static_cast<long>(world->particle_count());
+    r.springs = world->spring_count();
+    r.terrains = world->terrains().size();
+  }
+  // Every step must divide the sample interval and the duration: check all before running.
+  steps_per(o.duration, o.sample_dt, "the duration (in samples)");
+  for (double h : r.options.steps) {
+    steps_per(o.sample_dt, h, "the sample interval");
+    steps_per(o.duration, h, "the duration");
+  }
+
+  // The reference: RK4 at h_ref = h_min / factor, checked against RK4 at h_ref / 2.
+  r.reference.h = r.options.steps.back() / o.reference_factor;
+  if (progress) std::fprintf(progress, "reference: rk4, h = %g s ...\n", r.reference.h), std::fflush(progress);
+  RunOutput ref = run_once(scene, IntegratorKind::RK4, r.reference.h, o, nullptr, true);
+  r.reference.wall = ref.row.wall;
+  r.reference.stable = ref.row.stable && ref.row.finite;
+  r.first_collision_step = ref.first_collision_step;
+  r.first_collision_time = ref.first_collision_step < 0 ? -1.0 : ref.first_collision_step * r.reference.h;
+  if (!ref.row.finite) throw std::runtime_error("the RK4 reference run blew up; choose smaller steps");
+  if (o.check_reference) {
+    if (progress) std::fprintf(progress, "reference check: rk4, h = %g s ...\n", r.reference.h / 2), std::fflush(progress);
+    const RunOutput half = run_once(scene, IntegratorKind::RK4, r.reference.h / 2, o, &ref.samples, false);
+    r.reference.checked = true;
+    r.reference.check_rms = half.row.error_rms;
+    r.reference.check_final = half.row.error_final;
+  }
+
+  for (IntegratorKind kind : o.integrators) {
+    for (std::size_t i = 0; i < r.options.steps.size(); ++i) {
+      const double h = r.options.steps[i];
+      RunRow row = run_once(scene, kind, h, o, &ref.samples, false).row;
+      for (int rep = 1; rep < o.repeats; ++rep)
+        row.wall = std::min(row.wall, run_once(scene, kind, h, o, nullptr, false).row.wall);
+      row.order_rms = row.order_final = kNaN;
+      if (i > 0) {
+        const RunRow& prev = r.rows.back();
+        row.order_rms = order(prev.error_rms, row.error_rms, prev.h, h);
+        row.order_final = order(prev.error_final, row.error_final, prev.h, h);
+      }
+      if (progress) {
+        std::fprintf(progress, "  %-16s h = %-10g %s  rms error %-10.3g wall %.3g s\n",
+                     std::string(to_string(kind)).c_str(), h, row.stable ? "stable  " : "UNSTABLE",
+                     row.error_rms, row.wall);
+        std::fflush(progress);
+      }
+      r.rows.push_back(row);
+    }
+  }
+  r.load_after = loadavg();
+  return r;
+}
+
+}  // namespace jelly::cli::study

@@ -1,0 +1,9 @@
+// `jelly study`: numerical studies of the integrators on a scene (accuracy against cost).
+#pragma once
+
+namespace jelly::cli {
+
+/// jelly study accuracy SCENE ... (argv[1] is "study"). Returns an ExitCode (cli_args.hpp).
+int study_command(int argc, char** argv);
+
+}  // namespace jelly::cli
