@@ -89,8 +89,8 @@ std::string parse_options(int argc, char** argv, AppOptions& o) {
   return {};
 }
 
-std::vector<Run*> AppState::run_pointers() const {
-  std::vector<Run*> out;
+std::vector<SimulationRun*> AppState::run_pointers() const {
+  std::vector<SimulationRun*> out;
   for (const auto& r : runs) out.push_back(r.get());
   return out;
 }
@@ -120,10 +120,10 @@ void rebuild_runs(AppState& s) {
   if (s.comparing && s.slots.size() >= 2) {
     for (const CompareSlot& slot : s.slots) {
       RunSetup setup{s.edited, slot.integrator, slot.dt};
-      s.runs.push_back(std::make_unique<Run>(setup, tasks));
+      s.runs.push_back(std::make_unique<SimulationRun>(setup, tasks));
     }
   } else {
-    s.runs.push_back(std::make_unique<Run>(RunSetup{s.edited, s.integrator, s.dt}, tasks));
+    s.runs.push_back(std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt}, tasks));
   }
   s.clock.restart();
 }
@@ -299,7 +299,7 @@ int run_app(const AppOptions& opt) {
       s.reset_requested = false;
     }
     const int w = window->width(), h = window->height();
-    const std::vector<Run*> runs = s.run_pointers();
+    const std::vector<SimulationRun*> runs = s.run_pointers();
     if (opt.smoke_test) {
       // 0.1 s of simulated time per frame, no wall clock (reproducible).
       if (!script.scenes_phase) {
@@ -323,7 +323,7 @@ int run_app(const AppOptions& opt) {
           rebuild_runs(s);
         }
       } else {
-        for (Run* r : runs) r->advance_to(r->time() + 0.05);
+        for (SimulationRun* r : runs) r->advance_to(r->time() + 0.05);
         if (++script.scene_frames >= 6) {
           std::printf("smoke: scene %-35s ok, t = %.2f s\n", s.edited.name.c_str(), runs.front()->time());
           script.scene_frames = 0;
@@ -339,14 +339,14 @@ int run_app(const AppOptions& opt) {
             for (std::size_t i = 0; i < s.scenes.size(); ++i)
               if (s.scenes[i].name.find("course-2023") != std::string::npos) { course = static_cast<int>(i); break; }
             load_scene_into(s, course);
-            for (Run* r : s.run_pointers()) r->advance_to(1.5);
+            for (SimulationRun* r : s.run_pointers()) r->advance_to(1.5);
             s.screenshot_requested = !opt.screenshot.empty();
             glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
           }
         }
       }
     } else if (opt.shot_at >= 0.0) {
-      for (Run* r : runs) r->advance_to(opt.shot_at);
+      for (SimulationRun* r : runs) r->advance_to(opt.shot_at);
       if (++frame_number > 3) {  // a few frames so ImGui's layout settles
         s.screenshot_requested = true;
         glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
@@ -354,15 +354,15 @@ int run_app(const AppOptions& opt) {
     } else if (s.recording) {
       // Recording: a fixed 1/30 s × factor per frame, so the video plays at the chosen speed.
       const double t = runs.front()->time() + s.clock.factor / 30.0;
-      for (Run* r : runs) r->advance_to(t);
+      for (SimulationRun* r : runs) r->advance_to(t);
     } else if (s.playing && opt.benchmark == 0) {
       double before = runs.front()->time();
-      for (Run* r : runs) before = std::min(before, r->time());
+      for (SimulationRun* r : runs) before = std::min(before, r->time());
       const double target = s.clock.target(before, wall_dt);
       const double budget = s.clock.budget_ms / static_cast<double>(runs.size());
       bool hit = false;
       double after = target;
-      for (Run* r : runs) {
+      for (SimulationRun* r : runs) {
         r->advance_to(target, budget);
         hit = hit || r->budget_hit();
         if (!r->unstable() && r->ok()) after = std::min(after, r->time());
@@ -370,7 +370,7 @@ int run_app(const AppOptions& opt) {
       s.clock.reached(before, after, hit);
     }
     if (s.step_requested) {
-      for (Run* r : s.run_pointers()) r->step_once();
+      for (SimulationRun* r : s.run_pointers()) r->step_once();
       s.step_requested = false;
       s.playing = false;
     }
@@ -379,7 +379,7 @@ int run_app(const AppOptions& opt) {
     s.panel_width = std::min(420, w / 3);
     s.frame.left_margin = s.panel_width;
     s.frame.hints = task_hints(s);
-    const std::vector<Run*> current = s.run_pointers();
+    const std::vector<SimulationRun*> current = s.run_pointers();
     ensure_drawables(renderer, current);
     if (s.camera_reset_requested && !current.empty() && current.front()->drawable()) {
       const auto vps = frame_viewports(static_cast<int>(current.size()), w, h, s.frame.left_margin);

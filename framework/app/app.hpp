@@ -60,7 +60,7 @@ struct AppState {
   bool step_requested = false;
   bool reset_requested = false;
   render::RealTimeClock clock;
-  std::vector<std::unique_ptr<render::Run>> runs;
+  std::vector<std::unique_ptr<render::SimulationRun>> runs;
   // comparison
   bool comparing = false;
   std::vector<CompareSlot> slots;
@@ -79,7 +79,7 @@ struct AppState {
   std::string screenshot_message;
   int panel_width = 400;
 
-  std::vector<render::Run*> run_pointers() const;
+  std::vector<render::SimulationRun*> run_pointers() const;
 };
 
 /// Loads scene `index` of state.scenes (or the path in open_path when index < 0) into the state.

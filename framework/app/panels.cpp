@@ -170,8 +170,8 @@ void draw_panels(AppState& s, double fps) {
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.panel_width), io.DisplaySize.y));
   ImGui::Begin("Jelly Lab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::PushItemWidth(-170);
-  const std::vector<Run*> runs = s.run_pointers();
-  Run* main_run = runs.empty() ? nullptr : runs.front();
+  const std::vector<SimulationRun*> runs = s.run_pointers();
+  SimulationRun* main_run = runs.empty() ? nullptr : runs.front();
 
   // ---- student hints ----
   int missing = 0;
@@ -234,7 +234,7 @@ void draw_panels(AppState& s, double fps) {
       }
     }
     // Instability banner with one-click retry.
-    for (Run* r : runs) {
+    for (SimulationRun* r : runs) {
       if (!r->simulator() || !r->simulator()->instability()) continue;
       const InstabilityReport& rep = *r->simulator()->instability();
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
@@ -254,7 +254,7 @@ void draw_panels(AppState& s, double fps) {
         s.reset_requested = true;
       }
     }
-    for (Run* r : runs)
+    for (SimulationRun* r : runs)
       if (!r->ok()) ImGui::TextColored(kRed, "cannot run: %s", r->error().c_str());
   }
 
@@ -306,7 +306,7 @@ void draw_panels(AppState& s, double fps) {
 
   // ---- plots ----
   if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (Run* r : runs) {
+    for (SimulationRun* r : runs) {
       if (runs.size() > 1) ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
       ImGui::PushID(r);
       plot("energy", r->history(), &RunSample::energy, "J");

@@ -13,13 +13,12 @@ double rad(double deg) { return deg * kPi / 180.0; }
 }  // namespace
 
 void OrbitCamera::frame(const Bounds& b, double aspect) {
-  // Aim a little below the centre: the caption sits at the bottom of the frame.
-  target = b.center() - 0.12 * b.radius() * Vec3::UnitY();
+  target = b.center();
   const double half_fov = rad(fov_y_degrees) / 2.0;
   // The narrower of the vertical and horizontal half-angles must hold the bounding sphere.
   const double half_h = std::atan(std::tan(half_fov) * aspect);
   const double limiting = std::min(half_fov, half_h);
-  distance = std::max(1.0, 0.85 * b.radius() / std::sin(limiting));
+  distance = std::max(1.0, 0.9 * b.radius() / std::sin(limiting));
 }
 
 void OrbitCamera::orbit(double dx, double dy) {

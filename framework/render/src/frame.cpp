@@ -35,8 +35,8 @@ std::string wrap_text(const std::string& text, int max_width, float scale) {
 
 float text_scale(int h) { return std::clamp(static_cast<float>(h) / 360.0f, 1.0f, 2.0f); }
 
-void ensure_drawables(Renderer& renderer, const std::vector<Run*>& runs) {
-  for (Run* r : runs)
+void ensure_drawables(Renderer& renderer, const std::vector<SimulationRun*>& runs) {
+  for (SimulationRun* r : runs)
     if (r->ok() && !r->drawable()) r->set_drawable(renderer.make_drawable(r->simulator()->world()));
 }
 
@@ -46,7 +46,7 @@ std::vector<Viewport> frame_viewports(int count, int width, int height, int left
   return vps;
 }
 
-void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCamera& camera,
+void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, const OrbitCamera& camera,
                 const FrameOptions& o, int width, int height) {
   ensure_drawables(renderer, runs);
   renderer.begin_frame(width, height);
@@ -54,7 +54,7 @@ void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCa
   const auto vps = frame_viewports(static_cast<int>(runs.size()), width, height, o.left_margin);
   const int pad = static_cast<int>(8 * s);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    Run& run = *runs[i];
+    SimulationRun& run = *runs[i];
     const Viewport& vp = vps[i];
     if (run.ok()) renderer.draw(*run.drawable(), run.simulator()->world(), camera, o.draw, vp);
     int y = vp.y + pad;
@@ -87,7 +87,7 @@ void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCa
   }
   if (o.caption && !runs.empty()) {
     double t = 0.0;  // the furthest run (a stopped run stays behind)
-    for (Run* r : runs) t = std::max(t, r->time());
+    for (SimulationRun* r : runs) t = std::max(t, r->time());
     const std::string text = caption(runs.front()->setup(), t, runs.size() == 1);
     // Shrink the caption to fit the width left of the panel.
     const int room = width - o.left_margin - 3 * pad;

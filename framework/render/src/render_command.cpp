@@ -36,7 +36,7 @@ struct Args {
   fs::path frames;
   int width = 1280, height = 720;
   double fps = 30.0;
-  double duration = -1.0;  // < 0: the scene's
+  double duration = -1.0;  // < 0: the scene's; 0: only the frame at t = 0
   std::string integrator, backend = "offscreen", camera;
   double dt = 0.0;
   std::vector<std::string> sets, compare;
@@ -75,7 +75,8 @@ std::string parse(int argc, char** argv, Args& a) {
       a.frames = v;
     } else if (arg == "--width" || arg == "--height" || arg == "--fps" || arg == "--duration" ||
                arg == "--dt" || arg == "--benchmark") {
-      if (!value(v) || !parse_number(v, d) || d <= 0.0) return arg + " needs a number > 0, got '" + v + "'";
+      if (!value(v) || !parse_number(v, d) || d < 0.0 || (d == 0.0 && arg != "--duration"))
+        return arg + (arg == "--duration" ? " needs a number ≥ 0" : " needs a number > 0") + ", got '" + v + "'";
       if (arg == "--width") a.width = static_cast<int>(d);
       if (arg == "--height") a.height = static_cast<int>(d);
       if (arg == "--fps") a.fps = d;
@@ -171,7 +172,7 @@ int render_command(int argc, char** argv) {
   if (a.dt > 0.0) base.dt = a.dt;
   std::vector<std::string> names = a.compare;
   if (names.empty()) names.push_back(a.integrator.empty() ? std::string(to_string(base.integrator)) : a.integrator);
-  std::vector<std::unique_ptr<Run>> runs;
+  std::vector<std::unique_ptr<SimulationRun>> runs;
   for (const std::string& name : names) {
     const auto kind = integrator_from_string(name);
     if (!kind) {
@@ -181,13 +182,13 @@ int render_command(int argc, char** argv) {
     }
     RunSetup s = base;
     s.integrator = *kind;
-    runs.push_back(std::make_unique<Run>(s, linked_tasks()));
+    runs.push_back(std::make_unique<SimulationRun>(s, linked_tasks()));
     if (!runs.back()->ok()) {
       std::cerr << "jelly render: " << name << ": " << runs.back()->error() << "\n";
       return 1;
     }
   }
-  std::vector<Run*> run_ptrs;
+  std::vector<SimulationRun*> run_ptrs;
   for (auto& r : runs) run_ptrs.push_back(r.get());
 
   FrameOptions fo;
@@ -238,7 +239,7 @@ int render_command(int argc, char** argv) {
     return 0;
   }
 
-  const double duration = a.duration > 0.0 ? a.duration : scene.duration;
+  const double duration = a.duration >= 0.0 ? a.duration : scene.duration;
   const int frames = static_cast<int>(std::floor(duration * a.fps + 1e-9)) + 1;
   std::error_code ec;
   fs::create_directories(a.frames, ec);
@@ -249,7 +250,7 @@ int render_command(int argc, char** argv) {
   int status = 0;
   for (int k = 0; k < frames; ++k) {
     const double t = k / a.fps;
-    for (Run* r : run_ptrs) r->advance_to(t);
+    for (SimulationRun* r : run_ptrs) r->advance_to(t);
     draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
     const Image img = be.read_pixels();
     be.present();
@@ -260,7 +261,7 @@ int render_command(int argc, char** argv) {
       return 1;
     }
   }
-  for (Run* r : run_ptrs)
+  for (SimulationRun* r : run_ptrs)
     if (const auto& inst = r->simulator()->instability()) {
       std::cerr << inst->message() << "\n";
       status = 1;

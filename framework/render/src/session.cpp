@@ -8,14 +8,14 @@
 
 namespace jelly::render {
 
-Run::Run(RunSetup setup, TaskTable tasks) : setup_(std::move(setup)), tasks_(tasks) { reset(); }
+SimulationRun::SimulationRun(RunSetup setup, TaskTable tasks) : setup_(std::move(setup)), tasks_(tasks) { reset(); }
 
-void Run::reset(RunSetup setup) {
+void SimulationRun::reset(RunSetup setup) {
   setup_ = std::move(setup);
   reset();
 }
 
-void Run::reset() {
+void SimulationRun::reset() {
   sim_.reset();
   drawable_.reset();
   history_.clear();
@@ -32,7 +32,7 @@ void Run::reset() {
   }
 }
 
-double Run::com_height() const {
+double SimulationRun::com_height() const {
   if (!sim_) return 0.0;
   const World& w = sim_->world();
   const Eigen::VectorXd& m = w.masses();
@@ -40,7 +40,7 @@ double Run::com_height() const {
   return total > 0.0 ? w.state().x.row(1).dot(m) / total : 0.0;
 }
 
-void Run::record(double ms) {
+void SimulationRun::record(double ms) {
   RunSample s;
   s.time = sim_->time();
   const Energy e = sim_->energy();
@@ -52,7 +52,7 @@ void Run::record(double ms) {
   while (history_.size() > kHistory) history_.pop_front();
 }
 
-long Run::advance_to(double t_target, double budget_ms) {
+long SimulationRun::advance_to(double t_target, double budget_ms) {
   if (!sim_ || sim_->instability()) return 0;
   using clock = std::chrono::steady_clock;
   const auto ms_since = [](clock::time_point t0) {
@@ -86,7 +86,7 @@ long Run::advance_to(double t_target, double budget_ms) {
   return steps;
 }
 
-void Run::step_once() {
+void SimulationRun::step_once() {
   if (!sim_ || sim_->instability()) return;
   const auto start = std::chrono::steady_clock::now();
   sim_->step();
@@ -97,7 +97,11 @@ void Run::step_once() {
 double RealTimeClock::target(double sim_time, double wall_dt) {
   factor = std::clamp(factor, kMinFactor, kMaxFactor);
   wall_dt_ = std::clamp(wall_dt, 0.0, max_frame_s);
-  return sim_time + factor * wall_dt_;
+  // The accumulator: the target advances by factor × wall time from the previous target, not
+  // from where the run stopped, so rounding to whole steps never accumulates.
+  if (fresh_ || sim_time > target_ + 1.0 || sim_time < target_ - 1.0) target_ = sim_time;
+  target_ += factor * wall_dt_;
+  return target_;
 }
 
 void RealTimeClock::reached(double before, double after, bool budget_hit) {
@@ -108,6 +112,7 @@ void RealTimeClock::reached(double before, double after, bool budget_hit) {
   fresh_ = false;
   short_frames_ = 0.95 * short_frames_ + 0.05 * (budget_hit ? 1.0 : 0.0);
   behind_ = short_frames_ > 0.3;
+  if (budget_hit) target_ = after;  // drop what could not be done: no spiral of death
 }
 
 void RealTimeClock::restart() {
@@ -172,7 +177,7 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
   return out;
 }
 
-std::string run_label(const Run& run) {
+std::string run_label(const SimulationRun& run) {
   const int evals = evaluations_per_step(run.setup().integrator);
   std::string out = std::string(display_name(run.setup().integrator)) + "  (" + std::to_string(evals) +
                     (evals == 1 ? " eval/step)" : " evals/step)") + "\nh = " + step_text(run.setup().dt);

@@ -26,11 +26,11 @@ std::string wrap_text(const std::string& text, int max_width, float scale);
 float text_scale(int frame_height);
 
 /// Makes sure every run has draw proxies (after a reset).
-void ensure_drawables(Renderer& renderer, const std::vector<Run*>& runs);
+void ensure_drawables(Renderer& renderer, const std::vector<SimulationRun*>& runs);
 
 /// Draws `runs` side by side into a width×height frame (begin_frame … end_frame included).
 /// The camera is shared so comparison viewports show the same view.
-void draw_frame(Renderer& renderer, const std::vector<Run*>& runs, const OrbitCamera& camera,
+void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, const OrbitCamera& camera,
                 const FrameOptions& options, int width, int height);
 
 /// The viewports draw_frame uses for `count` runs.

@@ -33,9 +33,9 @@ struct RunSample {
 };
 
 /// A scene being simulated: owns the Simulator (and so the World) and its history.
-class Run {
+class SimulationRun {
  public:
-  Run(RunSetup setup, TaskTable tasks);
+  SimulationRun(RunSetup setup, TaskTable tasks);
   /// Rebuilds the world from the setup (t = 0).
   void reset();
   /// Replaces the setup and resets.
@@ -111,6 +111,7 @@ class RealTimeClock {
 
  private:
   double wall_dt_ = 0.0;
+  double target_ = 0.0;  // simulated time asked for so far [s]
   double achieved_ = 1.0;
   double short_frames_ = 0.0;  // smoothed fraction of frames that fell short
   bool behind_ = false;
@@ -125,6 +126,6 @@ std::vector<Viewport> comparison_layout(int count, int width, int height);
 /// has its own label).
 std::string caption(const RunSetup& setup, double time, bool with_integrator = true);
 /// Short label for comparison mode: "RK4  h = 1 ms  0.84 ms/step".
-std::string run_label(const Run& run);
+std::string run_label(const SimulationRun& run);
 
 }  // namespace jelly::render

@@ -1,0 +1,10 @@
+# cmake -DFILE=x.png -P check_png.cmake: fails unless FILE exists and starts with the PNG signature.
+if(NOT EXISTS "${FILE}")
+  message(FATAL_ERROR "${FILE}: missing (the GUI smoke test should have saved it)")
+endif()
+file(READ "${FILE}" head LIMIT 8 HEX)
+if(NOT head STREQUAL "89504e470d0a1a0a")
+  message(FATAL_ERROR "${FILE}: not a PNG (starts with ${head})")
+endif()
+file(SIZE "${FILE}" size)
+message(STATUS "${FILE}: PNG, ${size} bytes")
