@@ -260,6 +260,27 @@ TEST(SceneErrors, ParticleBodies) {
   EXPECT_EQ(e.key, "body.rest_lengths");
 }
 
+TEST(SceneErrors, NonAsciiOnlyInStringsAndComments) {
+  // Allowed in strings (all four kinds) and comments.
+  const SceneResult ok = parse_scene(
+      "# café ≥ 2\n[scene]\nname = \"é \\\" é\"\ndescription = '''\né ''' # ü\n"
+      "[body]\ncenter = [0, 1, 0] # ñ\nrotation_axis = [1, 0, 0]\n",
+      "ok.toml");
+  ASSERT_TRUE(ok) << ok.error->text();
+  EXPECT_EQ(ok.scene->name, "é \" é");
+  EXPECT_EQ(ok.scene->description, "é ");
+  const SceneResult ml = parse_scene("[scene]\ndescription = \"\"\"\né\"\"\"\"\" # two quotes of content\n", "ml");
+  ASSERT_TRUE(ml) << ml.error->text();
+  EXPECT_EQ(ml.scene->description, "é\"\"");
+  // Outside them: an error with the place (toml++ 3.3.0 misbehaves on some of these).
+  const SceneError e = error_of("[scene]\nname = \"x\"é\n");
+  EXPECT_EQ(e.line, 2);
+  EXPECT_EQ(e.column, 11);
+  EXPECT_TRUE(contains(e.message, "non-ASCII")) << e.message;
+  EXPECT_EQ(error_of("[body]\ncenter = [0, 1, 0]\u00a0\n").line, 2);
+  EXPECT_EQ(error_of("[scene]\ndescription = \"\"\"\na\"\"\"é\n").line, 3);
+}
+
 TEST(SceneErrors, TheFirstErrorInTheFileIsReported) {
   std::string text = with("n = 4", "n = 1");           // line 14
   text = text.replace(text.find("dt = 0.001"), 10, "dt = 0");  // line 6
@@ -270,7 +291,7 @@ TEST(SceneErrors, TheFirstErrorInTheFileIsReported) {
 
 TEST(SceneErrors, GarbageNeverThrows) {
   for (const std::string& text :
-       {std::string("\0\1\2", 3), std::string("[[[[["), std::string("a = [[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]"),
+       {std::string("\0\1\2", 3), std::string("[[[[["), std::string("a = [[[[1]]]]\n[[[[\n"), std::string("[ #\n"), std::string("a = [[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]"),
         std::string("[body]\npositions = 1e999\n"), std::string("\xff\xfe"),
         std::string("[[terrain]]\n[[terrain]]\n"), std::string("[springs]\nstructural = 3\n")}) {
     SceneResult r;
