@@ -26,8 +26,10 @@ SceneSpec load_ok(const std::string& file) {
 
 std::vector<std::string> shipped_scenes() {
   std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(kScenes))
-    if (e.is_regular_file() && e.path().extension() == ".toml") out.push_back(e.path().filename().string());
+  // Every scene under scenes/, including subfolders (scenes/hard/), as a path relative to it.
+  for (const auto& e : std::filesystem::recursive_directory_iterator(kScenes))
+    if (e.is_regular_file() && e.path().extension() == ".toml")
+      out.push_back(std::filesystem::relative(e.path(), kScenes).generic_string());
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -41,4 +41,9 @@ std::optional<std::string> get_parameter(const SceneSpec& scene, std::string_vie
 /// The value of a Real or Integer parameter as a double (for sliders); nullopt otherwise.
 std::optional<double> get_number(const SceneSpec& scene, std::string_view key);
 
+/// The reference table of every declared parameter as Markdown (key, where it applies, type,
+/// unit, default, valid range, description), in declaration order: docs/scenes.md embeds it and a
+/// test keeps the two equal; `jelly params` can print it.
+std::string parameter_reference_markdown();
+
 }  // namespace jelly
