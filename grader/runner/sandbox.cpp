@@ -1,5 +1,6 @@
 #include "sandbox.hpp"
 
+#include <sched.h>
 #include <seccomp.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -64,12 +65,18 @@ bool install_sandbox(int result_fd) {
       SCMP_SYS(socket),     SCMP_SYS(socketpair), SCMP_SYS(connect),   SCMP_SYS(bind),
       SCMP_SYS(listen),     SCMP_SYS(accept),     SCMP_SYS(accept4),   SCMP_SYS(sendto),
       SCMP_SYS(execve),     SCMP_SYS(execveat),   SCMP_SYS(fork),      SCMP_SYS(vfork),
-      SCMP_SYS(clone),      SCMP_SYS(clone3),     SCMP_SYS(ptrace),    SCMP_SYS(process_vm_writev),
+      SCMP_SYS(ptrace),    SCMP_SYS(process_vm_writev),
       SCMP_SYS(process_vm_readv), SCMP_SYS(setrlimit), SCMP_SYS(prlimit64), SCMP_SYS(setpgid),
       SCMP_SYS(setsid),     SCMP_SYS(memfd_create), SCMP_SYS(inotify_init1), SCMP_SYS(pidfd_open),
   };
   bool ok = true;
   for (int nr : trapped) ok = ok && seccomp_rule_add(ctx, SCMP_ACT_TRAP, nr, 0) == 0;
+  // Threads are allowed (a task library may use OpenMP), new processes are not: clone without
+  // CLONE_THREAD traps; clone3 (whose flags a filter cannot see) answers ENOSYS, and glibc then
+  // falls back to clone.
+  ok = ok && seccomp_rule_add(ctx, SCMP_ACT_TRAP, SCMP_SYS(clone), 1,
+                              SCMP_A0(SCMP_CMP_MASKED_EQ, static_cast<scmp_datum_t>(CLONE_THREAD), 0)) == 0;
+  ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0) == 0;
   // Signals only to itself (abort() raises SIGABRT with tgkill on its own pid).
   const pid_t self = getpid();
   ok = ok && seccomp_rule_add(ctx, SCMP_ACT_TRAP, SCMP_SYS(kill), 1,

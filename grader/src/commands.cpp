@@ -11,6 +11,7 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include <toml++/toml.h>
 
@@ -244,7 +245,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
             int jobs, const GradeOptions& options) {
   struct Mutant {
     std::string name, task, file, description;
-    std::vector<std::pair<std::string, std::string>> replacements;
+    std::vector<std::tuple<std::string, std::string, int>> replacements;  // find, with, nth occurrence
     fs::path dir;
     GradeReport report;
     std::string error;
@@ -269,7 +270,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     if (const toml::array* reps = t["replace"].as_array())
       for (const toml::node& n : *reps) {
         const toml::table& r = *n.as_table();
-        m.replacements.emplace_back(r["find"].value_or(std::string()), r["with"].value_or(std::string()));
+        m.replacements.emplace_back(r["find"].value_or(std::string()), r["with"].value_or(std::string()),
+                                    static_cast<int>(r["nth"].value_or(1)));
       }
     if (m.task.empty() || m.file.empty() || m.replacements.empty()) {
       std::cerr << "jelly-grade: " << f << ": a mutant needs task, file and at least one [[replace]]\n";
@@ -280,8 +282,9 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     for (const std::string& name : task_files())
       fs::copy_file(config.solutions_dir() / name, m.dir / name, fs::copy_options::overwrite_existing);
     std::string text = read_text(m.dir / m.file);
-    for (const auto& [find, with] : m.replacements) {
-      const auto at = text.find(find);
+    for (const auto& [find, with, nth] : m.replacements) {
+      auto at = text.find(find);
+      for (int k = 1; k < nth && at != std::string::npos; ++k) at = text.find(find, at + find.size());
       if (find.empty() || at == std::string::npos) {
         std::cerr << "jelly-grade: " << f << ": \"" << find << "\" is not in solutions/" << m.file
                   << " (the mutant no longer applies)\n";

@@ -13,6 +13,7 @@
 // Exit status: 0 when grading ran, whatever the score; 1 when a self-test (mutants) fails or a batch
 // had a grader error; 2 on grader errors (bad arguments, missing or stale reference data).
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <set>
@@ -55,6 +56,8 @@ std::set<std::string> split(const std::string& s) {
 
 int main(int argc, char** argv) {
   if (argc < 2) return usage();
+  // One thread per grading case (cases already run in parallel), and the same bits every run.
+  setenv("OMP_NUM_THREADS", "1", 1);
   const std::string command = argv[1];
   std::vector<std::string> positional;
   std::string config_path, rubric_path, out, visibility = "all", formats = "terminal,gradescope", table, student,
