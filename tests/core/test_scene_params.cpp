@@ -233,6 +233,7 @@ TEST(SceneParams, ParticleListsThroughText) {
   EXPECT_EQ(tp.particles.springs[0].rest_length, 1.5);
   EXPECT_TRUE(set_parameter(tp, "body.rest_lengths", "1,2"));
   EXPECT_TRUE(set_parameter(tp, "body.springs", "0,5"));
+  EXPECT_TRUE(set_parameter(tp, "body.springs", "0,4294967297"));
   EXPECT_TRUE(set_parameter(tp, "body.velocities", "0,0,0"));
   EXPECT_EQ(set_parameter(tp, "body.velocities", "0,1,0; 0,-1,0"), std::nullopt);
   EXPECT_EQ(tp.particles.velocities(1, 1), -1.0);

@@ -398,6 +398,16 @@ std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, co
       return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
              "), got " + std::to_string(given);
   }
+  if (b.decl->pattern == "body.springs") {
+    // Checked here, before the indices are narrowed to int by the setter.
+    const Eigen::Index n = s.particles.positions.cols();
+    const auto& pairs = std::get<std::vector<IndexPair>>(v);
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i][0] >= n || pairs[i][1] >= n)
+        return "spring " + std::to_string(i) + " joins particles " + std::to_string(pairs[i][0]) +
+               " and " + std::to_string(pairs[i][1]) + "; expected two different indices in 0.." +
+               std::to_string(n - 1);
+  }
   if (b.decl->pattern == "body.velocities") {
     const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
     if (given != s.particles.positions.cols())
