@@ -29,6 +29,7 @@ struct AppOptions {
   int benchmark = 0;                          ///< draw N frames of the first state, print fps
   bool particles = false, springs = false;    ///< initial draw options
   double factor = 1.0;                        ///< real-time factor
+  int samples = 4;                            ///< multisampling (0 is faster on software GL)
 };
 
 /// Parses the command line; "" on success, "help" for --help, else the error.

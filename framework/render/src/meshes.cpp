@@ -43,11 +43,12 @@ Mesh plane_mesh(const Plane& p, const Vec3& around, double half) {
     add_quad(m, 0, 1, 3, 2);
     return m;
   }
-  // Polar grid from the hole's circle out to the square's boundary.
+  // Polar grid from the hole's circle out to the square's boundary. Shading is per fragment, so
+  // a few rings suffice (software GL pays per triangle).
   const Vec3 c = p.hole_center - n.dot(p.hole_center - p.point) * n;
   const double r = p.hole_radius;
   half = std::max(half, 1.5 * r);
-  constexpr int kRings = 16;
+  constexpr int kRings = 2;
   for (int k = 0; k < kCircleSegments; ++k) {
     const double a = 2.0 * kPi * k / kCircleSegments;
     const double ca = std::cos(a), sa = std::sin(a);
@@ -72,7 +73,7 @@ Mesh bowl_mesh(const Bowl& b) {
   Mesh m;
   const double cos_rim = std::clamp((b.center.y() - b.rim_height) / b.radius, -1.0, 1.0);
   const double phi_rim = std::acos(cos_rim);  // polar angle from the bottom to the rim
-  constexpr int kRings = 48;
+  constexpr int kRings = 16;
   m.positions.push_back(f3(b.center - b.radius * Vec3::UnitY()));
   m.normals.push_back(Eigen::Vector3f::UnitY());
   for (int ring = 1; ring <= kRings; ++ring) {
@@ -98,7 +99,7 @@ Mesh bowl_mesh(const Bowl& b) {
 
 Mesh sphere_mesh(const Sphere& s) {
   Mesh m;
-  constexpr int kRings = 96;
+  constexpr int kRings = 48;
   const int seg = kCircleSegments / 2;
   for (int ring = 0; ring <= kRings; ++ring) {
     const double phi = kPi * ring / kRings;

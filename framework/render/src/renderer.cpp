@@ -135,7 +135,7 @@ struct Renderer::Programs {
   GLuint overlay_vao = 0, overlay_xy = 0, overlay_rgba = 0;
 };
 
-Renderer::Renderer(const Gl* gl) : gl_(gl) {
+Renderer::Renderer(const Gl* gl, int samples) : gl_(gl), wanted_samples_(samples) {
   if (!gl_) return;
   const Gl& g = *gl_;
   programs_ = std::make_unique<Programs>();
@@ -233,7 +233,7 @@ void Renderer::ensure_target(int w, int h) {
   fbo_ = color_rb_ = depth_rb_ = 0;
   GLint max_samples = 0;
   g.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  samples_ = std::min(4, static_cast<int>(max_samples));
+  samples_ = std::min(wanted_samples_, static_cast<int>(max_samples));
   if (samples_ < 2) {
     samples_ = 0;
     return;

@@ -8,7 +8,7 @@ namespace jelly {
 ///   SCENE --frames DIR [--width W] [--height H] [--fps F] [--duration T] [--integrator NAME]
 ///   [--dt H] [--set key=value ...] [--compare a,b,c] [--backend offscreen|window|null]
 ///   [--camera YAW,PITCH,DISTANCE] [--particles] [--springs] [--no-caption] [--no-video]
-///   [--benchmark N]
+///   [--benchmark N] [--samples 0|2|4]
 /// Writes DIR/frame_00000.png …, DIR/video.mp4 when ffmpeg is on PATH. Returns the exit code
 /// (0 ok, 1 run error or instability, 2 usage error).
 int render_command(int argc, char** argv);
