@@ -112,7 +112,9 @@ int main(int argc, char** argv) {
       std::set<std::string> files = f;
       files.erase("terminal");
       if (!files.empty()) write_reports(r, book, out_dir, files);
-      fs::remove_all(work);
+      // JELLY_GRADE_KEEP_WORK=1 keeps the built runner (out/.work/build/runner) for experiments
+      // such as the tolerance measurements of docs/tolerances.md.
+      if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
       if (f.count("terminal")) std::cout << terminal_summary(r, verbose);
       return 0;
     }
