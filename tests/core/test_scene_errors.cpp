@@ -237,7 +237,7 @@ TEST(SceneErrors, ParticleBodies) {
   EXPECT_EQ(e.line, 4);
   EXPECT_TRUE(contains(e.message, "expected two different indices in 0..1")) << e.message;
 
-  e = error_of(head + "springs = [[0, 4294967297]]\n" + coeffs);  // must not wrap to 0 as an int
+  e = error_of(head + "springs = [[0, 4294967297]]\n" + coeffs);  // must not wrap to a valid int index (1)
   EXPECT_EQ(e.key, "body.springs");
   e = error_of(head + "springs = [[1, 1]]\n" + coeffs);
   EXPECT_EQ(e.key, "body.springs");

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <string_view>
@@ -19,6 +20,34 @@ namespace {
 [[noreturn]] void fail(const char* what, const std::string& detail) {
   std::fprintf(stderr, "fuzz_scene: %s\n%s\n", what, detail.c_str());
   std::abort();
+}
+
+/// What validation promises about an accepted scene (what build_world and the simulation rely on).
+void check_valid(const jelly::SceneSpec& s) {
+  if (!(s.dt > 0.0) || !(s.duration > 0.0)) fail("accepted a non-positive dt or duration", "");
+  if (s.body_kind == jelly::BodyKind::Cube) {
+    if (s.cube.n < 2 || s.cube.n > 64 || !(s.cube.mass > 0.0) || !(s.cube.edge > 0.0))
+      fail("accepted a bad cube", std::to_string(s.cube.n));
+  } else {
+    const auto n = s.particles.positions.cols();
+    if (n < 1 || s.particles.velocities.cols() != n || !(s.particles.mass > 0.0))
+      fail("accepted bad particles", "");
+    for (const jelly::Spring& sp : s.particles.springs)
+      if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b || !(sp.rest_length > 0.0))
+        fail("accepted a bad spring", std::to_string(sp.a) + "," + std::to_string(sp.b));
+  }
+  for (const jelly::Terrain& t : s.terrains) {
+    if (const auto* p = std::get_if<jelly::Plane>(&t.shape)) {
+      if (std::abs(p->normal.norm() - 1.0) > 1e-12) fail("plane normal not unit", t.name);
+      if (p->has_hole && !(p->hole_radius > 0.0)) fail("hole radius not positive", t.name);
+    } else if (const auto* b = std::get_if<jelly::Bowl>(&t.shape)) {
+      if (!(b->rim_height > b->center.y() - b->radius && b->rim_height <= b->center.y()))
+        fail("bowl rim outside the sphere", t.name);
+    }
+    const jelly::SurfaceProperties& sp = t.surface();
+    if (!(sp.epsilon > 0.0) || !(sp.restitution >= 0.0 && sp.restitution <= 1.0) || !(sp.friction >= 0.0))
+      fail("bad surface", t.name);
+  }
 }
 
 void check_round_trip(const jelly::SceneSpec& s, const char* stage) {
@@ -39,6 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   jelly::SceneSpec s = *r.scene;
+  check_valid(s);
   check_round_trip(s, "after loading");
 
   // Every parameter's text goes back through set_parameter unchanged.
@@ -61,6 +91,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (eq == std::string_view::npos) continue;
     if (!jelly::set_parameter(s, line.substr(0, eq), line.substr(eq + 1))) changed = true;
   }
-  if (changed) check_round_trip(s, "after #set");
+  if (changed) {
+    check_valid(s);
+    check_round_trip(s, "after #set");
+  }
   return 0;
 }
