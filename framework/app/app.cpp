@@ -24,6 +24,7 @@ std::string usage() {
   return "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare a,b[,c[,d]]]\n"
          "                 [--size WxH] [--backend window|auto] [--factor F] [--particles] [--springs]\n"
          "                 [--smoke-test] [--screenshot FILE] [--shot-at T] [--benchmark N] [--samples 0|2|4]\n"
+         "                 [--open scene,simulation,comparison,parameters,draw,plots,recording]\n"
          "       jelly-lab --headless SCENE --frames DIR ...   (same as `jelly render`, no display)\n"
          "keys: space play/pause, N single step, R reset, C reset camera, P screenshot, Esc quit\n"
          "mouse: left-drag orbit, wheel zoom\n";
@@ -72,6 +73,11 @@ std::string parse_options(int argc, char** argv, AppOptions& o) {
     } else if (a == "--backend") {
       if (!next(o.backend) || (o.backend != "window" && o.backend != "auto"))
         return "--backend for the app is window or auto (use --headless for offscreen)";
+    } else if (a == "--open") {
+      if (!next(v)) return "--open needs panel names, e.g. parameters,draw";
+      std::stringstream ss(v);
+      std::string item;
+      while (std::getline(ss, item, ',')) o.open_panels.push_back(item);
     } else if (a == "--smoke-test") {
       o.smoke_test = true;
     } else if (a == "--screenshot") {
@@ -215,6 +221,8 @@ int run_app(const AppOptions& opt) {
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   AppState s;
+  s.scripted = opt.smoke_test || opt.shot_at >= 0.0;
+  s.open_panels = opt.open_panels;
   s.scenes_dir = opt.scenes_dir.empty() ? default_scenes_dir() : opt.scenes_dir;
   s.scenes = list_scenes(s.scenes_dir);
   s.tasks = probe_tasks(linked_tasks());
@@ -264,7 +272,7 @@ int run_app(const AppOptions& opt) {
     const auto now = clock::now();
     const double wall_dt = std::chrono::duration<double>(now - last).count();
     last = now;
-    if (wall_dt > 0.0) fps = 0.9 * fps + 0.1 / wall_dt;
+    if (frame_number++ > 0 && wall_dt > 1e-4) fps = frame_number == 2 ? 1.0 / wall_dt : 0.9 * fps + 0.1 / wall_dt;
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -348,7 +356,7 @@ int run_app(const AppOptions& opt) {
       }
     } else if (opt.shot_at >= 0.0) {
       for (SimulationRun* r : runs) r->advance_to(opt.shot_at);
-      if (++frame_number > 3) {  // a few frames so ImGui's layout settles
+      if (frame_number > 4) {  // a few frames so ImGui's layout settles
         s.screenshot_requested = true;
         glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
       }

@@ -30,6 +30,7 @@ struct AppOptions {
   bool particles = false, springs = false;    ///< initial draw options
   double factor = 1.0;                        ///< real-time factor
   int samples = 4;                            ///< multisampling (0 is faster on software GL)
+  std::vector<std::string> open_panels;       ///< panel headers to open at start ("parameters", ...)
 };
 
 /// Parses the command line; "" on success, "help" for --help, else the error.
@@ -79,6 +80,8 @@ struct AppState {
   bool screenshot_requested = false;
   std::string screenshot_message;
   int panel_width = 400;
+  std::vector<std::string> open_panels;  ///< headers to open on the first frame
+  bool scripted = false;          ///< --smoke-test / --shot-at: time is not driven by the clock
 
   std::vector<render::SimulationRun*> run_pointers() const;
 };

@@ -162,6 +162,13 @@ void plot(const char* label, const std::deque<RunSample>& h, double RunSample::*
   ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(0, 60));
 }
 
+/// A collapsing header that --open can open on the first frame.
+bool header(AppState& s, const char* label, const char* key, bool open_by_default) {
+  for (const std::string& name : s.open_panels)
+    if (name == key) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+  return ImGui::CollapsingHeader(label, open_by_default ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+}
+
 }  // namespace
 
 void draw_panels(AppState& s, double fps) {
@@ -185,7 +192,7 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- scenes ----
-  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (header(s, "Scene", "scene", true)) {
     const char* current = s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
     if (ImGui::BeginCombo("scene", current)) {
       for (std::size_t i = 0; i < s.scenes.size(); ++i)
@@ -203,7 +210,7 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- simulation ----
-  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (header(s, "Simulation", "simulation", true)) {
     if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
     ImGui::SameLine();
     if (ImGui::Button("Step (N)")) s.step_requested = true;
@@ -218,7 +225,9 @@ void draw_panels(AppState& s, double fps) {
       s.clock.factor = factor;
       s.clock.restart();
     }
-    if (s.playing && !s.recording) {
+    if (s.scripted) {
+      ImGui::TextDisabled("scripted run (not real time)");
+    } else if (s.playing && !s.recording) {
       if (s.clock.behind())
         ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time", s.clock.achieved_factor());
       else
@@ -227,6 +236,8 @@ void draw_panels(AppState& s, double fps) {
     if (!s.comparing) {
       if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
       if (step_input("step h", s.dt)) s.reset_requested = true;
+      s.edited.integrator = s.integrator;  // keep the parameter view in step
+      s.edited.dt = s.dt;
       if (main_run && main_run->simulator()) {
         const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
         if (std::isinf(hc)) ImGui::TextDisabled("stable step estimate: any h");
@@ -259,7 +270,7 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- comparison ----
-  if (ImGui::CollapsingHeader("Comparison mode")) {
+  if (header(s, "Comparison mode", "comparison", false)) {
     if (ImGui::Checkbox("compare side by side", &s.comparing)) s.reset_requested = true;
     int count = static_cast<int>(s.slots.size());
     if (ImGui::SliderInt("runs", &count, 2, 4)) {
@@ -280,17 +291,24 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- parameters ----
-  if (ImGui::CollapsingHeader("Parameters")) {
+  if (header(s, "Parameters", "parameters", false)) {
     if (ImGui::Button("Reset to the scene's values")) {
       s.edited = s.original;
+      s.integrator = s.original.integrator;
+      s.dt = s.original.dt;
       s.scene_error.clear();
       s.reset_requested = true;
     }
-    if (parameter_widgets(s)) s.reset_requested = true;
+    if (parameter_widgets(s)) {
+      // simulation.integrator and simulation.dt are the Simulation panel's integrator and step.
+      s.integrator = s.edited.integrator;
+      s.dt = s.edited.dt;
+      s.reset_requested = true;
+    }
   }
 
   // ---- drawing ----
-  if (ImGui::CollapsingHeader("Draw")) {
+  if (header(s, "Draw", "draw", false)) {
     ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
     ImGui::Checkbox("particles", &s.frame.draw.particles);
     static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear", "bending springs"};
@@ -305,7 +323,7 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- plots ----
-  if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (header(s, "Plots", "plots", true)) {
     for (SimulationRun* r : runs) {
       if (runs.size() > 1) ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
       ImGui::PushID(r);
@@ -317,7 +335,7 @@ void draw_panels(AppState& s, double fps) {
   }
 
   // ---- recording ----
-  if (ImGui::CollapsingHeader("Recording")) {
+  if (header(s, "Recording", "recording", false)) {
     if (ImGui::Button(s.recording ? "Stop recording" : "Record PNG frames")) toggle_recording(s);
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (P)")) s.screenshot_requested = true;
