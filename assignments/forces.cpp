@@ -7,6 +7,7 @@ namespace jelly::tasks {
 Vec3 spring_force(const Vec3& xa, const Vec3& xb, double ks, double rest_length,
                   double degenerate_length) {
   // TODO(A1.T4): f = −ks (|d| − rest) u with d = x_a − x_b, u = d/|d|; zero when |d| is degenerate.
+  // docs/handout/T4-spring-force.md. This is the force on a; never return NaN.
   (void)xa, (void)xb, (void)ks, (void)rest_length, (void)degenerate_length;
   return Vec3::Zero();
 }
@@ -14,6 +15,7 @@ Vec3 spring_force(const Vec3& xa, const Vec3& xb, double ks, double rest_length,
 Vec3 damper_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double kd,
                   double degenerate_length) {
   // TODO(A1.T5): f = −kd ((v_a − v_b)·u) u; zero when |x_a − x_b| is degenerate.
+  // docs/handout/T5-damper-force.md. Only the relative velocity ALONG the spring is damped.
   (void)xa, (void)xb, (void)va, (void)vb, (void)kd, (void)degenerate_length;
   return Vec3::Zero();
 }

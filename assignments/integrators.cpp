@@ -6,22 +6,26 @@ namespace jelly::tasks {
 
 void explicit_euler_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T10): x ← x + h v_n, v ← v + h a_n (both from the old state).
+  // docs/handout/T10-explicit-euler.md. system.acceleration(state, a) gives a(x, v).
   (void)system, (void)s, (void)h, (void)w;
 }
 
 void implicit_euler_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T11): predictor–corrector: predict with explicit Euler, then step with the
   // derivatives at the predicted state.
+  // docs/handout/T11-implicit-euler.md. Evaluating a() twice at the SAME state is explicit Euler.
   (void)system, (void)s, (void)h, (void)w;
 }
 
 void midpoint_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T12): half a step to the midpoint, then a whole step with the midpoint's derivatives.
+  // docs/handout/T12-midpoint.md. Careful: 1/2 is 0 in C++ (integer division); write h / 2.0.
   (void)system, (void)s, (void)h, (void)w;
 }
 
 void rk4_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T13): classical fourth-order Runge–Kutta on (x, v).
+  // docs/handout/T13-rk4.md. 1/6 is 0 in C++; every stage starts from the state at the step's start.
   (void)system, (void)s, (void)h, (void)w;
 }
 
