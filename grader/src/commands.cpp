@@ -202,7 +202,9 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
     if (!fs::exists(from)) continue;
     fs::copy(from, stage / "source" / item, fs::copy_options::recursive);
   }
+  // Not needed to grade, and the mutants quote the reference solution.
   fs::remove_all(stage / "source" / "grader" / "tests");
+  fs::remove_all(stage / "source" / "grader" / "mutants");
   std::ofstream(stage / "setup.sh") <<
       "#!/usr/bin/env bash\n"
       "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"

@@ -256,4 +256,5 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   EXPECT_NE(list.find("source/grader/data/hidden/"), std::string::npos);
   EXPECT_EQ(list.find("solutions/"), std::string::npos);
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
+  EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);
 }
