@@ -310,9 +310,9 @@ int run_app(const AppOptions& opt) {
     const int w = window->width(), h = window->height();
     const std::vector<SimulationRun*> runs = s.run_pointers();
     if (opt.smoke_test) {
-      // 0.1 s of simulated time per frame, no wall clock (reproducible).
+      // 0.25 s of simulated time per frame, no wall clock (reproducible).
       if (!script.scenes_phase) {
-        const double t = runs.front()->time() + 0.1;
+        const double t = runs.front()->time() + 0.25;
         runs.front()->advance_to(t);
         if (!runs.front()->ok()) ++script.failures;
         if (runs.front()->time() >= 2.0 - 1e-9 || runs.front()->unstable() || !runs.front()->ok()) {
@@ -332,8 +332,8 @@ int run_app(const AppOptions& opt) {
           rebuild_runs(s);
         }
       } else {
-        for (SimulationRun* r : runs) r->advance_to(r->time() + 0.05);
-        if (++script.scene_frames >= 6) {
+        for (SimulationRun* r : runs) r->advance_to(r->time() + 0.1);
+        if (++script.scene_frames >= 3) {
           std::printf("smoke: scene %-35s ok, t = %.2f s\n", s.edited.name.c_str(), runs.front()->time());
           script.scene_frames = 0;
           if (++script.scene < s.scenes.size()) {
