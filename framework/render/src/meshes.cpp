@@ -185,7 +185,12 @@ Bounds scene_bounds(const World& world) {
     b.hi = b.hi.cwiseMax(p);
     any = true;
   };
-  for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
+  // Cubes where they were built (so the framing does not depend on when it is computed); other
+  // particles where they are now.
+  for (const CubeLattice& c : world.cubes())
+    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) grow(c.initial_positions().col(i));
+  if (world.cubes().empty())
+    for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
   for (const Terrain& t : world.terrains()) {
     if (const auto* bowl = std::get_if<Bowl>(&t.shape)) {
       const double rr = bowl->rim_radius();

@@ -54,8 +54,9 @@ class JellySurface {
   std::vector<int> particle_of_vertex_;
 };
 
-/// What a scene shows: particles at t = 0 plus each terrain's drawn extent (planes: a disc of
-/// radius `plane_margin` around the other content).
+/// What a scene shows: the cubes as built (or the current particles when there is no cube) plus
+/// each terrain's extent (a plane's hole, the bowl's cap, the sphere; a plane without a hole adds
+/// only its point).
 Bounds scene_bounds(const World& world);
 
 /// Half-size of the drawn square of a plane [m] for a world whose other content is in `b`.
