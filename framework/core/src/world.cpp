@@ -116,6 +116,7 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
           g.springs.erase(std::remove_if(g.springs.begin(), g.springs.end(),
                                          [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
                           g.springs.end());
+          g.task_cache.reset();  // its springs changed
         }
       }
       break;
@@ -139,11 +140,17 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
 }
 
 void World::add_spring_group(SpringGroup group) {
+  group.threads = threads_;
   groups_.push_back(std::move(group));
   pairs_.clear();
 }
 
 void World::set_gravity(std::optional<Vec3> g) { gravity_ = g; }
+
+void World::set_force_threads(int threads) {
+  threads_ = std::max(1, threads);
+  for (SpringGroup& g : groups_) g.threads = threads_;
+}
 
 void World::add_terrain(Terrain terrain) {
   terrains_.push_back(std::move(terrain));

@@ -58,6 +58,9 @@ class World : public JacobianSystem {
   void set_gravity(std::optional<Vec3> g);
   /// Appends a terrain; terrains act in the order they were added.
   void add_terrain(Terrain terrain);
+  /// Lets the spring pass use up to `threads` threads (default 1). Results do not depend on it.
+  void set_force_threads(int threads);
+  int force_threads() const { return threads_; }
 
   // ----- the System interface -----
   void acceleration(const State& s, Vec3Array& a) override;
@@ -106,6 +109,7 @@ class World : public JacobianSystem {
   EffectCounters counters_;
   Vec3Array force_;  // scratch, 3×N
   double lowest_initial_height_ = 0.0;
+  int threads_ = 1;
   // Jacobian pattern: pair index of every spring, per group (built on first use).
   mutable std::vector<std::pair<int, int>> pairs_;
   mutable std::vector<std::vector<int>> pair_of_spring_;
