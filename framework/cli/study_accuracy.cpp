@@ -194,7 +194,9 @@ SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* 
       for (int rep = 1; rep < o.repeats; ++rep)
         row.wall = std::min(row.wall, run_once(scene, kind, h, o, nullptr, false).row.wall);
       row.order_rms = row.order_final = kNaN;
-      if (i > 0) {
+      // An order compares like with like: both runs stable, or both flagged (explicit Euler on
+      // an undamped spring still converges over a finite horizon); never across a blow-up.
+      if (i > 0 && r.rows.back().stable == row.stable) {
         const RunRow& prev = r.rows.back();
         row.order_rms = order(prev.error_rms, row.error_rms, prev.h, h);
         row.order_final = order(prev.error_final, row.error_final, prev.h, h);
