@@ -2,6 +2,7 @@
 //   BM_Step/<integrator>/<n>     course 2023 scene, cube in flight (t = 0), one core
 //   BM_StepResting/<integrator>  the same after 10 s, resting in the bowl (contact active)
 //   BM_StepSprings/<types>       cost of a step following the scene: structural only vs full cube
+//   BM_StepThreads/<n>/<threads> explicit Euler with the spring pass on 1 or 2 threads (wall time)
 #include <benchmark/benchmark.h>
 
 #include "jelly/simulator.hpp"
@@ -86,6 +87,19 @@ void BM_StepSprings(benchmark::State& state) {
   run_steps(state, sim, true);
 }
 
+// Explicit Euler with the spring pass split among 1 or 2 threads (World::set_force_threads).
+void BM_StepThreads(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  state.SetLabel("explicit_euler n=" + std::to_string(n) + " threads=" + std::to_string(threads));
+  Simulator::Options o(IntegratorKind::ExplicitEuler, 0.001);
+  o.detect_instability = false;
+  auto world = build_world(course_scene(n, IntegratorKind::ExplicitEuler), linked_tasks());
+  world->set_force_threads(threads);
+  Simulator sim(std::move(world), o);
+  run_steps(state, sim, true);
+}
+
 void integrators_n10(benchmark::internal::Benchmark* b) {
   for (IntegratorKind k : kAllIntegrators) b->Args({static_cast<long>(k), 10});
 }
@@ -100,4 +114,5 @@ BENCHMARK(BM_Step)->Apply(integrators_n10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Step)->Name("BM_StepSize")->Apply(sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepResting)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepSprings)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StepThreads)->ArgsProduct({{10, 30}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_MAIN();
