@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "jelly/auto_step.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_table.hpp"
 
@@ -162,6 +163,17 @@ SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* 
     r.particles = static_cast<long>(world->particle_count());
     r.springs = world->spring_count();
     r.terrains = world->terrains().size();
+    // Where the automatic step size would run each integrator, for comparison with the sweep.
+    const StabilityEstimate e = estimate_stability(*world, world->state());
+    for (IntegratorKind kind : o.integrators) {
+      const AutoStep a = choose_step(e, kind, 1.0 / 60.0, scene.dt);
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "%.4g s (%d substeps per 1/60 s frame%s)", a.chosen_h,
+                    a.substeps_per_frame, a.stable_step_exists ? "" : "; no step is stable");
+      r.auto_steps.push_back(buf);
+      if (progress)
+        std::fprintf(progress, "auto step for %s: %s\n", std::string(to_string(kind)).c_str(), buf);
+    }
   }
   // Every step must divide the sample interval and the duration: check all before running.
   steps_per(o.duration, o.sample_dt, "the duration (in samples)");

@@ -62,6 +62,9 @@ struct SweepResult {
   SweepOptions options;
   ReferenceInfo reference;
   std::vector<RunRow> rows;  ///< integrator-major, steps coarse to fine
+  /// Per integrator (in options order): the automatic step `jelly run --auto-dt` would choose
+  /// (1/60 s frames, capped at the scene's dt), as "h s (k substeps per frame)".
+  std::vector<std::string> auto_steps;
   std::string load_before, load_after;  ///< /proc/loadavg at start and end
 };
 

@@ -27,6 +27,8 @@ PREFIX.svg (+ PREFIX.png) drawn by gnuplot from PREFIX.gp and PREFIX.dat.
   stability   the contract's detector (§8) is watched, not obeyed: a run it flags keeps going so
               its error is still measured (it stops only when the state is no longer finite);
               such runs are marked unstable in every output and drawn as crosses, not dropped
+  auto step   the step `jelly run --auto-dt` would choose for each integrator is printed and
+              written into PREFIX.md, to compare with the sweep
   plot        x = RMS error, y = wall time per simulated second / force evaluations / h, log-log
               (SciML's work-precision convention: error on x, work on y)
 

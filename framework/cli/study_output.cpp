@@ -113,6 +113,10 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
         "only (minimum of " << o.repeats << " run" << (o.repeats > 1 ? "s" : "")
      << "); load average " << r.load_before << " before, " << r.load_after
      << " after (a shared 2-core machine).\n\n";
+  md << "Automatic step (`jelly run --auto-dt`: half the estimated limit, at most the scene's dt):";
+  for (std::size_t i = 0; i < r.auto_steps.size() && i < o.integrators.size(); ++i)
+    md << (i ? "; " : " ") << to_string(o.integrators[i]) << " " << r.auto_steps[i];
+  md << ".\n\n";
   md << "| integrator | h [s] | stable | RMS error [m] | final error [m] | order (RMS) | "
         "wall s / sim s | force evals | CG iters |\n";
   md << "|---|---|---|---|---|---|---|---|---|\n";
