@@ -2,7 +2,11 @@
 // the linear two-particle spring, the linearised damped cube): no student force, spring or terrain
 // code runs, so a wrong spring sign cannot fail an integrator test.
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "harness.hpp"
 #include "jelly/test_systems.hpp"
@@ -13,17 +17,24 @@ namespace jelly::grade {
 namespace {
 
 struct Method {
-  const char* prefix;  // case id prefix
-  const char* name;    // the student's function
+  const char* key;   // params.method
+  const char* name;  // the student's function
   StepFunction TaskTable::*member;
 };
 
 const Method kMethods[] = {
-    {"a1.t10.explicit_euler", "explicit_euler_step", &TaskTable::explicit_euler_step},
-    {"a1.t11.implicit_euler", "implicit_euler_step", &TaskTable::implicit_euler_step},
-    {"a1.t12.midpoint", "midpoint_step", &TaskTable::midpoint_step},
-    {"a1.t13.rk4", "rk4_step", &TaskTable::rk4_step},
+    {"explicit_euler", "explicit_euler_step", &TaskTable::explicit_euler_step},
+    {"implicit_euler", "implicit_euler_step", &TaskTable::implicit_euler_step},
+    {"midpoint", "midpoint_step", &TaskTable::midpoint_step},
+    {"rk4", "rk4_step", &TaskTable::rk4_step},
 };
+
+const Method& method(const Params& params) {
+  const std::string key = params.text("method");
+  for (const Method& m : kMethods)
+    if (key == m.key) return m;
+  throw std::runtime_error("params.method: expected explicit_euler, implicit_euler, midpoint or rk4, got " + key);
+}
 
 void step_n(StepFunction fn, System& system, State& s, double h, long n) {
   Workspace w;
@@ -34,34 +45,43 @@ void step_n(StepFunction fn, System& system, State& s, double h, long n) {
   }
 }
 
-// Free fall of three particles for 0.5 s at h = 1 ms (contract §9).
-void run_free_fall(const Method& m, const TaskTable& t, Outputs& out) {
+// Free fall of three particles (contract §9): params.steps steps of params.h.
+void run_free_fall(const TaskTable& t, const Params& params, Outputs& out) {
+  const Method& m = method(params);
+  const double h = params.number("h");
+  const long steps = params.integer("steps");
   FreeFallSystem system(3, Vec3(0.0, -9.8, 0.0));
   State s;
   s.resize(3);
   s.x << -4.8, 0.0, 1.0, 11.0, 5.0, 2.0, 0.0, 2.0, 3.0;
   s.v << 0.0, 1.0, 0.0, 0.0, 0.0, 3.0, 0.0, 0.5, 0.0;
-  step_n(t.*(m.member), system, s, 1e-3, 500);
-  out.value("y0", s.x(1, 0),
-            "height after 500 steps of 1 ms of a particle dropped from rest at y = 11 m (contract §9) [m]");
-  out.array("x", s.x, "positions of three falling particles after 0.5 s [m]");
-  out.array("v", s.v, "velocities of three falling particles after 0.5 s [m/s]");
+  step_n(t.*(m.member), system, s, h, steps);
+  char what[160];
+  std::snprintf(what, sizeof what, "after %ld steps of %g s of a particle dropped from rest at y = 11 m (contract §9) [m]",
+                steps, h);
+  out.value("y0", s.x(1, 0), std::string("height ") + what);
+  out.array("x", s.x, "positions of three falling particles at the end [m]");
+  out.array("v", s.v, "velocities of three falling particles at the end [m/s]");
 }
 
-// The small cube linearised about its rest shape, with gravity and dampers (no student code).
-std::unique_ptr<LinearSystem> linear_cube(const Json& input, bool gravity, double kd) {
+// The prepared cube (params.cube) linearised about its rest shape, stiffness params.ks, dampers
+// params.kd, gravity params.gravity (none when absent); no student code.
+std::unique_ptr<LinearSystem> linear_cube(const Params& params, const Json& input) {
   World world{TaskTable{}};
-  add_small_cube(world, input, 2000.0, kd);
-  if (gravity) world.set_gravity(Vec3(0.0, -9.8, 0.0));
+  add_prepared_cube(world, params, input, params.number("ks"), params.number("kd"));
+  if (params.has("gravity")) world.set_gravity(params.vec("gravity"));
   const Vec3Array rest = world.state().x;
   return std::make_unique<LinearSystem>(world, rest);
 }
 
-State perturbed_cube_state(const Json& input, std::uint64_t seed, double dx, double dv) {
+// The cube at rest, positions moved by params.dx·U and velocities params.dv·U (U uniform in
+// [−1, 1) from params.seed).
+State perturbed_cube_state(const Params& params, const Json& input) {
   World world{TaskTable{}};
-  add_small_cube(world, input, 2000.0, 60.0);
+  add_prepared_cube(world, params, input, params.number("ks"), params.number("kd"));
   State s = world.state();
-  Sequence r(seed);
+  Sequence r(static_cast<std::uint64_t>(params.integer("seed")));
+  const double dx = params.number("dx"), dv = params.number("dv");
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     s.x.col(i) += dx * Vec3(r.next(), r.next(), r.next());
     s.v.col(i) = dv * Vec3(r.next(), r.next(), r.next());
@@ -69,74 +89,82 @@ State perturbed_cube_state(const Json& input, std::uint64_t seed, double dx, dou
   return s;
 }
 
-// One step from a given state of the damped linear cube.
-void run_single_step(const Method& m, const TaskTable& t, const Json& input, double h,
-                     std::uint64_t seed, Outputs& out) {
-  auto system = linear_cube(input, true, 60.0);
-  State s = perturbed_cube_state(input, seed, 0.05, 1.0);
+// One step of params.h from the perturbed state of the linear cube.
+void run_single_step(const TaskTable& t, const Params& params, const Json& input, Outputs& out) {
+  const Method& m = method(params);
+  const double h = params.number("h");
+  auto system = linear_cube(params, input);
+  State s = perturbed_cube_state(params, input);
   step_n(t.*(m.member), *system, s, h, 1);
   char what[96];
-  std::snprintf(what, sizeof what, "after ONE step of h = %g s of the damped linear 3×3×3 cube", h);
+  std::snprintf(what, sizeof what, "after ONE step of h = %g s of the damped linear cube", h);
   out.array("x", s.x, std::string("positions ") + what + " [m]");
   out.array("v", s.v, std::string("velocities ") + what + " [m/s]");
 }
 
-// Observed order on the linear two-particle spring (contract §9).
-void run_convergence(const Method& m, const TaskTable& t, Outputs& out) {
-  const double hs[] = {1e-2, 5e-3, 2.5e-3, 1.25e-3};
+// Observed order on the linear two-particle spring (contract §9), damping params.damping, one
+// run to t = 1 s per step size in params.h (at least two).
+void run_convergence(const TaskTable& t, const Params& params, Outputs& out) {
+  const Method& m = method(params);
+  const double damping = params.number("damping");
+  std::vector<double> hs;
+  for (const Json& h : params.json().at("h")) hs.push_back(h.get<double>());
+  if (hs.size() < 2) throw std::runtime_error("params.h: expected at least two step sizes");
   std::vector<double> errors;
+  std::string list;
   for (double h : hs) {
-    auto system = make_linear_two_particle_spring(0.1);
-    State s = TwoParticleSpring::initial_state(0.1);
+    auto system = make_linear_two_particle_spring(damping);
+    State s = TwoParticleSpring::initial_state(damping);
     step_n(t.*(m.member), *system, s, h, std::lround(1.0 / h));
-    const double exact = TwoParticleSpring::exact_x1(1.0, 0.1);
+    const double exact = TwoParticleSpring::exact_x1(1.0, damping);
     const double e = std::max(std::abs(s.x(0, 1) - exact), std::abs(s.x(0, 0) + exact));
     errors.push_back(e);
+    char b[32];
+    std::snprintf(b, sizeof b, "%s%g", list.empty() ? "" : ", ", h);
+    list += b;
   }
-  out.values("errors", errors,
-             "largest position error at t = 1 s on the two-particle spring for h = 1e-2, 5e-3, 2.5e-3, 1.25e-3 [m]");
-  out.value("order", std::log2(errors[2] / errors[3]),
+  const std::size_t k = errors.size();
+  out.values("errors", errors, "largest position error at t = 1 s on the two-particle spring for h = " + list + " [m]");
+  out.value("order", std::log2(errors[k - 2] / errors[k - 1]),
             "observed order of accuracy from the last two step sizes (log2 of the error ratio)");
 }
 
-// Energy of the damped linear cube over 1 s (no gravity): with damping it must not grow.
-void run_energy(const Method& m, const TaskTable& t, const Json& input, Outputs& out) {
-  auto system = linear_cube(input, false, 60.0);
-  State s = perturbed_cube_state(input, 5, 0.05, 1.0);
+// Energy of the linear cube over params.steps steps of params.h from its perturbed state: with
+// damping on it must not grow.
+void run_energy(const TaskTable& t, const Params& params, const Json& input, Outputs& out) {
+  const Method& m = method(params);
+  const double h = params.number("h");
+  const long steps = params.integer("steps");
+  auto system = linear_cube(params, input);
+  State s = perturbed_cube_state(params, input);
   const double e0 = system->energy(s);
   double max_ratio = 1.0;
   Workspace w;
-  for (int i = 0; i < 2000; ++i) {
+  for (long i = 0; i < steps; ++i) {
     w.resize(s.size());
-    (t.*(m.member))(*system, s, 5e-4, w);
+    (t.*(m.member))(*system, s, h, w);
     const double e = system->energy(s);
     max_ratio = std::isfinite(e) ? std::max(max_ratio, e / e0) : e;
     if (!std::isfinite(e)) break;
   }
-  out.value("max_energy_ratio", max_ratio,
-            "largest E(t)/E(0) over 1 s of the damped linear cube at h = 0.5 ms (damping on: must stay ≤ 1)");
-  out.value("final_energy_ratio", system->energy(s) / e0, "E(1 s)/E(0) of the damped linear cube");
+  char what[120];
+  std::snprintf(what, sizeof what, "over %ld steps of %g s of the damped linear cube", steps, h);
+  out.value("max_energy_ratio", max_ratio, std::string("largest E(t)/E(0) ") + what + " (damping on: must stay ≤ 1)");
+  out.value("final_energy_ratio", system->energy(s) / e0, std::string("E(end)/E(0) ") + what);
 }
 
 }  // namespace
 
+// Every generator takes params.method (explicit_euler, implicit_euler, midpoint, rk4).
 void register_integrator_cases(Registry& r) {
-  for (const Method& m : kMethods) {
-    const std::string p = m.prefix;
-    r.add({p + ".free_fall", std::string(m.name) + " in free fall for 0.5 s", nullptr,
-           [m](const TaskTable& t, const Json&, Outputs& o) { run_free_fall(m, t, o); }});
-    r.add({p + ".single_step", std::string(m.name) + ": one step of 1 ms of the damped linear cube",
-           &prepare_small_cube_springs,
-           [m](const TaskTable& t, const Json& in, Outputs& o) { run_single_step(m, t, in, 1e-3, 3, o); }});
-    r.add({p + ".single_step_large", std::string(m.name) + ": one step of 5 ms of the damped linear cube",
-           &prepare_small_cube_springs,
-           [m](const TaskTable& t, const Json& in, Outputs& o) { run_single_step(m, t, in, 5e-3, 17, o); }});
-    r.add({p + ".convergence", std::string(m.name) + ": order of accuracy on the two-particle spring", nullptr,
-           [m](const TaskTable& t, const Json&, Outputs& o) { run_convergence(m, t, o); }});
-    r.add({p + ".energy", std::string(m.name) + ": energy of the damped linear cube never grows",
-           &prepare_small_cube_springs,
-           [m](const TaskTable& t, const Json& in, Outputs& o) { run_energy(m, t, in, o); }});
-  }
+  r.add({"integrator_free_fall", "one integrator on three particles in free fall", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_free_fall(t, p, o); }});
+  r.add({"integrator_single_step", "one step of one integrator on the damped linear cube", &prepare_cube_springs,
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) { run_single_step(t, p, in, o); }});
+  r.add({"integrator_convergence", "one integrator's order of accuracy on the two-particle spring", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_convergence(t, p, o); }});
+  r.add({"integrator_energy", "one integrator's energy on the damped linear cube", &prepare_cube_springs,
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) { run_energy(t, p, in, o); }});
 }
 
 }  // namespace jelly::grade

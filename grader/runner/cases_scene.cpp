@@ -31,7 +31,7 @@ SceneSpec course_scene() {
   return s;
 }
 
-void run_course(const TaskTable& tasks, Outputs& out) {
+void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
   const SceneSpec spec = course_scene();
   Simulator::Options o;
   o.integrator = spec.integrator;
@@ -40,7 +40,9 @@ void run_course(const TaskTable& tasks, Outputs& out) {
   Simulator sim(build_world(spec, tasks), o);
   std::vector<double> t, cy, cx, cz;
   double first_contact = -1.0, max_penetration = 0.0;
-  const double duration = 10.0;
+  const double duration = params.number("duration");
+  const long every = params.integer("sample_every");
+  const double window = params.number("mean_window");
   const long steps = std::lround(duration / spec.dt);
   for (long k = 1; k <= steps; ++k) {
     if (sim.step() != StepResult::Ok) break;
@@ -51,7 +53,7 @@ void run_course(const TaskTable& tasks, Outputs& out) {
       for (long c : sim.world().counters().contacts) hits += c;
       if (hits > 0) first_contact = sim.time();
     }
-    if (k % 50 == 0) {
+    if (k % every == 0) {
       const Vec3 com = s.x.rowwise().mean();
       t.push_back(sim.time());
       cx.push_back(com.x());
@@ -70,7 +72,7 @@ void run_course(const TaskTable& tasks, Outputs& out) {
   Vec3 mean = Vec3::Zero();
   int count = 0;
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] > duration - 5.0 + 1e-9) mean += Vec3(cx[i], cy[i], cz[i]), ++count;
+    if (t[i] > duration - window + 1e-9) mean += Vec3(cx[i], cy[i], cz[i]), ++count;
   if (count > 0) mean /= count;
   const Bowl bowl = std::get<Bowl>(terrain_preset("course-2023-bowl")->shape);
   const double axis = std::hypot(mean.x() - bowl.center.x(), mean.z() - bowl.center.z());
@@ -91,9 +93,11 @@ void run_course(const TaskTable& tasks, Outputs& out) {
 
 }  // namespace
 
+// course_scene: params.duration [s], centre of mass sampled every params.sample_every steps, its
+// mean over the last params.mean_window seconds.
 void register_scene_cases(Registry& r) {
-  r.add({"a1.course.scene", "the 2023 course scene with all of your code (explicit Euler, 10 s)", nullptr,
-         [](const TaskTable& t, const Json&, Outputs& o) { run_course(t, o); }});
+  r.add({"course_scene", "the 2023 course scene with all of the student's code (explicit Euler)", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_course(t, p, o); }});
 }
 
 }  // namespace jelly::grade

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 #include "harness.hpp"
 #include "jelly/cube.hpp"
@@ -18,37 +19,18 @@ namespace {
 using Offset = std::array<int, 3>;
 using Builder = void (*)(const CubeLattice&, std::vector<Spring>&);
 
-struct LatticeCase {
-  const char* suffix;
-  const char* what;
-  CubeSpec spec;
-  int first_index;
-};
-
-std::vector<LatticeCase> lattices() {
-  std::vector<LatticeCase> out;
-  for (int n : {2, 3, 4, 10}) {
-    CubeSpec s;
-    s.n = n;
-    s.edge = 4.0;
-    s.center = Vec3(0.0, 9.0, 0.0);
-    out.push_back({n == 2 ? "n2" : n == 3 ? "n3" : n == 4 ? "n4" : "n10", "", s, 0});
-  }
-  CubeSpec r;
-  r.n = 5;
-  r.edge = 2.0;
-  r.center = Vec3(1.0, 2.0, 3.0);
-  r.rotation_axis = Vec3(1.0, 1.0, 0.0);
-  r.rotation_degrees = 30.0;
-  out.push_back({"rotated", "", r, 8});
-  return out;
-}
-
-std::string lattice_words(const LatticeCase& c) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "a %d×%d×%d cube%s%s", c.spec.n, c.spec.n, c.spec.n,
-                c.spec.rotation_degrees != 0.0 ? " rotated 30° about (1,1,0)" : "",
-                c.first_index != 0 ? " whose first particle has index 8 (use cube.index(i, j, k))" : "");
+// e.g. "a 4×4×4 cube rotated 20° about (1,0,1) whose first particle has index 27" (whatever the
+// parameters say), for the notes.
+std::string lattice_words(const CubeSpec& spec, int first_index) {
+  char buf[200];
+  const Vec3& a = spec.rotation_axis;
+  char rotation[96] = "";
+  if (spec.rotation_degrees != 0.0)
+    std::snprintf(rotation, sizeof rotation, " rotated %g° about (%g,%g,%g)", spec.rotation_degrees, a.x(), a.y(), a.z());
+  char first[96] = "";
+  if (first_index != 0)
+    std::snprintf(first, sizeof first, " whose first particle has index %d (use cube.index(i, j, k))", first_index);
+  std::snprintf(buf, sizeof buf, "a %d×%d×%d cube%s%s", spec.n, spec.n, spec.n, rotation, first);
   return buf;
 }
 
@@ -87,7 +69,7 @@ std::string pair_set_hash(std::vector<std::pair<int, int>> pairs) {
   return buf;
 }
 
-void classify(const CubeLattice& cube, const std::vector<Spring>& springs, Outputs& out) {
+void classify(const CubeLattice& cube, const std::string& what, const std::vector<Spring>& springs, Outputs& out) {
   const int n = cube.n(), first = cube.first_index(), count = cube.particle_count();
   std::map<Offset, int> per_offset;
   int invalid = 0, other = 0, duplicates = 0;
@@ -113,7 +95,8 @@ void classify(const CubeLattice& cube, const std::vector<Spring>& springs, Outpu
     const double err = std::abs(s.rest_length - actual);
     rest_error = std::isfinite(err) ? std::max(rest_error, err) : err;
   }
-  out.value("count", static_cast<double>(springs.size()), "number of springs appended");
+  out.value("count", static_cast<double>(springs.size()),
+            "number of springs appended for " + what);
   for (const Offset& o : all_offsets())
     out.value("offset" + offset_name(o), per_offset[o],
               "springs joining particles whose grid coordinates differ by " + offset_name(o) +
@@ -126,30 +109,30 @@ void classify(const CubeLattice& cube, const std::vector<Spring>& springs, Outpu
   out.text("pair_set", pair_set_hash(pairs), "the exact set of particle pairs joined (as a hash)");
 }
 
-void add_builder_cases(Registry& r, const char* task_prefix, const char* name,
-                       Builder TaskTable::*member) {
-  for (const LatticeCase& lc : lattices()) {
-    // A 2×2×2 cube has no bending springs: a builder that does nothing would pass.
-    if (member == &TaskTable::add_bending_springs && lc.spec.n == 2) continue;
-    CaseDef def;
-    def.id = std::string(task_prefix) + "." + name + "." + lc.suffix;
-    def.description = std::string(name) + " springs of " + lattice_words(lc);
-    def.run = [lc, member](const TaskTable& tasks, const Json&, Outputs& out) {
-      const CubeLattice cube(lc.spec, lc.first_index);
-      std::vector<Spring> springs;
-      (tasks.*member)(cube, springs);
-      classify(cube, springs, out);
-    };
-    r.add(std::move(def));
-  }
-}
-
 }  // namespace
 
+// spring_builder: one builder (params.builder = "structural" | "shear" | "bending") on the lattice
+// params.cube (n, edge, center, rotation_axis, rotation_degrees) whose first particle has index
+// params.first_index (default 0).
 void register_spring_cases(Registry& r) {
-  add_builder_cases(r, "a1.t1", "structural", &TaskTable::add_structural_springs);
-  add_builder_cases(r, "a1.t2", "shear", &TaskTable::add_shear_springs);
-  add_builder_cases(r, "a1.t3", "bending", &TaskTable::add_bending_springs);
+  GeneratorDef def;
+  def.name = "spring_builder";
+  def.description = "one spring builder on a cube lattice the framework makes; classifies what it returned";
+  def.run = [](const TaskTable& tasks, const Params& params, const Json&, Outputs& out) {
+    const std::string which = params.text("builder");
+    Builder TaskTable::*member = which == "structural" ? &TaskTable::add_structural_springs
+                                 : which == "shear"    ? &TaskTable::add_shear_springs
+                                 : which == "bending"  ? &TaskTable::add_bending_springs
+                                                       : nullptr;
+    if (!member) throw std::runtime_error("params.builder: expected structural, shear or bending, got " + which);
+    const int first = static_cast<int>(params.integer("first_index", 0));
+    const CubeSpec spec = cube_from_params(params.table("cube"));
+    const CubeLattice cube(spec, first);
+    std::vector<Spring> springs;
+    (tasks.*member)(cube, springs);
+    classify(cube, lattice_words(spec, first), springs, out);
+  };
+  r.add(std::move(def));
 }
 
 }  // namespace jelly::grade

@@ -41,15 +41,66 @@ void Outputs::text(const std::string& name, const std::string& v, const std::str
   out_[name] = entry(Json(v), note);
 }
 
-void Registry::add(CaseDef def) {
-  if (find(def.id)) throw std::logic_error("duplicate grading case id " + def.id);
-  cases_.push_back(std::move(def));
+void Registry::add(GeneratorDef def) {
+  if (find(def.name)) throw std::logic_error("duplicate case generator " + def.name);
+  generators_.push_back(std::move(def));
 }
 
-const CaseDef* Registry::find(const std::string& id) const {
-  for (const CaseDef& c : cases_)
-    if (c.id == id) return &c;
+const GeneratorDef* Registry::find(const std::string& name) const {
+  for (const GeneratorDef& g : generators_)
+    if (g.name == name) return &g;
   return nullptr;
+}
+
+const Json& Params::at(const std::string& key) const {
+  if (!has(key)) throw std::runtime_error(path_ + "." + key + " is missing (see the case in grader/cases/)");
+  return j_.at(key);
+}
+
+void Params::wrong(const std::string& key, const char* expected) const {
+  throw std::runtime_error(path_ + "." + key + ": expected " + expected + ", got " + j_.at(key).dump());
+}
+
+double Params::number(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_number()) wrong(key, "a number");
+  return v.get<double>();
+}
+
+long Params::integer(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_number_integer()) wrong(key, "an integer");
+  return v.get<long>();
+}
+
+std::string Params::text(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_string()) wrong(key, "a string");
+  return v.get<std::string>();
+}
+
+Vec3 Params::vec(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+    wrong(key, "an array of 3 numbers");
+  return Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+}
+
+Params Params::table(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_object()) wrong(key, "a table");
+  return Params(v, path_ + "." + key);
+}
+
+std::vector<Params> Params::list(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_array()) wrong(key, "an array of tables");
+  std::vector<Params> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v[i].is_object()) wrong(key, "an array of tables");
+    out.emplace_back(v[i], path_ + "." + key + "[" + std::to_string(i) + "]");
+  }
+  return out;
 }
 
 Json springs_to_json(const std::vector<Spring>& springs) {
@@ -65,18 +116,18 @@ std::vector<Spring> springs_from_json(const Json& j) {
   return out;
 }
 
-CubeSpec small_cube_spec() {
+CubeSpec cube_from_params(const Params& cube) {
   CubeSpec s;
-  s.n = 3;
-  s.edge = 2.0;
-  s.center = Vec3(0.0, 5.0, 0.0);
-  s.rotation_axis = Vec3(1.0, 0.0, 1.0);
-  s.rotation_degrees = 20.0;
+  s.n = static_cast<int>(cube.integer("n"));
+  s.edge = cube.number("edge");
+  s.center = cube.vec("center", Vec3::Zero());
+  s.rotation_axis = cube.vec("rotation_axis", Vec3(1.0, 0.0, 1.0));
+  s.rotation_degrees = cube.number("rotation_degrees", 0.0);
   return s;
 }
 
-void prepare_small_cube_springs(const TaskTable& reference, Json& input) {
-  const CubeLattice cube(small_cube_spec(), 0);
+void prepare_cube_springs(const TaskTable& reference, const Params& params, Json& input) {
+  const CubeLattice cube(cube_from_params(params.table("cube")), 0);
   std::vector<Spring> structural, shear, bending;
   reference.add_structural_springs(cube, structural);
   reference.add_shear_springs(cube, shear);
@@ -86,8 +137,8 @@ void prepare_small_cube_springs(const TaskTable& reference, Json& input) {
                       {"bending", springs_to_json(bending)}};
 }
 
-void add_small_cube(World& world, const Json& input, double ks, double kd) {
-  const int cube = world.add_cube(small_cube_spec());
+void add_prepared_cube(World& world, const Params& params, const Json& input, double ks, double kd) {
+  const int cube = world.add_cube(cube_from_params(params.table("cube")));
   const double spacing = world.cubes().at(static_cast<std::size_t>(cube)).spacing();
   const std::pair<const char*, SpringType> types[] = {{"structural", SpringType::Structural},
                                                       {"shear", SpringType::Shear},

@@ -4,6 +4,7 @@
 // outputs a case emits with the stored reference; the runner itself never judges.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -39,24 +40,57 @@ class Outputs {
   Json out_ = Json::object();
 };
 
-/// One test case. `prepare` (optional) builds the case's input with the REFERENCE tasks when the
-/// reference data is generated (e.g. the reference spring list of a cube, which the framework does
-/// not otherwise have); the input is stored with the reference data and handed to `run`.
-struct CaseDef {
-  std::string id;
+/// The parameters of one case: the `params` table of its [[case]] in grader/cases/*.toml, handed to
+/// the runner by the orchestrator. Every input a case feeds the student's code is made from these
+/// (and from framework presets), so a case's inputs live in data, not in this code: removing a case
+/// from the case files removes every trace of it. Reading a missing or mistyped key throws, naming
+/// the key and what was expected.
+class Params {
+ public:
+  explicit Params(Json j, std::string path = "params") : j_(std::move(j)), path_(std::move(path)) {}
+  bool has(const std::string& key) const { return j_.is_object() && j_.contains(key); }
+  double number(const std::string& key) const;
+  double number(const std::string& key, double fallback) const { return has(key) ? number(key) : fallback; }
+  long integer(const std::string& key) const;
+  long integer(const std::string& key, long fallback) const { return has(key) ? integer(key) : fallback; }
+  std::string text(const std::string& key) const;
+  std::string text(const std::string& key, const std::string& fallback) const {
+    return has(key) ? text(key) : fallback;
+  }
+  Vec3 vec(const std::string& key) const;
+  Vec3 vec(const std::string& key, const Vec3& fallback) const { return has(key) ? vec(key) : fallback; }
+  Params table(const std::string& key) const;
+  /// The elements of an array of tables (e.g. a list of hand-made springs).
+  std::vector<Params> list(const std::string& key) const;
+  const Json& json() const { return j_; }
+
+ private:
+  const Json& at(const std::string& key) const;
+  [[noreturn]] void wrong(const std::string& key, const char* expected) const;
+  Json j_;
+  std::string path_;
+};
+
+/// One case generator: a family of tests (e.g. "a spring builder on a lattice"), turned into one
+/// case by its parameters. `prepare` (optional) builds the case's input with the REFERENCE tasks
+/// when the reference data is generated (e.g. the reference spring list of a cube, which the
+/// framework does not otherwise have); the input is stored with the reference data and handed to
+/// `run`.
+struct GeneratorDef {
+  std::string name;
   std::string description;
-  std::function<void(const TaskTable& tasks, Json& input)> prepare;
-  std::function<void(const TaskTable& tasks, const Json& input, Outputs& out)> run;
+  std::function<void(const TaskTable& tasks, const Params& params, Json& input)> prepare;
+  std::function<void(const TaskTable& tasks, const Params& params, const Json& input, Outputs& out)> run;
 };
 
 class Registry {
  public:
-  void add(CaseDef def);
-  const std::vector<CaseDef>& cases() const { return cases_; }
-  const CaseDef* find(const std::string& id) const;
+  void add(GeneratorDef def);
+  const std::vector<GeneratorDef>& generators() const { return generators_; }
+  const GeneratorDef* find(const std::string& name) const;
 
  private:
-  std::vector<CaseDef> cases_;
+  std::vector<GeneratorDef> generators_;
 };
 
 // Registration, one function per task group (cases_*.cpp).
@@ -72,14 +106,14 @@ void register_scene_cases(Registry& r);
 Json springs_to_json(const std::vector<Spring>& springs);
 std::vector<Spring> springs_from_json(const Json& j);
 
-/// The small cube the force-scene and linear-cube cases use: n = 3, edge 2, centred at (0, 5, 0),
-/// rotated 20° about (1, 0, 1).
-CubeSpec small_cube_spec();
-/// prepare(): the REFERENCE springs of small_cube_spec(), per type, into input["springs"].
-void prepare_small_cube_springs(const TaskTable& reference, Json& input);
-/// Adds the small cube's particles and the spring groups stored in input["springs"] to a world,
-/// every group with the given coefficients (no student builder involved).
-void add_small_cube(World& world, const Json& input, double ks, double kd);
+/// A cube from a parameter table: n, edge, center, rotation_axis, rotation_degrees (the last three
+/// optional: (0,0,0), (1,0,1), 0).
+CubeSpec cube_from_params(const Params& cube);
+/// prepare(): the REFERENCE springs of the cube in params["cube"], per type, into input["springs"].
+void prepare_cube_springs(const TaskTable& reference, const Params& params, Json& input);
+/// Adds the cube params["cube"]'s particles and the spring groups stored in input["springs"] to a
+/// world, every group with the given coefficients (no student builder involved).
+void add_prepared_cube(World& world, const Params& params, const Json& input, double ks, double kd);
 
 /// A deterministic pseudo-random sequence in [−1, 1) (its own arithmetic, so that every standard
 /// library gives the same numbers).

@@ -1,8 +1,10 @@
 // jelly-grade runner: runs ONE grading case and writes its outputs as one JSON object to a file
-// descriptor the orchestrator gave it.
+// descriptor the orchestrator gave it. The runner knows case GENERATORS only; a case is a
+// generator plus its parameters, both from grader/cases/*.toml, handed over in the request file:
+//   { "case": ID, "generator": NAME, "params": {...}, "input": {...prepared input, if any} }
 //
-//   runner --list                                  case ids and descriptions, one per line
-//   runner --case ID [--input FILE] [--result-fd N] [--prepare] [--no-sandbox]
+//   runner --list                                  generator names and descriptions, one per line
+//   runner --request FILE [--result-fd N] [--prepare] [--no-sandbox]
 //
 // --prepare builds the case's input instead (reference runner only, at generate-reference time).
 // Everything the case needs is read BEFORE the sandbox goes up; after it, the student's code can
@@ -37,8 +39,7 @@ bool write_all(int fd, const std::string& text) {
 }
 
 int usage() {
-  std::fputs("usage: runner --list | --case ID [--input FILE] [--result-fd N] [--prepare] [--no-sandbox]\n",
-             stderr);
+  std::fputs("usage: runner --list | --request FILE [--result-fd N] [--prepare] [--no-sandbox]\n", stderr);
   return 2;
 }
 
@@ -52,56 +53,62 @@ int main(int argc, char** argv) {
   jelly::grade::register_integrator_cases(registry);
   jelly::grade::register_scene_cases(registry);
 
-  std::string case_id, input_path;
+  std::string request_path;
   int result_fd = 1;
   bool prepare = false, sandbox = true, list = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--list") list = true;
-    else if (a == "--case" && i + 1 < argc) case_id = argv[++i];
-    else if (a == "--input" && i + 1 < argc) input_path = argv[++i];
+    else if (a == "--request" && i + 1 < argc) request_path = argv[++i];
     else if (a == "--result-fd" && i + 1 < argc) result_fd = std::atoi(argv[++i]);
     else if (a == "--prepare") prepare = true;
     else if (a == "--no-sandbox") sandbox = false;
     else return usage();
   }
   if (list) {
-    for (const auto& c : registry.cases()) std::printf("%s\t%s\n", c.id.c_str(), c.description.c_str());
+    for (const auto& g : registry.generators()) std::printf("%s\t%s\n", g.name.c_str(), g.description.c_str());
     return 0;
   }
-  if (case_id.empty()) return usage();
-  const jelly::grade::CaseDef* def = registry.find(case_id);
-  if (!def) {
-    std::fprintf(stderr, "runner: unknown case '%s' (see --list)\n", case_id.c_str());
-    return 2;
-  }
-
-  Json input = Json::object();
-  if (!input_path.empty()) {
-    std::ifstream in(input_path);
+  if (request_path.empty()) return usage();
+  Json request;
+  {
+    std::ifstream in(request_path);
     if (!in) {
-      std::fprintf(stderr, "runner: cannot read input %s\n", input_path.c_str());
+      std::fprintf(stderr, "runner: cannot read request %s\n", request_path.c_str());
       return 2;
     }
     try {
-      input = Json::parse(in);
+      request = Json::parse(in);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "runner: input %s is not valid JSON: %s\n", input_path.c_str(), e.what());
+      std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(), e.what());
       return 2;
     }
   }
+  const std::string case_id = request.value("case", std::string("?"));
+  const std::string generator = request.value("generator", std::string());
+  const jelly::grade::GeneratorDef* def = registry.find(generator);
+  if (!def) {
+    std::fprintf(stderr, "runner: case '%s': unknown generator '%s' (see --list)\n", case_id.c_str(), generator.c_str());
+    return 2;
+  }
+  const jelly::grade::Params params(request.contains("params") ? request["params"] : Json::object());
+  const Json input = request.contains("input") ? request["input"] : Json::object();
   const jelly::TaskTable tasks = jelly::linked_tasks();
 
   Json result = Json::object();
   if (prepare) {
     Json prepared = Json::object();
-    if (def->prepare) def->prepare(tasks, prepared);
-    result["input"] = std::move(prepared);
+    try {
+      if (def->prepare) def->prepare(tasks, params, prepared);
+      result["input"] = std::move(prepared);
+    } catch (const std::exception& e) {
+      result["error"] = std::string("preparing the input failed: ") + e.what();
+    }
   } else {
     if (sandbox && !jelly::grade::install_sandbox(result_fd)) return 3;
     jelly::grade::Outputs out;
     try {
-      def->run(tasks, input, out);
+      def->run(tasks, params, input, out);
       result["outputs"] = out.json();
     } catch (const std::exception& e) {
       result["error"] = std::string("an exception was thrown: ") + e.what();

@@ -3,6 +3,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -38,6 +39,25 @@ Rule parse_rule(const std::string& text, const std::string& context,
     throw std::runtime_error(context + ": expected \"tol NAME\", \"range LO HI\" or \"info\", got \"" + text + "\"");
   }
   return r;
+}
+
+// A TOML value as JSON (tables keep toml++'s key order, which is sorted and so deterministic).
+Json to_json(const toml::node& n) {
+  if (const toml::table* t = n.as_table()) {
+    Json o = Json::object();
+    for (const auto& [k, v] : *t) o[std::string(k.str())] = to_json(v);
+    return o;
+  }
+  if (const toml::array* a = n.as_array()) {
+    Json arr = Json::array();
+    for (const toml::node& v : *a) arr.push_back(to_json(v));
+    return arr;
+  }
+  if (auto v = n.value_exact<std::int64_t>()) return Json(*v);
+  if (auto v = n.value_exact<double>()) return Json(*v);
+  if (auto v = n.value_exact<bool>()) return Json(*v);
+  if (auto v = n.value_exact<std::string>()) return Json(*v);
+  throw std::runtime_error("unsupported TOML value (dates are not case parameters)");
 }
 
 }  // namespace
@@ -134,9 +154,20 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
       c.weight = t["weight"].value_or(1.0);
       c.timeout_s = t["timeout"].value_or(0.0);
       c.tolerance = t["tolerance"].value_or(std::string());
+      c.generator = t["generator"].value_or(std::string());
       const std::string vis = t["visibility"].value_or(std::string("public"));
       const std::string ctx = where(f.string(), n, "case " + c.id);
-      if (c.id.empty() || c.task.empty()) throw std::runtime_error(ctx + ": needs id and task");
+      if (c.id.empty() || c.task.empty() || c.generator.empty())
+        throw std::runtime_error(ctx + ": needs id, task and generator (a name from `runner --list`)");
+      if (const toml::node* params = t.get("params")) {
+        if (!params->is_table())
+          throw std::runtime_error(ctx + ": params must be a table (params = { ... } or [case.params])");
+        try {
+          c.params = to_json(*params);
+        } catch (const std::exception& e) {
+          throw std::runtime_error(ctx + ".params: " + e.what());
+        }
+      }
       if (vis != "public" && vis != "hidden")
         throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" + vis + "\"");
       c.hidden = vis == "hidden";
@@ -198,8 +229,8 @@ std::string harness_digest(const GradeConfig& config) {
   return fnv_hex(all);
 }
 
-std::string case_hash(const std::string& id, const std::string& description, const std::string& digest) {
-  return fnv_hex(id + "\n" + description + "\n" + digest);
+std::string case_hash(const CaseSpec& spec, const std::string& digest) {
+  return fnv_hex(spec.id + "\n" + spec.generator + "\n" + spec.params.dump() + "\n" + digest);
 }
 
 }  // namespace jelly::grade

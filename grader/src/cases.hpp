@@ -37,6 +37,8 @@ struct CaseSpec {
   double weight = 1.0;     ///< share of its task's points
   bool hidden = false;
   double timeout_s = 0.0;  ///< 0: the command-line default
+  std::string generator;   ///< the runner's case generator (runner --list)
+  Json params = Json::object();  ///< the generator's parameters: every input the case feeds the student's code
   std::string tolerance;   ///< default rule for every output
   std::vector<std::pair<std::string, Rule>> rules;  ///< output-name pattern → rule (first match)
   std::string source;      ///< file it came from
@@ -80,10 +82,12 @@ inline constexpr int kReferenceFormat = 1;
 
 /// 64-bit FNV-1a as 16 hex digits.
 std::string fnv_hex(const std::string& text);
-/// Digest of the runner's case code (grader/runner/*): the reference data records it, and grading
-/// refuses data generated from different case code.
+/// Digest of the runner's generator code (the files directly in grader/runner/): the reference data
+/// records it, and grading refuses data generated from different generator code. It holds no case
+/// parameters, so a student release (public cases only) computes the same digest.
 std::string harness_digest(const GradeConfig& config);
-/// Hash identifying one case: its id, its description from the runner and the harness digest.
-std::string case_hash(const std::string& id, const std::string& description, const std::string& digest);
+/// Hash identifying one case: its id, generator, its own parameters and the harness digest. Grading
+/// refuses reference data whose case_hash differs (the case's parameters changed).
+std::string case_hash(const CaseSpec& spec, const std::string& digest);
 
 }  // namespace jelly::grade

@@ -74,19 +74,22 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
   fs::create_directories(work);
   std::set<fs::path> written;
   for (const CaseSpec& c : book.cases) {
-    if (!descriptions.count(c.id)) {
-      std::cerr << "jelly-grade: " << c.source << ": case " << c.id << " is not implemented by the runner\n";
+    if (!descriptions.count(c.generator)) {
+      std::cerr << "jelly-grade: " << c.source << ": case " << c.id << ": the runner has no generator \""
+                << c.generator << "\" (see jelly-grade-reference-runner --list)\n";
       return 2;
     }
-    const ChildResult prep = run_case(config.reference_runner, c.id, nullptr, work, 120.0, 0, true);
+    const ChildResult prep = run_case(config.reference_runner, c, nullptr, work, 120.0, 0, true);
     Json input = Json::object();
     try {
-      input = Json::parse(prep.result).at("input");
+      const Json prepared = Json::parse(prep.result);
+      if (prepared.contains("error")) throw std::runtime_error(prepared["error"].get<std::string>());
+      input = prepared.at("input");
     } catch (const std::exception& e) {
-      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << prep.err << "\n";
+      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << e.what() << " " << prep.err << "\n";
       return 2;
     }
-    const ChildResult run = run_case(config.reference_runner, c.id, &input, work, 120.0, 0);
+    const ChildResult run = run_case(config.reference_runner, c, &input, work, 120.0, 0);
     Json result;
     try {
       result = Json::parse(run.result);
@@ -107,7 +110,9 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     Json data;
     data["format_version"] = kReferenceFormat;
     data["case_id"] = c.id;
-    data["case_hash"] = case_hash(c.id, descriptions[c.id], digest);
+    data["case_hash"] = case_hash(c, digest);
+    data["case_generator"] = c.generator;
+    data["params"] = c.params;
     data["harness_digest"] = digest;
     data["generator"] = "jelly-grade generate-reference (jelly-grade-reference-runner, solutions/)";
     data["commit"] = commit;

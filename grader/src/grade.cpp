@@ -123,14 +123,16 @@ std::string syscall_name(int nr) {
   return s;
 }
 
-ChildResult run_case(const fs::path& runner, const std::string& id, const Json* input, const fs::path& work_dir,
+ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* input, const fs::path& work_dir,
                      double timeout_s, std::size_t memory_bytes, bool prepare) {
-  std::vector<std::string> argv = {runner.string(), "--case", id, "--result-fd", "3"};
-  if (input && !input->empty()) {
-    const fs::path in = work_dir / ("input-" + id + ".json");
-    std::ofstream(in) << input->dump();
-    argv.insert(argv.end(), {"--input", in.string()});
-  }
+  Json request = Json::object();
+  request["case"] = spec.id;
+  request["generator"] = spec.generator;
+  request["params"] = spec.params;
+  if (input && !input->empty()) request["input"] = *input;
+  const fs::path req = work_dir / ("request-" + spec.id + ".json");
+  std::ofstream(req) << request.dump();
+  std::vector<std::string> argv = {runner.string(), "--request", req.string(), "--result-fd", "3"};
   if (prepare) argv.push_back("--prepare");
   Limits lim;
   lim.timeout_s = timeout_s;
@@ -170,6 +172,10 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         throw std::runtime_error(reference_path(config, c).string() +
                                  " was generated from different case code (grader/runner changed); run "
                                  "`jelly-grade generate-reference`");
+      } else if (ref->value("case_hash", std::string()) != case_hash(c, digest)) {
+        throw std::runtime_error(reference_path(config, c).string() + " was generated for a different version of case " +
+                                 c.id + " (its generator or params in grader/cases/" + c.source +
+                                 " changed); run `jelly-grade generate-reference`");
       }
     }
     rep.cases.push_back(std::move(r));
@@ -230,7 +236,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
         const Json input = ref.contains("input") ? ref.at("input") : Json::object();
         const double timeout = r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
-        const ChildResult c = run_case(rep.build.runner, r.spec->id, &input, work_dir, timeout, options.memory_bytes);
+        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout, options.memory_bytes);
         r.seconds = c.seconds;
         r.reference = ref.at("outputs");
         r.printed = c.out.substr(0, 2000);

@@ -54,8 +54,9 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
                              const std::filesystem::path& submission, const std::filesystem::path& work_dir,
                              const GradeOptions& options);
 
-/// Runs one case with a runner binary in the sandbox (also used by generate-reference).
-ChildResult run_case(const std::filesystem::path& runner, const std::string& id, const Json* input,
+/// Runs one case (its generator and params, plus the prepared input) with a runner binary in the
+/// sandbox (also used by generate-reference).
+ChildResult run_case(const std::filesystem::path& runner, const CaseSpec& spec, const Json* input,
                      const std::filesystem::path& work_dir, double timeout_s, std::size_t memory_bytes,
                      bool prepare = false);
 
