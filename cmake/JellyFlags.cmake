@@ -13,9 +13,15 @@ target_compile_options(jelly_flags INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang>:-ffp-contract=off -fno-fast-math -fno-math-errno -fno-trapping-math>
   $<$<CXX_COMPILER_ID:MSVC>:/fp:precise>)
 if(JELLY_NATIVE)
-  # Wider vectors, same bits: -ffp-contract=off already forbids the compiler's own fusing, and
-  # -mno-fma keeps Eigen's explicit packet code (pmadd) from fusing multiply-adds either.
-  target_compile_options(jelly_flags INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang>:-march=native -mno-fma>)
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
+    # Wider vectors, same bits: -ffp-contract=off already forbids the compiler's own fusing, and
+    # -mno-fma keeps Eigen's explicit packet code (pmadd) from fusing multiply-adds either. Eigen
+    # refuses AVX-512 without FMA, so the width stops at AVX2.
+    target_compile_options(jelly_flags INTERFACE
+      $<$<CXX_COMPILER_ID:GNU,Clang>:-march=native -mno-fma -mno-avx512f>)
+  else()
+    message(WARNING "JELLY_NATIVE is only tuned for x86-64; ignored on ${CMAKE_SYSTEM_PROCESSOR}")
+  endif()
 endif()
 
 add_library(jelly_warnings INTERFACE)
