@@ -13,16 +13,9 @@ namespace {
 using namespace jelly;
 
 SceneSpec course_scene(int n, IntegratorKind kind) {
-  SceneSpec s;
+  SceneSpec s = course_2023_scene();
   s.integrator = kind;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
   s.cube.n = n;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  s.structural = {true, 2000.0, 60.0};
-  s.shear = {true, 2000.0, 60.0};
-  s.bending = {true, 2000.0, 60.0};
-  s.terrains.push_back(*terrain_preset("course-2023-floor"));
-  s.terrains.push_back(*terrain_preset("course-2023-bowl"));
   return s;
 }
 

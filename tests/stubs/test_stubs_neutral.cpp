@@ -18,24 +18,9 @@
 namespace jelly {
 namespace {
 
-// The course's 2023 scene, built in code so that this test needs neither scene files nor the loader:
-// n = 10 cube at (−4.8, 11, 0), ks 2000 / kd 60 on every spring type, gravity, the floor with its
-// hole then the bowl, h = 0.001, stepped with the framework's symplectic Euler (the scenes' default).
-SceneSpec course_scene() {
-  SceneSpec s;
-  s.name = "course 2023 (in code)";
-  s.integrator = IntegratorKind::SymplecticEuler;
-  s.dt = 0.001;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  s.structural = {true, 2000.0, 60.0};
-  s.shear = {true, 2000.0, 60.0};
-  s.bending = {true, 2000.0, 60.0};
-  s.terrains.push_back(*terrain_preset("course-2023-floor"));
-  s.terrains.push_back(*terrain_preset("course-2023-bowl"));
-  return s;
-}
+// The course's 2023 scene, built in code (jelly::course_2023_scene) so that this test needs neither
+// scene files nor the loader; stepped with the framework's symplectic Euler (the scenes' default).
+SceneSpec course_scene() { return course_2023_scene(); }
 
 // An entry the builders must leave alone: they append, never clear or overwrite.
 const Spring kSentinel{7, 11, 0.25};

@@ -13,19 +13,9 @@ namespace jelly::testing {
 /// kd 60 on every spring type, gravity, the floor with its hole then the bowl, h = 0.001.
 inline SceneSpec course_2023(IntegratorKind integrator = IntegratorKind::ExplicitEuler,
                              double dt = 0.001) {
-  SceneSpec s;
-  s.name = "course 2023 (in code)";
+  SceneSpec s = course_2023_scene();
   s.integrator = integrator;
   s.dt = dt;
-  s.duration = 10.0;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  s.structural = {true, 2000.0, 60.0};
-  s.shear = {true, 2000.0, 60.0};
-  s.bending = {true, 2000.0, 60.0};
-  s.terrains.push_back(*terrain_preset("course-2023-floor"));
-  s.terrains.push_back(*terrain_preset("course-2023-bowl"));
   return s;
 }
 

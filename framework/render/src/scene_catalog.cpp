@@ -18,22 +18,8 @@ fs::path default_scenes_dir() {
 }
 
 SceneSpec builtin_course_2023() {
-  SceneSpec s;
-  s.name = "course-2023";
-  s.description = "The 2023 course scene (built in): a 10×10×10 jelly falls onto a floor with a "
-                  "hole, over a bowl.";
-  s.integrator = IntegratorKind::ExplicitEuler;
-  s.dt = 0.001;
-  s.duration = 10.0;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.n = 10;
-  s.cube.edge = 4.0;
-  s.cube.mass = 1.0;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  s.cube.rotation_degrees = 0.0;
-  for (SpringSettings* ss : {&s.structural, &s.shear, &s.bending}) *ss = SpringSettings{true, 2000.0, 60.0};
-  s.terrains = {*terrain_preset("course-2023-floor"), *terrain_preset("course-2023-bowl")};
+  SceneSpec s = course_2023_scene();
+  s.description = "The 2023 course scene (built in): " + s.description;
   return s;
 }
 
