@@ -2,9 +2,8 @@
 // and key and writes nothing; an unstable run stops with exit code 3 and keeps what it wrote.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
+#include "run_jelly.hpp"
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,23 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-Result jelly(const std::string& arguments) {
-  const std::string command = std::string(JELLY_CLI) + " " + arguments + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (pipe && std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string scene(const std::string& name) { return std::string(JELLY_SOURCE_DIR) + "/scenes/" + name; }
+using Result = jelly::testing::CliResult;
+Result jelly(const std::string& arguments) { return jelly::testing::run_jelly(arguments); }
+std::string scene(const std::string& name) { return jelly::testing::scene_path(name); }
 
 class Cli : public ::testing::Test {
  protected:

@@ -3,9 +3,8 @@
 // and the plot are written; bad sweeps are refused. And `jelly run --auto-dt` reports its choice.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
+#include "run_jelly.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,23 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-Result jelly(const std::string& arguments) {
-  const std::string command = std::string(JELLY_CLI) + " " + arguments + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (pipe && std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string scene(const std::string& name) { return std::string(JELLY_SOURCE_DIR) + "/scenes/" + name; }
+using Result = jelly::testing::CliResult;
+Result jelly(const std::string& arguments) { return jelly::testing::run_jelly(arguments); }
+std::string scene(const std::string& name) { return jelly::testing::scene_path(name); }
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);
