@@ -12,6 +12,7 @@
 #endif
 
 #include "jelly/tasks/forces.hpp"
+#include "jelly/tasks/spring_groups.hpp"
 
 namespace jelly::tasks {
 
@@ -102,22 +103,16 @@ std::shared_ptr<const Plan> make_plan(const std::vector<Spring>& springs) {
   return plan;
 }
 
-// Scratch kept per thread between calls, so that a step allocates nothing once warmed up.
+// The state in structure-of-arrays form, shared by the threads of one pass. Kept per calling
+// thread between calls, so that a step allocates nothing once warmed up.
 struct Scratch {
-  std::vector<double> x, y, z, vx, vy, vz, fx, fy, fz;
+  std::vector<double> x, y, z, vx, vy, vz;
+  std::vector<double> sums;  // per group: its force sums fx, fy, fz (3 n each), from zero
 };
 Scratch& scratch() {
   thread_local Scratch s;
   return s;
 }
-struct Lane {
-  std::vector<double> tx, ty, tz;
-};
-Lane& lane() {
-  thread_local Lane l;
-  return l;
-}
-
 // Forces on the owners a = 0 … count−1 of springs (a, a + off), with positions and velocities given
 // from the first owner on: one lane per spring, no branch, so that the loop vectorises. An absent or
 // degenerate spring gets u = 0 and so a zero force.
@@ -143,21 +138,37 @@ void spring_lane(int count, int off, const double* __restrict x, const double* _
   }
 }
 
-// out[i] = in[3i + d]: one coordinate of a 3×N column-major array.
-void gather_component(int n, const double* __restrict in, int d, double* __restrict out) {
-  for (int i = 0; i < n; ++i) out[i] = in[3 * i + d];
+// Particles [j0, j1) of a 3×N column-major array into three arrays, in one pass.
+void to_components(int j0, int j1, const double* __restrict in, double* __restrict c0,
+                   double* __restrict c1, double* __restrict c2) {
+  for (int i = j0; i < j1; ++i) {
+    c0[i] = in[3 * i];
+    c1[i] = in[3 * i + 1];
+    c2[i] = in[3 * i + 2];
+  }
 }
 
-// out[3i + d] += in[i].
-void add_component(int n, const double* __restrict in, int d, double* __restrict out) {
-  for (int i = 0; i < n; ++i) out[3 * i + d] += in[i];
+// out[3i + d] += c_d[i] for the particles [j0, j1), in one pass.
+void add_components(int j0, int j1, const double* __restrict c0, const double* __restrict c1,
+                    const double* __restrict c2, double* __restrict out) {
+  for (int i = j0; i < j1; ++i) {
+    out[3 * i] += c0[i];
+    out[3 * i + 1] += c1[i];
+    out[3 * i + 2] += c2[i];
+  }
 }
 
-// Adds the forces of every dense run to F[j] for the particles j ∈ [j0, j1).
+// Lanes per chunk: the chunk's forces stay in L1 between the lane and the two scatter loops.
+constexpr int kChunk = 128;
+
+// Adds the forces of every dense run to F[j] for the particles j ∈ [j0, j1). Per particle the
+// order is fixed: run by run (ascending offset), + from the spring it owns, then − from the spring
+// ending at it. The chunks of a run go from the last to the first, so the chunk holding a spring
+// that ends at j (owner j − off) is never handled before the chunk holding j's own spring.
 void pass_over_block(const Plan& plan, double ks, double kd, double degenerate, const Scratch& s,
                      double* __restrict fx, double* __restrict fy, double* __restrict fz, int j0,
                      int j1) {
-  Lane& t = lane();
+  alignas(64) double tx[kChunk], ty[kChunk], tz[kChunk];
   const double* __restrict x = s.x.data();
   const double* __restrict y = s.y.data();
   const double* __restrict z = s.z.data();
@@ -170,27 +181,114 @@ void pass_over_block(const Plan& plan, double ks, double kd, double degenerate, 
     // (a + off ∈ [j0, j1)).
     const int lo = std::max(run.first, j0 - off);
     const int hi = std::min(run.first + run.count, j1);
-    if (lo >= hi) continue;
-    const auto n = static_cast<std::size_t>(hi - lo);
-    if (t.tx.size() < n) t.tx.resize(n), t.ty.resize(n), t.tz.resize(n);
-    double* __restrict tx = t.tx.data();
-    double* __restrict ty = t.ty.data();
-    double* __restrict tz = t.tz.data();
-    const double* __restrict rest = run.rest.data() + (lo - run.first);
-    const double* __restrict present = run.present.data() + (lo - run.first);
-    spring_lane(hi - lo, off, x + lo, y + lo, z + lo, vx + lo, vy + lo, vz + lo, rest, present, ks, kd,
-                degenerate, tx, ty, tz);
-    for (int a = std::max(lo, j0); a < hi; ++a) {  // + on the owner a
-      fx[a] += tx[a - lo];
-      fy[a] += ty[a - lo];
-      fz[a] += tz[a - lo];
+    for (int c1 = hi; c1 > lo; c1 -= kChunk) {
+      const int c0 = std::max(lo, c1 - kChunk);
+      const double* __restrict rest = run.rest.data() + (c0 - run.first);
+      const double* __restrict present = run.present.data() + (c0 - run.first);
+      spring_lane(c1 - c0, off, x + c0, y + c0, z + c0, vx + c0, vy + c0, vz + c0, rest, present, ks,
+                  kd, degenerate, tx, ty, tz);
+      for (int a = std::max(c0, j0); a < c1; ++a) {  // + on the owner a
+        fx[a] += tx[a - c0];
+        fy[a] += ty[a - c0];
+        fz[a] += tz[a - c0];
+      }
+      const int end = std::min(c1, j1 - off);
+      for (int a = c0; a < end; ++a) {  // − on the other end b = a + off
+        fx[a + off] -= tx[a - c0];
+        fy[a + off] -= ty[a - c0];
+        fz[a + off] -= tz[a - c0];
+      }
     }
-    const int end = std::min(hi, j1 - off);
-    for (int a = lo; a < end; ++a) {  // − on the other end b = a + off
-      fx[a + off] -= tx[a - lo];
-      fy[a + off] -= ty[a - lo];
-      fz[a + off] -= tz[a - lo];
+  }
+}
+
+const Plan& plan_of(const SpringGroup& group) {
+  if (!group.task_cache) group.task_cache = make_plan(group.springs);
+  return *static_cast<const Plan*>(group.task_cache.get());
+}
+
+// Adds the scalar leftovers of a group (list order) to f.
+void add_leftovers(const Plan& plan, const SpringGroup& group, const State& s, Vec3Array& f) {
+  for (const Spring& sp : plan.leftovers) {
+    const Vec3 xa = s.x.col(sp.a), xb = s.x.col(sp.b);
+    const Vec3 fa =
+        spring_force(xa, xb, group.ks, sp.rest_length, group.degenerate_length) +
+        damper_force(xa, xb, s.v.col(sp.a), s.v.col(sp.b), group.kd, group.degenerate_length);
+    f.col(sp.a) += fa;
+    f.col(sp.b) -= fa;
+  }
+}
+
+// The whole pass for `count` groups, in the order f ← ((f + S₁) + L₁) + S₂ + L₂ …, where S_g is
+// group g's dense sum (from zero, per particle in offset order) and L_g its scalar leftovers: the
+// same bits as one accumulate_spring_forces call per group, but with the state turned into
+// structure-of-arrays once, and (with threads) one parallel region in which each thread owns a
+// block of particles from the copy to the write-back.
+void spring_pass(const SpringGroup* groups, std::size_t count, const State& s, Vec3Array& f) {
+  const int n = static_cast<int>(s.size());
+  const auto un = static_cast<std::size_t>(n);
+  Scratch& w = scratch();
+  for (auto* v : {&w.x, &w.y, &w.z, &w.vx, &w.vy, &w.vz}) v->resize(un);
+  w.sums.resize(3 * un * count);
+  bool leftovers = false;
+  int wanted = 1;
+  std::vector<const Plan*> plans_storage;
+  const Plan* plans_small[8];
+  const Plan** plans = plans_small;
+  if (count > 8) {
+    plans_storage.resize(count);
+    plans = plans_storage.data();
+  }
+  for (std::size_t g = 0; g < count; ++g) {
+    plans[g] = groups[g].springs.empty() ? nullptr : &plan_of(groups[g]);
+    if (plans[g] && !plans[g]->leftovers.empty()) leftovers = true;
+    wanted = std::max(wanted, groups[g].threads);
+  }
+  const double* xs = s.x.data();
+  const double* vs = s.v.data();
+  double* out = f.data();
+  double* sums = w.sums.data();
+  int threads = 1;
+#ifdef _OPENMP
+  threads = n >= kParallelThreshold ? wanted : 1;
+#endif
+  (void)wanted;
+  const int block = (n + threads - 1) / threads;
+  // One block of particles per thread: the result is the same for any number of threads.
+  auto body = [&](int t, auto barrier) {
+    const int j0 = std::min(n, t * block), j1 = std::min(n, (t + 1) * block);
+    to_components(j0, j1, xs, w.x.data(), w.y.data(), w.z.data());
+    to_components(j0, j1, vs, w.vx.data(), w.vy.data(), w.vz.data());
+    barrier();  // a block's springs read the neighbours of other blocks
+    for (std::size_t g = 0; g < count; ++g) {
+      if (!plans[g]) continue;
+      double* fx = sums + 3 * un * g;
+      std::fill(fx + j0, fx + j1, 0.0);
+      std::fill(fx + un + j0, fx + un + j1, 0.0);
+      std::fill(fx + 2 * un + j0, fx + 2 * un + j1, 0.0);
+      pass_over_block(*plans[g], groups[g].ks, groups[g].kd, groups[g].degenerate_length, w, fx,
+                      fx + un, fx + 2 * un, j0, j1);
+      if (!leftovers) add_components(j0, j1, fx, fx + un, fx + 2 * un, out);
     }
+  };
+#ifdef _OPENMP
+  if (threads > 1) {
+#pragma omp parallel num_threads(threads)
+    body(omp_get_thread_num(), [] {
+#pragma omp barrier
+    });
+  } else {
+    body(0, [] {});
+  }
+#else
+  body(0, [] {});
+#endif
+  if (!leftovers) return;
+  for (std::size_t g = 0; g < count; ++g) {  // rare: sparse offsets or duplicate springs
+    if (!plans[g]) continue;
+    const double* fx = sums + 3 * un * g;
+    add_components(0, n, fx, fx + un, fx + 2 * un, out);
+    add_leftovers(*plans[g], groups[g], s, f);
   }
 }
 
@@ -198,43 +296,12 @@ void pass_over_block(const Plan& plan, double ks, double kd, double degenerate, 
 
 void accumulate_spring_forces(const SpringGroup& group, const State& s, Vec3Array& f) {
   if (group.springs.empty()) return;
-  if (!group.task_cache) group.task_cache = make_plan(group.springs);
-  const Plan& plan = *static_cast<const Plan*>(group.task_cache.get());
-  const int n = static_cast<int>(s.size());
-  Scratch& w = scratch();
-  for (auto* v : {&w.x, &w.y, &w.z, &w.vx, &w.vy, &w.vz}) v->resize(static_cast<std::size_t>(n));
-  for (auto* v : {&w.fx, &w.fy, &w.fz}) v->assign(static_cast<std::size_t>(n), 0.0);
-  const double* xs = s.x.data();
-  const double* vs = s.v.data();
-  gather_component(n, xs, 0, w.x.data());  // to structure-of-arrays, one stream at a time
-  gather_component(n, xs, 1, w.y.data());
-  gather_component(n, xs, 2, w.z.data());
-  gather_component(n, vs, 0, w.vx.data());
-  gather_component(n, vs, 1, w.vy.data());
-  gather_component(n, vs, 2, w.vz.data());
-  const double ks = group.ks, kd = group.kd, degenerate = group.degenerate_length;
-#ifdef _OPENMP
-  // Blocks of particles; the result is the same for any number of blocks or threads.
-  const int threads = n >= kParallelThreshold ? std::max(1, group.threads) : 1;
-  const int block = (n + threads - 1) / threads;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (int t = 0; t < threads; ++t)
-    pass_over_block(plan, ks, kd, degenerate, w, w.fx.data(), w.fy.data(), w.fz.data(), t * block,
-                    std::min(n, (t + 1) * block));
-#else
-  pass_over_block(plan, ks, kd, degenerate, w, w.fx.data(), w.fy.data(), w.fz.data(), 0, n);
-#endif
-  add_component(n, w.fx.data(), 0, f.data());
-  add_component(n, w.fy.data(), 1, f.data());
-  add_component(n, w.fz.data(), 2, f.data());
-  for (const Spring& sp : plan.leftovers) {
-    const Vec3 xa = s.x.col(sp.a), xb = s.x.col(sp.b);
-    const Vec3 fa =
-        spring_force(xa, xb, ks, sp.rest_length, degenerate) +
-        damper_force(xa, xb, s.v.col(sp.a), s.v.col(sp.b), kd, degenerate);
-    f.col(sp.a) += fa;
-    f.col(sp.b) -= fa;
-  }
+  spring_pass(&group, 1, s, f);
+}
+
+void accumulate_spring_groups(const SpringGroup* groups, std::size_t count, const State& s,
+                              Vec3Array& f) {
+  spring_pass(groups, count, s, f);
 }
 
 }  // namespace jelly::tasks

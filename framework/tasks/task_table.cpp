@@ -6,6 +6,9 @@
 #include "jelly/tasks/forces.hpp"
 #include "jelly/tasks/integrators.hpp"
 #include "jelly/tasks/springs.hpp"
+#ifdef JELLY_TASKS_SPRING_GROUPS
+#include "jelly/tasks/spring_groups.hpp"
+#endif
 
 #ifndef JELLY_TASKS_ORIGIN
 #define JELLY_TASKS_ORIGIN "unknown"
@@ -21,6 +24,9 @@ TaskTable linked_tasks() {
   t.spring_force = &tasks::spring_force;
   t.damper_force = &tasks::damper_force;
   t.accumulate_spring_forces = &tasks::accumulate_spring_forces;
+#ifdef JELLY_TASKS_SPRING_GROUPS  // set by the build for a library that provides it (the reference)
+  t.accumulate_spring_groups = &tasks::accumulate_spring_groups;
+#endif
   t.collide_plane = &tasks::collide_plane;
   t.collide_bowl = &tasks::collide_bowl;
   t.contact_plane = &tasks::contact_plane;

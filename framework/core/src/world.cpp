@@ -43,6 +43,25 @@ bool tangent_plane(const Sphere& s, const Vec3& x, Plane& out) {
   return true;
 }
 
+// Lower and upper corners of the particles' bounding box, in one pass over the 3×N array (Eigen's
+// rowwise min and max make six strided passes).
+void bounding_box(const Vec3Array& x, Vec3& lo, Vec3& hi) {
+  const Eigen::Index n = x.cols();
+  if (n == 0) {
+    lo = hi = Vec3::Zero();
+    return;
+  }
+  const double* p = x.data();
+  double l0 = p[0], l1 = p[1], l2 = p[2], h0 = l0, h1 = l1, h2 = l2;
+  for (Eigen::Index i = 1; i < n; ++i) {
+    const double a = p[3 * i], b = p[3 * i + 1], c = p[3 * i + 2];
+    l0 = std::min(l0, a), l1 = std::min(l1, b), l2 = std::min(l2, c);
+    h0 = std::max(h0, a), h1 = std::max(h1, b), h2 = std::max(h2, c);
+  }
+  lo = Vec3(l0, l1, l2);
+  hi = Vec3(h0, h1, h2);
+}
+
 }  // namespace
 
 World::World(TaskTable tasks) : tasks_(tasks) {}
@@ -189,11 +208,16 @@ void World::acceleration(const State& s, Vec3Array& a) {
   } else {
     force_.setZero();
   }
-  // 2. Springs and dampers, one pass per group the scene built.
+  // 2. Springs and dampers of every group the scene built: in one call when the task library
+  //    offers it (same bits), else group by group.
   for (const SpringGroup& g : groups_) {
     ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
     counters_.springs_evaluated += static_cast<long>(g.springs.size());
-    tasks_.accumulate_spring_forces(g, s, force_);
+  }
+  if (tasks_.accumulate_spring_groups) {
+    if (!groups_.empty()) tasks_.accumulate_spring_groups(groups_.data(), groups_.size(), s, force_);
+  } else {
+    for (const SpringGroup& g : groups_) tasks_.accumulate_spring_forces(g, s, force_);
   }
   // 3. Contact forces, terrain by terrain in scene order (contract §5).
   contact_pass(s, force_);
@@ -211,8 +235,7 @@ void World::contact_pass(const State& s, Vec3Array& f) {
     const Terrain& terrain = terrains_[t];
     if (!terrain.contact) continue;
     if (!box_ready) {
-      lo = s.x.rowwise().minCoeff();
-      hi = s.x.rowwise().maxCoeff();
+      bounding_box(s.x, lo, hi);
       box_ready = true;
     }
     // Exact broad phase: contact needs φ < ε somewhere in the box.
@@ -263,8 +286,8 @@ void World::apply_collisions(State& s) {
     const Terrain& terrain = terrains_[t];
     if (!terrain.collision && !terrain.project) continue;
     // The box is recomputed per terrain: an earlier terrain's projection may have moved particles.
-    const Vec3 lo = s.x.rowwise().minCoeff();
-    const Vec3 hi = s.x.rowwise().maxCoeff();
+    Vec3 lo, hi;
+    bounding_box(s.x, lo, hi);
     const bool may_touch = min_signed_distance(terrain, lo, hi) < terrain.surface().epsilon &&
                            !box_outside_extent(terrain, lo, hi);
     if (!may_touch) {

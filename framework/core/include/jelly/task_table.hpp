@@ -5,6 +5,7 @@
 // comes from linked_tasks(), defined in that library. Tests wrap a table to count calls.
 #pragma once
 
+#include <cstddef>
 #include <string_view>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct TaskTable {
   Vec3 (*damper_force)(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double,
                        double) = nullptr;
   void (*accumulate_spring_forces)(const SpringGroup&, const State&, Vec3Array&) = nullptr;
+  /// Optional (nullptr unless the library provides it; the reference does): every group in one
+  /// call, bit for bit the same as accumulate_spring_forces group by group
+  /// (jelly/tasks/spring_groups.hpp). The World prefers it when set.
+  void (*accumulate_spring_groups)(const SpringGroup*, std::size_t, const State&,
+                                   Vec3Array&) = nullptr;
   // A1.T6–T7: collision response
   bool (*collide_plane)(const Plane&, const Vec3&, Vec3&) = nullptr;
   bool (*collide_bowl)(const Bowl&, const Vec3&, Vec3&) = nullptr;
