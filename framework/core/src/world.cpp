@@ -43,8 +43,9 @@ bool tangent_plane(const Sphere& s, const Vec3& x, Plane& out) {
   return true;
 }
 
-// Lower and upper corners of the particles' bounding box, in one pass over the 3×N array (Eigen's
-// rowwise min and max make six strided passes).
+// Lower and upper corners of the particles' bounding box: four particles (12 doubles) at a time
+// into 12 running minima and maxima held in vector registers (Eigen's rowwise min and max would
+// make six strided passes).
 void bounding_box(const Vec3Array& x, Vec3& lo, Vec3& hi) {
   const Eigen::Index n = x.cols();
   if (n == 0) {
@@ -52,14 +53,28 @@ void bounding_box(const Vec3Array& x, Vec3& lo, Vec3& hi) {
     return;
   }
   const double* p = x.data();
-  double l0 = p[0], l1 = p[1], l2 = p[2], h0 = l0, h1 = l1, h2 = l2;
-  for (Eigen::Index i = 1; i < n; ++i) {
-    const double a = p[3 * i], b = p[3 * i + 1], c = p[3 * i + 2];
-    l0 = std::min(l0, a), l1 = std::min(l1, b), l2 = std::min(l2, c);
-    h0 = std::max(h0, a), h1 = std::max(h1, b), h2 = std::max(h2, c);
+  using Block = Eigen::Array<double, 12, 1>;  // four particles: x y z x y z x y z x y z
+  Block l, h;
+  for (int k = 0; k < 12; ++k) l[k] = h[k] = p[k % 3];
+  const Eigen::Index blocks = n / 4;
+  for (Eigen::Index j = 0; j < blocks; ++j) {
+    const Eigen::Map<const Block> q(p + 12 * j);
+    l = l.min(q);
+    h = h.max(q);
   }
-  lo = Vec3(l0, l1, l2);
-  hi = Vec3(h0, h1, h2);
+  for (Eigen::Index i = 4 * blocks; i < n; ++i)
+    for (int d = 0; d < 3; ++d) {
+      l[d] = std::min(l[d], p[3 * i + d]);
+      h[d] = std::max(h[d], p[3 * i + d]);
+    }
+  for (int d = 0; d < 3; ++d) {  // slot k holds coordinate k % 3
+    for (int k = d + 3; k < 12; k += 3) {
+      l[d] = std::min(l[d], l[k]);
+      h[d] = std::max(h[d], h[k]);
+    }
+  }
+  lo = Vec3(l[0], l[1], l[2]);
+  hi = Vec3(h[0], h[1], h[2]);
 }
 
 }  // namespace
@@ -202,9 +217,16 @@ void World::acceleration(const State& s, Vec3Array& a) {
   const Eigen::Index n = s.size();
   force_.resize(3, n);
   // 1. Gravity (only when the scene has it).
+  double* f = force_.data();
+  const double* m = mass_.data();
   if (gravity_) {
     ++counters_.gravity_applications;
-    force_.noalias() = *gravity_ * mass_.transpose();  // column i: m_i g
+    const double g0 = gravity_->x(), g1 = gravity_->y(), g2 = gravity_->z();
+    for (Eigen::Index i = 0; i < n; ++i) {  // column i: m_i g
+      f[3 * i] = g0 * m[i];
+      f[3 * i + 1] = g1 * m[i];
+      f[3 * i + 2] = g2 * m[i];
+    }
   } else {
     force_.setZero();
   }
@@ -223,7 +245,12 @@ void World::acceleration(const State& s, Vec3Array& a) {
   contact_pass(s, force_);
   // 4. Divide by the mass.
   a.resize(3, n);
-  a.array() = force_.array().rowwise() / mass_.transpose().array();
+  double* out = a.data();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    out[3 * i] = f[3 * i] / m[i];
+    out[3 * i + 1] = f[3 * i + 1] / m[i];
+    out[3 * i + 2] = f[3 * i + 2] / m[i];
+  }
 }
 
 void World::contact_pass(const State& s, Vec3Array& f) {
