@@ -21,7 +21,7 @@ commands:
   check SCENE    validate a scene; print what it builds and each integrator's stable step size
   params SCENE   list every declared parameter of a scene (key, value, unit, range, meaning)
   probe          list which student tasks (A1.T1–A1.T13) look implemented in this build
-  render SCENE   draw frames to PNG without a display (OSMesa)   [when built with the viewer]
+  render SCENE   draw frames (or --replay a recorded run) to PNG without a display (OSMesa)   [when built with the viewer]
   study ...      accuracy against cost, stability sweeps           [numerics study]
 
 `jelly COMMAND --help` tells more. Scenes live in scenes/; the format is in docs/scenes.md.

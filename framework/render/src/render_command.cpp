@@ -13,6 +13,7 @@
 
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
+#include "jelly/render/replay.hpp"
 #include "jelly/render/scene_catalog.hpp"
 #include "jelly/task_probe.hpp"
 
@@ -29,7 +30,13 @@ constexpr const char* kUsage =
     "                    [--backend offscreen|window|null] [--camera YAW,PITCH,DISTANCE]\n"
     "                    [--particles] [--springs] [--no-caption] [--no-video] [--benchmark N]\n"
     "                    [--samples 0|2|4]\n"
+    "       jelly render SCENE --replay FILE.csv --frames DIR [--label TEXT] [--width W] [--height H]\n"
+    "                    [--camera ...] [--particles] [--no-caption] [--samples 0|2|4]\n"
     "  SCENE    a scene name under scenes/ (course-2023) or a .toml path\n"
+    "  --replay   draw recorded positions instead of simulating: one PNG per recorded frame; the\n"
+    "             CSV is frame,time,particle,x,y,z[,...] as `jelly run --out` writes it, and the\n"
+    "             scene gives the terrains and the cube the particles belong to\n"
+    "  --label    text printed top-left of every replayed frame, before the time\n"
     "  --compare  2 to 4 integrators side by side, e.g. explicit_euler,midpoint,rk4\n"
     "  --benchmark N  draw N frames of the first state and print frames per second\n";
 
@@ -45,6 +52,8 @@ struct Args {
   bool particles = false, springs = false, caption = true, video = true;
   int benchmark = 0;
   int samples = 4;
+  fs::path replay;    // --replay: recorded positions to draw
+  std::string label;  // --label: printed on replayed frames
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -88,6 +97,11 @@ std::string parse(int argc, char** argv, Args& a) {
       if (arg == "--duration") a.duration = d;
       if (arg == "--dt") a.dt = d;
       if (arg == "--benchmark") a.benchmark = static_cast<int>(d);
+    } else if (arg == "--replay") {
+      if (!value(v)) return "--replay needs a CSV file (frame,time,particle,x,y,z)";
+      a.replay = v;
+    } else if (arg == "--label") {
+      if (!value(a.label)) return "--label needs a text";
     } else if (arg == "--integrator") {
       if (!value(a.integrator)) return "--integrator needs a name";
     } else if (arg == "--backend") {
@@ -122,6 +136,8 @@ std::string parse(int argc, char** argv, Args& a) {
   }
   if (a.scene.empty()) return "no scene given";
   if (a.frames.empty() && a.benchmark == 0) return "--frames DIR is required";
+  if (!a.replay.empty() && (!a.compare.empty() || a.benchmark > 0 || !a.integrator.empty()))
+    return "--replay draws recorded positions: --compare, --integrator and --benchmark do not apply";
   return {};
 }
 
@@ -133,6 +149,87 @@ bool on_path(const std::string& program) {
     if (fs::exists(fs::path(dir) / program, ec)) return true;
   }
   return false;
+}
+
+/// --replay: the scene's world (terrains, cube topology) drawn at each recorded frame's positions,
+/// one PNG per frame (frame_00000.png, ... in file order). Nothing is simulated and no task code
+/// runs but the spring builders the scene's world is built with.
+int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& renderer) {
+  const ReplayResult loaded = load_replay(a.replay);
+  if (!loaded) {
+    std::cerr << "jelly render: " << loaded.error << "\n";
+    return 2;
+  }
+  const Replay& replay = *loaded.replay;
+  std::unique_ptr<World> world;
+  try {
+    world = build_world(scene, linked_tasks());
+  } catch (const std::exception& e) {
+    std::cerr << "jelly render: cannot build the scene's world: " << e.what() << "\n";
+    return 1;
+  }
+  const long n = static_cast<long>(world->state().x.cols());
+  if (replay.particles() != n) {
+    std::cerr << "jelly render: " << a.replay.string() << ": " << replay.particles()
+              << " particles per frame, but scene '" << scene.name << "' has " << n << "\n";
+    return 2;
+  }
+  std::error_code ec;
+  fs::create_directories(a.frames, ec);
+  if (ec) {
+    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message() << "\n";
+    return 1;
+  }
+  // Framed on the scene at its start, so every frame of every replay of a scene has one view.
+  std::unique_ptr<SceneDrawable> drawable = renderer.make_drawable(*world);
+  OrbitCamera camera;
+  const Viewport vp{0, 0, a.width, a.height};
+  camera.frame(drawable->bounds(), vp.aspect());
+  if (!a.camera.empty()) {
+    const auto parts = split(a.camera, ',');
+    double y = 0, p = 0, dist = 0;
+    if (parts.size() != 3 || !parse_number(parts[0], y) || !parse_number(parts[1], p) ||
+        !parse_number(parts[2], dist) || dist <= 0) {
+      std::cerr << "jelly render: --camera needs YAW,PITCH,DISTANCE (degrees, degrees, metres)\n";
+      return 2;
+    }
+    camera.yaw_degrees = y;
+    camera.pitch_degrees = p;
+    camera.distance = dist;
+  }
+  DrawOptions draw;
+  draw.particles = a.particles;
+  if (a.springs) draw.springs = {true, true, true, true};
+  const float s = text_scale(a.height);
+  const int pad = static_cast<int>(6 * s);
+  const RunSetup setup = RunSetup::from_scene(scene);
+  for (std::size_t k = 0; k < replay.frames.size(); ++k) {
+    const ReplayFrame& f = replay.frames[k];
+    world->state().x = f.x;
+    world->state().v.setZero(3, f.x.cols());
+    renderer.begin_frame(a.width, a.height);
+    renderer.draw(*drawable, *world, camera, draw, vp);
+    char when[48];
+    std::snprintf(when, sizeof when, "t = %.2f s", f.time);
+    const std::string label = a.label.empty() ? std::string(when) : a.label + "   " + when;
+    renderer.draw_text(wrap_text(label, a.width - 3 * pad, s), pad, pad, s, {1.0f, 0.95f, 0.75f, 1.0f});
+    if (a.caption) {
+      const std::string text = wrap_text(caption(setup, f.time, false), a.width - 3 * pad, s * 0.75f);
+      const Eigen::Vector2i size = Renderer::text_size(text, s * 0.75f);
+      renderer.draw_text(text, pad, a.height - size.y() - pad / 2, s * 0.75f, {0.92f, 0.94f, 1.0f, 1.0f});
+    }
+    renderer.end_frame();
+    const Image img = be.read_pixels();
+    be.present();
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05zu.png", k);
+    if (const std::string err = write_png(a.frames / name, img); !err.empty()) {
+      std::cerr << "jelly render: " << err << "\n";
+      return 1;
+    }
+  }
+  std::cout << "wrote " << replay.frames.size() << " replayed frames to " << a.frames.string() << "\n";
+  return 0;
 }
 
 }  // namespace
@@ -172,6 +269,7 @@ int render_command(int argc, char** argv) {
   }
   Backend& be = *backend.backend;
   Renderer renderer(be.gl(), a.samples);
+  if (!a.replay.empty()) return render_replay(a, scene, be, renderer);
 
   RunSetup base = RunSetup::from_scene(scene);
   if (a.dt > 0.0) base.dt = a.dt;

@@ -9,8 +9,10 @@ namespace jelly {
 ///   [--dt H] [--set key=value ...] [--compare a,b,c] [--backend offscreen|window|null]
 ///   [--camera YAW,PITCH,DISTANCE] [--particles] [--springs] [--no-caption] [--no-video]
 ///   [--benchmark N] [--samples 0|2|4]
-/// Writes DIR/frame_00000.png …, DIR/video.mp4 when ffmpeg is on PATH. Returns the exit code
-/// (0 ok, 1 run error or instability, 2 usage error).
+/// Writes DIR/frame_00000.png …, DIR/video.mp4 when ffmpeg is on PATH. With `--replay FILE.csv`
+/// [--label TEXT] it simulates nothing: it draws the recorded positions of each frame of FILE
+/// (replay.hpp) into DIR/frame_00000.png … in file order, the scene giving terrains and cube.
+/// Returns the exit code (0 ok, 1 run error or instability, 2 usage or input error).
 int render_command(int argc, char** argv);
 
 }  // namespace jelly
