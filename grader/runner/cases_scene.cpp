@@ -1,7 +1,10 @@
 // The informational course scene: ALL of the student's code together (their springs, forces,
 // collision, contact and explicit Euler) on the 2023 course scene. Contact makes it chaotic, so the
 // orchestrator checks outcomes (finite, where the jelly comes to rest, penetration, first-contact
-// time) and the report plots the centre-of-mass height against the reference.
+// time) and the report plots the centre-of-mass height against the reference. It also records the
+// particle positions at a few times (params.frame_times): outputs the orchestrator never grades
+// nor stores as reference data, from which the report renders the student's run beside the
+// reference's (docs/grader.md, "Frames").
 #include <cmath>
 
 #include "harness.hpp"
@@ -14,20 +17,11 @@ namespace jelly::grade {
 
 namespace {
 
+// The course's scene (jelly::course_2023_scene: dt 1 ms, floor with hole, bowl, ks 2000 / kd 60),
+// stepped with the student's explicit Euler instead of the file's symplectic Euler.
 SceneSpec course_scene() {
-  SceneSpec s;
-  s.name = "course-2023";
+  SceneSpec s = course_2023_scene();
   s.integrator = IntegratorKind::ExplicitEuler;
-  s.dt = 1e-3;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  for (SpringSettings* sp : {&s.structural, &s.shear, &s.bending}) {
-    sp->enabled = true;
-    sp->ks = 2000.0;
-    sp->kd = 60.0;
-  }
-  s.terrains = {*terrain_preset("course-2023-floor"), *terrain_preset("course-2023-bowl")};
   return s;
 }
 
@@ -44,8 +38,21 @@ void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
   const long every = params.integer("sample_every");
   const double window = params.number("mean_window");
   const long steps = std::lround(duration / spec.dt);
+  // Frames for the report: positions at the first step at or after each requested time [s].
+  const std::vector<double> frame_at = params.has("frame_times") ? params.numbers("frame_times") : std::vector<double>{};
+  std::vector<double> frame_times, frame_positions;
+  std::size_t next_frame = 0;
+  const auto record_frames = [&]() {
+    for (; next_frame < frame_at.size() && sim.time() + 0.5 * spec.dt >= frame_at[next_frame]; ++next_frame) {
+      const Vec3Array& x = sim.state().x;
+      frame_times.push_back(sim.time());
+      frame_positions.insert(frame_positions.end(), x.data(), x.data() + x.size());
+    }
+  };
+  record_frames();
   for (long k = 1; k <= steps; ++k) {
     if (sim.step() != StepResult::Ok) break;
+    record_frames();
     const State& s = sim.state();
     if (first_contact < 0.0) {
       long hits = 0;
@@ -89,12 +96,18 @@ void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
   out.value("first_contact_time", first_contact, "time of the first collision or contact [s]");
   out.value("max_penetration", max_penetration, "deepest any particle went behind the floor or the bowl's wall [m]");
   out.value("final_kinetic_energy", sim.energy().kinetic, "kinetic energy at t = 10 s [J]");
+  if (!frame_at.empty()) {
+    out.values("frame_times", frame_times, "times of the recorded frames [s] (for the report, not graded)");
+    out.values("frame_positions", frame_positions,
+               "every particle's x, y, z at each recorded frame, frame after frame [m] (for the report, not graded)");
+  }
 }
 
 }  // namespace
 
 // course_scene: params.duration [s], centre of mass sampled every params.sample_every steps, its
-// mean over the last params.mean_window seconds.
+// mean over the last params.mean_window seconds; positions recorded at params.frame_times [s]
+// (optional).
 void register_scene_cases(Registry& r) {
   r.add({"course_scene", "the 2023 course scene with all of the student's code (explicit Euler)", nullptr,
          [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_course(t, p, o); }});

@@ -86,6 +86,17 @@ Vec3 Params::vec(const std::string& key) const {
   return Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
 }
 
+std::vector<double> Params::numbers(const std::string& key) const {
+  const Json& v = at(key);
+  if (!v.is_array()) wrong(key, "an array of numbers");
+  std::vector<double> out;
+  for (const Json& e : v) {
+    if (!e.is_number()) wrong(key, "an array of numbers");
+    out.push_back(e.get<double>());
+  }
+  return out;
+}
+
 Params Params::table(const std::string& key) const {
   const Json& v = at(key);
   if (!v.is_object()) wrong(key, "a table");

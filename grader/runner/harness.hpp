@@ -58,6 +58,8 @@ class Params {
     return has(key) ? text(key) : fallback;
   }
   Vec3 vec(const std::string& key) const;
+  /// An array of numbers (e.g. the times at which to record frames).
+  std::vector<double> numbers(const std::string& key) const;
   Vec3 vec(const std::string& key, const Vec3& fallback) const { return has(key) ? vec(key) : fallback; }
   Params table(const std::string& key) const;
   /// The elements of an array of tables (e.g. a list of hand-made springs).

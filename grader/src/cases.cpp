@@ -28,6 +28,8 @@ Rule parse_rule(const std::string& text, const std::string& context,
   Rule r;
   if (word == "info") {
     r.kind = Rule::Kind::Info;
+  } else if (word == "frames") {
+    r.kind = Rule::Kind::Frames;
   } else if (word == "range") {
     r.kind = Rule::Kind::Range;
     if (!(in >> r.lo >> r.hi)) throw std::runtime_error(context + ": expected \"range LO HI\", got \"" + text + "\"");
@@ -36,7 +38,7 @@ Rule parse_rule(const std::string& text, const std::string& context,
     if (!tols.count(r.tolerance))
       throw std::runtime_error(context + ": unknown tolerance \"" + r.tolerance + "\" (define it in cases/tolerances.toml)");
   } else {
-    throw std::runtime_error(context + ": expected \"tol NAME\", \"range LO HI\" or \"info\", got \"" + text + "\"");
+    throw std::runtime_error(context + ": expected \"tol NAME\", \"range LO HI\", \"info\" or \"frames\", got \"" + text + "\"");
   }
   return r;
 }

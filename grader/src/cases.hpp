@@ -23,9 +23,11 @@ struct Tolerance {
   std::string why;
 };
 
-/// How one output is judged.
+/// How one output is judged. Info: stored as reference data and shown, never failed. Frames:
+/// neither graded nor stored as reference data (recorded positions the report renders; the
+/// reference's are made by running the reference runner when the report is written).
 struct Rule {
-  enum class Kind { Tolerance, Range, Info } kind = Kind::Tolerance;
+  enum class Kind { Tolerance, Range, Info, Frames } kind = Kind::Tolerance;
   std::string tolerance;  ///< Kind::Tolerance (text outputs always compare exactly)
   double lo = 0.0, hi = 0.0;  ///< Kind::Range: lo ≤ value ≤ hi (literal, not from the reference)
 };

@@ -102,7 +102,11 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
       std::cerr << "jelly-grade: the reference failed on " << c.id << ": " << result.dump() << "\n";
       return 2;
     }
-    if (result["outputs"].dump().find("null") != std::string::npos) {
+    // Recorded frames (rule "frames") are for the report only: never stored as reference data.
+    Json outputs = Json::object();
+    for (const auto& [name, value] : result["outputs"].items())
+      if (c.rule_for(name).kind != Rule::Kind::Frames) outputs[name] = value;
+    if (outputs.dump().find("null") != std::string::npos) {
       std::cerr << "jelly-grade: the reference produced NaN or infinity in " << c.id
                 << "; fix the case before generating reference data\n";
       return 2;
@@ -121,7 +125,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     for (const std::string& f : config.compile_flags) flags += (flags.empty() ? "" : " ") + f;
     data["flags"] = flags;
     if (!input.empty()) data["input"] = input;
-    data["outputs"] = result["outputs"];
+    data["outputs"] = outputs;
     const fs::path p = reference_path(config, c);
     fs::create_directories(p.parent_path());
     std::ofstream(p) << data.dump(1) << "\n";
@@ -139,7 +143,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
 }
 
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out, int jobs,
-          const GradeOptions& options) {
+          const GradeOptions& options, bool frames) {
   std::vector<fs::path> subs;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_directory()) subs.push_back(e.path());
@@ -159,7 +163,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       const std::string name = subs[i].filename().string();
       try {
         reports[i] = grade_submission(config, book, subs[i], fs::path(out) / name / "work", per);
-        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"});
+        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"}, frames ? &config : nullptr);
         fs::remove_all(fs::path(out) / name / "work");
       } catch (const std::exception& e) {
         errors[i] = e.what();

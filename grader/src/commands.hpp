@@ -13,7 +13,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book);
 
 /// Grades every folder in `dir` (one per student) in parallel; results per student and scores.csv.
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out,
-          int jobs, const GradeOptions& options);
+          int jobs, const GradeOptions& options, bool frames = true);
 
 /// Builds the Gradescope autograder zip (setup.sh, run_autograder, the framework without solutions/
 /// but with the hidden data).

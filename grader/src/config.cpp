@@ -59,6 +59,8 @@ GradeConfig load_config(const std::string& path) {
   c.source_dir = j.at("source_dir").get<std::string>();
   c.binary_dir = j.at("binary_dir").get<std::string>();
   c.reference_runner = j.value("reference_runner", "");
+  c.jelly_cli = j.value("jelly_cli", "");
+  if (const char* env = std::getenv("JELLY_GRADE_JELLY")) c.jelly_cli = env;
   c.config_path = p;
   return c;
 }

@@ -22,6 +22,9 @@ struct GradeConfig {
   fs::path source_dir;        ///< the framework checkout (grader/, assignments/, solutions/?)
   fs::path binary_dir;
   fs::path reference_runner;  ///< empty in a student release
+  /// The `jelly` CLI with `render --replay` (report frames); empty when built without the viewer.
+  /// $JELLY_GRADE_JELLY overrides it.
+  fs::path jelly_cli;
   fs::path config_path;
 
   fs::path grader_dir() const { return source_dir / "grader"; }

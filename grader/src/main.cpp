@@ -2,7 +2,7 @@
 //
 //   jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]
 //               [--format terminal,gradescope,prairielearn,junit,markdown,html] [--timeout S]
-//               [--jobs N] [--verbose]
+//               [--jobs N] [--verbose] [--no-frames]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]
 //   jelly-grade generate-reference
 //   jelly-grade gradescope-zip OUT.zip
@@ -33,7 +33,7 @@ int usage(const char* message = nullptr) {
   std::cerr << "usage:\n"
                "  jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]\n"
                "                    [--format terminal,gradescope,prairielearn,junit,markdown,html]\n"
-               "                    [--timeout S] [--jobs N] [--verbose]\n"
+               "                    [--timeout S] [--jobs N] [--verbose] [--no-frames]\n"
                "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]\n"
                "  jelly-grade generate-reference\n"
                "  jelly-grade gradescope-zip OUT.zip\n"
@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   double timeout = 10.0;
   int jobs = 0;
   bool verbose = false;
+  bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
       else if (a == "--student") student = value();
       else if (a == "--results") results = value();
       else if (a == "--verbose") verbose = true;
+      else if (a == "--no-frames") no_frames = true;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
       else positional.push_back(a);
     } catch (const std::exception& e) {
@@ -111,7 +113,7 @@ int main(int argc, char** argv) {
       const GradeReport r = grade_submission(config, book, positional[0], work, options);
       std::set<std::string> files = f;
       files.erase("terminal");
-      if (!files.empty()) write_reports(r, book, out_dir, files);
+      if (!files.empty()) write_reports(r, book, out_dir, files, no_frames ? nullptr : &config);
       // JELLY_GRADE_KEEP_WORK=1 keeps the built runner (out/.work/build/runner) for experiments
       // such as the tolerance measurements of docs/tolerances.md.
       if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
@@ -120,7 +122,7 @@ int main(int argc, char** argv) {
     }
     if (command == "batch") {
       if (positional.size() != 1 || out.empty()) return usage("batch needs SUBMISSIONS_DIR and --out DIR");
-      return batch(config, book, positional[0], out, jobs, options);
+      return batch(config, book, positional[0], out, jobs, options, !no_frames);
     }
     if (command == "generate-reference") return generate_reference(config, book);
     if (command == "gradescope-zip") {

@@ -221,7 +221,7 @@ std::string com_plot_svg(const GradeReport& r) {
   return "";
 }
 
-std::string markdown_report(const GradeReport& r) {
+std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   std::ostringstream o;
   o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score) << " / "
     << pts(r.max_score) << "** (" << r.visibility << " tests)\n\n";
@@ -243,12 +243,29 @@ std::string markdown_report(const GradeReport& r) {
       o << "\n";
     }
   if (!com_plot_svg(r).empty())
-    o << "## Course scene\n\n![centre-of-mass height, yours against the reference](com-height.svg)\n\n"
-      << "Frames of the two runs side by side are not included: this grader has no renderer.\n";
+    o << "## Course scene\n\n![centre-of-mass height, yours against the reference](com-height.svg)\n\n";
+  if (frames && frames->shown) {
+    o << "### Frames: yours beside the reference\n\n";
+    if (!frames->unavailable.empty()) {
+      o << "Frames not available: " << frames->unavailable << "\n\n";
+    } else {
+      o << "| t [s] | yours | reference |\n|---|---|---|\n";
+      for (const FrameRow& row : frames->rows)
+        o << "| " << pts(row.time) << " | "
+          << (row.yours.empty() ? std::string("—") : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
+          << " | "
+          << (row.reference.empty() ? std::string("—")
+                                    : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
+          << " |\n";
+      o << "\n";
+    }
+    for (const std::string& n : frames->notes) o << "- " << n << "\n";
+    if (!frames->notes.empty()) o << "\n";
+  }
   return o.str();
 }
 
-std::string html_report(const GradeReport& r) {
+std::string html_report(const GradeReport& r, const CourseFrames* frames, const std::filesystem::path& dir) {
   std::ostringstream o;
   o << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab grading report</title>"
        "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
@@ -270,13 +287,43 @@ std::string html_report(const GradeReport& r) {
   o << "</table>\n";
   const std::string svg = com_plot_svg(r);
   if (!svg.empty()) o << "<h2>Course scene</h2>\n" << svg;
+  if (frames && frames->shown) {
+    o << "<h3>Frames: yours beside the reference</h3>\n";
+    if (!frames->unavailable.empty()) {
+      o << "<p>Frames not available: " << xml_escape(frames->unavailable) << "</p>\n";
+    } else {
+      const auto cell = [&](const std::string& file, const std::string& alt) {
+        if (file.empty()) return std::string("<td>—</td>");
+        std::ifstream in(dir / file, std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        if (bytes.str().empty()) return std::string("<td>—</td>");
+        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," + base64(bytes.str()) + "\"></td>";
+      };
+      o << "<table><tr><th>t [s]</th><th>yours</th><th>reference</th></tr>\n";
+      for (const FrameRow& row : frames->rows)
+        o << "<tr><td>" << pts(row.time) << "</td>" << cell(row.yours, "yours at t = " + pts(row.time) + " s")
+          << cell(row.reference, "reference at t = " + pts(row.time) + " s") << "</tr>\n";
+      o << "</table>\n";
+    }
+    if (!frames->notes.empty()) {
+      o << "<ul>";
+      for (const std::string& n : frames->notes) o << "<li>" << xml_escape(n) << "</li>";
+      o << "</ul>\n";
+    }
+  }
   o << "</body></html>\n";
   return o.str();
 }
 
 void write_reports(const GradeReport& r, const CaseBook& book, const std::filesystem::path& out,
-                   const std::set<std::string>& formats) {
+                   const std::set<std::string>& formats, const GradeConfig* config) {
   std::filesystem::create_directories(out);
+  CourseFrames frames;
+  if (config && (formats.count("markdown") || formats.count("html")))
+    frames = render_course_frames(*config, r, out, out / ".frames-work");
+  std::error_code ec;
+  std::filesystem::remove_all(out / ".frames-work", ec);
   auto write = [&](const std::string& name, const std::string& text) {
     std::ofstream f(out / name, std::ios::binary);
     f << text;
@@ -286,11 +333,11 @@ void write_reports(const GradeReport& r, const CaseBook& book, const std::filesy
   if (formats.count("prairielearn")) write("prairielearn.json", prairielearn_results(r).dump(2) + "\n");
   if (formats.count("junit")) write("junit.xml", junit_xml(r));
   if (formats.count("markdown")) {
-    write("report.md", markdown_report(r));
+    write("report.md", markdown_report(r, config ? &frames : nullptr));
     const std::string svg = com_plot_svg(r);
     if (!svg.empty()) write("com-height.svg", svg);
   }
-  if (formats.count("html")) write("report.html", html_report(r));
+  if (formats.count("html")) write("report.html", html_report(r, config ? &frames : nullptr, out));
 }
 
 }  // namespace jelly::grade

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "frames.hpp"
 #include "grade.hpp"
 
 namespace jelly::grade {
@@ -14,15 +15,20 @@ std::string terminal_summary(const GradeReport& r, bool verbose);
 Json gradescope_results(const GradeReport& r, const CaseBook& book);
 Json prairielearn_results(const GradeReport& r);
 std::string junit_xml(const GradeReport& r);
-/// Markdown; the plot is written next to it as com-height.svg.
-std::string markdown_report(const GradeReport& r);
-std::string html_report(const GradeReport& r);
+/// Markdown; the plot is written next to it as com-height.svg, the frames (when given and
+/// available) as frames/{yours,reference}/frame_*.png, linked.
+std::string markdown_report(const GradeReport& r, const CourseFrames* frames = nullptr);
+/// HTML, self-contained: the plot inline, the frames (read from `dir`/frames/...) as base64 PNGs.
+std::string html_report(const GradeReport& r, const CourseFrames* frames = nullptr,
+                        const std::filesystem::path& dir = {});
 /// The centre-of-mass height plot (student against reference) of the course scene, or "".
 std::string com_plot_svg(const GradeReport& r);
 
 /// Writes the requested formats into `out` (created): results.json (gradescope),
-/// prairielearn.json, junit.xml, report.md (+ com-height.svg), report.html.
+/// prairielearn.json, junit.xml, report.md (+ com-height.svg, frames/), report.html. With
+/// `config` and markdown or html requested, renders the course scene's frames first
+/// (render_course_frames; never fails the grading: without a renderer the report says why).
 void write_reports(const GradeReport& r, const CaseBook& book, const std::filesystem::path& out,
-                   const std::set<std::string>& formats);
+                   const std::set<std::string>& formats, const GradeConfig* config = nullptr);
 
 }  // namespace jelly::grade

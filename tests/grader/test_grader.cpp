@@ -222,6 +222,81 @@ TEST(Grader, IncludingTheHiddenDataIsRefusedBeforeCompiling) {
   EXPECT_EQ(o.find("format_version"), std::string::npos) << "hidden data leaked: " << o;
 }
 
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The course scene's frames: recorded in the sandbox, never graded, never reference data.
+TEST(GraderFrames, RecordedFramesAreNeitherGradedNorReferenceData) {
+  const Json ref = read_json(kSource / "grader" / "data" / "public" / "a1.course.scene.json");
+  ASSERT_TRUE(ref["params"].contains("frame_times")) << "the case records no frames";
+  ASSERT_TRUE(ref["outputs"].contains("com_y"));
+  for (const auto& [name, value] : ref["outputs"].items())
+    EXPECT_NE(name.rfind("frame_", 0), 0u) << name << " stored as reference data";
+  const Json r = grade(submission("frames-ref"), "frames-ref", "--no-frames");
+  EXPECT_EQ(r.dump().find("frame_"), std::string::npos) << "frames in results.json";
+  const std::string md = read_text(kWork / "out" / "frames-ref" / "report.md");
+  EXPECT_EQ(md.find("Frames"), std::string::npos) << "--no-frames still made a frames section";
+}
+
+TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
+#if !JELLY_GRADE_HAS_RENDER
+  GTEST_SKIP() << "built without the viewer: the report has no frames (covered by WithoutARenderer...)";
+#endif
+  const Json r = grade(submission("frames"), "frames");
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
+  const fs::path out = kWork / "out" / "frames";
+  const std::string md = read_text(out / "report.md");
+  ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
+  // One row per frame time of grader/cases/course.toml (0.5, 1, 2, 3, 5, 10 s), both sides.
+  EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
+  EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
+  EXPECT_NE(md.find("| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)"), std::string::npos) << md;
+  for (const char* side : {"yours", "reference"})
+    for (int k = 0; k < 6; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05d.png", k);
+      const std::string png = read_text(out / "frames" / side / name);
+      ASSERT_GT(png.size(), 1000u) << side << "/" << name;
+      EXPECT_EQ(png.substr(1, 3), "PNG") << side << "/" << name;
+    }
+  // The HTML report is self-contained: the twelve pictures inline.
+  const std::string html = read_text(out / "report.html");
+  EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 12u);
+  EXPECT_NE(html.find("<th>yours</th><th>reference</th>"), std::string::npos);
+}
+
+TEST(GraderFrames, WithoutARendererTheReportSaysWhyAndGradingIsUnchanged) {
+  const fs::path sub = submission("frames-none");
+  const Json with = grade(sub, "frames-default", "--no-frames");
+  setenv("JELLY_GRADE_JELLY", "/no/such/jelly", 1);
+  const Json missing = grade(sub, "frames-missing");
+  setenv("JELLY_GRADE_JELLY", "/bin/false", 1);  // a renderer that fails
+  const Json failing = grade(sub, "frames-failing");
+  unsetenv("JELLY_GRADE_JELLY");
+  Json a = with, b = missing, c = failing;
+  for (Json* j : {&a, &b, &c}) j->erase("execution_time");
+  EXPECT_EQ(a.dump(), b.dump());
+  EXPECT_EQ(a.dump(), c.dump());
+  const std::string md_missing = read_text(kWork / "out" / "frames-missing" / "report.md");
+  EXPECT_NE(md_missing.find("Frames not available: /no/such/jelly is missing"), std::string::npos) << md_missing;
+  const std::string md_failing = read_text(kWork / "out" / "frames-failing" / "report.md");
+  EXPECT_NE(md_failing.find("Frames not available: `jelly render --replay` failed (exit 1)"), std::string::npos)
+      << md_failing;
+  const std::string html = read_text(kWork / "out" / "frames-failing" / "report.html");
+  EXPECT_NE(html.find("<p>Frames not available: "), std::string::npos);
+}
+
 TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   const fs::path dir = kWork / "batch";
   fs::remove_all(dir);
