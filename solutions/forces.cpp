@@ -14,6 +14,17 @@
 #include "jelly/tasks/forces.hpp"
 #include "jelly/tasks/spring_groups.hpp"
 
+// The hot loops below are compiled twice, for the baseline x86-64 vector width (SSE2) and for
+// AVX2, and the loader picks the one the processor supports, so that the default build runs the
+// wide loops without -march=native. Neither clone uses FMA (-ffp-contract=off is on anyway), so
+// both give the same bits (tests/determinism builds with JELLY_NO_VECTOR_CLONES to test each
+// width on its own).
+#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(JELLY_NO_VECTOR_CLONES)
+#define JELLY_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define JELLY_VECTOR_CLONES
+#endif
+
 namespace jelly::tasks {
 
 #ifdef _OPENMP
@@ -116,6 +127,7 @@ Scratch& scratch() {
 // Forces on the owners a = 0 … count−1 of springs (a, a + off), with positions and velocities given
 // from the first owner on: one lane per spring, no branch, so that the loop vectorises. An absent or
 // degenerate spring gets u = 0 and so a zero force.
+JELLY_VECTOR_CLONES
 void spring_lane(int count, int off, const double* __restrict x, const double* __restrict y,
                  const double* __restrict z, const double* __restrict vx,
                  const double* __restrict vy, const double* __restrict vz,
@@ -139,6 +151,7 @@ void spring_lane(int count, int off, const double* __restrict x, const double* _
 }
 
 // Particles [j0, j1) of a 3×N column-major array into three arrays, in one pass.
+JELLY_VECTOR_CLONES
 void to_components(int j0, int j1, const double* __restrict in, double* __restrict c0,
                    double* __restrict c1, double* __restrict c2) {
   for (int i = j0; i < j1; ++i) {
@@ -149,6 +162,7 @@ void to_components(int j0, int j1, const double* __restrict in, double* __restri
 }
 
 // out[3i + d] += c_d[i] for the particles [j0, j1), in one pass.
+JELLY_VECTOR_CLONES
 void add_components(int j0, int j1, const double* __restrict c0, const double* __restrict c1,
                     const double* __restrict c2, double* __restrict out) {
   for (int i = j0; i < j1; ++i) {
@@ -165,6 +179,7 @@ constexpr int kChunk = 128;
 // order is fixed: run by run (ascending offset), + from the spring it owns, then − from the spring
 // ending at it. The chunks of a run go from the last to the first, so the chunk holding a spring
 // that ends at j (owner j − off) is never handled before the chunk holding j's own spring.
+JELLY_VECTOR_CLONES
 void pass_over_block(const Plan& plan, double ks, double kd, double degenerate, const Scratch& s,
                      double* __restrict fx, double* __restrict fy, double* __restrict fz, int j0,
                      int j1) {

@@ -1,4 +1,5 @@
-# Runs two hash programs and fails unless they print the same thing (skip: exit 77).
+# Runs the hash programs and fails unless the SSE2, AVX2 and default builds print the same thing
+# and the FMA build prints something else (skip: exit 77).
 execute_process(COMMAND ${A} OUTPUT_VARIABLE out_a RESULT_VARIABLE rc_a)
 execute_process(COMMAND ${B} OUTPUT_VARIABLE out_b RESULT_VARIABLE rc_b)
 message("SSE2 build:\n${out_a}AVX2 build:\n${out_b}")
@@ -11,6 +12,11 @@ if(NOT rc_a EQUAL 0 OR NOT rc_b EQUAL 0)
 endif()
 if(NOT out_a STREQUAL out_b)
   message(FATAL_ERROR "the SSE2 and AVX2 builds computed different bits")
+endif()
+execute_process(COMMAND ${D} OUTPUT_VARIABLE out_d RESULT_VARIABLE rc_d)
+message("Default build (SSE2 or AVX2 loops chosen at run time):\n${out_d}")
+if(NOT rc_d EQUAL 0 OR NOT out_d STREQUAL out_a)
+  message(FATAL_ERROR "the default build computed other bits than the SSE2 build (${rc_d})")
 endif()
 execute_process(COMMAND ${C} OUTPUT_VARIABLE out_c RESULT_VARIABLE rc_c)
 message("FMA build (-mfma -ffp-contract=fast), must differ:\n${out_c}")
