@@ -235,9 +235,11 @@ void draw_panels(AppState& s, double fps) {
     }
     if (!s.comparing) {
       if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
-      if (step_input("step h", s.dt)) s.reset_requested = true;
+      if (step_input(s.edited.auto_dt ? "largest step h" : "step h", s.dt)) s.reset_requested = true;
+      if (ImGui::Checkbox("automatic step (stability estimate)", &s.edited.auto_dt)) s.reset_requested = true;
       s.edited.integrator = s.integrator;  // keep the parameter view in step
       s.edited.dt = s.dt;
+      if (main_run && main_run->auto_step()) ImGui::TextWrapped("%s", main_run->auto_step()->message().c_str());
       if (main_run && main_run->simulator()) {
         const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
         if (std::isinf(hc)) ImGui::TextDisabled("stable step estimate: any h");

@@ -25,7 +25,14 @@ void SimulationRun::reset() {
     Simulator::Options o;
     o.integrator = setup_.integrator;
     o.dt = setup_.dt;
-    sim_ = std::make_unique<Simulator>(build_world(setup_.scene, tasks_), o);
+    auto world = build_world(setup_.scene, tasks_);
+    auto_step_.reset();
+    if (setup_.scene.auto_dt) {
+      // The same choice as `jelly run --auto-dt`: a 60 Hz frame, the setup's step as the cap.
+      auto_step_ = choose_step(*world, world->state(), setup_.integrator, 1.0 / 60.0, setup_.dt);
+      o.dt = auto_step_->chosen_h;
+    }
+    sim_ = std::make_unique<Simulator>(std::move(world), o);
     record(0.0);
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -59,7 +66,7 @@ long SimulationRun::advance_to(double t_target, double budget_ms) {
     return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
   };
   const auto start = clock::now();
-  const double h = setup_.dt;
+  const double h = step();  // the automatic step when the scene asks for one
   long steps = 0, timed = 0;
   double step_ms = 0.0;  // wall time inside Simulator::step only (not sampling, not drawing)
   budget_hit_ = false;
@@ -180,7 +187,7 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
 std::string run_label(const SimulationRun& run) {
   const int evals = evaluations_per_step(run.setup().integrator);
   std::string out = std::string(display_name(run.setup().integrator)) + "  (" + std::to_string(evals) +
-                    (evals == 1 ? " eval/step)" : " evals/step)") + "\nh = " + step_text(run.setup().dt);
+                    (evals == 1 ? " eval/step)" : " evals/step)") + "\nh = " + step_text(run.step());
   if (run.ms_per_step() > 0.0) out += "  " + fmt("%.3f ms/step", run.ms_per_step());
   return out;
 }

@@ -5,16 +5,19 @@
 #include <deque>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "jelly/auto_step.hpp"
 #include "jelly/render/renderer.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 
 namespace jelly::render {
 
-/// What one run simulates: the scene as edited, the integrator and the step size.
+/// What one run simulates: the scene as edited, the integrator and the step size (the cap of the
+/// automatic step when the scene sets simulation.auto_dt).
 struct RunSetup {
   SceneSpec scene;
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
@@ -55,6 +58,10 @@ class SimulationRun {
   Simulator* simulator() { return sim_.get(); }
   const Simulator* simulator() const { return sim_.get(); }
   const RunSetup& setup() const { return setup_; }
+  /// The step the run uses [s]: setup().dt, or the automatic step when the scene asks for one.
+  double step() const { return sim_ ? sim_->options().dt : setup_.dt; }
+  /// What the automatic step chose (scene simulation.auto_dt = true; setup().dt is its cap).
+  const std::optional<AutoStep>& auto_step() const { return auto_step_; }
   double time() const { return sim_ ? sim_->time() : 0.0; }
   bool unstable() const { return sim_ && sim_->instability().has_value(); }
   /// Smoothed wall time per step [ms] (0 before the first step).
@@ -79,6 +86,7 @@ class SimulationRun {
   std::unique_ptr<Simulator> sim_;
   std::unique_ptr<SceneDrawable> drawable_;
   std::string error_;
+  std::optional<AutoStep> auto_step_;
   double ms_per_step_ = 0.0;
   bool budget_hit_ = false;
   std::deque<RunSample> history_;
