@@ -47,7 +47,7 @@ TEST_F(Cli, HelpDocumentsEveryOption) {
   const Result r = jelly("run --help");
   EXPECT_EQ(r.code, 0);
   for (const char* opt : {"--integrator", "--dt", "--duration", "--set", "--every", "--out", "--summary",
-                          "explicit_euler", "implicit_euler", "midpoint", "rk4", "symplectic_euler",
+                          "--threads", "explicit_euler", "implicit_euler", "midpoint", "rk4", "symplectic_euler",
                           "backward_euler", "exit codes"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
@@ -65,6 +65,25 @@ TEST_F(Cli, RunWritesTrajectoryAndSummaryWithTheDocumentedHeaders) {
   EXPECT_EQ(rows, 6 * 1000);  // frames at steps 0, 10, …, 50 times 1000 particles
   std::getline(sum, line);
   EXPECT_EQ(line, "time,com_x,com_y,com_z,kinetic,potential,spring,max_speed");
+}
+
+// --threads splits the spring pass; the trajectory is the same to the last digit written.
+TEST_F(Cli, ThreadsGiveTheSameTrajectory) {
+  const std::string base = "run " + scene("course-2023.toml") + " --duration 0.05 --every 25 --quiet --out ";
+  const Result one = jelly(base + (dir_ / "one.csv").string());
+  const Result two = jelly(base + (dir_ / "two.csv").string() + " --threads 2");
+  ASSERT_EQ(one.code, 0) << one.output;
+  ASSERT_EQ(two.code, 0) << two.output;
+  std::ifstream a(dir_ / "one.csv"), b(dir_ / "two.csv");
+  std::stringstream sa, sb;
+  sa << a.rdbuf();
+  sb << b.rdbuf();
+  EXPECT_GT(sa.str().size(), 1000u);
+  EXPECT_EQ(sa.str(), sb.str());
+  const Result bad = jelly(base + out() + " --threads 0");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("--threads"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(out()));
 }
 
 TEST_F(Cli, SetOverridesAParameterByItsName) {
