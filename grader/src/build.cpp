@@ -17,6 +17,35 @@ namespace jelly::grade {
 
 namespace {
 
+// Digest of every header under the include folders inside the framework checkout or the build
+// (system folders such as /usr/include are left out: too large, and they change with the compiler).
+std::string framework_headers_digest(const GradeConfig& config) {
+  std::vector<fs::path> files;
+  const auto inside = [](const fs::path& dir, const fs::path& root) {
+    if (root.empty()) return false;
+    const std::string d = fs::weakly_canonical(dir).string(), r = fs::weakly_canonical(root).string();
+    return d.compare(0, r.size(), r) == 0;
+  };
+  for (const std::string& inc : config.include_dirs) {
+    std::error_code ec;
+    if (!inside(inc, config.source_dir) && !inside(inc, config.binary_dir)) continue;
+    for (fs::recursive_directory_iterator it(inc, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string ext = it->path().extension().string();
+      if (it->is_regular_file(ec) && (ext == ".hpp" || ext == ".h" || ext == ".hh" || ext == ".inl"))
+        files.push_back(it->path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::string all;
+  for (const fs::path& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    all += f.string() + "\n" + fnv_hex(text.str()) + "\n";
+  }
+  return fnv_hex(all);
+}
+
 std::string read_file(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;
@@ -117,6 +146,9 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& i : config.include_dirs) base.push_back("-I" + i);
   base.push_back("-fdiagnostics-color=never");
   for (const std::string& b : base) flags_key += "\n" + b;
+  // The framework's own headers are part of what an object was compiled from: a changed struct
+  // (e.g. a new TaskTable member) must not reuse objects built against the old layout.
+  flags_key += "\n" + framework_headers_digest(config);
 
   std::mutex mutex;
   std::vector<std::string> queue = task_files();
