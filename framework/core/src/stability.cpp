@@ -1,5 +1,6 @@
 #include "jelly/stability.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -167,6 +168,8 @@ std::string InstabilityReport::message() const {
 void StabilityMonitor::start(double e0) {
   e0_ = e0;
   recent_.clear();
+  // A step never allocates: the window's storage is taken here, once (tests/alloc).
+  recent_.reserve(static_cast<std::size_t>(std::max(0, config_.window)) + 2);
 }
 
 std::optional<std::string> StabilityMonitor::check(double energy, bool state_finite) {
@@ -181,7 +184,7 @@ std::optional<std::string> StabilityMonitor::check(double energy, bool state_fin
     return std::string(buf);
   }
   recent_.push_back(energy);
-  while (static_cast<int>(recent_.size()) > config_.window + 1) recent_.pop_front();
+  while (static_cast<int>(recent_.size()) > config_.window + 1) recent_.erase(recent_.begin());
   if (static_cast<int>(recent_.size()) == config_.window + 1) {
     bool growing = true;
     double previous = 0.0;

@@ -1,9 +1,9 @@
 // The stability detector and the stable-step estimate of contract §8.
 #pragma once
 
-#include <deque>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "jelly/integrator.hpp"
 #include "jelly/jacobian.hpp"
@@ -75,7 +75,7 @@ class StabilityMonitor {
  private:
   Config config_;
   double e0_ = 0.0;
-  std::deque<double> recent_;
+  std::vector<double> recent_;  ///< the last window + 1 samples (capacity reserved by start())
 };
 
 }  // namespace jelly
