@@ -15,7 +15,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev
-  gnuplot-nox xvfb xauth
+  gnuplot-nox xvfb xauth zip unzip
   clang libclang-rt-14-dev
 )
 

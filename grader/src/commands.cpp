@@ -214,13 +214,33 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   // Not needed to grade, and the mutants quote the reference solution.
   fs::remove_all(stage / "source" / "grader" / "tests");
   fs::remove_all(stage / "source" / "grader" / "mutants");
+  // toml++'s headers, for an image without libtomlplusplus-dev (Gradescope's Ubuntu): the build
+  // then uses them header-only (CMakeLists.txt). Taken from this machine, with their licence.
+  const fs::path toml_headers = fs::path(JELLY_TOMLPLUSPLUS_INCLUDE_DIR) / "toml++";
+  const fs::path bundle = stage / "source" / "third_party" / "tomlplusplus";
+  if (!fs::exists(toml_headers / "toml.h")) {
+    std::cerr << "jelly-grade: gradescope-zip: toml++ headers not found at " << toml_headers.string()
+              << " (expected toml.h there; install libtomlplusplus-dev)\n";
+    return 2;
+  }
+  fs::create_directories(bundle / "include");
+  fs::copy(toml_headers, bundle / "include" / "toml++", fs::copy_options::recursive);
+  for (const char* licence : {"/usr/share/doc/libtomlplusplus-dev/copyright",
+                              JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"})
+    if (fs::exists(licence)) {
+      fs::copy_file(licence, bundle / "LICENSE", fs::copy_options::overwrite_existing);
+      break;
+    }
   std::ofstream(stage / "setup.sh") <<
       "#!/usr/bin/env bash\n"
       "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
       "set -euo pipefail\n"
       "apt-get update\n"
-      "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev libtomlplusplus-dev "
-      "nlohmann-json3-dev libseccomp-dev\n"
+      "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev nlohmann-json3-dev "
+      "libseccomp-dev\n"
+      "# toml++: the package where the distribution has it, else the headers bundled in source/.\n"
+      "apt-get install -y --no-install-recommends libtomlplusplus-dev || "
+      "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
       "cd /autograder/source\n"
       "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments -DJELLY_BUILD_TESTS=OFF "
       "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
