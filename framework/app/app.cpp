@@ -22,6 +22,7 @@ using namespace jelly::render;
 
 std::string usage() {
   return "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare a,b[,c[,d]]]\n"
+         "                 [--slot-set K:key=value ...] (run K of --compare gets its own parameter)\n"
          "                 [--size WxH] [--backend window|auto] [--factor F] [--particles] [--springs]\n"
          "                 [--smoke-test] [--screenshot FILE] [--shot-at T] [--benchmark N] [--samples 0|2|4]\n"
          "                 [--open scene,simulation,comparison,parameters,draw,plots,recording]\n"
@@ -66,6 +67,14 @@ std::string parse_options(int argc, char** argv, AppOptions& o) {
         if (!integrator_from_string(item)) return "--compare: unknown integrator '" + item + "'";
         else o.compare.push_back(item);
       if (o.compare.size() < 2 || o.compare.size() > 4) return "--compare takes 2 to 4 integrators";
+    } else if (a == "--slot-set") {
+      if (!next(v)) return "--slot-set needs K:key=value";
+      const std::size_t colon = v.find(':');
+      int k = 0;
+      if (colon == std::string::npos || std::sscanf(v.substr(0, colon).c_str(), "%d", &k) != 1 || k < 1 ||
+          k > 4 || v.find('=', colon) == std::string::npos)
+        return "--slot-set needs K:key=value with K from 1 to 4, got '" + v + "'";
+      o.slot_sets.emplace_back(k, v.substr(colon + 1));
     } else if (a == "--size") {
       if (!next(v) || std::sscanf(v.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 320 ||
           o.height < 240)
@@ -125,12 +134,15 @@ void rebuild_runs(AppState& s) {
   s.runs.clear();
   const TaskTable tasks = linked_tasks();
   if (s.comparing && s.slots.size() >= 2) {
-    for (const CompareSlot& slot : s.slots) {
-      RunSetup setup{s.edited, slot.integrator, slot.dt};
+    for (CompareSlot& slot : s.slots) {
+      RunSetup setup{s.edited, slot.integrator, slot.dt, {}};
+      const auto error = apply_overrides(setup.scene, slot.overrides);
+      slot.error = error ? *error : "";
+      if (!error) setup.overrides = slot.overrides;  // else: the shared scene, and the error shows
       s.runs.push_back(std::make_unique<SimulationRun>(setup, tasks));
     }
   } else {
-    s.runs.push_back(std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt}, tasks));
+    s.runs.push_back(std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt, {}}, tasks));
   }
   s.clock.restart();
 }
@@ -238,9 +250,23 @@ int run_app(const AppOptions& opt) {
   }
   if (!opt.integrator.empty()) s.integrator = *integrator_from_string(opt.integrator);
   if (opt.dt > 0.0) s.dt = opt.dt;
-  for (const std::string& name : opt.compare) s.slots.push_back({*integrator_from_string(name), s.dt});
+  for (const std::string& name : opt.compare) s.slots.push_back(CompareSlot{*integrator_from_string(name), s.dt, {}, {}});
   if (s.slots.empty())
-    s.slots = {{IntegratorKind::ExplicitEuler, s.dt}, {IntegratorKind::RK4, s.dt}};
+    s.slots = {CompareSlot{IntegratorKind::ExplicitEuler, s.dt, {}, {}}, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}}};
+  for (const auto& [k, assignment] : opt.slot_sets) {
+    if (k > static_cast<int>(s.slots.size())) {
+      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": there are only " << s.slots.size()
+                << " runs (--compare a,b[,c[,d]])\n";
+      return 2;
+    }
+    std::string& o = s.slots[static_cast<std::size_t>(k - 1)].overrides;
+    o += (o.empty() ? "" : "; ") + assignment;
+    SceneSpec probe = s.edited;
+    if (const auto error = apply_overrides(probe, o)) {
+      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": " << *error << "\n";
+      return 2;
+    }
+  }
   s.comparing = !opt.compare.empty();
   rebuild_runs(s);
 

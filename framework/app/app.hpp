@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "jelly/render/camera.hpp"
@@ -21,6 +22,7 @@ struct AppOptions {
   std::string integrator;                     ///< empty: the scene's
   double dt = 0.0;                            ///< 0: the scene's
   std::vector<std::string> compare;           ///< 2–4 integrators: start in comparison mode
+  std::vector<std::pair<int, std::string>> slot_sets;  ///< --slot-set K:key=value (1-based slot)
   std::string backend = "window";             ///< window | auto (auto falls back to offscreen)
   int width = 1600, height = 900;
   bool smoke_test = false;                    ///< scripted run: every integrator 2 s, every scene
@@ -43,6 +45,8 @@ int run_app(const AppOptions& options);
 struct CompareSlot {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
   double dt = 0.001;
+  std::string overrides;  ///< this run's own parameters, "key=value; …" (render::apply_overrides)
+  std::string error;      ///< why the overrides were not applied (shown under the field)
 };
 
 /// Everything the panels edit and the loop reads (one owner, passed explicitly).

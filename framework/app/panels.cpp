@@ -276,13 +276,24 @@ void draw_panels(AppState& s, double fps) {
     if (ImGui::Checkbox("compare side by side", &s.comparing)) s.reset_requested = true;
     int count = static_cast<int>(s.slots.size());
     if (ImGui::SliderInt("runs", &count, 2, 4)) {
-      s.slots.resize(count, CompareSlot{IntegratorKind::RK4, s.dt});
+      s.slots.resize(count, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}});
       s.reset_requested = s.comparing;
     }
     for (std::size_t i = 0; i < s.slots.size(); ++i) {
       ImGui::PushID(static_cast<int>(i));
-      if (integrator_combo("integrator", s.slots[i].integrator)) s.reset_requested = s.comparing;
-      if (step_input("step h", s.slots[i].dt)) s.reset_requested = s.comparing;
+      CompareSlot& slot = s.slots[i];
+      if (integrator_combo("integrator", slot.integrator)) s.reset_requested = s.comparing;
+      if (step_input("step h", slot.dt)) s.reset_requested = s.comparing;
+      // This run's own parameters, e.g. "springs.structural.ks=1e5" beside an unchanged run.
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "%s", slot.overrides.c_str());
+      if (ImGui::InputTextWithHint("own parameters", "key=value; ... (jelly params)", buf, sizeof buf,
+                                   ImGuiInputTextFlags_EnterReturnsTrue)) {
+        slot.overrides = buf;
+        s.reset_requested = s.comparing;
+      }
+      if (!slot.error.empty()) ImGui::TextColored(kRed, "%s", slot.error.c_str());
+      ImGui::Separator();
       ImGui::PopID();
     }
     if (ImGui::Button("Start together")) {

@@ -22,9 +22,16 @@ struct RunSetup {
   SceneSpec scene;
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
   double dt = 0.001;  ///< [s]
+  /// Parameters this run changes from the shared scene ("key=value; …", shown in its label).
+  std::string overrides;
   /// From the scene's own simulation settings.
-  static RunSetup from_scene(const SceneSpec& scene) { return {scene, scene.integrator, scene.dt}; }
+  static RunSetup from_scene(const SceneSpec& scene) { return {scene, scene.integrator, scene.dt, {}}; }
 };
+
+/// Applies "key=value" assignments separated by ';' or new lines (the keys of `jelly params`, as
+/// `--set` takes them; values may contain commas, e.g. body.center=-5,11,0) to `scene`. Returns
+/// the first error ("springs.shear.ks: …") and leaves the scene unchanged then; blank is fine.
+std::optional<std::string> apply_overrides(SceneSpec& scene, std::string_view text);
 
 /// One sample of a run's history (plots).
 struct RunSample {
