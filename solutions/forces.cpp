@@ -119,6 +119,7 @@ std::shared_ptr<const Plan> make_plan(const std::vector<Spring>& springs) {
 struct Scratch {
   std::vector<double> x, y, z, vx, vy, vz;
   std::vector<double> sums;  // per group: its force sums fx, fy, fz (3 n each), from zero
+  std::vector<const Plan*> plans;  // per group: its layout (nullptr: no springs)
 };
 Scratch& scratch() {
   thread_local Scratch s;
@@ -249,13 +250,8 @@ void spring_pass(const SpringGroup* groups, std::size_t count, const State& s, V
   w.sums.resize(3 * un * count);
   bool leftovers = false;
   int wanted = 1;
-  std::vector<const Plan*> plans_storage;
-  const Plan* plans_small[8];
-  const Plan** plans = plans_small;
-  if (count > 8) {
-    plans_storage.resize(count);
-    plans = plans_storage.data();
-  }
+  w.plans.resize(count);  // kept between calls: no allocation once warmed up
+  const Plan** plans = w.plans.data();
   for (std::size_t g = 0; g < count; ++g) {
     plans[g] = groups[g].springs.empty() ? nullptr : &plan_of(groups[g]);
     if (plans[g] && !plans[g]->leftovers.empty()) leftovers = true;

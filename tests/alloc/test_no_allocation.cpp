@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <memory>
 
 #include "counting_malloc.hpp"
 #include "jelly/scene.hpp"
@@ -64,6 +65,24 @@ INSTANTIATE_TEST_SUITE_P(CourseIntegrators, NoAllocationPerStep,
                                            IntegratorKind::Midpoint, IntegratorKind::RK4,
                                            IntegratorKind::SymplecticEuler),
                          [](const auto& p) { return std::string(to_string(p.param)); });
+
+// Four cubes, twelve spring groups: more groups than any fixed-size table would hold.
+TEST(NoAllocation, ManySpringGroupsAllocateNothing) {
+  if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
+  auto world = std::make_unique<World>(linked_tasks());
+  for (int c = 0; c < 4; ++c) {
+    CubeSpec spec;
+    spec.n = 5;
+    spec.center = Vec3(6.0 * c, 5.0, 0.0);
+    const int cube = world->add_cube(spec);
+    for (SpringType type : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
+      world->build_cube_springs(cube, type, 2000.0, 60.0);
+  }
+  world->set_gravity(Vec3(0.0, -9.8, 0.0));
+  ASSERT_EQ(world->spring_groups().size(), 12u);
+  Simulator sim(std::move(world), {IntegratorKind::RK4, 0.001});
+  EXPECT_EQ(allocations_per_run(sim, 5, 50), 0);
+}
 
 TEST(NoAllocation, TwoThreadsAllocateNothingEither) {
   if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
