@@ -181,13 +181,10 @@ std::optional<SceneSpec> load_with_overrides(const std::string& path, const Args
   if (const auto v = args.value("--dt"); v && !apply("simulation.dt", *v)) return std::nullopt;
   if (const auto v = args.value("--duration"); v && !apply("simulation.duration", *v)) return std::nullopt;
   for (const std::string& kv : args.values("--set")) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      std::fprintf(stderr, "error: --set %s: expected KEY=VALUE, e.g. --set springs.shear.ks=5000\n",
-                   kv.c_str());
+    if (const auto err = set_assignment(scene, kv)) {
+      std::fprintf(stderr, "error: %s\n", err->text().c_str());
       return std::nullopt;
     }
-    if (!apply(kv.substr(0, eq), kv.substr(eq + 1))) return std::nullopt;
   }
   return scene;
 }

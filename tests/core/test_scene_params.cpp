@@ -135,6 +135,26 @@ TEST(SceneParams, GetAndGetNumber) {
   EXPECT_EQ(get_parameter(tp, "body.rest_lengths"), "1");
 }
 
+// "key=value" as --set, the viewer's per-run parameters and `jelly render --set` take it.
+TEST(SceneParams, SetAssignmentSplitsAtTheFirstEqualsSign) {
+  SceneSpec s = scene("course-2023.toml");
+  EXPECT_EQ(set_assignment(s, " springs.shear.ks = 5000 "), std::nullopt);
+  EXPECT_EQ(s.shear.ks, 5000.0);
+  EXPECT_EQ(set_assignment(s, "body.center=-5,11,0"), std::nullopt);
+  EXPECT_EQ(s.cube.center, Vec3(-5.0, 11.0, 0.0));
+  const SceneSpec before = s;
+  for (const char* bad : {"springs.shear.ks", "=5000", " = 5000", ""}) {
+    const auto e = set_assignment(s, bad);
+    ASSERT_TRUE(e) << "'" << bad << "'";
+    EXPECT_EQ(e->file, "--set");
+    EXPECT_NE(e->message.find("expected key=value"), std::string::npos) << e->message;
+  }
+  const auto unknown = set_assignment(s, "springs.shear.kss=1");
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(unknown->key, "springs.shear.kss");  // set_parameter's error, key named
+  EXPECT_EQ(to_toml(s), to_toml(before));        // nothing changed by the failures
+}
+
 TEST(SceneParams, SetParsesByTypeAndValidatesLikeTheFile) {
   SceneSpec s = scene("course-2023.toml");
   EXPECT_EQ(set_parameter(s, "springs.shear.ks", "5000"), std::nullopt);

@@ -182,5 +182,41 @@ TEST(RenderReplay, InputErrorsReturnTwoAndNameTheProblem) {
   EXPECT_FALSE(fs::exists(dir / "frame_00000.png"));
 }
 
+// --camera is checked the same way when replaying and when simulating: a bad value is exit 2 and
+// no frame.
+TEST(RenderReplay, BadCameraIsAnInputErrorInBothModes) {
+  const SceneResult scene = resolve_scene("builtin:course-2023", default_scenes_dir());
+  ASSERT_TRUE(scene) << scene.error->text();
+  const Vec3Array start = build_world(*scene.scene, linked_tasks())->state().x;
+  fs::create_directories(kArtifacts);
+  const fs::path csv = kArtifacts / "start.csv";
+  {
+    std::ofstream out(csv);
+    out << "frame,time,particle,x,y,z\n";
+    for (Eigen::Index i = 0; i < start.cols(); ++i)
+      out << "0,0," << i << "," << start(0, i) << "," << start(1, i) << "," << start(2, i) << "\n";
+  }
+  const fs::path dir = kArtifacts / "bad-camera";
+  fs::remove_all(dir);
+  for (const char* camera : {"30,20", "30,20,-1", "a,b,c"}) {
+    EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
+                          "--width", "64", "--height", "48", "--camera", camera}),
+              2)
+        << camera;
+    EXPECT_EQ(run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration", "0",
+                          "--width", "64", "--height", "48", "--no-video", "--camera", camera}),
+              2)
+        << camera;
+  }
+  EXPECT_FALSE(fs::exists(dir / "frame_00000.png"));
+  // A good value goes through in both modes.
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
+                        "--width", "64", "--height", "48", "--samples", "0", "--camera", "30,20,25"}),
+            0);
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration", "0", "--width",
+                        "64", "--height", "48", "--samples", "0", "--no-video", "--camera", "30,20,25"}),
+            0);
+}
+
 }  // namespace
 }  // namespace jelly::render

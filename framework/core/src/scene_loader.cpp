@@ -6,6 +6,7 @@
 // file, the dotted key, and the line and column toml++ reports. Nothing here throws, exits or
 // writes a file.
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -720,6 +721,21 @@ std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
   } catch (const std::exception& e) {
     return fail(k, std::string("internal error: ") + e.what());
   }
+}
+
+std::optional<SceneError> set_assignment(SceneSpec& scene, std::string_view assignment) {
+  const auto trim = [](std::string_view t) {
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
+    return t;
+  };
+  const std::string_view item = trim(assignment);
+  const std::size_t eq = item.find('=');
+  if (eq == std::string_view::npos || trim(item.substr(0, eq)).empty())
+    return SceneError{"--set", "", 0, 0,
+                      "expected key=value (e.g. springs.shear.ks=5000; keys: `jelly params SCENE`), got '" +
+                          std::string(item) + "'"};
+  return set_parameter(scene, trim(item.substr(0, eq)), trim(item.substr(eq + 1)));
 }
 
 std::string to_toml(const SceneSpec& scene) {

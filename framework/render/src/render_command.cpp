@@ -71,6 +71,21 @@ bool parse_number(const std::string& text, double& out) {
   return end && *end == '\0' && !text.empty() && std::isfinite(out);
 }
 
+/// --camera YAW,PITCH,DISTANCE onto `camera`; says what was wrong and returns false otherwise.
+bool apply_camera(const std::string& text, OrbitCamera& camera) {
+  const auto parts = split(text, ',');
+  double y = 0, p = 0, dist = 0;
+  if (parts.size() != 3 || !parse_number(parts[0], y) || !parse_number(parts[1], p) ||
+      !parse_number(parts[2], dist) || dist <= 0) {
+    std::cerr << "jelly render: --camera needs YAW,PITCH,DISTANCE (degrees, degrees, metres)\n";
+    return false;
+  }
+  camera.yaw_degrees = y;
+  camera.pitch_degrees = p;
+  camera.distance = dist;
+  return true;
+}
+
 /// Parses argv; returns an error text or "".
 std::string parse(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
@@ -185,18 +200,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
   OrbitCamera camera;
   const Viewport vp{0, 0, a.width, a.height};
   camera.frame(drawable->bounds(), vp.aspect());
-  if (!a.camera.empty()) {
-    const auto parts = split(a.camera, ',');
-    double y = 0, p = 0, dist = 0;
-    if (parts.size() != 3 || !parse_number(parts[0], y) || !parse_number(parts[1], p) ||
-        !parse_number(parts[2], dist) || dist <= 0) {
-      std::cerr << "jelly render: --camera needs YAW,PITCH,DISTANCE (degrees, degrees, metres)\n";
-      return 2;
-    }
-    camera.yaw_degrees = y;
-    camera.pitch_degrees = p;
-    camera.distance = dist;
-  }
+  if (!a.camera.empty() && !apply_camera(a.camera, camera)) return 2;
   DrawOptions draw;
   draw.particles = a.particles;
   if (a.springs) draw.springs = {true, true, true, true};
@@ -251,8 +255,7 @@ int render_command(int argc, char** argv) {
   }
   SceneSpec scene = *loaded.scene;
   for (const std::string& kv : a.sets) {
-    const auto eq = kv.find('=');
-    if (auto err = set_parameter(scene, kv.substr(0, eq), kv.substr(eq + 1))) {
+    if (auto err = set_assignment(scene, kv)) {
       std::cerr << "jelly render: " << err->text() << "\n";
       return 2;
     }
@@ -309,18 +312,7 @@ int render_command(int argc, char** argv) {
   ensure_drawables(renderer, run_ptrs);
   const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, 0);
   camera.frame(runs.front()->drawable()->bounds(), vps.front().aspect());
-  if (!a.camera.empty()) {
-    const auto parts = split(a.camera, ',');
-    double y = 0, p = 0, dist = 0;
-    if (parts.size() != 3 || !parse_number(parts[0], y) || !parse_number(parts[1], p) ||
-        !parse_number(parts[2], dist) || dist <= 0) {
-      std::cerr << "jelly render: --camera needs YAW,PITCH,DISTANCE (degrees, degrees, metres)\n";
-      return 2;
-    }
-    camera.yaw_degrees = y;
-    camera.pitch_degrees = p;
-    camera.distance = dist;
-  }
+  if (!a.camera.empty() && !apply_camera(a.camera, camera)) return 2;
 
   if (a.benchmark > 0) {
     // Frames per second of drawing and reading back the first state (no stepping).

@@ -1,7 +1,6 @@
 #include "jelly/render/session.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -200,18 +199,9 @@ std::optional<std::string> apply_overrides(SceneSpec& scene, std::string_view te
   while (start <= text.size()) {
     std::size_t end = text.find_first_of(";\n", start);
     if (end == std::string_view::npos) end = text.size();
-    std::string_view item = text.substr(start, end - start);
-    while (!item.empty() && std::isspace(static_cast<unsigned char>(item.front()))) item.remove_prefix(1);
-    while (!item.empty() && std::isspace(static_cast<unsigned char>(item.back()))) item.remove_suffix(1);
-    if (!item.empty()) {
-      const std::size_t eq = item.find('=');
-      if (eq == std::string_view::npos || eq == 0)
-        return "'" + std::string(item) + "': expected key=value (keys as in `jelly params SCENE`)";
-      std::string_view key = item.substr(0, eq), value = item.substr(eq + 1);
-      while (!key.empty() && std::isspace(static_cast<unsigned char>(key.back()))) key.remove_suffix(1);
-      while (!value.empty() && std::isspace(static_cast<unsigned char>(value.front()))) value.remove_prefix(1);
-      if (const auto error = set_parameter(edited, key, value)) return error->text();
-    }
+    const std::string_view item = text.substr(start, end - start);
+    if (item.find_first_not_of(" \t\r") != std::string_view::npos)
+      if (const auto error = set_assignment(edited, item)) return error->text();
     start = end + 1;
   }
   scene = std::move(edited);

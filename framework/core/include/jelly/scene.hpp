@@ -92,6 +92,10 @@ SceneResult parse_scene(std::string_view text, std::string_view source_name);
 std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
                                         std::string_view value);
 
+/// The same from one "key=value" (as `--set` takes it; spaces around key and value are ignored,
+/// the value may contain commas). Without '=' or with an empty key: an error saying so.
+std::optional<SceneError> set_assignment(SceneSpec& scene, std::string_view assignment);
+
 /// Writes a scene back as TOML that load_scene reads to the same SceneSpec.
 std::string to_toml(const SceneSpec& scene);
 
