@@ -1,10 +1,15 @@
 // The machine's own limits, measured with the project's flags, to say how close the spring pass is
 // to them (docs/performance.md): the throughput of sqrt + divide (the spring pass's bound), of
-// plain multiply-adds (without FMA: -ffp-contract=off), and of streaming memory.
+// plain multiply-adds (without FMA: -ffp-contract=off), of streaming memory, and the cost of one
+// OpenMP parallel region with a barrier (the threaded pass's fixed price).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace {
 
@@ -57,6 +62,23 @@ void BM_Stream(benchmark::State& state) {
 }
 
 }  // namespace
+
+#ifdef _OPENMP
+// What the threaded spring pass pays per evaluation for its structure alone: one parallel region
+// on two threads with one barrier inside, and no work (wall time per region).
+void BM_ParallelRegion(benchmark::State& state) {
+  volatile int sink = 0;
+  for (auto _ : state) {
+#pragma omp parallel num_threads(2)
+    {
+      if (omp_get_thread_num() == 1) sink = sink + 1;
+#pragma omp barrier
+    }
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(BM_ParallelRegion)->UseRealTime();
+#endif
 
 BENCHMARK(BM_SqrtDiv)->Arg(4096);
 BENCHMARK(BM_MulAdd)->Arg(4096);
