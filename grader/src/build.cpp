@@ -252,6 +252,9 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   // The framework's own headers are part of what an object was compiled from: a changed struct
   // (e.g. a new TaskTable member) must not reuse objects built against the old layout.
   flags_key += "\n" + framework_headers_digest(config);
+  // What the compiler could see is part of what an object was compiled from: an object made without
+  // a sandbox may hold any file of the machine (`.incbin`), and must never serve a sandboxed run.
+  flags_key += "\nsandbox " + iso.name;
 
   // What the compiler may see and what of its messages a student may see.
   auto tool_limits = [&]() {
@@ -306,7 +309,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       std::vector<std::string> argv = base;
       argv.insert(argv.end(), {"-c", name, "-o", (obj / (name + ".o")).string()});
       Limits lim = tool_limits();
-      const ChildResult c = run_child(isolate(iso, argv, compile_view, lim), lim, src);
+      const ChildResult c = run_isolated(iso, argv, compile_view, lim);
       std::lock_guard<std::mutex> lock(mutex);
       std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
       const std::string hit = limit_hit("compiling " + name, c, c.err + c.out, limits);
@@ -364,7 +367,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   link_view.cwd = work_dir;
   for (const std::string& o : config.link_objects) link_view.read_only.push_back(o);
   for (const std::string& l : config.link_libraries) link_view.read_only.push_back(l);
-  const ChildResult c = run_child(isolate(iso, argv, link_view, lim), lim, work_dir);
+  const ChildResult c = run_isolated(iso, argv, link_view, lim);
   if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
     const std::string hit = limit_hit("linking", c, c.err + c.out, limits);
     r.errors = tidy(replace_all(filter_diagnostics(c.err + c.out, work_dir, allowed), obj.string() + "/", ""));

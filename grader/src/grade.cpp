@@ -143,7 +143,7 @@ ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* i
   SandboxView view;
   view.read_only = {runner};
   view.cwd = iso->kind == IsolationKind::Bwrap ? fs::path("/tmp") : work_dir;
-  return run_child(isolate(*iso, argv, view, lim), lim, view.cwd);
+  return run_isolated(*iso, argv, view, lim);
 }
 
 GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, const fs::path& submission,

@@ -143,6 +143,15 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
     }
   }
   iso.description = "none";
+  // A student's copy of the grader (a release) has no hidden data and no solutions/: nothing to warn about.
+  bool secrets = fs::exists(config.solutions_dir()) || fs::exists(config.reference_runner);
+  std::error_code ec;
+  for (fs::directory_iterator it(config.data_dir() / "hidden", ec), end; !ec && it != end; it.increment(ec))
+    secrets = true;
+  if (!secrets) {
+    iso.description = "none (this copy of the grader holds no hidden data and no solutions)";
+    return iso;
+  }
   iso.warning = "hidden tests are NOT protected: student code is compiled and run without isolation (" +
                 (why_not_bwrap.empty() ? std::string("--isolation none") : why_not_bwrap) +
                 (geteuid() == 0 ? "" : "; not root, so no unprivileged user either") +
@@ -186,6 +195,18 @@ std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::st
   if (!view.cwd.empty()) a.insert(a.end(), {"--chdir", absolute_clean(view.cwd).string()});
   a.insert(a.end(), argv.begin(), argv.end());
   return a;
+}
+
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
+                         Limits limits) {
+  const std::vector<std::string> command = isolate(iso, argv, view, limits);
+  ChildResult c = run_child(command, limits, view.cwd);
+  // bwrap's own init reaps the tool and exits with 128 + the signal that ended it.
+  if (iso.kind == IsolationKind::Bwrap && c.signal == 0 && c.exit_code > 128 && c.exit_code <= 128 + 64) {
+    c.signal = c.exit_code - 128;
+    c.exit_code = -1;
+  }
+  return c;
 }
 
 void give_to_sandbox(const Isolation& iso, const fs::path& dir) {

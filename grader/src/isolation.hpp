@@ -53,6 +53,11 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode);
 std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::string>& argv,
                                  const SandboxView& view, Limits& limits);
 
+/// run_child(isolate(...)): a process that bubblewrap reports as exit status 128 + N is reported
+/// as ended by signal N, as it would be without the sandbox.
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
+                         Limits limits);
+
 /// Makes `dir` (created) and everything in it belong to the unprivileged user (kind User), so the
 /// compiler and the runner can write there; throws when the user could not reach it.
 void give_to_sandbox(const Isolation& iso, const fs::path& dir);

@@ -107,7 +107,8 @@ struct Route {
   const char* name;
   Where where;
   const char* code;     // @HIDDEN@: the hidden file's absolute path
-  const char* expect;   // in the compile output, or in the output of test a1.t8.contact_plane.eps
+  const char* expect;   // in the compile output, or in the output of test a1.t8.contact_plane.eps;
+                        // alternatives separated by | (bwrap hides a file, the user sandbox denies it)
   bool runs = false;    // compiles, and `expect` is in that test's output
   bool test_fails = true;
 };
@@ -117,8 +118,8 @@ const Route kRoutes[] = {
   // Preprocessor: the file named by routes a text filter does not see.
   {"computed_include", Where::TopOfForces,
    "#define JELLY_STR(x) #x\n#define JELLY_XSTR(x) JELLY_STR(x)\n#define JELLY_P @HIDDEN@\n#include JELLY_XSTR(JELLY_P)\n",
-   "No such file or directory"},
-  {"line_splice", Where::TopOfForces, "#inc\\\nlude \"@HIDDEN@\"\n", "No such file or directory"},
+   "No such file or directory|Permission denied"},
+  {"line_splice", Where::TopOfForces, "#inc\\\nlude \"@HIDDEN@\"\n", "No such file or directory|Permission denied"},
   {"has_include_probe", Where::TopOfForces,
    "#if __has_include(\"@HIDDEN@\")\n#error the hidden file is visible to the compiler\n#endif\n#error probe done\n",
    "probe done"},
@@ -239,7 +240,7 @@ BatchRun run_batch(const std::string& tag, const std::vector<const Route*>& rout
   BatchRun b;
   b.out = root / "out";
   b.console = run("batch " + in.string() + " --out " + b.out.string() +
-                  " --jobs 2 --visibility public --timeout 3 --compile-memory 512 --compile-cpu 30 --isolation " +
+                  " --jobs 2 --visibility public --timeout 10 --compile-memory 512 --compile-cpu 30 --isolation " +
                   isolation);
   std::ofstream(root / "console.txt") << b.console;
   return b;
@@ -249,6 +250,14 @@ const Json* find_test(const Json& results, const std::string& id) {
   for (const Json& t : results["tests"])
     if (t["name"].get<std::string>().find("[" + id + "]") != std::string::npos) return &t;
   return nullptr;
+}
+
+bool has_any(const std::string& text, const std::string& alternatives) {
+  std::istringstream in(alternatives);
+  std::string a;
+  while (std::getline(in, a, '|'))
+    if (text.find(a) != std::string::npos) return true;
+  return false;
 }
 
 // Each route failed as it should, the well-behaved submission got full marks, nothing leaked.
@@ -270,11 +279,11 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes, con
       const Json* t = find_test(j, "a1.t8.contact_plane.eps");
       ASSERT_NE(t, nullptr);
       EXPECT_EQ((*t)["status"], r->test_fails ? "failed" : "passed");
-      EXPECT_NE((*t)["output"].get<std::string>().find(expect), std::string::npos) << (*t)["output"];
+      EXPECT_TRUE(has_any((*t)["output"].get<std::string>(), expect)) << (*t)["output"];
     } else {
       EXPECT_EQ(compile["status"], "failed");
       const std::string o = compile["output"];
-      EXPECT_NE(o.find(expect), std::string::npos) << o.substr(0, 3000);
+      EXPECT_TRUE(has_any(o, expect)) << o.substr(0, 3000);
       EXPECT_EQ(o.find("the hidden file is visible"), std::string::npos) << o.substr(0, 3000);
       EXPECT_LT(o.size(), 300000u);
     }
@@ -303,6 +312,20 @@ std::vector<const Route*> named(std::initializer_list<const char*> names) {
 
 }  // namespace
 
+// Without isolation the search below does find the hidden text (so it can fail), and the run says
+// loudly that hidden tests were not protected. It runs first on purpose: its object, which holds
+// the hidden file, is in the object cache when the sandboxed batches below compile the same text,
+// and must not be reused by them.
+TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
+  const auto routes = named({"asm_incbin"});
+  const BatchRun b = run_batch("none", routes, "none");
+  EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos) << b.console;
+  const Json j = Json::parse(read_text(b.out / "asm_incbin" / "results.json"));
+  EXPECT_NE(j["output"].get<std::string>().find("Sandbox: none"), std::string::npos);
+  EXPECT_NE(j["output"].get<std::string>().find("NOT protected"), std::string::npos);
+  EXPECT_NE(leaks_under(b.out, hidden_needles()), "") << "the canary search found nothing even without isolation";
+}
+
 // The default mechanism of this machine (bubblewrap where user namespaces work, as in CI).
 TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
   const auto routes = all_routes();
@@ -323,14 +346,3 @@ TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
   check_batch(b, routes, "user");
 }
 
-// Without isolation the search above does find the hidden text (so it can fail), and the run says
-// loudly that hidden tests were not protected.
-TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
-  const auto routes = named({"asm_incbin"});
-  const BatchRun b = run_batch("none", routes, "none");
-  EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos) << b.console;
-  const Json j = Json::parse(read_text(b.out / "asm_incbin" / "results.json"));
-  EXPECT_NE(j["output"].get<std::string>().find("Sandbox: none"), std::string::npos);
-  EXPECT_NE(j["output"].get<std::string>().find("NOT protected"), std::string::npos);
-  EXPECT_NE(leaks_under(b.out, hidden_needles()), "") << "the canary search found nothing even without isolation";
-}
