@@ -75,8 +75,7 @@ foreach(case reference stubs)
 endforeach()
 
 # The hostile submission, against the unpacked autograder's own hidden data.
-file(GLOB hidden_files "${src}/grader/data/hidden/*.json")
-list(GET hidden_files 0 hidden)
+set(hidden "${src}/grader/data/hidden/a1.t4.spring_force.random.json")
 file(STRINGS "${hidden}" hidden_lines REGEX "[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9]")
 list(LENGTH hidden_lines n_needles)
 if(n_needles LESS 3)
