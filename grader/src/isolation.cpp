@@ -27,7 +27,7 @@ fs::path absolute_clean(const fs::path& p) {
 }
 
 std::string find_bwrap() {
-  if (const char* env = std::getenv("JELLY_GRADE_BWRAP")) return env;  // tests: a broken bwrap
+  if (const char* env = std::getenv("JELLY_GRADE_BWRAP")) return env;  // another bwrap (tests: a broken one)
   for (const char* p : {"/usr/bin/bwrap", "/bin/bwrap", "/usr/local/bin/bwrap"})
     if (access(p, X_OK) == 0) return p;
   return "";

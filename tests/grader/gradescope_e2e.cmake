@@ -103,7 +103,8 @@ if(uid STREQUAL "0")
 endif()
 find_program(BWRAP bwrap)
 if(BWRAP)
-  execute_process(COMMAND "${BWRAP}" --unshare-all --ro-bind /usr /usr --symlink usr/lib64 /lib64 /usr/bin/true
+  execute_process(COMMAND "${BWRAP}" --unshare-all --ro-bind /usr /usr --symlink usr/lib /lib --symlink usr/lib64 /lib64
+                          /usr/bin/true
                   RESULT_VARIABLE bwrap_rc OUTPUT_QUIET ERROR_QUIET)
   if(bwrap_rc EQUAL 0)
     list(APPEND mechanisms bwrap)

@@ -346,3 +346,14 @@ TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
   check_batch(b, routes, "user");
 }
 
+
+// A forced mechanism that cannot work stops the run with the reason, before anything is compiled:
+// never a silent fall back to less isolation.
+TEST(GraderSecurity, ForcedSandboxThatCannotWorkIsAGraderError) {
+  setenv("JELLY_GRADE_BWRAP", "/bin/false", 1);  // a bubblewrap that cannot create a sandbox
+  const std::string out = run("grade " + (kSource / "assignments").string() + " --isolation bwrap --out " +
+                              (kWork / "forced").string());
+  unsetenv("JELLY_GRADE_BWRAP");
+  EXPECT_NE(out.find("--isolation bwrap: /bin/false cannot create a sandbox here"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(kWork / "forced" / "results.json"));
+}
