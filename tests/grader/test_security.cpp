@@ -312,13 +312,20 @@ std::vector<const Route*> named(std::initializer_list<const char*> names) {
 
 }  // namespace
 
-// Without isolation the search below does find the hidden text (so it can fail), and the run says
-// loudly that hidden tests were not protected. It runs first on purpose: its object, which holds
+// Without isolation the search below does find the hidden text (so it can fail), the run says
+// loudly that hidden tests were not protected, and compiler messages still show no hidden line. It runs first on purpose: its object, which holds
 // the hidden file, is in the object cache when the sandboxed batches below compile the same text,
 // and must not be reused by them.
 TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
-  const auto routes = named({"asm_incbin"});
+  const auto routes = named({"asm_incbin", "computed_include", "asm_include"});
   const BatchRun b = run_batch("none", routes, "none");
+  // Compiler messages are filtered even without a sandbox: the hidden file was read by the compiler
+  // and the assembler here, yet no line of it reaches the messages.
+  for (const char* name : {"computed_include", "asm_include"}) {
+    const std::string o = Json::parse(read_text(b.out / name / "results.json"))["tests"][0]["output"];
+    EXPECT_NE(o.find("[hidden: a message about a file that is not part of your submission]"), std::string::npos) << o;
+    EXPECT_EQ(leaks_under(b.out / name, hidden_needles()), "") << name;
+  }
   EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos) << b.console;
   const Json j = Json::parse(read_text(b.out / "asm_incbin" / "results.json"));
   EXPECT_NE(j["output"].get<std::string>().find("Sandbox: none"), std::string::npos);
