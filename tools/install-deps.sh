@@ -14,7 +14,7 @@ PACKAGES=(
   libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
-  libseccomp-dev
+  libseccomp-dev bubblewrap
   gnuplot-nox xvfb xauth zip unzip
   clang libclang-rt-14-dev
 )

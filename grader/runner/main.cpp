@@ -6,9 +6,13 @@
 //   runner --list                                  generator names and descriptions, one per line
 //   runner --request FILE [--result-fd N] [--prepare] [--no-sandbox]
 //
+// FILE "-" is stdin: jelly-grade hands each case its request that way (an anonymous file only
+// that case's sandbox has), and stdin is /dev/null again before student code runs.
+//
 // --prepare builds the case's input instead (reference runner only, at generate-reference time).
 // Everything the case needs is read BEFORE the sandbox goes up; after it, the student's code can
 // compute and print but cannot open a file, start a process or signal anyone.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -72,7 +76,9 @@ int main(int argc, char** argv) {
   if (request_path.empty()) return usage();
   Json request;
   {
-    std::ifstream in(request_path);
+    std::ifstream file;
+    if (request_path != "-") file.open(request_path);
+    std::istream& in = request_path == "-" ? std::cin : file;
     if (!in) {
       std::fprintf(stderr, "runner: cannot read request %s\n", request_path.c_str());
       return 2;
@@ -82,6 +88,11 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(), e.what());
       return 2;
+    }
+    const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (null_fd >= 0) {
+      dup2(null_fd, 0);
+      close(null_fd);
     }
   }
   const std::string case_id = request.value("case", std::string("?"));

@@ -3,9 +3,10 @@
 
 namespace jelly::grade {
 
-/// Installs a seccomp filter that traps every system call a task function has no business making
-/// (opening, creating, renaming or deleting files, starting processes (threads are allowed), networking,
-/// signalling other processes, raising resource limits). A trapped call writes
+/// Installs a seccomp filter that allows only what computing, printing and threads need (memory,
+/// futexes, clocks, reading and writing the descriptors it has, signals to itself) and traps every
+/// other system call: opening files by any interface, starting processes, networking, signalling
+/// other processes, raising limits, asynchronous I/O. A trapped call writes
 /// {"forbidden_syscall": N} to `result_fd` and ends the process with status 97, so the
 /// orchestrator can say which call it was. Returns false (with a message on stderr) when the
 /// kernel refuses the filter.

@@ -1,5 +1,8 @@
 #include "build.hpp"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,15 +56,47 @@ std::string read_file(const fs::path& p) {
   return s.str();
 }
 
-// The shallowest regular file (not a symlink) called `name` under `root`.
+// Reads a task file of the submission itself, never what it points to: no symbolic links (O_NOFOLLOW),
+// no hard links (a second name of a grader file), no FIFOs or devices. "" and `refused` set otherwise.
+std::string read_submitted(const fs::path& p, const std::string& shown, std::size_t max_bytes,
+                           std::string& refused) {
+  const int fd = open(p.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  struct stat st {};
+  if (fd < 0 || fstat(fd, &st) != 0) {
+    refused = shown + ": error: " + (errno == ELOOP ? "is a symbolic link" : std::string("cannot be read")) +
+              "; submit the file itself\n";
+    if (fd >= 0) close(fd);
+    return "";
+  }
+  std::string why;
+  if (!S_ISREG(st.st_mode)) why = "is not a regular file (a FIFO, device or socket)";
+  else if (st.st_nlink > 1) why = "is a hard link (it has " + std::to_string(st.st_nlink) + " names)";
+  else if (static_cast<std::size_t>(st.st_size) > max_bytes)
+    why = "is larger than " + std::to_string(max_bytes >> 10) + " KiB";
+  std::string text;
+  if (why.empty()) {
+    char buf[65536];
+    ssize_t n;
+    while ((n = read(fd, buf, sizeof buf)) > 0 && text.size() <= max_bytes) text.append(buf, static_cast<std::size_t>(n));
+    if (text.size() > max_bytes) why = "is larger than " + std::to_string(max_bytes >> 10) + " KiB";
+  }
+  close(fd);
+  if (!why.empty()) {
+    refused = shown + ": error: " + why + "; submit the file itself\n";
+    return "";
+  }
+  return text;
+}
+
+// The shallowest file called `name` under `root` (symbolic links included, so that they are
+// refused with a message rather than silently ignored).
 std::vector<fs::path> find_named(const fs::path& root, const std::string& name) {
   std::vector<fs::path> hits;
   std::error_code ec;
   for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
        it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
-    if (it->is_symlink()) continue;
-    if (it->is_regular_file() && it->path().filename() == name) hits.push_back(it->path());
+    if (it->path().filename() == name && !it->is_directory(ec)) hits.push_back(it->path());
   }
   std::sort(hits.begin(), hits.end(), [](const fs::path& a, const fs::path& b) {
     const auto da = std::distance(a.begin(), a.end()), db = std::distance(b.begin(), b.end());
@@ -70,8 +105,9 @@ std::vector<fs::path> find_named(const fs::path& root, const std::string& name) 
   return hits;
 }
 
-// Includes that could reach files outside the framework headers (e.g. the hidden reference data,
-// whose text a compiler error would then print) are refused before compiling.
+// Includes that name files outside the framework headers by a plain path are refused before
+// compiling, with a clearer message than "file not found". A courtesy, not the defence: C++ has
+// many other ways to name a file; the sandbox (isolation.hpp) is what keeps grader files unreadable.
 std::string include_policy(const std::string& shown, const std::string& text) {
   static const std::regex inc(R"(^\s*#\s*include\s*[<"]([^>"]*)[>"])");
   std::istringstream in(text);
@@ -97,10 +133,71 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
   return s;
 }
 
+std::string human_bytes(std::size_t b) {
+  if (b >= (1ULL << 30) && b % (1ULL << 30) == 0) return std::to_string(b >> 30) + " GiB";
+  if (b >= (1ULL << 20)) return std::to_string(b >> 20) + " MiB";
+  return std::to_string(b >> 10) + " KiB";
+}
+
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
+// When a compiler or linker run hit one of its limits: the student's terms, else "".
+std::string limit_hit(const std::string& what, const ChildResult& c, const std::string& text, const BuildLimits& lim) {
+  auto has = [&](const char* s) { return text.find(s) != std::string::npos; };
+  if (c.timed_out) return what + " took longer than " + seconds(lim.timeout_s) + " s and was stopped";
+  if (c.output_flood)
+    return what + " printed more than " + human_bytes(lim.output_bytes) + " of messages and was stopped";
+  if (c.signal == SIGXCPU || has("CPU time limit exceeded"))
+    return what + " used more than " + seconds(lim.cpu_s) + " s of CPU time and was stopped";
+  if (c.signal == SIGXFSZ || has("File size limit exceeded"))
+    return what + " wrote a file larger than " + human_bytes(lim.file_bytes) + " and was stopped";
+  if (has("memory exhausted") || has("out of memory") || has("Cannot allocate memory") || has("bad_alloc") ||
+      has("Killed signal") || c.signal == SIGKILL || c.signal == SIGSEGV)
+    return what + " used more than " + human_bytes(lim.memory_bytes) + " of memory and was stopped";
+  return "";
+}
+
 }  // namespace
 
+std::string filter_diagnostics(const std::string& messages, const fs::path& cwd, const std::vector<fs::path>& allowed) {
+  // Where a line says it is: "PATH:LINE:..." or "In file included from PATH:LINE" / "from PATH:LINE".
+  static const std::regex located(R"(^(In file included from |\s+from )?([^:\s][^:]*):(\d+)(:\d+)?[:,])");
+  static const std::regex context(R"(^([^:\s][^:]*): (In |At )[^:]*:$)");
+  auto allowed_path = [&](const std::string& p) {
+    if (p == "<command-line>" || p == "<built-in>") return true;
+    const fs::path abs = (fs::path(p).is_absolute() ? fs::path(p) : cwd / p).lexically_normal();
+    const std::string a = abs.string();
+    for (const fs::path& dir : allowed) {
+      const std::string d = dir.lexically_normal().string();
+      if (a.size() > d.size() && a.compare(0, d.size(), d) == 0 && (a[d.size()] == '/' || d.back() == '/')) return true;
+    }
+    return false;
+  };
+  std::istringstream in(messages);
+  std::string line, out;
+  bool hiding = false;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, located)) {
+      hiding = !allowed_path(m[2]);
+      if (hiding) {
+        out += m[0].str() + " [hidden: a message about a file that is not part of your submission]\n";
+        continue;
+      }
+    } else if (std::regex_search(line, m, context)) {
+      hiding = !allowed_path(m[1]);
+    }
+    if (!hiding) out += line + "\n";
+  }
+  return out;
+}
+
 BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
-                             const fs::path& work_dir, int jobs) {
+                             const fs::path& work_dir, int jobs, const Isolation& iso, const BuildLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
   BuildResult r;
   const fs::path src = work_dir / "src", obj = work_dir / "obj";
@@ -128,10 +225,14 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       if (hits.size() > 1)
         r.notes.push_back("several files are called " + name + "; graded " + rel + " (the one nearest the top)");
     }
-    const std::string text = read_file(from);
+    std::string refused;
+    const std::string text = r.used[name] == "stub" ? read_file(from)
+                                                    : read_submitted(from, shown[name], limits.source_bytes, refused);
+    policy_errors += refused;
     policy_errors += include_policy(shown[name], text);
     std::ofstream(src / name, std::ios::binary) << text;
   }
+  give_to_sandbox(iso, work_dir);
   if (!policy_errors.empty()) {
     r.errors = policy_errors;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -145,10 +246,44 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& d : config.defines) base.push_back("-D" + d);
   for (const std::string& i : config.include_dirs) base.push_back("-I" + i);
   base.push_back("-fdiagnostics-color=never");
+  // Messages without quoted source lines: filter_diagnostics decides what a student may see.
+  base.push_back("-fno-diagnostics-show-caret");
   for (const std::string& b : base) flags_key += "\n" + b;
   // The framework's own headers are part of what an object was compiled from: a changed struct
   // (e.g. a new TaskTable member) must not reuse objects built against the old layout.
   flags_key += "\n" + framework_headers_digest(config);
+  // What the compiler could see is part of what an object was compiled from: an object made without
+  // a sandbox may hold any file of the machine (`.incbin`), and must never serve a sandboxed run.
+  flags_key += "\nsandbox " + iso.name;
+
+  // What the compiler may see and what of its messages a student may see.
+  auto tool_limits = [&]() {
+    Limits lim;
+    lim.timeout_s = limits.timeout_s;
+    lim.cpu_s = limits.cpu_s;
+    lim.memory_bytes = limits.memory_bytes;
+    lim.file_size_bytes = limits.file_bytes;
+    lim.limit_files = true;
+    lim.result_pipe = false;
+    lim.keep_output = 256 * 1024;
+    lim.kill_output = limits.output_bytes;
+    lim.max_open_files = limits.open_files;
+    return lim;
+  };
+  auto hint = [](const std::string& hit) -> std::string {
+    if (hit.find("memory") != std::string::npos || hit.find("CPU") != std::string::npos ||
+        hit.find("longer") != std::string::npos)
+      return " (a template or constexpr computation that never ends?)";
+    return "";
+  };
+  SandboxView compile_view;
+  compile_view.writable = {work_dir};
+  compile_view.cwd = src;
+  std::vector<fs::path> allowed = {src, "/usr/include", "/usr/lib/gcc", "/tmp"};
+  for (const std::string& i : config.include_dirs) {
+    compile_view.read_only.push_back(i);
+    allowed.push_back(i);
+  }
 
   std::mutex mutex;
   std::vector<std::string> queue = task_files();
@@ -173,17 +308,14 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       }
       std::vector<std::string> argv = base;
       argv.insert(argv.end(), {"-c", name, "-o", (obj / (name + ".o")).string()});
-      Limits lim;
-      lim.timeout_s = 300.0;
-      lim.memory_bytes = 0;
-      lim.limit_files = false;
-      lim.result_pipe = false;
-      lim.keep_output = 256 * 1024;
-      const ChildResult c = run_child(argv, lim, src);
+      Limits lim = tool_limits();
+      const ChildResult c = run_isolated(iso, argv, compile_view, lim);
       std::lock_guard<std::mutex> lock(mutex);
-      std::string msg = c.err + c.out;
-      if (c.timed_out) msg += name + ": error: compiling took longer than 300 s\n";
-      if (c.exit_code != 0 || c.signal != 0 || c.timed_out) {
+      std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
+      const std::string hit = limit_hit("compiling " + name, c, c.err + c.out, limits);
+      if (!hit.empty()) msg = name + ": error: " + hit + hint(hit) + "\n" + msg;
+      if (!c.started) msg += name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
+      if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
         failed = true;
         messages[name] = msg;
       } else {
@@ -229,14 +361,18 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& f : config.link_flags) argv.push_back(f);
   r.runner = work_dir / "runner";
   argv.insert(argv.end(), {"-o", r.runner.string()});
-  Limits lim;
-  lim.timeout_s = 120.0;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
-  const ChildResult c = run_child(argv, lim, work_dir);
-  if (c.exit_code != 0 || c.signal != 0 || c.timed_out) {
-    r.errors = tidy(replace_all(c.err + c.out, obj.string() + "/", ""));
+  Limits lim = tool_limits();
+  SandboxView link_view;
+  link_view.writable = {work_dir};
+  link_view.cwd = work_dir;
+  for (const std::string& o : config.link_objects) link_view.read_only.push_back(o);
+  for (const std::string& l : config.link_libraries) link_view.read_only.push_back(l);
+  const ChildResult c = run_isolated(iso, argv, link_view, lim);
+  if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
+    const std::string hit = limit_hit("linking", c, c.err + c.out, limits);
+    r.errors = tidy(replace_all(filter_diagnostics(c.err + c.out, work_dir, allowed), obj.string() + "/", ""));
+    if (!hit.empty()) r.errors = "error: " + hit + "\n" + r.errors;
+    if (!c.started) r.errors += "error: the grader could not start the linker: " + c.start_error + "\n";
     if (r.errors.empty()) r.errors = "linking failed\n";
   } else {
     r.ok = true;

@@ -84,7 +84,8 @@ inline constexpr int kReferenceFormat = 1;
 
 /// 64-bit FNV-1a as 16 hex digits.
 std::string fnv_hex(const std::string& text);
-/// Digest of the runner's generator code (the files directly in grader/runner/): the reference data
+/// Digest of the runner's generator code (the files directly in grader/runner/ except the runner's
+/// main.cpp and its seccomp sandbox.{hpp,cpp}, which do not change any output): the reference data
 /// records it, and grading refuses data generated from different generator code. It holds no case
 /// parameters, so a student release (public cases only) computes the same digest.
 std::string harness_digest(const GradeConfig& config);

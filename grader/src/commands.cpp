@@ -54,6 +54,14 @@ std::string pts(double v) {
 
 }  // namespace
 
+std::string sandbox_setup_lines(const std::string& source) {
+  return std::string("id -u ") + kSandboxUser + " >/dev/null 2>&1 || useradd --system --no-create-home --shell " +
+         "/usr/sbin/nologin " + kSandboxUser + "\n" + "chown root:root " + source + "/grader/data " + source +
+         "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source + "/grader/cases\n" +
+         "if [ -d " + source + "/build/grader/object-cache ]; then chmod 0700 " + source +
+         "/build/grader/object-cache; fi\n";
+}
+
 int generate_reference(const GradeConfig& config, const CaseBook& book) {
   if (config.reference_runner.empty() || !fs::exists(config.reference_runner)) {
     std::cerr << "jelly-grade: generate-reference needs the reference runner (solutions/ must exist and "
@@ -237,7 +245,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
       "set -euo pipefail\n"
       "apt-get update\n"
       "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev nlohmann-json3-dev "
-      "libseccomp-dev\n"
+      "libseccomp-dev bubblewrap\n"
       "# toml++: the package where the distribution has it, else the headers bundled in source/.\n"
       "apt-get install -y --no-install-recommends libtomlplusplus-dev || "
       "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
@@ -246,14 +254,21 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
       "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
       "cmake --build build -j\"$(nproc)\" --target jelly-grade\n"
       "# Warm the object cache with the stubs so that unchanged files are never recompiled.\n"
-      "build/grader/jelly-grade grade assignments --visibility public --out /tmp/warm --format gradescope || true\n";
+      "build/grader/jelly-grade grade assignments --visibility public --out /tmp/warm --format gradescope || true\n"
+      "# Student code is compiled and run in a bubblewrap sandbox where the image allows user namespaces,\n"
+      "# else as this unprivileged user, with the grader's secrets readable by root only (docs/grader.md).\n"
+      << sandbox_setup_lines("/autograder/source");
   std::ofstream(stage / "run_autograder") <<
       "#!/usr/bin/env bash\n"
       "# Gradescope entry point: grades /autograder/submission, writes /autograder/results/results.json.\n"
       "cd /autograder/source\n"
       "mkdir -p /autograder/results\n"
+      "# Again at every run: an image made by an older setup.sh, or files restored with other modes.\n"
+      << sandbox_setup_lines("/autograder/source") <<
+      "# The unprivileged user must be able to reach its work folder under /autograder/results.\n"
+      "chmod o+x /autograder /autograder/results\n"
       "build/grader/jelly-grade grade /autograder/submission --visibility all --out /autograder/results "
-      "--format gradescope,terminal\n";
+      "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
   fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   fs::permissions(stage / "run_autograder", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   const fs::path zip = fs::absolute(zip_path);

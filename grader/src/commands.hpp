@@ -15,6 +15,10 @@ int generate_reference(const GradeConfig& config, const CaseBook& book);
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out,
           int jobs, const GradeOptions& options, bool frames = true);
 
+/// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user of
+/// the "user" sandbox and make the grader's secrets under `source` readable by root only.
+std::string sandbox_setup_lines(const std::string& source);
+
 /// Builds the Gradescope autograder zip (setup.sh, run_autograder, the framework without solutions/
 /// but with the hidden data).
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path);

@@ -38,7 +38,9 @@ std::string describe_syscall_purpose(const std::string& name) {
   if (name.find("open") != std::string::npos || name == "creat") return "open a file";
   if (name.find("exec") != std::string::npos) return "start another program";
   if (name == "fork" || name == "vfork" || name.find("clone") != std::string::npos) return "start a process or thread";
-  if (name == "socket" || name == "connect" || name == "bind") return "use the network";
+  if (name == "socket" || name == "connect" || name == "bind" || name == "socketpair") return "use the network";
+  if (name.find("io_uring") != std::string::npos) return "use asynchronous I/O (io_uring)";
+  if (name == "ptrace" || name.find("process_vm") != std::string::npos) return "inspect another process";
   if (name.find("unlink") != std::string::npos || name.find("rename") != std::string::npos ||
       name.find("mkdir") != std::string::npos)
     return "change files or folders";
@@ -124,20 +126,24 @@ std::string syscall_name(int nr) {
 }
 
 ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* input, const fs::path& work_dir,
-                     double timeout_s, std::size_t memory_bytes, bool prepare) {
+                     double timeout_s, std::size_t memory_bytes, bool prepare, const Isolation* iso) {
   Json request = Json::object();
   request["case"] = spec.id;
   request["generator"] = spec.generator;
   request["params"] = spec.params;
   if (input && !input->empty()) request["input"] = *input;
-  const fs::path req = work_dir / ("request-" + spec.id + ".json");
-  std::ofstream(req) << request.dump();
-  std::vector<std::string> argv = {runner.string(), "--request", req.string(), "--result-fd", "3"};
+  std::vector<std::string> argv = {runner.string(), "--request", "-", "--result-fd", "3"};
   if (prepare) argv.push_back("--prepare");
   Limits lim;
   lim.timeout_s = timeout_s;
   lim.memory_bytes = memory_bytes;
-  return run_child(argv, lim, work_dir);
+  lim.max_open_files = 64;
+  lim.stdin_data = request.dump();
+  if (!iso || iso->kind == IsolationKind::None) return run_child(argv, lim, work_dir);
+  SandboxView view;
+  view.read_only = {runner};
+  view.cwd = iso->kind == IsolationKind::Bwrap ? fs::path("/tmp") : work_dir;
+  return run_isolated(*iso, argv, view, lim);
 }
 
 GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, const fs::path& submission,
@@ -145,6 +151,9 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
   GradeReport rep;
   rep.submission = submission.string();
   rep.visibility = options.include_hidden ? "all" : "public";
+  rep.isolation = options.isolation.name;
+  rep.isolation_description = options.isolation.description;
+  rep.isolation_warning = options.isolation.warning;
   fs::create_directories(work_dir);
   const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
@@ -190,7 +199,8 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
     rep.notes.push_back("only the public tests were run (--visibility public); the final grade also has hidden tests");
 
   // Build.
-  rep.build = build_submission(config, submission, work_dir / "build", jobs);
+  if (!rep.isolation_warning.empty()) rep.notes.push_back("WARNING: " + rep.isolation_warning);
+  rep.build = build_submission(config, submission, work_dir / "build", jobs, options.isolation, options.build_limits);
   for (const std::string& n : rep.build.notes) rep.notes.push_back(n);
   rep.compiled = rep.build.ok;
 
@@ -236,7 +246,8 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
         const Json input = ref.contains("input") ? ref.at("input") : Json::object();
         const double timeout = r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
-        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout, options.memory_bytes);
+        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout, options.memory_bytes,
+                                         false, &options.isolation);
         r.seconds = c.seconds;
         r.reference = ref.at("outputs");
         r.printed = c.out.substr(0, 2000);

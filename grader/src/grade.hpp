@@ -34,6 +34,8 @@ struct GradeOptions {
   double timeout_s = 10.0;      ///< per case unless the case sets its own
   int jobs = 0;                 ///< parallel cases (0: all cores)
   std::size_t memory_bytes = 1ULL << 30;
+  Isolation isolation;          ///< where the compiler and the tests run (choose_isolation)
+  BuildLimits build_limits;     ///< limits of compiling and linking
 };
 
 struct GradeReport {
@@ -46,6 +48,9 @@ struct GradeReport {
   std::vector<std::string> notes;
   double grading_seconds = 0.0;  ///< running the cases (not compiling)
   std::string visibility;        ///< "public" or "all"
+  std::string isolation;         ///< the mechanism used: "bwrap", "user" or "none"
+  std::string isolation_description;
+  std::string isolation_warning; ///< non-empty when hidden tests were not protected
 };
 
 /// Builds the submission's runner and runs every selected case. Throws std::runtime_error only
@@ -55,10 +60,11 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
                              const GradeOptions& options);
 
 /// Runs one case (its generator and params, plus the prepared input) with a runner binary in the
-/// sandbox (also used by generate-reference).
+/// sandbox (also used by generate-reference, with the trusted reference runner and no isolation).
+/// The request reaches the runner on its stdin, never as a file another case could read.
 ChildResult run_case(const std::filesystem::path& runner, const CaseSpec& spec, const Json* input,
                      const std::filesystem::path& work_dir, double timeout_s, std::size_t memory_bytes,
-                     bool prepare = false);
+                     bool prepare = false, const Isolation* iso = nullptr);
 
 /// Name of a system call number (for "your code tried to open a file").
 std::string syscall_name(int nr);

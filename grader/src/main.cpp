@@ -3,6 +3,8 @@
 //   jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]
 //               [--format terminal,gradescope,prairielearn,junit,markdown,html] [--timeout S]
 //               [--jobs N] [--verbose] [--no-frames]
+//   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
+//               [--compile-memory MIB] [--compile-cpu S]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]
 //   jelly-grade generate-reference
 //   jelly-grade gradescope-zip OUT.zip
@@ -39,7 +41,9 @@ int usage(const char* message = nullptr) {
                "  jelly-grade gradescope-zip OUT.zip\n"
                "  jelly-grade prairielearn [--student DIR] [--results DIR]\n"
                "  jelly-grade mutants [--table FILE] [--jobs N]\n"
-               "  common options: --config FILE (grade-config.json), --rubric FILE\n";
+               "  common options: --config FILE (grade-config.json), --rubric FILE\n"
+               "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default auto),\n"
+               "    --compile-memory MIB (default 2048), --compile-cpu S (default 120)\n";
   return 2;
 }
 
@@ -62,7 +66,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> positional;
   std::string config_path, rubric_path, out, visibility = "all", formats = "terminal,gradescope", table, student,
                                              results;
-  double timeout = 10.0;
+  double timeout = 10.0, compile_memory_mib = 2048, compile_cpu = 120;
+  std::string isolation = "auto";
   int jobs = 0;
   bool verbose = false;
   bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
@@ -83,6 +88,9 @@ int main(int argc, char** argv) {
       else if (a == "--table") table = value();
       else if (a == "--student") student = value();
       else if (a == "--results") results = value();
+      else if (a == "--isolation") isolation = value();
+      else if (a == "--compile-memory") compile_memory_mib = std::stod(value());
+      else if (a == "--compile-cpu") compile_cpu = std::stod(value());
       else if (a == "--verbose") verbose = true;
       else if (a == "--no-frames") no_frames = true;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -93,6 +101,8 @@ int main(int argc, char** argv) {
   }
   if (visibility != "public" && visibility != "all") return usage("--visibility must be public or all");
   if (!(timeout > 0)) return usage("--timeout must be > 0 seconds");
+  if (!(compile_memory_mib >= 64)) return usage("--compile-memory must be at least 64 (MiB)");
+  if (!(compile_cpu > 0)) return usage("--compile-cpu must be > 0 seconds");
   try {
     const GradeConfig config = load_config(config_path);
     const CaseBook book = load_case_book(config, rubric_path);
@@ -100,7 +110,11 @@ int main(int argc, char** argv) {
     options.include_hidden = visibility == "all";
     options.timeout_s = timeout;
     options.jobs = jobs;
-
+    options.build_limits.memory_bytes = static_cast<std::size_t>(compile_memory_mib * (1 << 20));
+    options.build_limits.cpu_s = compile_cpu;
+    // Student code is compiled and run only by these commands: the sandbox is chosen once for them.
+    if (command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants")
+      options.isolation = choose_isolation(config, isolation);
     if (command == "grade") {
       if (positional.size() != 1) return usage("grade needs one SUBMISSION_DIR");
       const std::set<std::string> f = split(formats);

@@ -1,6 +1,8 @@
 #include "process.hpp"
 
 #include <fcntl.h>
+#include <grp.h>
+#include <sys/mman.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -46,10 +48,32 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     r.start_error = std::string("pipe: ") + std::strerror(errno);
     return r;
   }
+  // The request (or other input) as an anonymous file: no other process can open it by name.
+  int in_fd = -1;
+  if (!limits.stdin_data.empty()) {
+    in_fd = static_cast<int>(syscall(SYS_memfd_create, "jelly-grade-stdin", MFD_CLOEXEC));
+    if (in_fd < 0) {
+      r.start_error = std::string("memfd_create: ") + std::strerror(errno);
+      return r;
+    }
+    for (std::size_t done = 0; done < limits.stdin_data.size();) {
+      const ssize_t n = write(in_fd, limits.stdin_data.data() + done, limits.stdin_data.size() - done);
+      if (n <= 0) {
+        r.start_error = std::string("writing the child's input: ") + std::strerror(errno);
+        close(in_fd);
+        return r;
+      }
+      done += static_cast<std::size_t>(n);
+    }
+    lseek(in_fd, 0, SEEK_SET);
+  }
   // Everything the child needs is prepared before fork (no allocation after it).
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  std::vector<char*> envp;
+  for (const std::string& e : limits.env) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
   const std::string dir = cwd.string();
   const rlim_t cpu = static_cast<rlim_t>(limits.cpu_s > 0 ? limits.cpu_s : limits.timeout_s + 1.0);
 
@@ -57,12 +81,13 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   const pid_t pid = fork();
   if (pid < 0) {
     r.start_error = std::string("fork: ") + std::strerror(errno);
+    if (in_fd >= 0) close(in_fd);
     return r;
   }
   if (pid == 0) {
     setpgid(0, 0);
-    const int devnull = open("/dev/null", O_RDONLY);
-    if (devnull >= 0) dup2(devnull, 0);
+    const int input = in_fd >= 0 ? in_fd : open("/dev/null", O_RDONLY);
+    if (input >= 0) dup2(input, 0);
     dup2(out_pipe[1], 1);
     dup2(err_pipe[1], 2);
     if (limits.result_pipe) dup2(res_pipe[1], 3);
@@ -72,8 +97,18 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     set_limit(RLIMIT_CPU, cpu);
     if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, limits.memory_bytes);
     if (limits.limit_files) set_limit(RLIMIT_FSIZE, limits.file_size_bytes);
+    if (limits.max_open_files > 0) set_limit(RLIMIT_NOFILE, limits.max_open_files);
+    if (limits.max_processes > 0) set_limit(RLIMIT_NPROC, limits.max_processes);
+    if (limits.run_as_gid >= 0 || limits.run_as_uid >= 0) {
+      // No way back: supplementary groups dropped, then the group, then the user.
+      if (setgroups(0, nullptr) != 0) _exit(125);
+      if (limits.run_as_gid >= 0 && setgid(static_cast<gid_t>(limits.run_as_gid)) != 0) _exit(125);
+      if (limits.run_as_uid >= 0 && setuid(static_cast<uid_t>(limits.run_as_uid)) != 0) _exit(125);
+      if (limits.run_as_uid != 0 && setuid(0) == 0) _exit(125);
+    }
     if (!dir.empty() && chdir(dir.c_str()) != 0) _exit(126);
-    execv(args[0], args.data());
+    if (limits.env.empty()) execv(args[0], args.data());
+    else execve(args[0], args.data(), envp.data());
     const char msg[] = "jelly-grade: cannot execute the program\n";
     ssize_t ignored = write(2, msg, sizeof msg - 1);
     (void)ignored;
@@ -81,6 +116,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   }
   setpgid(pid, pid);  // also from the parent, so the group exists before any kill
   r.started = true;
+  if (in_fd >= 0) close(in_fd);
   close(out_pipe[1]);
   close(err_pipe[1]);
   if (limits.result_pipe) close(res_pipe[1]);

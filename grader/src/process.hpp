@@ -17,6 +17,13 @@ struct Limits {
   std::size_t keep_output = 64 * 1024;      ///< bytes of stdout/stderr kept for the report
   std::size_t kill_output = 64ULL << 20;    ///< more output than this (both streams) kills the child
   bool result_pipe = true;                  ///< give the child a pipe as fd 3 for its result
+  std::size_t max_processes = 0;            ///< RLIMIT_NPROC (0: unchanged); counts per user, so
+                                            ///< only meaningful for a dedicated user (isolation.hpp)
+  std::size_t max_open_files = 0;           ///< RLIMIT_NOFILE (0: unchanged)
+  int run_as_uid = -1, run_as_gid = -1;     ///< drop to this user and group before exec (-1: stay)
+  std::vector<std::string> env;             ///< the child's whole environment (empty: inherit ours)
+  std::string stdin_data;                   ///< what the child reads on fd 0 (empty: /dev/null); an
+                                            ///< anonymous in-memory file only this child has
 };
 
 struct ChildResult {
@@ -32,8 +39,9 @@ struct ChildResult {
   double seconds = 0.0;      ///< wall time
 };
 
-/// Runs argv[0] with the arguments, stdin from /dev/null, in its own process group, with the
-/// limits; `cwd` empty means the current directory. Never throws for a child's failure.
+/// Runs argv[0] with the arguments, stdin from /dev/null (or limits.stdin_data), in its own process
+/// group, with the limits; `cwd` empty means the current directory. Only fds 0, 1, 2 (and 3, the
+/// result pipe) reach the child. Never throws for a child's failure.
 ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
                       const std::filesystem::path& cwd = {});
 

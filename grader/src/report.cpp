@@ -76,6 +76,8 @@ std::string base64(const std::string& in) {
 std::string terminal_summary(const GradeReport& r, bool verbose) {
   std::ostringstream o;
   o << "Jelly Lab autograder — " << r.submission << " (" << r.visibility << " tests)\n";
+  o << "  sandbox: " << r.isolation << (r.isolation_description.empty() || r.isolation == "none" ? "" : " — ")
+    << (r.isolation == "none" ? "" : r.isolation_description) << "\n";
   for (const std::string& n : r.notes) o << "  note: " << n << "\n";
   if (!r.compiled) {
     o << "\nYour code did not compile. The compiler said:\n" << r.build.errors << "\n";
@@ -118,9 +120,11 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   j["score"] = r.score;
   j["execution_time"] = static_cast<long>(std::lround(r.grading_seconds + r.build.seconds));
   std::string out = "Jelly Lab autograder: " + pts(r.score) + " / " + pts(r.max_score) + "\n";
+  out += "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   j["output"] = out;
   j["stdout_visibility"] = "hidden";
+  j["extra_data"] = {{"isolation", r.isolation}, {"isolation_description", r.isolation_description}};
   Json tests = Json::array();
   Json compile;
   compile["name"] = "Compilation of your five task files";
@@ -150,10 +154,11 @@ Json prairielearn_results(const GradeReport& r) {
   j["gradable"] = r.compiled;
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
   j["message"] = r.compiled ? "Graded " + pts(r.score) + " / " + pts(r.max_score) : std::string("Your code did not compile.");
-  std::string out;
+  std::string out = "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   if (!r.compiled) out += r.build.errors;
   j["output"] = out;
+  j["isolation"] = r.isolation;
   Json tests = Json::array();
   for (const CaseResult& c : r.cases) {
     if (c.status == "skipped") continue;
@@ -224,7 +229,8 @@ std::string com_plot_svg(const GradeReport& r) {
 std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   std::ostringstream o;
   o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score) << " / "
-    << pts(r.max_score) << "** (" << r.visibility << " tests)\n\n";
+    << pts(r.max_score) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation << "` — "
+    << r.isolation_description << "\n\n";
   for (const std::string& n : r.notes) o << "> " << n << "\n\n";
   if (!r.compiled) o << "## Your code did not compile\n\n```\n" << r.build.errors << "```\n\n";
   o << "| Task | Points | Tests passed |\n|---|---|---|\n";
@@ -271,7 +277,8 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames, const 
        "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
        ".fail{color:#b00}.pass{color:#070}</style></head><body>\n";
   o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>" << pts(r.score) << " / "
-    << pts(r.max_score) << "</b></p>\n";
+    << pts(r.max_score) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation) << "</code> — "
+    << xml_escape(r.isolation_description) << "</p>\n";
   for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
   if (!r.compiled) o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
   o << "<table><tr><th>Task</th><th>Points</th><th>Test</th><th>Result</th></tr>\n";

@@ -2,7 +2,11 @@
 # it where /autograder would be, configure and build it exactly as its setup.sh does but WITHOUT
 # the toml++ package (Gradescope's Ubuntu image may lack it; the zip's bundled headers must do),
 # then grade the reference's five files and the stubs as run_autograder does, and check
-# results.json. apt-get is the one step not exercised.
+# results.json. Then a hostile submission that tries to read source/grader/data at compile time
+# (.incbin) and at run time (a static constructor, before the seccomp filter), graded with the
+# unprivileged-user sandbox (Gradescope's image most likely has no user namespaces; needs root)
+# and with bubblewrap (where it works): it must score its failures and leak no hidden text.
+# apt-get and useradd are the steps not exercised (the "user" sandbox falls back to nobody).
 #   cmake -DGRADE=jelly-grade -DSOURCE=<repo> -DWORK=<dir> -P gradescope_e2e.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/autograder")
@@ -68,4 +72,78 @@ foreach(case reference stubs)
   if(case STREQUAL "stubs" AND NOT score MATCHES "^0(\\.0*)?$")
     message(FATAL_ERROR "the stubs scored ${score}, expected 0")
   endif()
+endforeach()
+
+# The hostile submission, against the unpacked autograder's own hidden data.
+set(hidden "${src}/grader/data/hidden/a1.t4.spring_force.random.json")
+file(STRINGS "${hidden}" hidden_lines REGEX "[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9]")
+list(LENGTH hidden_lines n_needles)
+if(n_needles LESS 3)
+  message(FATAL_ERROR "${hidden}: too few distinctive lines to search for")
+endif()
+set(hostile "${WORK}/hostile-submission")
+file(MAKE_DIRECTORY "${hostile}")
+foreach(f springs.cpp collision.cpp contact.cpp integrators.cpp)
+  file(COPY "${SOURCE}/solutions/${f}" DESTINATION "${hostile}")
+endforeach()
+file(READ "${SOURCE}/solutions/forces.cpp" forces)
+file(WRITE "${hostile}/forces.cpp" "#include <cstdio>
+static int jelly_ctor = [] { if (std::FILE* f = std::fopen(\"${hidden}\", \"r\")) { char b[4096];
+  while (std::fgets(b, sizeof b, f)) std::fputs(b, stdout); } else { std::puts(\"jelly: no hidden file\"); } return 0; }();
+${forces}")
+file(WRITE "${WORK}/hostile-incbin/forces.cpp" "asm(\".section .rodata\\n.incbin \\\"${hidden}\\\"\\n.text\\n\");
+${forces}")
+foreach(f springs.cpp collision.cpp contact.cpp integrators.cpp)
+  file(COPY "${SOURCE}/solutions/${f}" DESTINATION "${WORK}/hostile-incbin")
+endforeach()
+set(mechanisms "")
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(uid STREQUAL "0")
+  list(APPEND mechanisms user)
+endif()
+find_program(BWRAP bwrap)
+if(BWRAP)
+  execute_process(COMMAND "${BWRAP}" --unshare-all --ro-bind /usr /usr --symlink usr/lib /lib --symlink usr/lib64 /lib64
+                          /usr/bin/true
+                  RESULT_VARIABLE bwrap_rc OUTPUT_QUIET ERROR_QUIET)
+  if(bwrap_rc EQUAL 0)
+    list(APPEND mechanisms bwrap)
+  endif()
+endif()
+if(NOT mechanisms)
+  message(STATUS "neither root nor a working bwrap: the sandbox part is not exercised here")
+endif()
+foreach(mech IN LISTS mechanisms)
+  foreach(sub hostile-submission hostile-incbin)
+    set(res "${WORK}/results-${sub}-${mech}")
+    execute_process(COMMAND "${grade}" grade "${WORK}/${sub}" --visibility all --out "${res}"
+                            --format gradescope,terminal --isolation ${mech} WORKING_DIRECTORY "${src}"
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT EXISTS "${res}/results.json")
+      message(FATAL_ERROR "${sub} (${mech}): no results.json (${rc}):\n${out}${err}")
+    endif()
+    file(READ "${res}/results.json" json)
+    string(JSON used GET "${json}" extra_data isolation)
+    if(NOT used STREQUAL mech)
+      message(FATAL_ERROR "${sub}: graded with sandbox '${used}', expected '${mech}'")
+    endif()
+    foreach(line IN LISTS hidden_lines)
+      string(STRIP "${line}" needle)
+      string(FIND "${json}${out}${err}" "${needle}" at)
+      if(NOT at EQUAL -1)
+        message(FATAL_ERROR "${sub} (${mech}): hidden data leaked (${needle}):\n${out}${err}")
+      endif()
+    endforeach()
+    string(JSON compiled GET "${json}" tests 0 status)
+    if(sub STREQUAL "hostile-incbin" AND NOT compiled STREQUAL "failed")
+      message(FATAL_ERROR "${sub} (${mech}): .incbin of the hidden data compiled")
+    endif()
+    if(sub STREQUAL "hostile-submission")
+      string(FIND "${json}" "jelly: no hidden file" saw)
+      if(saw EQUAL -1)
+        message(FATAL_ERROR "${sub} (${mech}): the static constructor's message is missing:\n${json}")
+      endif()
+    endif()
+    message(STATUS "${sub} with --isolation ${mech}: nothing leaked")
+  endforeach()
 endforeach()
