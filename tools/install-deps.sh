@@ -17,6 +17,10 @@ PACKAGES=(
   libseccomp-dev
   gnuplot-nox xvfb xauth zip unzip
   clang libclang-rt-14-dev
+  # the student release's bundled builds: GLFW's X11 backend from source, Clang + libc++ (the
+  # stand-in for Apple's toolchain), unpacking Debian source packages (tools/fetch-third-party)
+  libx11-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev
+  libc++-dev libc++abi-dev xz-utils bzip2
 )
 
 check_only=0
