@@ -9,16 +9,28 @@
 
 add_library(jelly_flags INTERFACE)
 add_library(jelly::flags ALIAS jelly_flags)
+#
+# Every compiler family is named: Apple's clang reports the id "AppleClang", not "Clang", and its
+# default is -ffp-contract=on (fuse within an expression), which on Apple silicon (always FMA)
+# gives other bits. MSVC: /fp:precise never contracts on x64 unless /arch:AVX2 is added (do not).
+# Source files are UTF-8 (°, ×, ² in messages): MSVC reads them as such only with /utf-8.
 target_compile_options(jelly_flags INTERFACE
-  $<$<CXX_COMPILER_ID:GNU,Clang>:-ffp-contract=off -fno-fast-math -fno-math-errno -fno-trapping-math>
-  $<$<CXX_COMPILER_ID:MSVC>:/fp:precise>)
+  $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-ffp-contract=off -fno-fast-math -fno-math-errno -fno-trapping-math>
+  $<$<CXX_COMPILER_ID:MSVC>:/fp:precise /utf-8>)
+# Eigen's own packet code fuses multiply-adds on ARM64 whatever the compiler flags say (its NEON
+# pmadd is vfmaq_f64 whenever __ARM_FEATURE_FMA is defined, i.e. always on AArch64, and small
+# fixed-size products such as the cube's rotation use it): keep Eigen scalar there. x86-64 is
+# unaffected (SSE2 has no FMA; JELLY_NATIVE adds -mno-fma for the same reason).
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(arm64|ARM64|aarch64)$" OR CMAKE_OSX_ARCHITECTURES MATCHES "arm64")
+  target_compile_definitions(jelly_flags INTERFACE EIGEN_DONT_VECTORIZE)
+endif()
 if(JELLY_NATIVE)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
     # Wider vectors, same bits: -ffp-contract=off already forbids the compiler's own fusing, and
     # -mno-fma keeps Eigen's explicit packet code (pmadd) from fusing multiply-adds either. Eigen
     # refuses AVX-512 without FMA, so the width stops at AVX2.
     target_compile_options(jelly_flags INTERFACE
-      $<$<CXX_COMPILER_ID:GNU,Clang>:-march=native -mno-fma -mno-avx512f>)
+      $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-march=native -mno-fma -mno-avx512f>)
   else()
     message(WARNING "JELLY_NATIVE is only tuned for x86-64; ignored on ${CMAKE_SYSTEM_PROCESSOR}")
   endif()
@@ -27,8 +39,8 @@ endif()
 add_library(jelly_warnings INTERFACE)
 add_library(jelly::warnings ALIAS jelly_warnings)
 target_compile_options(jelly_warnings INTERFACE
-  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor>
-  $<$<AND:$<BOOL:${JELLY_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)
+  $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor>
+  $<$<AND:$<BOOL:${JELLY_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang,AppleClang>>:-Werror>)
 
 function(jelly_target_defaults target)
   target_link_libraries(${target} PRIVATE jelly::flags jelly::warnings)

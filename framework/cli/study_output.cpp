@@ -220,14 +220,24 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   const fs::path dir = base.has_parent_path() ? base.parent_path() : fs::path(".");
   fs::remove(with(".svg"));
   fs::remove(with(".png"));
+#ifdef _WIN32
+  // cmd.exe: double quotes, and /d to change drive too.
+  const std::string cmd = "cd /d \"" + dir.string() + "\" && gnuplot \"" + with(".gp").filename().string() + "\" 2>&1";
+  std::FILE* pipe = _popen(cmd.c_str(), "r");
+#else
   const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + with(".gp").filename().string() + "' 2>&1";
   std::FILE* pipe = popen(cmd.c_str(), "r");
+#endif
   std::string out;
   if (pipe) {
     char buf[512];
     while (std::fgets(buf, sizeof buf, pipe)) out += buf;
   }
+#ifdef _WIN32
+  const int status = pipe ? _pclose(pipe) : -1;
+#else
   const int status = pipe ? pclose(pipe) : -1;
+#endif
   if (status != 0) {
     note = "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
            "script " + with(".gp").string() + " is kept.\n" + out;

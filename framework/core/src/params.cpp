@@ -9,6 +9,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
+#include <locale>
+#include <sstream>
+#endif
 
 #include "param_table.hpp"
 
@@ -576,8 +580,17 @@ std::optional<double> parse_double(std::string_view t) {
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
   if (t.empty() || t.front() == '+') return std::nullopt;
   double v = 0.0;
+#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
+  // libc++ before LLVM 20 (Apple's Xcode, Debian 12's libc++) has no from_chars for double: read
+  // it with the classic "C" locale (correctly rounded there too), the same number of characters.
+  std::istringstream in{std::string(t)};
+  in.imbue(std::locale::classic());
+  in >> std::noskipws >> v;
+  if (in.fail() || in.peek() != std::char_traits<char>::eof()) return std::nullopt;
+#else
   const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
   if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
+#endif
   return v;
 }
 

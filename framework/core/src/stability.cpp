@@ -1,5 +1,7 @@
 #include "jelly/stability.hpp"
 
+#include "jelly/portable_math.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -48,14 +50,18 @@ double power_iteration(const ForceJacobians& jac, bool stiffness, const Eigen::V
   return std::max(lambda, 0.0);
 }
 
+// |w| with the core's portable hypot: std::abs of a complex calls the C library's cabs/hypot,
+// whose last bits differ between platforms (and so would the critical step found by bisection).
+double modulus(Complex w) { return portable::hypot(w.real(), w.imag()); }
+
 // Amplification of one step of a one-stage-in-time method on y' = λy, z = hλ.
 double amplification(IntegratorKind kind, Complex z) {
   switch (kind) {
-    case IntegratorKind::ExplicitEuler: return std::abs(1.0 + z);
-    case IntegratorKind::ImplicitEuler: return std::abs(1.0 + z + z * z);
-    case IntegratorKind::Midpoint: return std::abs(1.0 + z + 0.5 * z * z);
+    case IntegratorKind::ExplicitEuler: return modulus(1.0 + z);
+    case IntegratorKind::ImplicitEuler: return modulus(1.0 + z + z * z);
+    case IntegratorKind::Midpoint: return modulus(1.0 + z + 0.5 * z * z);
     case IntegratorKind::RK4:
-      return std::abs(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0);
+      return modulus(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0);
     default: return 0.0;
   }
 }
@@ -80,7 +86,10 @@ bool stable_at(IntegratorKind kind, double h, const std::vector<double>& omegas,
       if (symplectic_radius(h, w, c) > 1.0 + kTolerance) return false;
       continue;
     }
-    const Complex disc = std::sqrt(Complex(c * c - 4.0 * w * w, 0.0));
+    // √(c² − 4ω²) as a complex number, written out: libc++'s std::sqrt(complex) goes through
+    // polar(), which leaves a rounding residue r·cos(π/2) in the real part of a pure square root.
+    const double d = c * c - 4.0 * w * w;
+    const Complex disc = d >= 0.0 ? Complex(std::sqrt(d), 0.0) : Complex(0.0, std::sqrt(-d));
     const Complex l1 = (-c + disc) / 2.0, l2 = (-c - disc) / 2.0;
     if (amplification(kind, h * l1) > 1.0 + kTolerance) return false;
     if (amplification(kind, h * l2) > 1.0 + kTolerance) return false;
@@ -107,7 +116,7 @@ double StabilityEstimate::critical_step(IntegratorKind kind) const {
   }
   std::vector<double> omegas;
   for (int k = 1; k <= 400; ++k) omegas.push_back(omega_max * k / 400.0);
-  for (int k = 0; k < 100; ++k) omegas.push_back(omega_max * std::pow(10.0, -4.0 + 4.0 * k / 100.0));
+  for (int k = 0; k < 100; ++k) omegas.push_back(omega_max * portable::exp10(-4.0 + 4.0 * k / 100.0));
   double lo = 1e-9 / omega_max;
   if (!stable_at(kind, lo, omegas, tau)) return 0.0;
   double hi = 100.0 * std::max(1.0 / omega_max, tau);

@@ -1,5 +1,7 @@
 #include "jelly/test_systems.hpp"
 
+#include "jelly/portable_math.hpp"
+
 #include <cmath>
 
 namespace jelly {
@@ -62,7 +64,7 @@ State TwoParticleSpring::initial_state(double stretch) {
 
 double TwoParticleSpring::exact_length(double t, double stretch) {
   // Reduced mass ½: ω = √(2 ks / m) = √20 for ks = 10, m = 1.
-  return kRestLength + stretch * std::cos(std::sqrt(2.0 * kStiffness) * t);
+  return kRestLength + stretch * portable::cos(std::sqrt(2.0 * kStiffness) * t);
 }
 
 double TwoParticleSpring::exact_x1(double t, double stretch) {

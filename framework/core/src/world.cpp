@@ -1,5 +1,7 @@
 #include "jelly/world.hpp"
 
+#include <cstdint>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -234,7 +236,7 @@ void World::acceleration(const State& s, Vec3Array& a) {
   //    offers it (same bits), else group by group.
   for (const SpringGroup& g : groups_) {
     ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
-    counters_.springs_evaluated += static_cast<long>(g.springs.size());
+    counters_.springs_evaluated += static_cast<std::int64_t>(g.springs.size());
   }
   if (tasks_.accumulate_spring_groups) {
     if (!groups_.empty()) tasks_.accumulate_spring_groups(groups_.data(), groups_.size(), s, force_);
@@ -271,8 +273,8 @@ void World::contact_pass(const State& s, Vec3Array& f) {
       ++counters_.broadphase_skips[t];
       continue;
     }
-    counters_.contact_queries[t] += static_cast<long>(n);
-    long hits = 0;
+    counters_.contact_queries[t] += static_cast<std::int64_t>(n);
+    std::int64_t hits = 0;
     if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
       for (Eigen::Index i = 0; i < n; ++i) {
         Vec3 fi = f.col(i);
@@ -322,8 +324,8 @@ void World::apply_collisions(State& s) {
       continue;
     }
     if (terrain.collision) {
-      counters_.collision_queries[t] += static_cast<long>(n);
-      long hits = 0;
+      counters_.collision_queries[t] += static_cast<std::int64_t>(n);
+      std::int64_t hits = 0;
       if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
         for (Eigen::Index i = 0; i < n; ++i) {
           Vec3 vi = s.v.col(i);

@@ -48,10 +48,16 @@ class NullBackend : public Backend {
   int w_, h_;
 };
 
+// Windows and macOS always have a desktop to open a window on (GLFW reports it when not);
+// elsewhere a window needs an X11 or Wayland display.
 bool display_available() {
+#if defined(_WIN32) || defined(__APPLE__)
+  return true;
+#else
   const char* x = std::getenv("DISPLAY");
   const char* wl = std::getenv("WAYLAND_DISPLAY");
   return (x && *x) || (wl && *wl);
+#endif
 }
 
 }  // namespace

@@ -159,9 +159,16 @@ std::string parse(int argc, char** argv, Args& a) {
 bool on_path(const std::string& program) {
   const char* path = std::getenv("PATH");
   if (!path) return false;
-  for (const std::string& dir : split(path, ':')) {
+#ifdef _WIN32
+  const char separator = ';';
+  const std::string file = program + ".exe";
+#else
+  const char separator = ':';
+  const std::string& file = program;
+#endif
+  for (const std::string& dir : split(path, separator)) {
     std::error_code ec;
-    if (fs::exists(fs::path(dir) / program, ec)) return true;
+    if (fs::exists(fs::path(dir) / file, ec)) return true;
   }
   return false;
 }
@@ -375,10 +382,15 @@ int render_command(int argc, char** argv) {
       const fs::path mp4 = a.frames / "video.mp4";
       char fps[32];
       std::snprintf(fps, sizeof fps, "%g", a.fps);
-      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i '" +
-                              (a.frames / "frame_%05d.png").string() +
-                              "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -c:v libx264 '" +
-                              mp4.string() + "'";
+#ifdef _WIN32
+      const char q = '"';  // cmd.exe does not know single quotes
+#else
+      const char q = '\'';
+#endif
+      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i " + q +
+                              (a.frames / "frame_%05d.png").string() + q + " -vf " + q +
+                              "pad=ceil(iw/2)*2:ceil(ih/2)*2" + q + " -pix_fmt yuv420p -c:v libx264 " + q +
+                              mp4.string() + q;
       if (std::system(cmd.c_str()) == 0) std::cout << "wrote " << mp4.string() << "\n";
       else std::cerr << "jelly render: ffmpeg failed; the PNG frames are in " << a.frames.string() << "\n";
     } else {

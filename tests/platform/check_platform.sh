@@ -1,0 +1,185 @@
+#!/usr/bin/env bash
+# Same bits on another platform (issue 10): builds the `jelly` CLI for PLATFORM, runs the course
+# scene and a few other runs with it and with this (Linux GCC) build's `jelly`, and fails unless
+# every output file is the same bytes.
+#
+#   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS]
+#
+#   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
+#                     under wine; also runs the stub unit tests (jelly_tests_stubs.exe) under wine
+#             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
+#   TASKS     assignments | solutions: the same as the host build's JELLY_TASKS
+#
+# Exit 0: same bytes; 1: a difference or a failed build/run; 77: skipped (compiler or wine
+# missing; tools/install-deps.sh installs them). Everything is built under WORK_DIR (ccache is used
+# when installed), with JELLY_DEPS=bundled: SOURCE_DIR/third_party when it is there, else
+# tools/fetch-third-party fills WORK_DIR/third_party.
+set -uo pipefail
+platform="${1:?platform}"; host_jelly="${2:?host jelly}"; src="${3:?source dir}"; work="${4:?work dir}"
+tasks="${5:?tasks}"; jobs="${6:-2}"
+say() { printf 'platform[%s]: %s\n' "$platform" "$*"; }
+skip() { say "SKIPPED: $*"; exit 77; }
+die() { say "FAILED: $*"; exit 1; }
+mkdir -p "$work"
+work="$(cd "$work" && pwd)"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+timer() { local t0=$1; echo $(( $(date +%s) - t0 ))s; }
+
+# ---- the compiler and how to run what it builds ---------------------------------------------
+run=()
+case "$platform" in
+  mingw)
+    command -v x86_64-w64-mingw32-g++-posix >/dev/null ||
+      skip "x86_64-w64-mingw32-g++-posix not found (Debian package g++-mingw-w64-x86-64-posix)"
+    wine=""
+    for w in /usr/lib/wine/wine64 "$(command -v wine64 || true)" "$(command -v wine || true)"; do
+      [ -n "$w" ] && [ -x "$w" ] && { wine="$w"; break; }
+    done
+    [ -n "$wine" ] || skip "wine not found (Debian package wine64)"
+    export WINEPREFIX="$work/wineprefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+    if [ ! -f "$WINEPREFIX/system.reg" ]; then
+      t0=$(date +%s)
+      "$wine" wineboot --init >/dev/null 2>&1
+      "$(dirname "$wine")/wineserver" -w 2>/dev/null || true
+      say "wine prefix created in $(timer "$t0")"
+    fi
+    run=("$wine")
+    exe=.exe
+    toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/mingw-w64-x86_64.cmake")
+    targets=(jelly jelly_tests_stubs jelly_tests_process_win)
+    viewer=OFF
+    if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab)
+    else say "no xvfb-run (Debian package xvfb): jelly-lab.exe is not built nor opened"; fi
+    ;;
+  libcxx)
+    command -v clang++ >/dev/null || skip "clang++ not found (Debian package clang)"
+    echo '#include <vector>
+int main() { return std::vector<int>{1}.size() == 1 ? 0 : 1; }' >"$work/probe.cpp"
+    clang++ -stdlib=libc++ "$work/probe.cpp" -o "$work/probe" 2>/dev/null ||
+      skip "clang++ -stdlib=libc++ cannot build a program (Debian packages libc++-dev libc++abi-dev)"
+    exe=""
+    toolchain=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS=-stdlib=libc++
+               -DCMAKE_EXE_LINKER_FLAGS="-stdlib=libc++")
+    targets=(jelly)
+    viewer=OFF
+    ;;
+  *) die "unknown platform '$platform' (mingw or libcxx)" ;;
+esac
+
+# ---- third-party libraries: the bundled sources a student release carries -------------------
+# (JELLY_DEPS=bundled: nothing from this machine's packages can leak into a cross-build)
+third="$src/third_party"
+if [ ! -f "$third/VERSIONS" ]; then
+  third="$work/third_party"
+  if [ ! -f "$third/VERSIONS" ]; then
+    t0=$(date +%s)
+    "$src/tools/fetch-third-party" "$work" >"$work/fetch.log" 2>&1 ||
+      { tail -20 "$work/fetch.log"; die "tools/fetch-third-party could not assemble the bundled sources"; }
+    say "third-party sources assembled in $(timer "$t0")"
+  fi
+fi
+deps=(-DJELLY_DEPS=bundled -DJELLY_THIRD_PARTY_DIR="$third")
+
+# ---- configure and build --------------------------------------------------------------------
+build="$work/build"
+t0=$(date +%s)
+tests=OFF
+[ "$platform" = mingw ] && tests=ON
+grader=OFF
+[ "$platform" = mingw ] && grader=ON  # on Windows: only run_child (process_win.cpp) so far
+cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+      -DJELLY_TASKS="$tasks" -DJELLY_BUILD_TESTS=$tests -DJELLY_BUILD_VIEWER=$viewer -DJELLY_BUILD_GRADER=$grader \
+      -DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_FUZZERS=OFF >"$work/configure.log" 2>&1 ||
+  { tail -40 "$work/configure.log"; die "CMake could not configure the $platform build (log: $work/configure.log)"; }
+cmake --build "$build" -j"$jobs" --target "${targets[@]}" >"$work/build.log" 2>&1 ||
+  { grep -E 'error|Error' "$work/build.log" | head -30; die "the $platform build failed (log: $work/build.log)"; }
+say "configured and built ${targets[*]} in $(timer "$t0")"
+jelly="$(find "$build" -name "jelly$exe" -type f | head -1)"
+[ -n "$jelly" ] || die "no jelly$exe under $build"
+
+# ---- the same runs on both --------------------------------------------------------------------
+out="$work/out"
+rm -rf "$out"
+mkdir -p "$out/host" "$out/$platform"
+scene="$src/scenes/course-2023.toml"
+corner="$src/scenes/hard/corner-first.toml"
+runs=(
+  "course-summary|run $scene --summary @/course-summary.csv"
+  "course-rk4-trajectory|run $scene --integrator rk4 --duration 2 --every 250 --out @/course-rk4.csv"
+  "course-implicit-summary|run $scene --integrator implicit_euler --duration 2 --summary @/course-implicit.csv"
+  "corner-first-trajectory|run $corner --duration 1.5 --every 500 --out @/corner-first.csv"
+  "course-check|check $scene"
+)
+t0=$(date +%s)
+failed=0
+for entry in "${runs[@]}"; do
+  name="${entry%%|*}"; args="${entry#*|}"
+  for side in host "$platform"; do
+    dir="$out/$side"
+    # shellcheck disable=SC2086
+    set -- ${args//@/$dir}
+    if [ "$side" = host ]; then "$host_jelly" "$@" >"$dir/$name.stdout" 2>&1
+    else "${run[@]}" "$jelly" "$@" >"$dir/$name.stdout" 2>&1; fi
+    echo "exit $?" >>"$dir/$name.stdout"
+  done
+done
+# Printed timings differ ("simulated in 2.4 s"), and so do the output paths: compare the rest.
+for f in "$out/host"/*; do
+  base="$(basename "$f")"
+  other="$out/$platform/$base"
+  if [[ "$base" == *.stdout ]]; then
+    a="$(sed -e 's/simulated in [0-9.]* s ([0-9]* steps\/s)//' -e "s|$out/host|OUT|g" "$f")"
+    b="$(sed -e 's/simulated in [0-9.]* s ([0-9]* steps\/s)//' -e "s|$out/$platform|OUT|g" -e 's/\r$//' "$other" 2>/dev/null)"
+    [ "$a" = "$b" ] && { say "same text: $base"; continue; }
+    say "DIFFERENT text: $base"; diff <(echo "$a") <(echo "$b") | head -10; failed=1
+  elif cmp -s "$f" "$other"; then
+    say "same bytes: $base ($(wc -c <"$f") bytes, sha256 $(sha256sum "$f" | cut -c1-16))"
+  else
+    say "DIFFERENT bytes: $base"; cmp "$f" "$other" | head -3; diff "$f" "$other" | head -6; failed=1
+  fi
+done
+say "runs compared in $(timer "$t0")"
+
+# ---- unit tests on the target -----------------------------------------------------------------
+if [ "$platform" = mingw ]; then
+  t0=$(date +%s)
+  stubs="$(find "$build" -name "jelly_tests_stubs$exe" -type f | head -1)"
+  if [ -z "$stubs" ]; then say "FAILED: no jelly_tests_stubs$exe"; failed=1
+  else
+    for t in "$stubs" "$(find "$build" -name "jelly_tests_process_win$exe" -type f | head -1)"; do
+      [ -n "$t" ] || { say "FAILED: jelly_tests_process_win$exe was not built"; failed=1; continue; }
+      log="$out/$(basename "$t" "$exe").txt"
+      if (cd "$src" && "${run[@]}" "$t" --gtest_brief=1 >"$log" 2>&1); then
+        say "unit tests under wine: $(basename "$t") $(grep -E '^\[  PASSED  \]' "$log" | tr -d '\r')"
+      else
+        tail -40 "$log"; say "FAILED: $(basename "$t") under wine"; failed=1
+      fi
+    done
+    say "unit tests under wine took $(timer "$t0")"
+  fi
+fi
+# ---- the viewer opens under wine -------------------------------------------------------------
+# Wine's opengl32 goes to the host's GLX: Mesa's llvmpipe under Xvfb gives OpenGL 3.3 core.
+# jelly-lab draws the course scene at t = 2.2 s, saves its own framebuffer (scene and ImGui
+# panel) and closes itself.
+if [ "$platform" = mingw ] && [ "$viewer" = ON ]; then
+  t0=$(date +%s)
+  lab="$(find "$build" -name "jelly-lab$exe" -type f | head -1)"
+  shot="$out/viewer-wine.png"
+  if [ -z "$lab" ]; then say "FAILED: no jelly-lab$exe"; failed=1
+  else
+    (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "$scene" \
+        --shot-at 2.2 --size 1280x720 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
+    rc=$?
+    size=$(stat -c %s "$shot" 2>/dev/null || echo 0)
+    if [ "$rc" -eq 0 ] && [ "$(head -c 8 "$shot" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] &&
+       [ "$size" -gt 20000 ]; then
+      say "jelly-lab.exe opened under wine + Xvfb and saved $shot ($size bytes) in $(timer "$t0")"
+    else
+      tail -20 "$out/viewer.txt"; say "FAILED: jelly-lab.exe under wine (exit $rc, screenshot $size bytes)"; failed=1
+    fi
+  fi
+fi
+[ "$failed" -eq 0 ] || die "outputs differ from the Linux GCC build (see above; files in $out)"
+say "PASSED: the $platform build writes the same bytes as the Linux GCC build"
