@@ -16,6 +16,7 @@ PACKAGES=(
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
   gnuplot-nox xvfb xauth zip unzip
+  ccache    # run-tests compiles through it when present: repeated runs and the release builds reuse objects
   clang libclang-rt-14-dev
   # the student release's bundled builds: GLFW's X11 backend from source, Clang + libc++ (the
   # stand-in for Apple's toolchain), unpacking Debian source packages (tools/fetch-third-party)
