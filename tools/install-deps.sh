@@ -21,6 +21,8 @@ PACKAGES=(
   # stand-in for Apple's toolchain), unpacking Debian source packages (tools/fetch-third-party)
   libx11-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev
   libc++-dev libc++abi-dev xz-utils bzip2
+  # the Windows checks (label platform): MinGW-w64 cross-compiler, wine, Mesa's GL for Xvfb
+  g++-mingw-w64-x86-64-posix wine64 libgl1-mesa-dri
 )
 
 check_only=0

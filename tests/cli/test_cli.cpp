@@ -176,6 +176,9 @@ TEST_F(Cli, UnstableRunStopsWithItsOwnExitCodeAndKeepsWhatItWrote) {
 }
 
 TEST_F(Cli, CheckPrintsTheStableStepOfEveryIntegrator) {
+  // The spring count and stable steps come from the tasks (the stubs build no springs): this runs
+  // in a student release too, where it must not fail before the student has written anything.
+  if (std::string(JELLY_CLI_TASKS) != "solutions") GTEST_SKIP() << "needs the reference springs";
   const Result r = jelly("check " + scene("course-2023.toml"));
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("12876 springs"), std::string::npos) << r.output;

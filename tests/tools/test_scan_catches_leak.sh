@@ -26,6 +26,9 @@ fi
 plant() {  # plant NAME COMMAND-THAT-MODIFIES-$copy EXPECTED-TEXT
   local copy="$work/copy" what="$1" want="$3"
   rm -rf "$copy"; cp -a "$rel" "$copy"
+  # The leaks are planted in our files; the third-party sources (16 MB, scanned clean above as part
+  # of the whole release) would only make each of these scans slower.
+  rm -rf "$copy/third_party"
   eval "$2"
   "$tool" --scan "$copy" >"$work/scan.log" 2>&1
   local rc=$?
