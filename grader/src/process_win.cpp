@@ -9,8 +9,10 @@
 #endif
 #include <windows.h>
 
-#include <csignal>
+#include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <cstdint>
 #include <cwchar>
 #include <mutex>
 #include <thread>

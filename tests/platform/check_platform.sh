@@ -169,9 +169,14 @@ if [ "$platform" = mingw ] && [ "$viewer" = ON ]; then
   shot="$out/viewer-wine.png"
   if [ -z "$lab" ]; then say "FAILED: no jelly-lab$exe"; failed=1
   else
+    # Wine's desktop process keeps the display of the session that started it: end the session
+    # of the runs above (no display) first, and this one (Xvfb's, gone after) afterwards.
+    wineserver="$(dirname "$wine")/wineserver"
+    "$wineserver" -k 2>/dev/null
     (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "$scene" \
-        --shot-at 2.2 --size 1280x720 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
+        --shot-at 2.2 --size 1024x600 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
     rc=$?
+    "$wineserver" -k 2>/dev/null
     size=$(stat -c %s "$shot" 2>/dev/null || echo 0)
     if [ "$rc" -eq 0 ] && [ "$(head -c 8 "$shot" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] &&
        [ "$size" -gt 20000 ]; then
