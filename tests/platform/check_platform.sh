@@ -171,12 +171,20 @@ if [ "$platform" = mingw ] && [ "$viewer" = ON ]; then
   else
     # Wine's desktop process keeps the display of the session that started it: end the session
     # of the runs above (no display) first, and this one (Xvfb's, gone after) afterwards.
+    # `wineserver -k` only asks: `-w` waits until the old session is gone (in CI a viewer started
+    # while it was still ending failed with "Win32: Failed to create helper window").
     wineserver="$(dirname "$wine")/wineserver"
-    "$wineserver" -k 2>/dev/null
-    (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "$scene" \
-        --shot-at 2.2 --size 1024x600 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
-    rc=$?
-    "$wineserver" -k 2>/dev/null
+    end_wine_session() { "$wineserver" -k 2>/dev/null; "$wineserver" -w 2>/dev/null || true; }
+    for attempt in 1 2; do
+      end_wine_session
+      (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "$scene" \
+          --shot-at 2.2 --size 1024x600 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
+      rc=$?
+      end_wine_session
+      # Only wine's own start-up race is retried (once, and said); any other failure counts.
+      [ "$rc" -ne 0 ] && [ "$attempt" -eq 1 ] && grep -q 'Failed to create helper window' "$out/viewer.txt" || break
+      say "wine could not create a window on the first try (its session start-up race): trying once more"
+    done
     size=$(stat -c %s "$shot" 2>/dev/null || echo 0)
     if [ "$rc" -eq 0 ] && [ "$(head -c 8 "$shot" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] &&
        [ "$size" -gt 20000 ]; then
