@@ -30,6 +30,13 @@
 #include "commands.hpp"
 #include "report.hpp"
 
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <windows.h>
+#endif
+
 namespace {
 
 using namespace jelly::grade;
@@ -68,6 +75,7 @@ int main(int argc, char** argv) {
   // One thread per grading case (cases already run in parallel), and the same bits every run.
 #ifdef _WIN32
   _putenv_s("OMP_NUM_THREADS", "1");
+  SetConsoleOutputCP(CP_UTF8);  // the report is UTF-8 ("—", "✗"): a console shows it as such
 #else
   setenv("OMP_NUM_THREADS", "1", 1);
 #endif
