@@ -45,43 +45,36 @@ namespace {
 
 using jelly::grade::Json;
 
-bool write_all(int fd, const std::string& text) {
+// One write(2) (_write on Windows), at most 1 MiB.
+long write_some(int fd, const char* p, std::size_t n) {
+  n = std::min<std::size_t>(n, 1 << 20);
 #ifdef _WIN32
-  // The orchestrator's result pipe (process_win.cpp); without it, fd 1 as on POSIX.
+  return _write(fd, p, static_cast<unsigned>(n));
+#else
+  return static_cast<long>(write(fd, p, n));
+#endif
+}
+
+bool write_all(int fd, const std::string& text) {
+  const char* p = text.data();
+  std::size_t left = text.size();
+#ifdef _WIN32
+  // The orchestrator's result pipe (process_win.cpp); without it, the descriptor as on POSIX.
   if (const char* handle = std::getenv("JELLY_RESULT_HANDLE"); handle && fd != 1) {
     HANDLE h = reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(handle, nullptr, 10)));
-    const char* q = text.data();
-    std::size_t rest = text.size();
-    while (rest > 0) {
-      DWORD n = 0;
-      if (!WriteFile(h, q, static_cast<DWORD>(std::min<std::size_t>(rest, 1 << 20)), &n, nullptr) || n == 0)
-        return false;
-      q += n;
-      rest -= n;
-    }
-    return true;
+    DWORD n = 0;
+    while (left > 0 && WriteFile(h, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 20)), &n, nullptr) && n > 0)
+      p += n, left -= n;
+    return left == 0;
   }
-  if (fd == 1) std::fflush(stdout);
-  const char* p = text.data();
-  std::size_t left = text.size();
-  while (left > 0) {
-    const int n = _write(fd, p, static_cast<unsigned>(std::min<std::size_t>(left, 1 << 20)));
-    if (n <= 0) return false;
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return true;
-#else
-  const char* p = text.data();
-  std::size_t left = text.size();
-  while (left > 0) {
-    const ssize_t n = write(fd, p, left);
-    if (n <= 0) return false;
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return true;
 #endif
+  while (left > 0) {
+    const long n = write_some(fd, p, left);
+    if (n <= 0) return false;
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return true;
 }
 
 int usage() {
