@@ -11,10 +11,23 @@
 //
 // --prepare builds the case's input instead (reference runner only, at generate-reference time).
 // Everything the case needs is read BEFORE the sandbox goes up; after it, the student's code can
-// compute and print but cannot open a file, start a process or signal anyone.
+// compute and print but cannot open a file, start a process or signal anyone (the seccomp sandbox,
+// Linux only). Elsewhere (the self-check on Windows and macOS) there is no sandbox: it is the
+// student's own code on the student's own machine. On Windows the result goes to the inherited
+// pipe handle named in the environment variable JELLY_RESULT_HANDLE (process_win.cpp), not fd N.
 #include <fcntl.h>
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <io.h>
+#include <windows.h>
+#else
 #include <unistd.h>
+#endif
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -24,17 +37,39 @@
 #include <string>
 
 #include "harness.hpp"
+#if JELLY_HAVE_SECCOMP
 #include "sandbox.hpp"
+#endif
 
 namespace {
 
 using jelly::grade::Json;
 
+// One write(2) (_write on Windows), at most 1 MiB.
+long write_some(int fd, const char* p, std::size_t n) {
+  n = std::min<std::size_t>(n, 1 << 20);
+#ifdef _WIN32
+  return _write(fd, p, static_cast<unsigned>(n));
+#else
+  return static_cast<long>(write(fd, p, n));
+#endif
+}
+
 bool write_all(int fd, const std::string& text) {
   const char* p = text.data();
   std::size_t left = text.size();
+#ifdef _WIN32
+  // The orchestrator's result pipe (process_win.cpp); without it, the descriptor as on POSIX.
+  if (const char* handle = std::getenv("JELLY_RESULT_HANDLE"); handle && fd != 1) {
+    HANDLE h = reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(handle, nullptr, 10)));
+    DWORD n = 0;
+    while (left > 0 && WriteFile(h, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 20)), &n, nullptr) && n > 0)
+      p += n, left -= n;
+    return left == 0;
+  }
+#endif
   while (left > 0) {
-    const ssize_t n = write(fd, p, left);
+    const long n = write_some(fd, p, left);
     if (n <= 0) return false;
     p += n;
     left -= static_cast<std::size_t>(n);
@@ -74,6 +109,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (request_path.empty()) return usage();
+#ifdef _WIN32
+  // The request is JSON bytes: no CR/LF translation, no end at a ^Z.
+  _setmode(_fileno(stdin), _O_BINARY);
+#endif
   Json request;
   {
     std::ifstream file;
@@ -89,11 +128,15 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(), e.what());
       return 2;
     }
+#ifdef _WIN32
+    if (!std::freopen("NUL", "rb", stdin)) std::fclose(stdin);
+#else
     const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
     if (null_fd >= 0) {
       dup2(null_fd, 0);
       close(null_fd);
     }
+#endif
   }
   const std::string case_id = request.value("case", std::string("?"));
   const std::string generator = request.value("generator", std::string());
@@ -116,7 +159,11 @@ int main(int argc, char** argv) {
       result["error"] = std::string("preparing the input failed: ") + e.what();
     }
   } else {
+#if JELLY_HAVE_SECCOMP
     if (sandbox && !jelly::grade::install_sandbox(result_fd)) return 3;
+#else
+    (void)sandbox;  // no sandbox off Linux: the self-check runs the student's own code
+#endif
     jelly::grade::Outputs out;
     try {
       def->run(tasks, params, input, out);

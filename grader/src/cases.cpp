@@ -1,7 +1,5 @@
 #include "cases.hpp"
 
-#include <fnmatch.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -62,11 +60,33 @@ Json to_json(const toml::node& n) {
   throw std::runtime_error("unsupported TOML value (dates are not case parameters)");
 }
 
+// Shell-style pattern of an output name: '*' is any run of characters, '?' one character, anything
+// else itself (POSIX fnmatch without flags, minus bracket classes, which no case file uses).
+bool glob_match(const char* pattern, const char* text) {
+  const char* star = nullptr;
+  const char* resume = nullptr;
+  while (*text) {
+    if (*pattern == '*') {
+      star = pattern++;
+      resume = text;
+    } else if (*pattern == '?' || *pattern == *text) {
+      ++pattern, ++text;
+    } else if (star) {
+      pattern = star + 1;
+      text = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (*pattern == '*') ++pattern;
+  return *pattern == '\0';
+}
+
 }  // namespace
 
 const Rule CaseSpec::rule_for(const std::string& output) const {
   for (const auto& [pattern, rule] : rules)
-    if (fnmatch(pattern.c_str(), output.c_str(), 0) == 0) return rule;
+    if (glob_match(pattern.c_str(), output.c_str())) return rule;
   Rule r;
   r.tolerance = tolerance;
   return r;
@@ -233,7 +253,10 @@ std::string harness_digest(const GradeConfig& config) {
     std::ifstream in(f, std::ios::binary);
     std::ostringstream s;
     s << in.rdbuf();
-    all += f.filename().string() + "\n" + s.str();
+    // A Windows checkout may have CRLF line ends (git's core.autocrlf): the same code, the same digest.
+    std::string text = s.str();
+    text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
+    all += f.filename().string() + "\n" + text;
   }
   return fnv_hex(all);
 }

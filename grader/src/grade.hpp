@@ -36,11 +36,17 @@ struct GradeOptions {
   std::size_t memory_bytes = 1ULL << 30;
   Isolation isolation;          ///< where the compiler and the tests run (choose_isolation)
   BuildLimits build_limits;     ///< limits of compiling and linking
+  std::filesystem::path runner; ///< --runner: a runner CMake built from the student's tasks; nothing
+                                ///< is compiled, and it runs without a sandbox (the self-check)
 };
+
+/// The isolation of the self-check (--runner): none, and the report says why in the student's terms.
+Isolation own_machine_isolation();
 
 struct GradeReport {
   std::string submission;        ///< folder as given
   bool compiled = false;
+  bool prebuilt_runner = false;  ///< --runner: built by CMake, not compiled by the grader
   BuildResult build;
   std::vector<CaseResult> cases; ///< in case-book order
   std::vector<TaskResult> tasks; ///< in rubric order

@@ -2,7 +2,7 @@
 //
 //   jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]
 //               [--format terminal,gradescope,prairielearn,junit,markdown,html] [--timeout S]
-//               [--jobs N] [--verbose] [--no-frames]
+//               [--jobs N] [--verbose] [--no-frames] [--runner FILE] [--strict]
 //   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
 //               [--compile-memory MIB] [--compile-cpu S]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]
@@ -12,7 +12,11 @@
 //   jelly-grade mutants [--table FILE] [--jobs N]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
 //
-// Exit status: 0 when grading ran, whatever the score; 1 when a self-test (mutants) fails or a batch
+// --runner FILE grades a runner CMake built from the student's tasks (target
+// jelly-grade-student-runner) instead of compiling SUBMISSION_DIR: the self-check on Windows and
+// macOS (target `selfcheck`), without a sandbox. --strict: exit status 1 unless the score is full.
+//
+// Exit status: 0 when grading ran, whatever the score (1 with --strict when it is not full); 1 when a self-test (mutants) fails or a batch
 // had a grader error; 2 on grader errors (bad arguments, missing or stale reference data).
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +30,13 @@
 #include "commands.hpp"
 #include "report.hpp"
 
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <windows.h>
+#endif
+
 namespace {
 
 using namespace jelly::grade;
@@ -36,6 +47,7 @@ int usage(const char* message = nullptr) {
                "  jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]\n"
                "                    [--format terminal,gradescope,prairielearn,junit,markdown,html]\n"
                "                    [--timeout S] [--jobs N] [--verbose] [--no-frames]\n"
+               "                    [--runner FILE (a prebuilt runner: the self-check, no sandbox)] [--strict]\n"
                "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all]\n"
                "  jelly-grade generate-reference\n"
                "  jelly-grade gradescope-zip OUT.zip\n"
@@ -61,13 +73,19 @@ std::set<std::string> split(const std::string& s) {
 int main(int argc, char** argv) {
   if (argc < 2) return usage();
   // One thread per grading case (cases already run in parallel), and the same bits every run.
+#ifdef _WIN32
+  _putenv_s("OMP_NUM_THREADS", "1");
+  SetConsoleOutputCP(CP_UTF8);  // the report is UTF-8 ("—", "✗"): a console shows it as such
+#else
   setenv("OMP_NUM_THREADS", "1", 1);
+#endif
   const std::string command = argv[1];
   std::vector<std::string> positional;
   std::string config_path, rubric_path, out, visibility = "all", formats = "terminal,gradescope", table, student,
                                              results;
   double timeout = 10.0, compile_memory_mib = 2048, compile_cpu = 120;
-  std::string isolation = "auto";
+  std::string isolation = "auto", runner;
+  bool strict = false;  // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
   int jobs = 0;
   bool verbose = false;
   bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
@@ -93,6 +111,8 @@ int main(int argc, char** argv) {
       else if (a == "--compile-cpu") compile_cpu = std::stod(value());
       else if (a == "--verbose") verbose = true;
       else if (a == "--no-frames") no_frames = true;
+      else if (a == "--runner") runner = value();
+      else if (a == "--strict") strict = true;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
       else positional.push_back(a);
     } catch (const std::exception& e) {
@@ -113,7 +133,12 @@ int main(int argc, char** argv) {
     options.build_limits.memory_bytes = static_cast<std::size_t>(compile_memory_mib * (1 << 20));
     options.build_limits.cpu_s = compile_cpu;
     // Student code is compiled and run only by these commands: the sandbox is chosen once for them.
-    if (command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants")
+    if (!runner.empty() && command != "grade") return usage("--runner is an option of grade only");
+    if (!runner.empty() && isolation != "auto" && isolation != "none")
+      return usage("--runner runs your own code without a sandbox: --isolation must be auto or none");
+    options.runner = runner;
+    if (!runner.empty()) options.isolation = own_machine_isolation();
+    else if (command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants")
       options.isolation = choose_isolation(config, isolation);
     if (command == "grade") {
       if (positional.size() != 1) return usage("grade needs one SUBMISSION_DIR");
@@ -132,7 +157,7 @@ int main(int argc, char** argv) {
       // such as the tolerance measurements of docs/tolerances.md.
       if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
       if (f.count("terminal")) std::cout << terminal_summary(r, verbose);
-      return 0;
+      return strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9) ? 1 : 0;
     }
     if (command == "batch") {
       if (positional.size() != 1 || out.empty()) return usage("batch needs SUBMISSIONS_DIR and --out DIR");

@@ -6,11 +6,14 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/syscall.h>
+#endif
 
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 
 namespace jelly::grade {
@@ -20,6 +23,58 @@ namespace {
 void set_limit(int resource, rlim_t value) {
   struct rlimit rl {value, value};
   setrlimit(resource, &rl);
+}
+
+// pipe2(O_CLOEXEC) where the system has it (Linux); elsewhere (macOS) pipe, then FD_CLOEXEC.
+bool cloexec_pipe(int fds[2]) {
+#ifdef __linux__
+  return pipe2(fds, O_CLOEXEC) == 0;
+#else
+  if (pipe(fds) != 0) return false;
+  for (int i = 0; i < 2; ++i) fcntl(fds[i], F_SETFD, FD_CLOEXEC);
+  return true;
+#endif
+}
+
+// A readable descriptor holding `data` that no other process can open by name: an anonymous
+// in-memory file on Linux, an already-unlinked temporary file elsewhere. -1 with errno on failure;
+// `what` names the call that failed.
+int anonymous_input(const std::string& data, const char*& what) {
+#ifdef __linux__
+  what = "memfd_create";
+  const int fd = static_cast<int>(syscall(SYS_memfd_create, "jelly-grade-stdin", MFD_CLOEXEC));
+#else
+  what = "mkstemp";
+  const char* tmp = std::getenv("TMPDIR");
+  std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/jelly-grade-stdin.XXXXXX";
+  const int fd = mkstemp(name.data());
+  if (fd >= 0) {
+    unlink(name.c_str());
+    fcntl(fd, F_SETFD, FD_CLOEXEC);
+  }
+#endif
+  if (fd < 0) return -1;
+  what = "writing the child's input";
+  for (std::size_t done = 0; done < data.size();) {
+    const ssize_t n = write(fd, data.data() + done, data.size() - done);
+    if (n <= 0) {
+      close(fd);
+      return -1;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  lseek(fd, 0, SEEK_SET);
+  return fd;
+}
+
+// Closes every descriptor from `first` up (in the child, between fork and exec).
+void close_from(int first) {
+#ifdef __linux__
+  syscall(SYS_close_range, static_cast<unsigned>(first), ~0U, 0U);
+#else
+  const long max = sysconf(_SC_OPEN_MAX);
+  for (int fd = first; fd < (max > 0 && max < 65536 ? max : 65536); ++fd) close(fd);
+#endif
 }
 
 }  // namespace
@@ -43,29 +98,19 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
                       const std::filesystem::path& cwd) {
   ChildResult r;
   int out_pipe[2], err_pipe[2], res_pipe[2] = {-1, -1};
-  if (pipe2(out_pipe, O_CLOEXEC) != 0 || pipe2(err_pipe, O_CLOEXEC) != 0 ||
-      (limits.result_pipe && pipe2(res_pipe, O_CLOEXEC) != 0)) {
+  if (!cloexec_pipe(out_pipe) || !cloexec_pipe(err_pipe) || (limits.result_pipe && !cloexec_pipe(res_pipe))) {
     r.start_error = std::string("pipe: ") + std::strerror(errno);
     return r;
   }
   // The request (or other input) as an anonymous file: no other process can open it by name.
   int in_fd = -1;
   if (!limits.stdin_data.empty()) {
-    in_fd = static_cast<int>(syscall(SYS_memfd_create, "jelly-grade-stdin", MFD_CLOEXEC));
+    const char* what = "";
+    in_fd = anonymous_input(limits.stdin_data, what);
     if (in_fd < 0) {
-      r.start_error = std::string("memfd_create: ") + std::strerror(errno);
+      r.start_error = std::string(what) + ": " + std::strerror(errno);
       return r;
     }
-    for (std::size_t done = 0; done < limits.stdin_data.size();) {
-      const ssize_t n = write(in_fd, limits.stdin_data.data() + done, limits.stdin_data.size() - done);
-      if (n <= 0) {
-        r.start_error = std::string("writing the child's input: ") + std::strerror(errno);
-        close(in_fd);
-        return r;
-      }
-      done += static_cast<std::size_t>(n);
-    }
-    lseek(in_fd, 0, SEEK_SET);
   }
   // Everything the child needs is prepared before fork (no allocation after it).
   std::vector<char*> args;
@@ -92,7 +137,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     dup2(err_pipe[1], 2);
     if (limits.result_pipe) dup2(res_pipe[1], 3);
     // Nothing else of the grader is inherited (other jobs' pipes, open files).
-    syscall(SYS_close_range, limits.result_pipe ? 4U : 3U, ~0U, 0U);
+    close_from(limits.result_pipe ? 4 : 3);
     set_limit(RLIMIT_CORE, 0);
     set_limit(RLIMIT_CPU, cpu);
     if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, limits.memory_bytes);

@@ -1,7 +1,8 @@
 // run_child for Windows (process.hpp): CreateProcessW with pipes for stdout and stderr, the
 // child in a job object (memory limit; killed as a whole on timeout, output flood or when the
 // grader goes away), and the result channel ("fd 3" on POSIX) as an extra inherited pipe whose
-// handle value the child finds in the environment variable JELLY_RESULT_HANDLE.
+// handle value the child finds in the environment variable JELLY_RESULT_HANDLE. Limits::stdin_data
+// reaches the child through a pipe on its stdin, written by a thread (NUL when there is none).
 // There is no sandbox: on Windows this runs the student's own code on the student's own machine
 // (the self-check); the instructor's grader runs on Linux (process.cpp, the seccomp sandbox).
 #ifndef NOMINMAX
@@ -117,8 +118,17 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   // Only the child's ends are inherited.
   for (HANDLE h : {out_read, err_read, res_read})
     if (h) SetHandleInformation(h, HANDLE_FLAG_INHERIT, 0);
-  HANDLE null_in = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, OPEN_EXISTING, 0,
-                               nullptr);
+  HANDLE child_in = nullptr, in_write = nullptr;
+  if (limits.stdin_data.empty()) {
+    child_in = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, OPEN_EXISTING, 0,
+                          nullptr);
+  } else if (!CreatePipe(&child_in, &in_write, &inherit, 0)) {
+    r.start_error = last_error_text("CreatePipe");
+    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write}) close(*h);
+    return r;
+  } else {
+    SetHandleInformation(in_write, HANDLE_FLAG_INHERIT, 0);
+  }
 
   // A job: the child and anything it starts die together; memory is capped.
   HANDLE job = CreateJobObjectW(nullptr, nullptr);
@@ -137,7 +147,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   const std::wstring dir = cwd.empty() ? std::wstring() : cwd.wstring();
 
   // Exactly these handles reach the child.
-  HANDLE handles[4] = {null_in, out_write, err_write, res_write};
+  HANDLE handles[4] = {child_in, out_write, err_write, res_write};
   const DWORD handle_count = res_write ? 4 : 3;
   SIZE_T attr_size = 0;
   InitializeProcThreadAttributeList(nullptr, 1, 0, &attr_size);
@@ -149,7 +159,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   STARTUPINFOEXW si{};
   si.StartupInfo.cb = sizeof si;
   si.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
-  si.StartupInfo.hStdInput = null_in;
+  si.StartupInfo.hStdInput = child_in;
   si.StartupInfo.hStdOutput = out_write;
   si.StartupInfo.hStdError = err_write;
   si.lpAttributeList = have_list ? attrs : nullptr;
@@ -164,10 +174,10 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   close(out_write);
   close(err_write);
   close(res_write);
-  close(null_in);
+  close(child_in);
   if (!created) {
     r.start_error = "cannot start " + argv[0] + ": " + last_error_text("CreateProcess");
-    for (HANDLE* h : {&out_read, &err_read, &res_read, &job}) close(*h);
+    for (HANDLE* h : {&out_read, &err_read, &res_read, &job, &in_write}) close(*h);
     return r;
   }
   if (job) AssignProcessToJobObject(job, pi.hProcess);
@@ -197,6 +207,19 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
       }
     }
   };
+  // The input, written while the child runs (a pipe holds only a few KiB); the write fails and
+  // the thread ends when the child exits without reading it all.
+  std::thread t_in;
+  if (in_write)
+    t_in = std::thread([&limits, in_write]() {
+      const char* p = limits.stdin_data.data();
+      std::size_t left = limits.stdin_data.size();
+      DWORD n = 0;
+      while (left > 0 && WriteFile(in_write, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 16)), &n, nullptr) &&
+             n > 0)
+        p += n, left -= n;
+      CloseHandle(in_write);
+    });
   std::size_t result_bytes = 0;
   std::thread t_out(read_all, Reader{out_read, &r.out, &r.out_bytes, limits.keep_output});
   std::thread t_err(read_all, Reader{err_read, &r.err, &r.err_bytes, limits.keep_output});
@@ -215,6 +238,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   t_out.join();
   t_err.join();
   if (t_res.joinable()) t_res.join();
+  if (t_in.joinable()) t_in.join();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.output_flood = flood;
 

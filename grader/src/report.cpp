@@ -76,8 +76,9 @@ std::string base64(const std::string& in) {
 std::string terminal_summary(const GradeReport& r, bool verbose) {
   std::ostringstream o;
   o << "Jelly Lab autograder — " << r.submission << " (" << r.visibility << " tests)\n";
-  o << "  sandbox: " << r.isolation << (r.isolation_description.empty() || r.isolation == "none" ? "" : " — ")
-    << (r.isolation == "none" ? "" : r.isolation_description) << "\n";
+  // "none" alone unless the description says more than the name (the self-check says why).
+  const bool plain = r.isolation_description.empty() || r.isolation_description.rfind("none", 0) == 0;
+  o << "  sandbox: " << r.isolation << (plain ? "" : " — ") << (plain ? "" : r.isolation_description) << "\n";
   for (const std::string& n : r.notes) o << "  note: " << n << "\n";
   if (!r.compiled) {
     o << "\nYour code did not compile. The compiler said:\n" << r.build.errors << "\n";
@@ -108,7 +109,8 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
   o << "\nTotal: " << pts(r.score) << " / " << pts(r.max_score);
   if (r.compiled) {
     char t[64];
-    std::snprintf(t, sizeof t, "   (tests ran in %.1f s, compiling took %.1f s)", r.grading_seconds, r.build.seconds);
+    if (r.prebuilt_runner) std::snprintf(t, sizeof t, "   (tests ran in %.1f s; built by CMake)", r.grading_seconds);
+    else std::snprintf(t, sizeof t, "   (tests ran in %.1f s, compiling took %.1f s)", r.grading_seconds, r.build.seconds);
     o << t;
   }
   o << "\n";

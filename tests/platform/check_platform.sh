@@ -3,10 +3,13 @@
 # scene and a few other runs with it and with this (Linux GCC) build's `jelly`, and fails unless
 # every output file is the same bytes.
 #
-#   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS]
+#   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE]]
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
-#                     under wine; also runs the stub unit tests (jelly_tests_stubs.exe) under wine
+#                     under wine; also runs the stub unit tests (jelly_tests_stubs.exe) under wine,
+#                     and the self-check (jelly-grade.exe --runner, the `selfcheck` target): 0 points
+#                     for the stubs, full public marks for solutions/, and the same report lines as
+#                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
 #             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
 #   TASKS     assignments | solutions: the same as the host build's JELLY_TASKS
 #
@@ -16,7 +19,7 @@
 # tools/fetch-third-party fills WORK_DIR/third_party.
 set -uo pipefail
 platform="${1:?platform}"; host_jelly="${2:?host jelly}"; src="${3:?source dir}"; work="${4:?work dir}"
-tasks="${5:?tasks}"; jobs="${6:-2}"
+tasks="${5:?tasks}"; jobs="${6:-2}"; host_grade="${7:-}"
 say() { printf 'platform[%s]: %s\n' "$platform" "$*"; }
 skip() { say "SKIPPED: $*"; exit 77; }
 die() { say "FAILED: $*"; exit 1; }
@@ -47,7 +50,9 @@ case "$platform" in
     run=("$wine")
     exe=.exe
     toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/mingw-w64-x86_64.cmake")
-    targets=(jelly jelly_tests_stubs jelly_tests_process_win)
+    targets=(jelly jelly_tests_stubs jelly_tests_process_win jelly-grade jelly-grade-student-runner
+             jelly_tests_stub_runner_win)
+    [ -f "$src/solutions/forces.cpp" ] && targets+=(jelly-grade-reference-runner)
     viewer=OFF
     if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab)
     else say "no xvfb-run (Debian package xvfb): jelly-lab.exe is not built nor opened"; fi
@@ -87,7 +92,7 @@ t0=$(date +%s)
 tests=OFF
 [ "$platform" = mingw ] && tests=ON
 grader=OFF
-[ "$platform" = mingw ] && grader=ON  # on Windows: only run_child (process_win.cpp) so far
+[ "$platform" = mingw ] && grader=ON  # on Windows: the self-check (jelly-grade --runner)
 cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
       -DJELLY_TASKS="$tasks" -DJELLY_BUILD_TESTS=$tests -DJELLY_BUILD_VIEWER=$viewer -DJELLY_BUILD_GRADER=$grader \
       -DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_FUZZERS=OFF >"$work/configure.log" 2>&1 ||
@@ -158,6 +163,57 @@ if [ "$platform" = mingw ]; then
     done
     say "unit tests under wine took $(timer "$t0")"
   fi
+fi
+# ---- the self-check under wine ------------------------------------------------------------------
+# The grader's case book, points and messages on runners CMake built for Windows: the stubs must
+# score 0, solutions/ full public marks, and each report must read as the Linux grader's on the
+# same code (sandbox line and timings aside). The `selfcheck` target itself is run too (wine is the
+# toolchain's CMAKE_CROSSCOMPILING_EMULATOR): its exit status is pass/fail.
+if [ "$platform" = mingw ]; then
+  t0=$(date +%s)
+  grade_exe="$(find "$build" -name "jelly-grade.exe" -type f | head -1)"
+  stub_runner="$(find "$build" -name "jelly_tests_stub_runner_win.exe" -type f | head -1)"
+  ref_runner="$(find "$build" -name "jelly-grade-reference-runner.exe" -type f | head -1)"
+  selfcheck_case() {  # NAME DIR RUNNER zero|full
+    local name=$1 dir=$2 runner=$3 expect=$4 rc total
+    [ -n "$runner" ] || { say "FAILED: no runner for the self-check on $name"; failed=1; return; }
+    (cd "$src" && "${run[@]}" "$grade_exe" grade "$dir" --runner "$runner" --visibility public --format terminal        --out "$out/selfcheck-$name" --strict) >"$out/selfcheck-$name.txt" 2>&1
+    rc=$?
+    total="$(sed -n 's#^Total: \([0-9.]*\) / \([0-9.]*\).*#\1 / \2#p' "$out/selfcheck-$name.txt")"
+    if ! grep -q '^  sandbox: none — your own code on your own machine: no sandbox' "$out/selfcheck-$name.txt"; then
+      cat "$out/selfcheck-$name.txt"; say "FAILED: the self-check on $name does not say it has no sandbox"; failed=1; return
+    fi
+    case "$expect" in
+      zero) [[ "$total" == "0.00 / "* && "$total" != *"/ 0.00" && $rc -eq 1 ]] ;;
+      full) [[ -n "$total" && "${total% / *}" == "${total#* / }" && "$total" != "0.00 / 0.00" && $rc -eq 0 ]] ;;
+    esac || { cat "$out/selfcheck-$name.txt"; say "FAILED: self-check on $name: $total (exit $rc), expected $expect"; failed=1; return; }
+    say "self-check under wine on $name: $total (exit $rc), as expected ($expect)"
+    if [ -n "$host_grade" ]; then
+      "$host_grade" grade "$dir" --visibility public --format terminal --out "$out/grader-$name" \
+        >"$out/grader-$name.txt" 2>&1
+      if bash "$src/tests/grader/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
+        say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check under wine on $name"
+      else
+        cat "$out/same-$name.txt"; say "FAILED: the self-check's report on $name differs from the Linux grader's"; failed=1
+      fi
+    fi
+  }
+  if [ -z "$grade_exe" ]; then say "FAILED: no jelly-grade.exe"; failed=1
+  else
+    selfcheck_case stubs "$src/assignments" "$stub_runner" zero
+    [ -f "$src/solutions/forces.cpp" ] && selfcheck_case solutions "$src/solutions" "$ref_runner" full
+    # The target students use (cmake --build --preset ... --target selfcheck), on JELLY_TASKS.
+    cmake --build "$build" --target selfcheck >"$out/selfcheck-target.txt" 2>&1
+    rc=$?
+    want=1; [ "$tasks" = solutions ] && want=0
+    if { [ "$want" -eq 0 ] && [ "$rc" -eq 0 ]; } || { [ "$want" -eq 1 ] && [ "$rc" -ne 0 ]; } &&
+       grep -q '^Total: ' "$out/selfcheck-target.txt"; then
+      say "the selfcheck target under wine on $tasks/: $(grep '^Total: ' "$out/selfcheck-target.txt" | tr -d '\r' | cut -c1-40) (exit $rc)"
+    else
+      tail -30 "$out/selfcheck-target.txt"; say "FAILED: the selfcheck target on $tasks/ (exit $rc)"; failed=1
+    fi
+  fi
+  say "self-check under wine took $(timer "$t0")"
 fi
 # ---- the viewer opens under wine -------------------------------------------------------------
 # Wine's opengl32 goes to the host's GLX: Mesa's llvmpipe under Xvfb gives OpenGL 3.3 core.

@@ -1,7 +1,9 @@
-// run_child on Windows (grader/src/process_win.cpp): the piece the Windows self-check will run each
+// run_child on Windows (grader/src/process_win.cpp): the piece the Windows self-check runs each
 // grading case through. This program is its own child: `--child MODE ...` behaves as a case would
 // (print, write a result, crash, loop, flood), anything else runs the tests. Built by the MinGW
 // cross-build and run under wine by tests/platform/check_platform.sh.
+#include <fcntl.h>
+#include <io.h>
 #include <windows.h>
 
 #include <gtest/gtest.h>
@@ -37,6 +39,16 @@ int child_main(int argc, char** argv) {
     const char text[] = "{\"outputs\":{}}\n";
     DWORD written = 0;
     return WriteFile(handle, text, sizeof text - 1, &written, nullptr) && written == sizeof text - 1 ? 0 : 21;
+  }
+  if (mode == "stdin") {  // reads stdin (binary) to its end and prints its length and first bytes
+    _setmode(_fileno(stdin), _O_BINARY);
+    _setmode(_fileno(stdout), _O_BINARY);
+    std::string all;
+    char buf[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, stdin)) > 0) all.append(buf, n);
+    std::printf("%zu %s", all.size(), all.substr(0, 6).c_str());
+    return 0;
   }
   if (mode == "crash") {
     volatile int* p = nullptr;
@@ -81,6 +93,17 @@ TEST(ProcessWin, ResultChannel) {
   ASSERT_TRUE(r.started) << r.start_error;
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.result, "{\"outputs\":{}}\n");
+}
+
+// The grader hands each case its request on stdin (Limits::stdin_data): larger than a pipe's
+// buffer, and byte for byte (a CR LF stays two bytes).
+TEST(ProcessWin, StdinDataReachesTheChildWhole) {
+  Limits lim;
+  lim.stdin_data = "a\r\nb\n" + std::string(300000, 'x');
+  const ChildResult r = run_child({g_self, "--child", "stdin"}, lim);
+  ASSERT_TRUE(r.started) << r.start_error;
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, std::to_string(lim.stdin_data.size()) + " a\r\nb\nx");
 }
 
 TEST(ProcessWin, CrashIsReportedAsTheSignalPosixWouldSend) {

@@ -1,0 +1,32 @@
+// Isolation off Linux (Windows, macOS): there is no bubblewrap and no sandbox user, so the only
+// mechanism is "none". jelly-grade runs there as the student's self-check, on the student's own
+// code on the student's own machine (docs/platforms.md); the course's grader runs on Linux
+// (isolation.cpp).
+#include <stdexcept>
+
+#include "isolation.hpp"
+
+namespace jelly::grade {
+
+Isolation choose_isolation(const GradeConfig&, const std::string& mode) {
+  if (mode != "auto" && mode != "none")
+    throw std::runtime_error("--isolation " + mode + " needs Linux (bubblewrap or a sandbox user); here only "
+                             "--isolation none (the self-check on your own code) is available");
+  Isolation iso;
+  iso.description = "none (not Linux: no sandbox here)";
+  return iso;
+}
+
+std::vector<std::string> isolate(const Isolation&, const std::vector<std::string>& argv, const SandboxView&,
+                                 Limits&) {
+  return argv;
+}
+
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
+                         Limits limits) {
+  return run_child(isolate(iso, argv, view, limits), limits, view.cwd);
+}
+
+void give_to_sandbox(const Isolation&, const fs::path& dir) { fs::create_directories(dir); }
+
+}  // namespace jelly::grade
