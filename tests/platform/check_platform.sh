@@ -6,7 +6,8 @@
 #   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE]]
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
-#                     under wine; also runs the stub unit tests (jelly_tests_stubs.exe) under wine,
+#                     under wine; also runs the unit tests that exist on Windows (stubs, render on the
+#                     null backend, the process launcher) under wine,
 #                     and the self-check (jelly-grade.exe --runner, the `selfcheck` target): 0 points
 #                     for the stubs, full public marks for solutions/, and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
@@ -54,7 +55,7 @@ case "$platform" in
              jelly_tests_stub_runner_win)
     [ -f "$src/solutions/forces.cpp" ] && targets+=(jelly-grade-reference-runner)
     viewer=OFF
-    if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab)
+    if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab jelly_tests_render)
     else say "no xvfb-run (Debian package xvfb): jelly-lab.exe is not built nor opened"; fi
     ;;
   libcxx)
@@ -152,8 +153,13 @@ if [ "$platform" = mingw ]; then
   stubs="$(find "$build" -name "jelly_tests_stubs$exe" -type f | head -1)"
   if [ -z "$stubs" ]; then say "FAILED: no jelly_tests_stubs$exe"; failed=1
   else
-    for t in "$stubs" "$(find "$build" -name "jelly_tests_process_win$exe" -type f | head -1)"; do
-      [ -n "$t" ] || { say "FAILED: jelly_tests_process_win$exe was not built"; failed=1; continue; }
+    # The student release's unit tests that exist on Windows: the stubs' and the renderer's (null
+    # backend; its picture tests need OSMesa), plus the Windows process launcher's.
+    suites=(jelly_tests_process_win)
+    [ "$viewer" = ON ] && suites+=(jelly_tests_render)
+    for name in jelly_tests_stubs "${suites[@]}"; do
+      t="$(find "$build" -name "$name$exe" -type f | head -1)"
+      [ -n "$t" ] || { say "FAILED: $name$exe was not built"; failed=1; continue; }
       log="$out/$(basename "$t" "$exe").txt"
       if (cd "$src" && "${run[@]}" "$t" --gtest_brief=1 >"$log" 2>&1); then
         say "unit tests under wine: $(basename "$t") $(grep -E '^\[  PASSED  \]' "$log" | tr -d '\r')"
