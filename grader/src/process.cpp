@@ -79,21 +79,6 @@ void close_from(int first) {
 
 }  // namespace
 
-std::string describe_signal(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV (segmentation fault: an invalid memory access, e.g. an index out of range)";
-    case SIGABRT: return "SIGABRT (abort: a failed assert or std::terminate)";
-    case SIGFPE: return "SIGFPE (arithmetic error, e.g. an integer division by zero)";
-    case SIGBUS: return "SIGBUS (bus error: an invalid memory access)";
-    case SIGILL: return "SIGILL (illegal instruction)";
-    case SIGKILL: return "SIGKILL (killed)";
-    case SIGXCPU: return "SIGXCPU (CPU time limit exceeded)";
-    case SIGXFSZ: return "SIGXFSZ (tried to write a file)";
-    case SIGSYS: return "SIGSYS (a forbidden system call)";
-    default: return std::string("signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")";
-  }
-}
-
 ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
                       const std::filesystem::path& cwd) {
   ChildResult r;

@@ -82,16 +82,6 @@ struct Reader {
 
 }  // namespace
 
-std::string describe_signal(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV (segmentation fault: an invalid memory access, e.g. an index out of range)";
-    case SIGABRT: return "SIGABRT (abort: a failed assert or std::terminate)";
-    case SIGFPE: return "SIGFPE (arithmetic error, e.g. an integer division by zero)";
-    case SIGILL: return "SIGILL (illegal instruction)";
-    default: return "signal " + std::to_string(sig);
-  }
-}
-
 ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
                       const std::filesystem::path& cwd) {
   ChildResult r;
