@@ -22,7 +22,7 @@ commands:
   params SCENE   list every declared parameter of a scene (key, value, unit, range, meaning)
   probe          list which student tasks (A1.T1–A1.T13) look implemented in this build
   render SCENE   draw frames (or --replay a recorded run) to PNG without a display (OSMesa)   [when built with the viewer]
-  study ...      accuracy against cost, stability sweeps           [numerics study]
+  study ...      accuracy against cost; what a parameter does (effects)   [numerics study]
 
 `jelly COMMAND --help` tells more. Scenes live in scenes/; the format is in docs/scenes.md.
 )";

@@ -1,4 +1,4 @@
-// `jelly study`: dispatch and command line of the numerical studies.
+// `jelly study`: dispatch and command line of the numerical studies (accuracy, effects).
 #include "study_command.hpp"
 
 #include <cmath>
@@ -9,12 +9,14 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "study_accuracy.hpp"
+#include "study_effects.hpp"
 
 namespace jelly::cli {
 
 namespace {
 
 constexpr const char* kStudyHelp = R"(usage: jelly study accuracy SCENE [options]
+       jelly study effects SCENE [options]     (jelly study effects --help)
 
 Accuracy against cost: runs every integrator over a sweep of step sizes, measures the error
 against a converged reference run, the wall time per simulated second and the number of force
@@ -52,10 +54,56 @@ exit codes: 0 done; 2 bad command line or scene; 1 a file could not be written o
 reference run blew up.
 )";
 
-std::vector<std::string> split(const std::string& text) {
+constexpr const char* kEffectsHelp = R"(usage: jelly study effects SCENE [options]
+
+What a parameter does to the jelly: sweeps one declared parameter over the given values (and/or
+the integrator), runs the scene once per value and integrator, and measures what a student sees.
+Writes PREFIX.csv (one row per run), PREFIX.md (a Markdown table), PREFIX.svg/.png (every measure
+against the value) and PREFIX-time.svg/.png (each run over time), with their .gp/.dat.
+
+  contact      first step at which any terrain's collision response or contact force acted
+  impact speed centre-of-mass speed just before that step [m/s]
+  turn         first time after contact at which the centre of mass stops moving down (along -g)
+  peak speed   largest centre-of-mass speed from the turn on: the rebound or the slide [m/s]
+  bounce       highest centre of mass from the turn on minus its height at the turn [m]
+  cave-in      largest 1 - V(t)/V(0) over the run, V = volume inside the cube's outer surface
+               (its six faces as triangles); cave-in at end = 1 - V(T)/V(0). Cube bodies only.
+  at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
+               which every particle is slower than --rest-speed [s]; "never" otherwise
+  energy lost  E(0) - E(T), E = kinetic + gravitational + spring energy [J] (and % of E(0))
+  stable       whether the stability detector (contract §8) fired; it is watched, not obeyed:
+               the run goes on (until the state is not finite) and is marked
+  cost         wall time of the steps per simulated second (median of --repeats runs), force
+               (acceleration) evaluations and backward Euler's CG iterations
+  Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain.
+
+options:
+  --param KEY         the parameter to sweep, as `jelly params SCENE` lists it; '*' stands for
+                      one part (springs.*.ks sets ks of every spring type), and .x/.y/.z after a
+                      vector key sets one component (body.center.y: the drop height)
+  --values A,B,...    its values (for a whole vector separate them with ';': '0,9,0;0,30,0')
+  --integrators A,B   run each value with each of these integrators (default: the scene's);
+                      alone (without --param) it compares integrators
+  --duration T        simulated time per run [s] (default: the scene's)
+  --set KEY=VALUE     change any scene parameter first (repeatable), as for `jelly run`
+  --dt H              the step for every run [s] (default: the scene's)
+  --rest-speed V      at-rest threshold on every particle's speed [m/s] (default 0.05)
+  --rest-hold S       how long it must hold, up to the end [s] (default 0.5)
+  --sample-dt S       interval of the time plot's samples [s] (default 1/60)
+  --repeats R         timing: median wall time of R runs (default 1)
+  --out PREFIX        output files (default effects-SCENENAME)
+  --title TEXT        plot and table title (default: the scene's name and the key)
+  --quiet             no progress line per run
+
+exit codes: 0 done (also when runs were unstable: they are marked); 2 bad command line, scene,
+key or value (nothing is run or written); 1 a file could not be written.
+)";
+
+/// Comma-separated items; `separator` ';' for lists of vectors.
+std::vector<std::string> split(const std::string& text, char separator = ',') {
   std::vector<std::string> out;
   std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');)
+  for (std::string item; std::getline(ss, item, separator);)
     if (!item.empty()) out.push_back(item);
   return out;
 }
@@ -159,6 +207,74 @@ int accuracy(int argc, char** argv) {
   return kExitOk;
 }
 
+int effects(int argc, char** argv) {
+  const Args args(argc, argv, 3,
+                  {"--param", "--values", "--integrators", "--duration", "--set", "--dt", "--rest-speed",
+                   "--rest-hold", "--sample-dt", "--repeats", "--out", "--title"},
+                  {"--help", "--quiet"});
+  if (args.has("--help")) {
+    std::fputs(kEffectsHelp, stdout);
+    return kExitOk;
+  }
+  const auto usage = [](const std::string& what) {
+    std::fprintf(stderr, "jelly study effects: %s\n(see jelly study effects --help)\n", what.c_str());
+    return kExitUsage;
+  };
+  if (!args.error().empty()) return usage(args.error());
+  if (args.positionals().size() != 1) return usage("expected exactly one SCENE file");
+  const std::optional<SceneSpec> scene = load_with_overrides(args.positionals()[0], args);
+  if (!scene) return kExitUsage;
+
+  study::EffectsOptions o;
+  o.duration = scene->duration;
+  o.key = args.value("--param").value_or("");
+  if (const auto v = args.value("--values")) o.values = split(*v, v->find(';') != std::string::npos ? ';' : ',');
+  if (const auto v = args.value("--integrators")) {
+    for (const std::string& name : split(*v)) {
+      const auto k = integrator_from_string(name);
+      if (!k) return usage("--integrators: unknown integrator '" + name + "'");
+      o.integrators.push_back(*k);
+    }
+  }
+  if (o.key.empty() && o.integrators.empty()) return usage("nothing to sweep: give --param KEY --values A,B,... or --integrators A,B");
+  const std::pair<const char*, double*> reals[] = {
+      {"--rest-speed", &o.rest_speed}, {"--rest-hold", &o.rest_hold}, {"--sample-dt", &o.series_dt}};
+  for (const auto& [flag, target] : reals)
+    if (const auto v = args.value(flag)) {
+      const auto p = positive(*v);
+      if (!p) return usage(std::string(flag) + ": expected a number > 0, got '" + *v + "'");
+      *target = *p;
+    }
+  if (const auto v = args.value("--repeats")) {
+    const auto p = parse_positive_integer(*v);
+    if (!p || *p > 100) return usage("--repeats: expected a whole number 1..100, got '" + *v + "'");
+    o.repeats = static_cast<int>(*p);
+  }
+  const std::string prefix = args.value("--out").value_or("effects-" + scene->name);
+  const std::string title =
+      args.value("--title").value_or(scene->name + (o.key.empty() ? std::string(": integrators") : ": " + o.key));
+
+  study::EffectsResult result;
+  try {
+    study::effects_scenes(*scene, o);  // every value is checked before anything runs
+    result = study::run_effects(*scene, o, args.has("--quiet") ? nullptr : stdout);
+  } catch (const std::invalid_argument& e) {
+    return usage(e.what());
+  }
+  std::string note;
+  std::vector<std::filesystem::path> files;
+  try {
+    files = study::write_effects(result, prefix, title, note);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "jelly study effects: %s\n", e.what());
+    return kExitInternal;
+  }
+  if (!note.empty()) std::fprintf(stderr, "jelly study effects: %s\n", note.c_str());
+  if (!args.has("--quiet"))
+    for (const auto& f : files) std::printf("wrote %s\n", f.string().c_str());
+  return kExitOk;
+}
+
 }  // namespace
 
 int study_command(int argc, char** argv) {
@@ -168,7 +284,8 @@ int study_command(int argc, char** argv) {
   }
   const std::string what = argv[2];
   if (what == "accuracy") return accuracy(argc, argv);
-  std::fprintf(stderr, "jelly study: unknown study '%s' (known: accuracy)\n%s", what.c_str(), kStudyHelp);
+  if (what == "effects") return effects(argc, argv);
+  std::fprintf(stderr, "jelly study: unknown study '%s' (known: accuracy, effects)\n%s", what.c_str(), kStudyHelp);
   return kExitUsage;
 }
 

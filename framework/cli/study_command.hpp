@@ -1,9 +1,9 @@
-// `jelly study`: numerical studies of the integrators on a scene (accuracy against cost).
+// `jelly study`: numerical studies on a scene: accuracy against cost, and the effects of a parameter.
 #pragma once
 
 namespace jelly::cli {
 
-/// jelly study accuracy SCENE ... (argv[1] is "study"). Returns an ExitCode (cli_args.hpp).
+/// jelly study accuracy|effects SCENE ... (argv[1] is "study"). Returns an ExitCode (cli_args.hpp).
 int study_command(int argc, char** argv);
 
 }  // namespace jelly::cli

@@ -3,42 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "study_accuracy.hpp"
+#include "study_files.hpp"
 
 namespace jelly::cli::study {
 
 namespace {
-
-/// Shortest text that reads back to the same double; "nan"/"inf" as such.
-std::string num(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[40];
-  for (int p = 6; p <= 17; ++p) {
-    std::snprintf(buf, sizeof buf, "%.*g", p, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
-}
-
-std::string fmt(const char* f, double v) {
-  if (std::isnan(v)) return "–";
-  if (std::isinf(v)) return "∞";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
-}
 
 /// Largest finite error of stable runs, for the plot's cap (10× above, rounded up to a decade).
 double plot_cap(const SweepResult& r) {
@@ -216,33 +189,7 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   write_file(with(".gp"), gp.str());
   written.push_back(with(".gp"));
 
-  // Run gnuplot in the output folder so the script's relative names work.
-  const fs::path dir = base.has_parent_path() ? base.parent_path() : fs::path(".");
-  fs::remove(with(".svg"));
-  fs::remove(with(".png"));
-#ifdef _WIN32
-  // cmd.exe: double quotes, and /d to change drive too.
-  const std::string cmd = "cd /d \"" + dir.string() + "\" && gnuplot \"" + with(".gp").filename().string() + "\" 2>&1";
-  std::FILE* pipe = _popen(cmd.c_str(), "r");
-#else
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + with(".gp").filename().string() + "' 2>&1";
-  std::FILE* pipe = popen(cmd.c_str(), "r");
-#endif
-  std::string out;
-  if (pipe) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  }
-#ifdef _WIN32
-  const int status = pipe ? _pclose(pipe) : -1;
-#else
-  const int status = pipe ? pclose(pipe) : -1;
-#endif
-  if (status != 0) {
-    note = "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
-           "script " + with(".gp").string() + " is kept.\n" + out;
-  } else {
-    if (!out.empty()) note = out;  // warnings
+  if (run_gnuplot(with(".gp"), with(".svg"), with(".png"), note)) {
     if (fs::exists(with(".svg"))) written.push_back(with(".svg"));
     if (fs::exists(with(".png"))) written.push_back(with(".png"));
   }

@@ -1,0 +1,342 @@
+// The sweep of `jelly study effects`: applies each value of one declared parameter (or each
+// integrator), runs the scene, and measures the impact, bounce, cave-in, rest and energy of the run
+// and its cost. Definitions: docs/parameters.md ("What is measured").
+#include "study_effects.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "jelly/params.hpp"
+#include "jelly/simulator.hpp"
+#include "jelly/task_table.hpp"
+#include "study_files.hpp"
+
+namespace jelly::cli::study {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<std::string> dotted(const std::string& key) {
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  return parts;
+}
+
+/// Whether `key` matches `pattern`, where a '*' part matches any one part.
+bool matches(const std::string& pattern, const std::string& key) {
+  const auto p = dotted(pattern), k = dotted(key);
+  if (p.size() != k.size()) return false;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p[i] != "*" && p[i] != k[i]) return false;
+  return true;
+}
+
+/// The declared keys `pattern` stands for (itself when declared and without '*').
+std::vector<std::string> expand(const SceneSpec& scene, const std::string& pattern,
+                                std::optional<ParamType> type = std::nullopt) {
+  std::vector<std::string> keys;
+  for (const ParamInfo& p : scene_parameters(scene))
+    if (matches(pattern, p.key) && (!type || p.type == *type)) keys.push_back(p.key);
+  return keys;
+}
+
+std::string loadavg() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  if (!(in >> a >> b >> c)) return "unknown";
+  return a + " " + b + " " + c;
+}
+
+/// Sets `key` (one declared key, or a vector key + ".x"/".y"/".z") to `value`; the error text or "".
+std::string set_one(SceneSpec& scene, const std::string& key, const std::string& value, int component) {
+  if (component < 0) {
+    if (const auto e = set_parameter(scene, key, value)) return e->text();
+    return "";
+  }
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !std::isfinite(v))
+    return "--set: " + key + "." + "xyz"[component] + ": expected a number, got '" + value + "'";
+  std::vector<double> xyz;
+  std::stringstream ss(*get_parameter(scene, key));
+  for (std::string c; std::getline(ss, c, ',');) xyz.push_back(std::strtod(c.c_str(), nullptr));
+  if (xyz.size() != 3) return "--set: " + key + ": not a vector";
+  xyz[static_cast<std::size_t>(component)] = v;
+  const std::string text = num(xyz[0]) + "," + num(xyz[1]) + "," + num(xyz[2]);
+  if (const auto e = set_parameter(scene, key, text)) return e->text();
+  return "";
+}
+
+/// Volume inside the outer surface of cube `c` (its six faces, each grid quad cut into four
+/// triangles at its mean point), by the divergence theorem: Σ m·(a×b)/6. Exact for a cube at rest
+/// in any orientation; any closed shape it bends into gets its enclosed (signed) volume.
+double cube_volume(const CubeLattice& c, const Vec3Array& x) {
+  const int n = c.n();
+  const Vec3 o = x.col(c.first_index());  // origin near the body: less rounding
+  double six_v = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, d = (a + 2) % 3;
+    for (int side : {0, n - 1}) {
+      const bool outward = side == n - 1;  // e_b × e_d = e_a points out of the max side
+      for (int p = 0; p + 1 < n; ++p)
+        for (int q = 0; q + 1 < n; ++q) {
+          const int pq[4][2] = {{p, q}, {p + 1, q}, {p + 1, q + 1}, {p, q + 1}};
+          Vec3 corner[4];
+          for (int m = 0; m < 4; ++m) {
+            int g[3];
+            g[a] = side;
+            g[b] = pq[m][0];
+            g[d] = pq[m][1];
+            corner[m] = x.col(c.index(g[0], g[1], g[2])) - o;
+          }
+          const Vec3 mid = 0.25 * (corner[0] + corner[1] + corner[2] + corner[3]);
+          for (int m = 0; m < 4; ++m) {
+            const Vec3& u = corner[m];
+            const Vec3& w = corner[(m + 1) % 4];
+            const double t = mid.dot(u.cross(w));
+            six_v += outward ? t : -t;
+          }
+        }
+    }
+  }
+  return six_v / 6.0;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+/// One run: steps the scene to the duration and measures as it goes (the measuring is not timed).
+EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOptions& o,
+                   EffectsSeries& series) {
+  EffectsRow row;
+  row.integrator = kind;
+  row.h = scene.dt;
+  Simulator::Options options(kind, scene.dt);
+  options.detect_instability = false;  // watched below, so that the run is not stopped
+  Simulator sim(build_world(scene, linked_tasks()), options);
+  const World& world = sim.world();
+  StabilityMonitor monitor(options.monitor);
+  row.energy_start = sim.energy().total();
+  monitor.start(row.energy_start);
+  row.particles = static_cast<long>(world.particle_count());
+  row.springs = static_cast<long>(world.spring_count());
+  const Vec3 up = world.gravity() && world.gravity()->norm() > 0.0 ? Vec3(-world.gravity()->normalized())
+                                                                    : Vec3(0.0, 1.0, 0.0);
+  const Eigen::VectorXd& mass = world.masses();
+  const double total_mass = mass.sum();
+  const CubeLattice* cube = world.cubes().empty() ? nullptr : &world.cubes().front();
+  row.rest_volume = cube ? cube_volume(*cube, sim.state().x) : kNaN;
+  const auto touches = [&] {
+    const auto& c = world.counters();
+    return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
+           std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0});
+  };
+  struct Look { Vec3 com_v; double height, max_speed; };
+  const auto look = [&](const State& s) {
+    Look l{Vec3::Zero(), 0.0, 0.0};
+    Vec3 com = Vec3::Zero();
+    for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
+      com += mass[i] * s.x.col(i);
+      l.com_v += mass[i] * s.v.col(i);
+      l.max_speed = std::max(l.max_speed, s.v.col(i).norm());
+    }
+    l.height = up.dot(com) / total_mass;
+    l.com_v /= total_mass;
+    return l;
+  };
+
+  const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
+  row.contact_time = row.impact_speed = row.turn_time = kNaN;
+  row.peak_speed = row.com_apex = row.bounce = kNaN;
+  double turn_height = kNaN, rest_since = 0.0, next_sample = 0.0;
+  double volume = row.rest_volume;
+  const auto sample = [&](const Look& l) {
+    series.t.push_back(sim.time());
+    series.com_height.push_back(l.height);
+    series.com_speed.push_back(l.com_v.norm());
+    series.volume_ratio.push_back(cube ? volume / row.rest_volume : kNaN);
+    series.max_speed.push_back(l.max_speed);
+    series.energy.push_back(sim.energy().total());
+    next_sample += o.series_dt;
+  };
+  Look before = look(sim.state());
+  sample(before);
+  row.cave_in = 0.0;
+  bool contact = false, turned = false;
+  double wall = 0.0;
+  for (long step = 1; step <= total; ++step) {
+    const double t_before = sim.time();
+    const auto t0 = std::chrono::steady_clock::now();
+    sim.step();
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const State& s = sim.state();
+    if (!s.x.allFinite() || !s.v.allFinite()) {
+      row.finite = false;
+      if (row.stable) {
+        row.stable = false;
+        row.reason = "a position or velocity is not finite";
+        row.detected_at = sim.time();
+      }
+      break;
+    }
+    const Look now = look(s);
+    if (!contact && touches() > 0) {
+      contact = true;
+      row.contact_time = t_before;
+      row.impact_speed = before.com_v.norm();
+    }
+    if (contact && !turned && up.dot(now.com_v) >= 0.0) {
+      turned = true;
+      row.turn_time = sim.time();
+      turn_height = now.height;
+      row.peak_speed = 0.0;
+      row.com_apex = now.height;
+    }
+    if (turned) {
+      row.peak_speed = std::max(row.peak_speed, now.com_v.norm());
+      row.com_apex = std::max(row.com_apex, now.height);
+    }
+    if (cube) {
+      volume = cube_volume(*cube, s.x);
+      row.cave_in = std::max(row.cave_in, 1.0 - volume / row.rest_volume);
+    }
+    if (now.max_speed >= o.rest_speed) rest_since = kNaN;
+    else if (std::isnan(rest_since)) rest_since = sim.time();
+    if (row.stable && monitor.wants_sample(step))
+      if (auto reason = monitor.check(sim.energy().total(), true)) {
+        row.stable = false;
+        row.reason = *reason;
+        row.detected_at = sim.time();
+      }
+    if (sim.time() >= next_sample - 1e-9 * scene.dt || step == total) sample(now);
+    before = now;
+  }
+  if (turned) row.bounce = row.com_apex - turn_height;
+  row.sim_time = sim.time();
+  row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9 ? rest_since : kNaN;
+  row.cave_in = cube ? row.cave_in : kNaN;
+  row.cave_in_final = cube ? 1.0 - volume / row.rest_volume : kNaN;
+  row.energy_end = sim.energy().total();
+  row.wall = wall;
+  row.evaluations = sim.evaluations();
+  if (const BackwardEulerSolver* be = sim.backward_euler()) row.cg_iterations = be->total_iterations();
+  return row;
+}
+
+/// The wall time of the same steps again, without measuring (for the median over repeats).
+double time_again(const SceneSpec& scene, IntegratorKind kind, long steps) {
+  Simulator::Options options(kind, scene.dt);
+  options.detect_instability = false;
+  Simulator sim(build_world(scene, linked_tasks()), options);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long i = 0; i < steps; ++i) sim.step();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptions& o,
+                                      std::vector<std::string>* keys_out) {
+  if (o.key.empty()) {
+    if (!o.values.empty()) throw std::invalid_argument("--values needs --param KEY");
+    return {scene};
+  }
+  if (o.values.empty()) throw std::invalid_argument("--param " + o.key + " needs --values A,B,...");
+  std::vector<std::string> keys = expand(scene, o.key);
+  int component = -1;
+  if (keys.empty()) {
+    const auto parts = dotted(o.key);
+    const std::string& last = parts.empty() ? o.key : parts.back();
+    if (parts.size() > 1 && (last == "x" || last == "y" || last == "z")) {
+      const std::string base = o.key.substr(0, o.key.size() - 2);
+      keys = expand(scene, base, ParamType::Vector3);
+      if (!keys.empty()) component = last[0] - 'x';
+    }
+  }
+  if (keys.empty()) {
+    // Let the declarations say what is wrong (with their "did you mean").
+    SceneSpec copy = scene;
+    std::string why = o.key.find('*') != std::string::npos
+                          ? "--param " + o.key + ": matches no parameter of this scene (see jelly params SCENE)"
+                          : set_one(copy, o.key, o.values.front(), -1);
+    if (why.empty()) why = "--param " + o.key + ": not a parameter of this scene";
+    throw std::invalid_argument(why);
+  }
+  std::vector<SceneSpec> scenes;
+  for (const std::string& value : o.values) {
+    SceneSpec s = scene;
+    for (const std::string& key : keys)
+      if (std::string why = set_one(s, key, value, component); !why.empty()) {
+        const auto info = find_parameter(scene, key);
+        if (info && info->type == ParamType::Vector3 && component < 0)
+          why += " (separate vector values with ';', e.g. --values '0,9,0;0,30,0', or sweep one "
+                 "component: --param " + key + ".y)";
+        throw std::invalid_argument(why);
+      }
+    scenes.push_back(std::move(s));
+  }
+  if (keys_out) {
+    keys_out->clear();
+    for (const std::string& k : keys) keys_out->push_back(component < 0 ? k : k + "." + "xyz"[component]);
+  }
+  return scenes;
+}
+
+EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::FILE* progress) {
+  if (!(o.duration > 0.0) || !(o.rest_speed > 0.0) || !(o.rest_hold >= 0.0) || !(o.series_dt > 0.0) ||
+      o.repeats < 1)
+    throw std::invalid_argument("duration, rest speed, sample interval and repeats must be > 0");
+  EffectsResult r;
+  r.options = o;
+  r.scene_name = scene.name;
+  r.scene_file = scene.source;
+  const std::vector<SceneSpec> scenes = effects_scenes(scene, o, &r.keys);
+  r.load_before = loadavg();
+  const std::size_t runs = scenes.size() * std::max<std::size_t>(1, o.integrators.size());
+  std::size_t done = 0;
+  const std::size_t integrator_count = std::max<std::size_t>(1, o.integrators.size());
+  for (std::size_t k = 0; k < integrator_count; ++k) {
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      const IntegratorKind kind = o.integrators.empty() ? scenes[i].integrator : o.integrators[k];
+      EffectsSeries series;
+      EffectsRow row = measure(scenes[i], kind, o, series);
+      row.value = o.key.empty() ? "" : o.values[i];
+      if (o.repeats > 1) {
+        std::vector<double> walls{row.wall};
+        const long steps = std::lround(row.sim_time / row.h);
+        for (int rep = 1; rep < o.repeats; ++rep) walls.push_back(time_again(scenes[i], kind, steps));
+        row.wall = median(walls);
+      }
+      ++done;
+      if (progress) {
+        std::fprintf(progress, "[%zu/%zu] %s%s%s %s h=%g: %s cave-in %s %%, bounce %s m, rest %s, wall %.3g s\n",
+                     done, runs, o.key.c_str(), o.key.empty() ? "" : "=", row.value.c_str(),
+                     std::string(to_string(kind)).c_str(), row.h,
+                     row.stable ? "stable," : "UNSTABLE,", fmt("%.3g", 100.0 * row.cave_in).c_str(),
+                     fmt("%.3g", row.bounce).c_str(),
+                     std::isnan(row.rest_time) ? "never" : (fmt("%.3g", row.rest_time) + " s").c_str(),
+                     row.wall);
+        std::fflush(progress);
+      }
+      r.rows.push_back(std::move(row));
+      r.series.push_back(std::move(series));
+    }
+  }
+  r.load_after = loadavg();
+  return r;
+}
+
+}  // namespace jelly::cli::study

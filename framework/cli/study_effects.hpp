@@ -1,0 +1,93 @@
+// The parameter study behind `jelly study effects`: one declared parameter (or the integrator)
+// swept over given values, and per run what a student sees when the jelly lands — the impact,
+// the bounce, the cave-in, when it comes to rest, the energy lost — and what the run cost.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "jelly/integrator.hpp"
+#include "jelly/scene.hpp"
+
+namespace jelly::cli::study {
+
+/// What to sweep and how to measure it (plain data: the command line only fills it in).
+struct EffectsOptions {
+  /// The swept key as `jelly params` lists it; '*' stands for one dotted part
+  /// ("springs.*.ks" sets every spring type the scene has), and ".x"/".y"/".z" after a vector key
+  /// sets one component ("body.center.y" is the drop height). Empty: only integrators are swept.
+  std::string key;
+  std::vector<std::string> values;          ///< the key's values, as text (set_parameter's forms)
+  std::vector<IntegratorKind> integrators;  ///< one run per integrator and value (integrator-major)
+  double duration = 10.0;                   ///< simulated time per run [s]
+  double rest_speed = 0.05;                 ///< "at rest": every particle slower than this [m/s]
+  double rest_hold = 0.5;                   ///< ... for at least this long, up to the end [s]
+  double series_dt = 1.0 / 60.0;            ///< interval of the time series samples [s]
+  int repeats = 1;                          ///< timing: median wall time over this many runs
+};
+
+/// What one run measured (definitions: docs/parameters.md, "What is measured").
+struct EffectsRow {
+  IntegratorKind integrator = IntegratorKind::ExplicitEuler;
+  std::string value;           ///< the swept value as given ("" when only integrators are swept)
+  double h = 0.0;              ///< step [s]
+  long particles = 0;
+  long springs = 0;
+  double contact_time = -1.0;  ///< first step with a collision response or contact force [s]; NaN: none
+  double impact_speed = 0.0;   ///< centre-of-mass speed just before it [m/s]
+  double turn_time = 0.0;      ///< first time after contact the centre of mass stops descending [s]
+  double peak_speed = 0.0;     ///< largest centre-of-mass speed from turn_time on [m/s]
+  double com_apex = 0.0;       ///< highest centre of mass (along −g) from turn_time on [m]
+  double bounce = 0.0;         ///< com_apex − centre-of-mass height at turn_time [m]
+  double rest_volume = 0.0;    ///< volume inside the cube's outer surface at t = 0 [m³]
+  double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction; cube bodies)
+  double cave_in_final = 0.0;  ///< 1 − V(T)/V(0)
+  double rest_time = 0.0;      ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
+  double energy_start = 0.0;   ///< kinetic + gravitational + spring at t = 0 [J]
+  double energy_end = 0.0;     ///< the same at the end [J]
+  bool stable = true;          ///< the §8 detector never fired (watched, not obeyed)
+  bool finite = true;          ///< the state stayed finite (the run stops when it does not)
+  double detected_at = -1.0;   ///< when the detector fired [s]; −1 when it did not
+  std::string reason;          ///< the detector's reason
+  double sim_time = 0.0;       ///< simulated time covered [s]
+  double wall = 0.0;           ///< wall time of the steps only, median over repeats [s]
+  long evaluations = 0;        ///< acceleration (force) evaluations
+  long cg_iterations = 0;      ///< backward Euler's CG iterations
+  double dissipated() const { return energy_start - energy_end; }
+  double wall_per_sim() const { return sim_time > 0.0 ? wall / sim_time : 0.0; }
+};
+
+/// Samples of one run over time, every series_dt (for the time plots).
+struct EffectsSeries {
+  std::vector<double> t, com_height, com_speed, volume_ratio, max_speed, energy;
+};
+
+struct EffectsResult {
+  std::string scene_name;
+  std::string scene_file;
+  std::vector<std::string> keys;  ///< the declared keys the swept key stands for
+  EffectsOptions options;
+  std::vector<EffectsRow> rows;   ///< integrator-major, values in the order given
+  std::vector<EffectsSeries> series;  ///< one per row
+  std::string load_before, load_after;  ///< /proc/loadavg at start and end
+};
+
+/// Checks every value against the declarations (unknown key with a suggestion, bad value, a
+/// vector value split by ',') and returns the scene of each; throws std::invalid_argument with
+/// the message. Nothing is simulated.
+std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptions& options,
+                                      std::vector<std::string>* keys = nullptr);
+
+/// Runs the sweep; one progress line per run goes to `progress` unless null.
+/// Throws std::invalid_argument for bad options or values.
+EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& options, std::FILE* progress);
+
+/// Writes PREFIX.csv, PREFIX.md, PREFIX.dat/.gp/.svg/.png (each measure against the swept value)
+/// and PREFIX-time.dat/.gp/.svg/.png (centre-of-mass height, volume and speed over time).
+/// Returns the files written; gnuplot problems go to `note`.
+std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const std::string& prefix,
+                                                 const std::string& title, std::string& note);
+
+}  // namespace jelly::cli::study

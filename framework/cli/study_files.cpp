@@ -1,0 +1,70 @@
+// Number formatting, file writing and the gnuplot call shared by the `jelly study` outputs.
+#include "study_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+namespace jelly::cli::study {
+
+std::string num(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[40];
+  for (int p = 6; p <= 17; ++p) {
+    std::snprintf(buf, sizeof buf, "%.*g", p, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+std::string fmt(const char* format, double v) {
+  if (std::isnan(v)) return "–";
+  if (std::isinf(v)) return "∞";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + p.string());
+}
+
+bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& svg,
+                 const std::filesystem::path& png, std::string& note) {
+  namespace fs = std::filesystem;
+  const fs::path dir = script.has_parent_path() ? script.parent_path() : fs::path(".");
+  fs::remove(svg);
+  fs::remove(png);
+#ifdef _WIN32
+  // cmd.exe: double quotes, and /d to change drive too.
+  const std::string cmd = "cd /d \"" + dir.string() + "\" && gnuplot \"" + script.filename().string() + "\" 2>&1";
+  std::FILE* pipe = _popen(cmd.c_str(), "r");
+#else
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + script.filename().string() + "' 2>&1";
+  std::FILE* pipe = popen(cmd.c_str(), "r");
+#endif
+  std::string out;
+  if (pipe) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+  }
+#ifdef _WIN32
+  const int status = pipe ? _pclose(pipe) : -1;
+#else
+  const int status = pipe ? pclose(pipe) : -1;
+#endif
+  if (status != 0) {
+    note += "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
+            "script " + script.string() + " is kept.\n" + out;
+    return false;
+  }
+  note += out;  // warnings
+  return true;
+}
+
+}  // namespace jelly::cli::study
