@@ -125,7 +125,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   row.integrator = kind;
   row.h = scene.dt;
   Simulator::Options options(kind, scene.dt);
-  options.detect_instability = false;  // watched below, so that the run is not stopped
+  options.detect_instability = false;  // watched below (the same detector, every 10 steps)
   Simulator sim(build_world(scene, linked_tasks()), options);
   const World& world = sim.world();
   StabilityMonitor monitor(options.monitor);
@@ -215,13 +215,17 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     }
     if (now.max_speed >= o.rest_speed) rest_since = kNaN;
     else if (std::isnan(rest_since)) rest_since = sim.time();
-    if (row.stable && monitor.wants_sample(step))
+    bool fired = false;
+    if (monitor.wants_sample(step))
       if (auto reason = monitor.check(sim.energy().total(), true)) {
         row.stable = false;
         row.reason = *reason;
         row.detected_at = sim.time();
+        fired = true;
       }
-    if (sim.time() >= next_sample - 1e-9 * scene.dt || step == total) sample(now);
+    const bool last = fired || step == total;
+    if (sim.time() >= next_sample - 1e-9 * scene.dt || last) sample(now);
+    if (last) break;  // the detector fired: what follows would measure a broken run
     before = now;
   }
   if (turned) row.bounce = row.com_apex - turn_height;

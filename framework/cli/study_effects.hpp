@@ -22,7 +22,7 @@ struct EffectsOptions {
   std::vector<std::string> values;          ///< the key's values, as text (set_parameter's forms)
   std::vector<IntegratorKind> integrators;  ///< one run per integrator and value (integrator-major)
   double duration = 10.0;                   ///< simulated time per run [s]
-  double rest_speed = 0.05;                 ///< "at rest": every particle slower than this [m/s]
+  double rest_speed = 0.3;                  ///< "at rest": every particle slower than this [m/s]
   double rest_hold = 0.5;                   ///< ... for at least this long, up to the end [s]
   double series_dt = 1.0 / 60.0;            ///< interval of the time series samples [s]
   int repeats = 1;                          ///< timing: median wall time over this many runs
@@ -47,8 +47,8 @@ struct EffectsRow {
   double rest_time = 0.0;      ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
   double energy_start = 0.0;   ///< kinetic + gravitational + spring at t = 0 [J]
   double energy_end = 0.0;     ///< the same at the end [J]
-  bool stable = true;          ///< the §8 detector never fired (watched, not obeyed)
-  bool finite = true;          ///< the state stayed finite (the run stops when it does not)
+  bool stable = true;          ///< the §8 detector never fired (the run stops when it does)
+  bool finite = true;          ///< the state stayed finite
   double detected_at = -1.0;   ///< when the detector fired [s]; −1 when it did not
   std::string reason;          ///< the detector's reason
   double sim_time = 0.0;       ///< simulated time covered [s]

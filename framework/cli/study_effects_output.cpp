@@ -263,6 +263,13 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     if (fs::exists(with("-time.svg"))) written.push_back(with("-time.svg"));
     if (fs::exists(with("-time.png"))) written.push_back(with("-time.png"));
   }
+  // A panel with one value (a single run) makes gnuplot widen its range and say so: not news.
+  std::istringstream lines(note);
+  std::string kept;
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("empty y range") == std::string::npos && line.find("empty x range") == std::string::npos)
+      kept += line + '\n';
+  note = kept;
   return written;
 }
 

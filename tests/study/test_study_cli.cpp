@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "run_jelly.hpp"
+#include "study_files.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -19,44 +20,11 @@ namespace fs = std::filesystem;
 namespace {
 
 using Result = jelly::testing::CliResult;
+using jelly::testing::artifacts;
+using jelly::testing::read;
+using jelly::testing::read_csv;
 Result jelly(const std::string& arguments) { return jelly::testing::run_jelly(arguments); }
 std::string scene(const std::string& name) { return jelly::testing::scene_path(name); }
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-/// CSV rows as maps from column name to text (no quoted commas in the columns read here).
-std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
-  std::ifstream in(p);
-  std::string line;
-  std::vector<std::string> header;
-  std::vector<std::map<std::string, std::string>> rows;
-  auto split = [](const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string c; std::getline(ss, c, ',');) out.push_back(c);
-    return out;
-  };
-  if (std::getline(in, line)) header = split(line);
-  while (std::getline(in, line)) {
-    const auto cells = split(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-fs::path artifacts(const std::string& name) {
-  const fs::path dir = fs::path(JELLY_BINARY_DIR) / "artifacts" / "study" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 TEST(StudyAccuracy, SpringSweepGivesTheMethodsOrdersAndKeepsUnstableRuns) {
   const fs::path dir = artifacts("spring");
