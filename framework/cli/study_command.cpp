@@ -257,7 +257,6 @@ int effects(int argc, char** argv) {
 
   study::EffectsResult result;
   try {
-    study::effects_scenes(*scene, o);  // every value is checked before anything runs
     result = study::run_effects(*scene, o, args.has("--quiet") ? nullptr : stdout);
   } catch (const std::invalid_argument& e) {
     return usage(e.what());

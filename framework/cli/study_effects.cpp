@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -300,6 +301,7 @@ std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptio
 }
 
 EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::FILE* progress) {
+  // Every value is checked (effects_scenes) before anything runs: bad input runs and writes nothing.
   if (!(o.duration > 0.0) || !(o.rest_speed > 0.0) || !(o.rest_hold >= 0.0) || !(o.series_dt > 0.0) ||
       o.repeats < 1)
     throw std::invalid_argument("duration, rest speed, sample interval and repeats must be > 0");
