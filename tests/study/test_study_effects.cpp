@@ -243,3 +243,46 @@ TEST(StudyEffects, TheStiffnessNumbersOfDocsParametersStillHold) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(LectureDemos, EveryParameterTheInstructorGuideSetsExists) {
+  // docs/instructor-guide.md, "Lecture demos for the parameter discussion": every `--slot-set
+  // K:key=value;...` of its jelly-lab commands must still be a valid parameter of its scene, or the
+  // demo fails in front of a class. Checked through `jelly params SCENE --set ...` (the viewer
+  // applies the same declarations).
+  const std::string guide = read(fs::path(JELLY_SOURCE_DIR) / "docs" / "instructor-guide.md");
+  const std::size_t start = guide.find("### Lecture demos for the parameter discussion");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t open = guide.find("```sh", start), close = guide.find("```\n", open + 5);
+  ASSERT_NE(close, std::string::npos);
+  std::string block = guide.substr(open + 5, close - open - 5);
+  // The block's shell variables, and its line continuations.
+  const std::map<std::string, std::string> vars = {
+      {"$S", "springs.structural"}, {"$H", "springs.shear"}, {"$B", "springs.bending"}};
+  for (const auto& [name, value] : vars)
+    for (std::size_t at; (at = block.find(name)) != std::string::npos;) block.replace(at, name.size(), value);
+  for (std::size_t at; (at = block.find("\\\n")) != std::string::npos;) block.replace(at, 2, " ");
+  std::istringstream lines(block);
+  int commands = 0, assignments = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("$L ", 0) != 0) continue;
+    ++commands;
+    std::istringstream words(line.substr(3));
+    std::string scene_file, word, sets;
+    words >> scene_file;
+    while (words >> word) {
+      if (word != "--slot-set") continue;
+      words >> word;
+      if (!word.empty() && word.front() == '"') word = word.substr(1, word.size() - 2);
+      std::stringstream parts(word.substr(word.find(':') + 1));
+      for (std::string kv; std::getline(parts, kv, ';');) sets += " --set " + kv, ++assignments;
+    }
+    const Result r = jelly("params " + (fs::path(JELLY_SOURCE_DIR) / scene_file).string() + sets);
+    EXPECT_EQ(r.code, 0) << line << "\n" << r.output;
+  }
+  EXPECT_GE(commands, 7) << "one command per claim";
+  EXPECT_GE(assignments, 15);
+}
+
+}  // namespace
