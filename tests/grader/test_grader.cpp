@@ -335,9 +335,9 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
 }
 
 // A1.T1 with one spring missing and one extra (issue 12): the failure names both by their grid
-// coordinates, and the terminal's "(N more; --verbose)" hint is true: with --verbose every failure
-// shows and the hint is gone (both on a compiled submission and on a prebuilt runner, the IDE's
-// selfcheck target, whose hint also names the selfcheck-verbose target).
+// coordinates, and the terminal's "(N more: --verbose, ...)" hint is true: with --verbose every
+// failure shows and the hint is gone (on a compiled submission and on a prebuilt runner, the IDE's
+// selfcheck target, whose report is the same line for line).
 TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) {
   const fs::path sub = submission("spring_names");
   const fs::path file = sub / "nested" / "src" / "springs.cpp";
@@ -363,7 +363,7 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
             std::string::npos) << plain.out;
   EXPECT_NE(after.find("expected 0, got 1 (difference 1, allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
             std::string::npos) << plain.out;
-  EXPECT_NE(after.find("(1 more; --verbose)"), std::string::npos) << plain.out;
+  EXPECT_NE(after.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << plain.out;
   EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n" << plain.out;
 
   fs::path runner;
@@ -372,9 +372,9 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
   ASSERT_FALSE(runner.empty()) << "no built runner kept under " << out / ".work";
   const std::string args = "grade " + sub.string() + " --visibility public --format terminal --runner " + runner.string();
   const Cmd prebuilt = run(args + " --out " + (out / "prebuilt").string());
-  EXPECT_NE(prebuilt.out.find("(1 more; --verbose, or the selfcheck-verbose target)"), std::string::npos) << prebuilt.out;
+  EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << prebuilt.out;
   const Cmd verbose = run(args + " --verbose --out " + (out / "verbose").string());
-  EXPECT_EQ(verbose.out.find(" more; --verbose"), std::string::npos) << verbose.out;
+  EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
 }
