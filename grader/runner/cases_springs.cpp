@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <string>
 
 #include "harness.hpp"
 #include "jelly/cube.hpp"
@@ -69,9 +70,40 @@ std::string pair_set_hash(std::vector<std::pair<int, int>> pairs) {
   return buf;
 }
 
+// Names the first few springs of a list by the grid coordinates of their particles,
+// "(0,0,0)–(1,0,0), (0,0,1)–(1,0,1) and 46 more", so that a failure says which springs.
+class SpringNames {
+ public:
+  explicit SpringNames(const CubeLattice& cube) : cube_(cube) {}
+  void add(int a, int b) {
+    if (shown_ < kShown) text_ += (shown_ > 0 ? ", " : "") + coordinates(a) + "–" + coordinates(b);
+    ++shown_;
+  }
+  std::string text() const {
+    if (shown_ <= kShown) return text_;
+    return text_ + " and " + std::to_string(shown_ - kShown) + " more";
+  }
+
+ private:
+  static constexpr int kShown = 3;
+  // "(i,j,k)" of a particle index, or "index N" when it is not one of the cube's particles.
+  std::string coordinates(int index) const {
+    const int n = cube_.n(), r = index - cube_.first_index();
+    if (r < 0 || r >= cube_.particle_count()) return "index " + std::to_string(index);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "(%d,%d,%d)", r / (n * n), (r / n) % n, r % n);
+    return buf;
+  }
+  const CubeLattice& cube_;
+  std::string text_;
+  int shown_ = 0;
+};
+
 void classify(const CubeLattice& cube, const std::string& what, const std::vector<Spring>& springs, Outputs& out) {
   const int n = cube.n(), first = cube.first_index(), count = cube.particle_count();
   std::map<Offset, int> per_offset;
+  std::map<Offset, SpringNames> yours_per_offset;
+  SpringNames invalid_names(cube), other_names(cube), duplicate_names(cube);
   int invalid = 0, other = 0, duplicates = 0;
   double rest_error = 0.0;
   std::set<std::pair<int, int>> seen;
@@ -79,31 +111,58 @@ void classify(const CubeLattice& cube, const std::string& what, const std::vecto
   for (const Spring& s : springs) {
     if (s.a < first || s.a >= first + count || s.b < first || s.b >= first + count || s.a == s.b) {
       ++invalid;
+      invalid_names.add(s.a, s.b);
       continue;
     }
     const std::pair<int, int> key{std::min(s.a, s.b), std::max(s.a, s.b)};
-    if (!seen.insert(key).second) ++duplicates;
+    if (!seen.insert(key).second) {
+      ++duplicates;
+      duplicate_names.add(s.a, s.b);
+    }
     pairs.push_back(key);
     const int ra = s.a - first, rb = s.b - first;
     Offset o{rb / (n * n) - ra / (n * n), (rb / n) % n - (ra / n) % n, rb % n - ra % n};
     const int lead = o[0] != 0 ? o[0] : o[1] != 0 ? o[1] : o[2];
     if (lead < 0)
       for (int& c : o) c = -c;
-    if (std::find(all_offsets().begin(), all_offsets().end(), o) == all_offsets().end()) ++other;
-    else ++per_offset[o];
+    if (std::find(all_offsets().begin(), all_offsets().end(), o) == all_offsets().end()) {
+      ++other;
+      other_names.add(s.a, s.b);
+    } else {
+      ++per_offset[o];
+      yours_per_offset.try_emplace(o, cube).first->second.add(s.a, s.b);
+    }
     const double actual = (cube.initial_positions().col(rb) - cube.initial_positions().col(ra)).norm();
     const double err = std::abs(s.rest_length - actual);
     rest_error = std::isfinite(err) ? std::max(rest_error, err) : err;
   }
   out.value("count", static_cast<double>(springs.size()),
             "number of springs appended for " + what);
-  for (const Offset& o : all_offsets())
-    out.value("offset" + offset_name(o), per_offset[o],
+  for (const Offset& o : all_offsets()) {
+    const std::string name = "offset" + offset_name(o);
+    out.value(name, per_offset[o],
               "springs joining particles whose grid coordinates differ by " + offset_name(o) +
                   " (either way round)");
+    // The lattice's pairs at this offset that the list lacks (shown when there are too few), and
+    // the list's springs at it (shown when there are too many).
+    SpringNames missing(cube);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k)
+          if (cube.contains(i + o[0], j + o[1], k + o[2])) {
+            const int a = cube.index(i, j, k), b = cube.index(i + o[0], j + o[1], k + o[2]);
+            if (!seen.count({std::min(a, b), std::max(a, b)})) missing.add(a, b);
+          }
+    const auto yours = yours_per_offset.find(o);
+    out.detail(name, missing.text().empty() ? "" : "missing: " + missing.text(),
+               yours == yours_per_offset.end() ? "" : "yours: " + yours->second.text());
+  }
   out.value("other_offsets", other, "springs joining particles that are not neighbours at any spring offset of the cube");
+  out.detail("other_offsets", "", other > 0 ? "yours: " + other_names.text() : "");
   out.value("duplicates", duplicates, "springs that join a pair of particles already joined");
+  out.detail("duplicates", "", duplicates > 0 ? "built again: " + duplicate_names.text() : "");
   out.value("invalid", invalid, "springs with an index outside the cube's particles, or joining a particle to itself");
+  out.detail("invalid", "", invalid > 0 ? "yours: " + invalid_names.text() : "");
   out.value("rest_length_error", rest_error,
             "largest |rest_length − distance between the two particles at construction| [m]");
   out.text("pair_set", pair_set_hash(pairs), "the exact set of particle pairs joined (as a hash)");

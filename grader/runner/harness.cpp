@@ -41,6 +41,12 @@ void Outputs::text(const std::string& name, const std::string& v, const std::str
   out_[name] = entry(Json(v), note);
 }
 
+void Outputs::detail(const std::string& name, const std::string& low, const std::string& high) {
+  Json& e = out_.at(name);
+  if (!low.empty()) e["detail_low"] = low;
+  if (!high.empty()) e["detail_high"] = high;
+}
+
 void Registry::add(GeneratorDef def) {
   if (find(def.name)) throw std::logic_error("duplicate case generator " + def.name);
   generators_.push_back(std::move(def));

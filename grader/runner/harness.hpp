@@ -34,6 +34,10 @@ class Outputs {
   void array(const std::string& name, const Vec3Array& a, const std::string& note = {});
   /// A string compared exactly (a hash of a spring list).
   void text(const std::string& name, const std::string& v, const std::string& note = {});
+  /// What the student's value of output `name` is made of, shown after its failure message: `low`
+  /// when the value is below the reference's (e.g. which springs are missing), `high` when above
+  /// (which ones are extra). Never stored as reference data, never compared.
+  void detail(const std::string& name, const std::string& low, const std::string& high);
   const Json& json() const { return out_; }
 
  private:

@@ -110,10 +110,15 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
       std::cerr << "jelly-grade: the reference failed on " << c.id << ": " << result.dump() << "\n";
       return 2;
     }
-    // Recorded frames (rule "frames") are for the report only: never stored as reference data.
+    // Recorded frames (rule "frames") are for the report only: never stored as reference data;
+    // nor are the details that explain a student's value (Outputs::detail).
     Json outputs = Json::object();
     for (const auto& [name, value] : result["outputs"].items())
-      if (c.rule_for(name).kind != Rule::Kind::Frames) outputs[name] = value;
+      if (c.rule_for(name).kind != Rule::Kind::Frames) {
+        outputs[name] = value;
+        outputs[name].erase("detail_low");
+        outputs[name].erase("detail_high");
+      }
     if (outputs.dump().find("null") != std::string::npos) {
       std::cerr << "jelly-grade: the reference produced NaN or infinity in " << c.id
                 << "; fix the case before generating reference data\n";
@@ -291,6 +296,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
             int jobs, const GradeOptions& options) {
   struct Mutant {
     std::string name, task, file, description;
+    bool public_catches = false;  // the handout says the self-check catches it: a public test must
     std::vector<std::tuple<std::string, std::string, int>> replacements;  // find, with, nth occurrence
     fs::path dir;
     GradeReport report;
@@ -304,8 +310,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
   fs::remove_all(root);
   // Entry 0: the reference; entry 1: the stubs; then the mutants.
-  list.push_back({"reference", "", "", "solutions/ unchanged", {}, config.solutions_dir(), {}, {}});
-  list.push_back({"stubs", "", "", "assignments/ unchanged", {}, config.assignments_dir(), {}, {}});
+  list.push_back({"reference", "", "", "solutions/ unchanged", false, {}, config.solutions_dir(), {}, {}});
+  list.push_back({"stubs", "", "", "assignments/ unchanged", false, {}, config.assignments_dir(), {}, {}});
   for (const fs::path& f : files) {
     toml::table t = toml::parse_file(f.string());
     Mutant m;
@@ -313,6 +319,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     m.task = t["task"].value_or(std::string());
     m.file = t["file"].value_or(std::string());
     m.description = t["description"].value_or(std::string());
+    m.public_catches = t["public_catches"].value_or(false);
     if (const toml::array* reps = t["replace"].as_array())
       for (const toml::node& n : *reps) {
         const toml::table& r = *n.as_table();
@@ -372,11 +379,12 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   const GradeReport& ref = list[0].report;
   bool all_ok = true;
   std::ostringstream table;
-  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Verdict |\n|---|---|---|---|---|---|---|\n";
+  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Public tests | Verdict |\n"
+           "|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Mutant& m = list[i];
     const GradeReport& r = m.report;
-    std::string verdict, own = "—", elsewhere, caught;
+    std::string verdict, own = "—", elsewhere, caught, by_public = "—";
     bool ok = m.error.empty();
     if (!ok) verdict = "grader error: " + m.error;
     if (ok && i == 0) {
@@ -405,15 +413,24 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
           elsewhere += t.spec->id + " −" + pts(d) + " ";
         }
       }
+      bool public_caught = false;
       for (const CaseResult& c : r.cases)
-        if (c.status == "failed" && c.spec->task == m.task) caught += c.spec->id + " ";
-      ok = lost && !leak;
-      verdict = ok ? "caught in its task only ✓" : !lost ? "NOT caught ✗" : "loses points elsewhere ✗";
+        if (c.status == "failed" && c.spec->task == m.task) {
+          caught += c.spec->id + " ";
+          public_caught = public_caught || !c.spec->hidden;
+        }
+      by_public = std::string(public_caught ? "caught" : "missed") + (m.public_catches ? " (required)" : "");
+      ok = lost && !leak && (public_caught || !m.public_catches);
+      verdict = !lost ? "NOT caught ✗"
+                : leak ? "loses points elsewhere ✗"
+                : !ok  ? "NOT caught by a public test ✗"
+                       : "caught in its task only ✓";
     }
     if (elsewhere.empty()) elsewhere = "none";
     all_ok = all_ok && ok;
     table << "| " << m.name << " | " << (m.task.empty() ? "all" : m.task) << " | " << m.description << " | " << own
-          << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | " << verdict << " |\n";
+          << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | " << by_public << " | " << verdict
+          << " |\n";
   }
   std::cout << table.str();
   if (!table_path.empty()) {
@@ -423,7 +440,9 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
          "checks). Each mutant is a realistic mistake applied to a copy of `solutions/` (specs in\n"
          "`grader/mutants/*.toml`) and graded with all tests, public and hidden. A mutant must lose points in\n"
          "its own task and keep every point elsewhere; the reference must score full marks and the stubs zero.\n"
-         "\"Caught by\" lists the failing tests of the mutant's own task.\n\n"
+         "\"Caught by\" lists the failing tests of the mutant's own task; \"Public tests\" says whether the public\n"
+         "tests alone (the student's self-check) catch it, and \"(required)\" marks the mistakes the handout says the\n"
+         "self-check catches (`public_catches = true` in the mutant's file): for those, \"missed\" fails the self-test.\n\n"
       << table.str();
   }
   std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n" : "jelly-grade: mutation self-test FAILED\n");

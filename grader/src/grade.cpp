@@ -114,6 +114,11 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
     msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " + fmt(tol.atol + tol.rtol * std::abs(b[k])) +
            " by tolerance '" + tol.name + "')";
   if (a.size() > 1) msg += "; " + std::to_string(bad) + " of " + std::to_string(a.size()) + " numbers differ";
+  // What the value is made of, when the case says (e.g. which springs are missing or extra).
+  if (a.size() == 1 && std::isfinite(a[0])) {
+    const char* side = a[0] < b[0] ? "detail_low" : "detail_high";
+    if (mine.contains(side) && mine.at(side).is_string()) msg += "; " + mine.at(side).get<std::string>();
+  }
   failures.push_back(msg);
   return false;
 }

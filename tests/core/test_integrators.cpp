@@ -72,29 +72,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, FreeFall, ::testing::ValuesIn(kAllInteg
 
 // ---- convergence on the two-particle spring ----
 
-SceneSpec two_particle_spring(IntegratorKind kind, double h) {
-  SceneSpec s;
-  s.integrator = kind;
-  s.dt = h;
-  s.body_kind = BodyKind::Particles;
-  const State init = TwoParticleSpring::initial_state(0.1);
-  s.particles.positions = init.x;
-  s.particles.velocities = init.v;
-  s.particles.mass = 1.0;
-  s.particles.springs.push_back({0, 1, 1.0});
-  s.structural = {true, TwoParticleSpring::kStiffness, 0.0};
-  return s;  // no gravity, no terrain
-}
-
-double error_at_one_second(IntegratorKind kind, double h) {
-  Simulator::Options o{kind, h};
-  o.detect_instability = false;  // explicit Euler and midpoint grow on an undamped spring
-  Simulator sim(build_world(two_particle_spring(kind, h), linked_tasks()), o);
-  sim.run_until(1.0);
-  const double x1 = TwoParticleSpring::exact_x1(1.0);
-  const State& s = sim.state();
-  return std::max((s.x.col(1) - Vec3(x1, 0, 0)).norm(), (s.x.col(0) - Vec3(-x1, 0, 0)).norm());
-}
+using testing::error_at_one_second;
 
 struct OrderCase {
   IntegratorKind kind;

@@ -1,11 +1,12 @@
 # Runs the hash programs and fails unless the SSE2, AVX2 and default builds print the same thing
-# and the FMA build prints something else (skip: exit 77).
+# and the FMA build prints something else (skipped, saying so, on a CPU without AVX2).
 execute_process(COMMAND ${A} OUTPUT_VARIABLE out_a RESULT_VARIABLE rc_a)
 execute_process(COMMAND ${B} OUTPUT_VARIABLE out_b RESULT_VARIABLE rc_b)
 message("SSE2 build:\n${out_a}AVX2 build:\n${out_b}")
+# (cmake_language(EXIT) needs CMake 3.29; the test's SKIP_REGULAR_EXPRESSION reads this line.)
 if(rc_b EQUAL 77)
-  message("this CPU has no AVX2: skipped")
-  cmake_language(EXIT 77)
+  message("SKIPPED: this CPU has no AVX2")
+  return()
 endif()
 if(NOT rc_a EQUAL 0 OR NOT rc_b EQUAL 0)
   message(FATAL_ERROR "a hash program failed (${rc_a}, ${rc_b})")

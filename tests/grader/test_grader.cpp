@@ -333,3 +333,48 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
   EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);
 }
+
+// A1.T1 with one spring missing and one extra (issue 12): the failure names both by their grid
+// coordinates, and the terminal's "(N more: --verbose, ...)" hint is true: with --verbose every
+// failure shows and the hint is gone (on a compiled submission and on a prebuilt runner, the IDE's
+// selfcheck target, whose report is the same line for line).
+TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) {
+  const fs::path sub = submission("spring_names");
+  const fs::path file = sub / "nested" / "src" / "springs.cpp";
+  std::string text = read_text(file);
+  const std::string call = "add_forward_springs(cube, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, out);";
+  const auto at = text.find(call);
+  ASSERT_NE(at, std::string::npos) << "solutions/springs.cpp changed: update this test";
+  text.insert(at + call.size(),
+              "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
+              "  out.push_back(Spring{cube.index(0, 0, 0), cube.index(1, 1, 0),\n"
+              "                       (cube.position(1, 1, 0) - cube.position(0, 0, 0)).norm()});\n");
+  std::ofstream(file, std::ios::binary) << text;
+  const fs::path out = kWork / "out" / "spring_names";
+  fs::remove_all(out);
+  setenv("JELLY_GRADE_KEEP_WORK", "1", 1);
+  const Cmd plain = run("grade " + sub.string() + " --visibility public --format terminal --out " + out.string());
+  unsetenv("JELLY_GRADE_KEEP_WORK");
+  ASSERT_EQ(plain.status, 0) << plain.out;
+  const std::string n3 = "[a1.t1.structural.n3]";
+  ASSERT_NE(plain.out.find(n3), std::string::npos) << plain.out;
+  const std::string after = plain.out.substr(plain.out.find(n3));
+  EXPECT_NE(after.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); missing: (0,0,0)–(1,0,0)\n"),
+            std::string::npos) << plain.out;
+  EXPECT_NE(after.find("expected 0, got 1 (difference 1, allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
+            std::string::npos) << plain.out;
+  EXPECT_NE(after.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << plain.out;
+  EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n" << plain.out;
+
+  fs::path runner;
+  for (const auto& e : fs::recursive_directory_iterator(out / ".work"))
+    if (e.path().filename() == "runner" && e.is_regular_file()) runner = e.path();
+  ASSERT_FALSE(runner.empty()) << "no built runner kept under " << out / ".work";
+  const std::string args = "grade " + sub.string() + " --visibility public --format terminal --runner " + runner.string();
+  const Cmd prebuilt = run(args + " --out " + (out / "prebuilt").string());
+  EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << prebuilt.out;
+  const Cmd verbose = run(args + " --verbose --out " + (out / "verbose").string());
+  EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
+  EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
+  EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
+}
