@@ -6,7 +6,7 @@
 #include "commands.hpp"
 
 #ifdef JELLY_HAVE_RENDER
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 #endif
 #ifdef JELLY_HAVE_STUDY
 #include "study_command.hpp"

@@ -15,7 +15,7 @@
 
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 #include "jelly/render/replay.hpp"
 #include "jelly/render/scene_catalog.hpp"
 #include "jelly/render/session.hpp"

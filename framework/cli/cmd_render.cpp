@@ -1,4 +1,4 @@
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 
 #include <algorithm>
 #include <chrono>
