@@ -15,7 +15,9 @@ set(_good
   "framework/cli/a.cpp|#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
   "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
   "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"process.hpp\""
-  "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\"")
+  "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\""
+  "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_render)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()"
+  "framework/app/CMakeLists.txt|add_executable(jelly-lab main.cpp)\ntarget_link_libraries(jelly-lab PRIVATE jelly::render_command jelly::render)")
 # Planted violations: file|text|expected "FILE:LINE:" of the message.
 set(_bad
   "framework/core/src/bad.cpp|// one\n\n#include \"jelly/session/scene_catalog.hpp\"|framework/core/src/bad.cpp:3:"
@@ -27,7 +29,9 @@ set(_bad
   "framework/cli/bad.cpp|#  include <jelly/app/app.hpp>|framework/cli/bad.cpp:1:"
   "framework/app/bad.cpp|#include \"jelly/cli/cli_args.hpp\"|framework/app/bad.cpp:1:"
   "grader/src/bad.cpp|#include \"jelly/render/frame.hpp\"|grader/src/bad.cpp:1:"
-  "framework/render/src/nolayer.cpp|#include \"jelly/newthing/x.hpp\"|framework/render/src/nolayer.cpp:1:")
+  "framework/render/src/nolayer.cpp|#include \"jelly/newthing/x.hpp\"|framework/render/src/nolayer.cpp:1:"
+  "framework/render/CMakeLists.txt|add_library(jelly_render a.cpp)\n# The CLI forwards `jelly render` here:\nif(TARGET jelly)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()|framework/render/CMakeLists.txt:3:"
+  "framework/session/CMakeLists.txt|add_library(jelly_session a.cpp)\ntarget_link_libraries(jelly_session PUBLIC jelly::core\n  jelly::render)|framework/session/CMakeLists.txt:3:")
 
 function(_plant entries)
   foreach(entry IN LISTS entries)
