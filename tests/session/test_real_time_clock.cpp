@@ -1,5 +1,5 @@
 // The viewer's clock with real runs: simulated time follows wall time × factor whatever the frame
-// rate, and when stepping is too slow the clock says so. The runs' history for plots.
+// rate, and when stepping is too slow the clock says so.
 #include <gtest/gtest.h>
 
 #include "jelly/session/real_time_clock.hpp"
@@ -56,16 +56,6 @@ TEST(RealTimeClock, ReportsWhenItCannotKeepUp) {
   EXPECT_TRUE(clock.behind());
   EXPECT_NEAR(clock.achieved_factor(), run.setup().dt * 60.0, 1e-9);  // one step per frame
   EXPECT_EQ(run.simulator()->steps(), 120);
-}
-
-TEST(RunHistory, SamplesEnergyHeightAndCost) {
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
-  run.advance_to(0.2);
-  ASSERT_GE(run.history().size(), 2u);
-  EXPECT_DOUBLE_EQ(run.history().front().time, 0.0);
-  EXPECT_NEAR(run.history().back().time, 0.2, 1e-9);
-  EXPECT_NEAR(run.history().front().com_height, run.setup().scene.cube.center.y(), 1e-9);
-  EXPECT_GT(run.ms_per_step(), 0.0);
 }
 
 }  // namespace
