@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "jelly/auto_step.hpp"
 #include "jelly/recorder.hpp"
+#include "jelly/session/scene_catalog.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
 
@@ -17,7 +18,8 @@ namespace {
 
 constexpr const char* kRunHelp = R"(usage: jelly run SCENE [options]
 
-Runs SCENE (a .toml scene file) without a window and writes what happened as CSV.
+Runs SCENE (a .toml scene file, or a scene's name under scenes/ such as course-2023) without a
+window and writes what happened as CSV.
 
 options:
   --integrator NAME   explicit_euler | implicit_euler | midpoint | rk4 (the course's four, your
@@ -163,8 +165,8 @@ int run_command(int argc, char** argv) {
   return kExitOk;
 }
 
-std::optional<SceneSpec> load_with_overrides(const std::string& path, const Args& args) {
-  SceneResult loaded = load_scene(path);
+std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const Args& args) {
+  SceneResult loaded = session::resolve_scene(scene_name, session::default_scenes_dir());
   if (!loaded) {
     std::fprintf(stderr, "error: %s\n", loaded.error->text().c_str());
     return std::nullopt;

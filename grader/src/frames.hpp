@@ -34,7 +34,7 @@ struct CourseFrames {
 CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report,
                                   const std::filesystem::path& out_dir, const std::filesystem::path& work);
 
-/// Replay CSV (frame,time,particle,x,y,z; framework/render/include/jelly/render/replay.hpp) of
+/// Replay CSV (frame,time,particle,x,y,z; framework/session/include/jelly/session/replay.hpp) of
 /// recorded outputs frame_times / frame_positions. Frames with a non-finite number are left out
 /// and their times appended to `dropped`. Returns the times of the frames written, in order
 /// (frame k of the file is the k-th of them).

@@ -17,6 +17,12 @@ namespace {
 using Result = jelly::testing::CliResult;
 Result jelly(const std::string& arguments) { return jelly::testing::run_jelly(arguments); }
 std::string scene(const std::string& name) { return jelly::testing::scene_path(name); }
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
 
 class Cli : public ::testing::Test {
  protected:
@@ -28,10 +34,7 @@ class Cli : public ::testing::Test {
   }
   // Writes a scene file with one line replaced (or appended) and returns its path.
   std::string variant(const std::string& from, const std::string& old_line, const std::string& new_line) {
-    std::ifstream in(scene(from));
-    std::stringstream ss;
-    ss << in.rdbuf();
-    std::string text = ss.str();
+    std::string text = file_text(scene(from));
     const auto at = text.find(old_line);
     EXPECT_NE(at, std::string::npos) << old_line;
     text.replace(at, old_line.size(), new_line);
@@ -74,12 +77,9 @@ TEST_F(Cli, ThreadsGiveTheSameTrajectory) {
   const Result two = jelly(base + (dir_ / "two.csv").string() + " --threads 2");
   ASSERT_EQ(one.code, 0) << one.output;
   ASSERT_EQ(two.code, 0) << two.output;
-  std::ifstream a(dir_ / "one.csv"), b(dir_ / "two.csv");
-  std::stringstream sa, sb;
-  sa << a.rdbuf();
-  sb << b.rdbuf();
-  EXPECT_GT(sa.str().size(), 1000u);
-  EXPECT_EQ(sa.str(), sb.str());
+  const std::string a = file_text(dir_ / "one.csv");
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, file_text(dir_ / "two.csv"));
   const Result bad = jelly(base + out() + " --threads 0");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.output.find("--threads"), std::string::npos) << bad.output;
@@ -191,6 +191,31 @@ TEST_F(Cli, ParamsListsDeclaredKeys) {
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* k : {"body.center", "springs.shear.ks", "terrain.floor.restitution", "simulation.dt"})
     EXPECT_NE(r.output.find(k), std::string::npos) << k;
+}
+
+// Every command takes a scene by name (under scenes/, with or without .toml) as well as by path
+// (session::resolve_scene): the same run either way.
+TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
+  const std::string base = " --duration 0.02 --every 10 --quiet --out ";
+  const Result by_path = jelly("run " + scene("hard/n2.toml") + base + (dir_ / "path.csv").string());
+  const Result by_name = jelly("run hard/n2" + base + (dir_ / "name.csv").string());
+  ASSERT_EQ(by_path.code, 0) << by_path.output;
+  ASSERT_EQ(by_name.code, 0) << by_name.output;
+  const std::string a = file_text(dir_ / "path.csv");
+  EXPECT_GT(a.size(), 100u);
+  EXPECT_EQ(a, file_text(dir_ / "name.csv"));
+  const Result params = jelly("params course-2023.toml");
+  EXPECT_EQ(params.code, 0) << params.output;
+  EXPECT_NE(params.output.find("scene.name"), std::string::npos) << params.output;
+}
+
+TEST_F(Cli, AnUnknownSceneSaysWhatWasTriedAndListsTheKnownNames) {
+  const Result r = jelly("run no-such-scene --out " + out());
+  EXPECT_EQ(r.code, 2);
+  for (const char* part : {"no-such-scene: no such scene", "no-such-scene.toml", "known scenes:", "course-2023",
+                           "hard/stiff-springs"})
+    EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing in:\n" << r.output;
+  EXPECT_FALSE(fs::exists(out()));
 }
 
 }  // namespace
