@@ -81,7 +81,9 @@ void bounding_box(const Vec3Array& x, Vec3& lo, Vec3& hi) {
 
 }  // namespace
 
-World::World(TaskTable tasks) : tasks_(tasks) {}
+World::World(TaskTable tasks)
+    : tasks_(tasks),
+      spring_pass_(tasks.make_spring_group_pass ? tasks.make_spring_group_pass() : nullptr) {}
 
 int World::add_cube(const CubeSpec& spec) {
   const auto first = static_cast<int>(state_.size());
@@ -152,7 +154,7 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
           g.springs.erase(std::remove_if(g.springs.begin(), g.springs.end(),
                                          [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
                           g.springs.end());
-          g.task_cache.reset();  // its springs changed
+          if (spring_pass_) spring_pass_->springs_changed();
         }
       }
       break;
@@ -176,7 +178,6 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
 }
 
 void World::add_spring_group(SpringGroup group) {
-  group.threads = threads_;
   groups_.push_back(std::move(group));
   pairs_.clear();
 }
@@ -185,7 +186,7 @@ void World::set_gravity(std::optional<Vec3> g) { gravity_ = g; }
 
 void World::set_force_threads(int threads) {
   threads_ = std::max(1, threads);
-  for (SpringGroup& g : groups_) g.threads = threads_;
+  if (spring_pass_) spring_pass_->set_threads(threads_);
 }
 
 void World::add_terrain(Terrain terrain) {
@@ -233,13 +234,13 @@ void World::acceleration(const State& s, Vec3Array& a) {
     force_.setZero();
   }
   // 2. Springs and dampers of every group the scene built: in one call when the task library
-  //    offers it (same bits), else group by group.
+  //    offers a spring engine, else group by group.
   for (const SpringGroup& g : groups_) {
     ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
     counters_.springs_evaluated += static_cast<std::int64_t>(g.springs.size());
   }
-  if (tasks_.accumulate_spring_groups) {
-    if (!groups_.empty()) tasks_.accumulate_spring_groups(groups_.data(), groups_.size(), s, force_);
+  if (spring_pass_) {
+    spring_pass_->accumulate(groups_.data(), groups_.size(), s, force_);
   } else {
     for (const SpringGroup& g : groups_) tasks_.accumulate_spring_forces(g, s, force_);
   }

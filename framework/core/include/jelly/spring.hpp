@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -29,15 +28,6 @@ struct SpringGroup {
   double kd = 0.0;                 ///< damping along the spring [N·s/m]
   double degenerate_length = 0.0;  ///< [m] below this current length a spring has no direction: zero force
   std::vector<Spring> springs;
-
-  /// Threads the task library may use for this group's pass (World::set_force_threads). The
-  /// reference splits the particles among them and gets the same bits for any count.
-  int threads = 1;
-
-  /// Opaque data a task library may attach on first use (the reference solution keeps its
-  /// vectorised layout of the springs here). Students can ignore it. Whoever changes `springs`
-  /// after the group was first evaluated must reset it.
-  mutable std::shared_ptr<const void> task_cache;
 };
 
 }  // namespace jelly
