@@ -34,7 +34,7 @@ Fixture cube_fixture() {
     g.type = static_cast<SpringType>(k);
     g.ks = ks[k];
     g.kd = kd[k];
-    g.degenerate_length = 1e-12 * cube.spacing();
+    g.degenerate_length = degenerate_length_for(cube.spacing());
     if (k == 0) t.add_structural_springs(cube, g.springs);
     if (k == 1) t.add_shear_springs(cube, g.springs);
     if (k == 2) t.add_bending_springs(cube, g.springs);

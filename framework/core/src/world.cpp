@@ -45,6 +45,30 @@ bool tangent_plane(const Sphere& s, const Vec3& x, Plane& out) {
   return true;
 }
 
+// The per-shape loop of collision and contact, written once: calls on_plane(plane, i) or
+// on_bowl(bowl, i) for every particle i of x, for a sphere on_plane(its tangent plane at x_i, i)
+// (no call at its centre), and returns how many calls returned true. The shape is chosen once per
+// pass, not per particle.
+template <typename OnPlane, typename OnBowl>
+std::int64_t count_per_particle(const Terrain& terrain, const Vec3Array& x, OnPlane on_plane,
+                                OnBowl on_bowl) {
+  const Eigen::Index n = x.cols();
+  std::int64_t hits = 0;
+  if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (on_plane(*plane, i)) ++hits;
+  } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (on_bowl(*bowl, i)) ++hits;
+  } else {
+    const auto& sphere = std::get<Sphere>(terrain.shape);
+    Plane tangent;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (tangent_plane(sphere, x.col(i), tangent) && on_plane(tangent, i)) ++hits;
+  }
+  return hits;
+}
+
 // Lower and upper corners of the particles' bounding box: four particles (12 doubles) at a time
 // into 12 running minima and maxima held in vector registers (Eigen's rowwise min and max would
 // make six strided passes).
@@ -125,7 +149,7 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
   group.type = type;
   group.ks = ks;
   group.kd = kd;
-  group.degenerate_length = 1e-12 * lattice.spacing();
+  group.degenerate_length = degenerate_length_for(lattice.spacing());
   const char* builder = "";
   switch (type) {
     case SpringType::Structural:
@@ -275,36 +299,17 @@ void World::contact_pass(const State& s, Vec3Array& f) {
       continue;
     }
     counters_.contact_queries[t] += static_cast<std::int64_t>(n);
-    std::int64_t hits = 0;
-    if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
-      for (Eigen::Index i = 0; i < n; ++i) {
+    // A particle's force changes only where the student's function says it made contact.
+    const auto contact = [&](auto task) {
+      return [&, task](const auto& surface, Eigen::Index i) {
         Vec3 fi = f.col(i);
-        if (tasks_.contact_plane(*plane, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
-      for (Eigen::Index i = 0; i < n; ++i) {
-        Vec3 fi = f.col(i);
-        if (tasks_.contact_bowl(*bowl, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    } else {
-      const auto& sphere = std::get<Sphere>(terrain.shape);
-      Plane tangent;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
-        Vec3 fi = f.col(i);
-        if (tasks_.contact_plane(tangent, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    }
-    counters_.contacts[t] += hits;
+        if (!task(surface, s.x.col(i), s.v.col(i), fi)) return false;
+        f.col(i) = fi;
+        return true;
+      };
+    };
+    counters_.contacts[t] += count_per_particle(terrain, s.x, contact(tasks_.contact_plane),
+                                                contact(tasks_.contact_bowl));
   }
 }
 
@@ -326,36 +331,17 @@ void World::apply_collisions(State& s) {
     }
     if (terrain.collision) {
       counters_.collision_queries[t] += static_cast<std::int64_t>(n);
-      std::int64_t hits = 0;
-      if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
-        for (Eigen::Index i = 0; i < n; ++i) {
+      // A particle's velocity changes only where the student's function says it collided.
+      const auto collide = [&](auto task) {
+        return [&, task](const auto& surface, Eigen::Index i) {
           Vec3 vi = s.v.col(i);
-          if (tasks_.collide_plane(*plane, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-          Vec3 vi = s.v.col(i);
-          if (tasks_.collide_bowl(*bowl, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      } else {
-        const auto& sphere = std::get<Sphere>(terrain.shape);
-        Plane tangent;
-        for (Eigen::Index i = 0; i < n; ++i) {
-          if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
-          Vec3 vi = s.v.col(i);
-          if (tasks_.collide_plane(tangent, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      }
-      counters_.collisions[t] += hits;
+          if (!task(surface, s.x.col(i), vi)) return false;
+          s.v.col(i) = vi;
+          return true;
+        };
+      };
+      counters_.collisions[t] += count_per_particle(terrain, s.x, collide(tasks_.collide_plane),
+                                                    collide(tasks_.collide_bowl));
     }
     if (terrain.project) {
       // Optional effect (contract §5): particles behind the surface, inside the extent, are moved

@@ -14,6 +14,12 @@ enum class SpringType : std::uint8_t { Structural, Shear, ShearBody, Bending };
 /// Stable lower-case name of a spring type ("structural", "shear", "shear_body", "bending").
 std::string_view to_string(SpringType type);
 
+/// A spring shorter than this share of its body's length scale (the cube's grid spacing, the
+/// shortest rest length of explicit springs) has no direction and gets zero force (contract §2).
+inline constexpr double kDegenerateShare = 1e-12;
+/// The degenerate length of the springs of a body with length scale `spacing` [m].
+constexpr double degenerate_length_for(double spacing) { return kDegenerateShare * spacing; }
+
 /// One spring between particles a and b (indices into the state arrays).
 struct Spring {
   int a = 0;                 ///< first particle (the one that "owns" the spring)
