@@ -17,6 +17,7 @@ PACKAGES=(
   libseccomp-dev bubblewrap
   gnuplot-nox xvfb xauth zip unzip
   ccache    # run-tests compiles through it when present: repeated runs and the release builds reuse objects
+  clang-format-14  # the house style of the C++ sources (.clang-format; tools/format, test house.clang_format)
   clang libclang-rt-14-dev
   # the student release's bundled builds: GLFW's X11 backend from source, Clang + libc++ (the
   # stand-in for Apple's toolchain), unpacking Debian source packages (tools/fetch-third-party)

@@ -6,9 +6,7 @@
 #include "jelly/tasks/forces.hpp"
 #include "jelly/tasks/integrators.hpp"
 #include "jelly/tasks/springs.hpp"
-#ifdef JELLY_TASKS_SPRING_GROUPS
 #include "jelly/tasks/spring_groups.hpp"
-#endif
 
 #ifndef JELLY_TASKS_ORIGIN
 #define JELLY_TASKS_ORIGIN "unknown"
@@ -25,7 +23,7 @@ TaskTable linked_tasks() {
   t.damper_force = &tasks::damper_force;
   t.accumulate_spring_forces = &tasks::accumulate_spring_forces;
 #ifdef JELLY_TASKS_SPRING_GROUPS  // set by the build for a library that provides it (the reference)
-  t.accumulate_spring_groups = &tasks::accumulate_spring_groups;
+  t.make_spring_group_pass = &tasks::make_spring_group_pass;
 #endif
   t.collide_plane = &tasks::collide_plane;
   t.collide_bowl = &tasks::collide_bowl;

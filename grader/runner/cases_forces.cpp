@@ -22,8 +22,11 @@ struct SpringInput {
   double degenerate;
 };
 
+// The degenerate length of the inputs that do not give one: a body of 1 m grid spacing.
+constexpr double kDefaultDegenerate = degenerate_length_for(1.0);
+
 // Hand-made inputs: params.springs (spring_force: label, xa, xb, ks, rest) or params.dampers
-// (damper_force: label, xa, xb, va, vb, kd); degenerate length 1e-12 m unless given.
+// (damper_force: label, xa, xb, va, vb, kd); degenerate length that of a 1 m spacing unless given.
 std::vector<SpringInput> listed_inputs(const Params& params, bool damper) {
   std::vector<SpringInput> out;
   for (const Params& p : params.list(damper ? "dampers" : "springs")) {
@@ -35,7 +38,7 @@ std::vector<SpringInput> listed_inputs(const Params& params, bool damper) {
     s.vb = damper ? p.vec("vb") : Vec3::Zero();
     s.k = p.number(damper ? "kd" : "ks");
     s.rest = damper ? 0.0 : p.number("rest");
-    s.degenerate = p.number("degenerate", 1e-12);
+    s.degenerate = p.number("degenerate", kDefaultDegenerate);
     out.push_back(s);
   }
   return out;
@@ -59,7 +62,7 @@ std::vector<SpringInput> random_inputs(const Params& random) {
     s.vb = Vec3(pv * r.next(), pv * r.next(), pv * r.next());
     s.k = ks * (k0 + r.next());
     s.rest = r0 + rs * r.next();
-    s.degenerate = 1e-12;
+    s.degenerate = kDefaultDegenerate;
     out.push_back(s);
   }
   return out;

@@ -165,7 +165,7 @@ void add_prepared_cube(World& world, const Params& params, const Json& input, do
     g.type = type;
     g.ks = ks;
     g.kd = kd;
-    g.degenerate_length = 1e-12 * spacing;
+    g.degenerate_length = degenerate_length_for(spacing);
     g.springs = springs_from_json(input.at("springs").at(key));
     world.add_spring_group(std::move(g));
   }

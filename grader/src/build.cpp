@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cases.hpp"
+#include "files.hpp"
 #include "process.hpp"
 
 namespace jelly::grade {
@@ -41,19 +42,9 @@ std::string framework_headers_digest(const GradeConfig& config) {
   std::sort(files.begin(), files.end());
   std::string all;
   for (const fs::path& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    all += f.string() + "\n" + fnv_hex(text.str()) + "\n";
+    all += f.string() + "\n" + fnv_hex(read_file(f)) + "\n";
   }
   return fnv_hex(all);
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Reads a task file of the submission itself, never what it points to: no symbolic links (O_NOFOLLOW),

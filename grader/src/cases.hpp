@@ -82,7 +82,7 @@ std::filesystem::path reference_path(const GradeConfig& config, const CaseSpec& 
 /// Format of the reference data files.
 inline constexpr int kReferenceFormat = 1;
 
-/// 64-bit FNV-1a as 16 hex digits.
+/// 64-bit FNV-1a (jelly/fnv1a.hpp, with the grader's own offset basis) as 16 hex digits.
 std::string fnv_hex(const std::string& text);
 /// Digest of the runner's generator code (the files directly in grader/runner/ except the runner's
 /// main.cpp and its seccomp sandbox.{hpp,cpp}, which do not change any output): the reference data

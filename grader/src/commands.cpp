@@ -15,18 +15,12 @@
 
 #include <toml++/toml.h>
 
+#include "files.hpp"
 #include "report.hpp"
 
 namespace jelly::grade {
 
 namespace {
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string run_text(const std::vector<std::string>& argv, const fs::path& cwd = {}) {
   Limits lim;
@@ -334,7 +328,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     fs::create_directories(m.dir);
     for (const std::string& name : task_files())
       fs::copy_file(config.solutions_dir() / name, m.dir / name, fs::copy_options::overwrite_existing);
-    std::string text = read_text(m.dir / m.file);
+    std::string text = read_file(m.dir / m.file);
     for (const auto& [find, with, nth] : m.replacements) {
       auto at = text.find(find);
       for (int k = 1; k < nth && at != std::string::npos; ++k) at = text.find(find, at + find.size());

@@ -12,6 +12,7 @@
 #include <unistd.h>
 #endif
 
+#include "files.hpp"
 #include "process.hpp"
 
 namespace jelly::grade {
@@ -37,10 +38,7 @@ std::string first_line(const std::string& text) {
 
 // FNV-1a of a file's bytes (the reference runner: its frames are cached per binary).
 std::string file_digest(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return fnv_hex(s.str());
+  return fnv_hex(read_file(p));
 }
 
 std::vector<double> numbers(const Json& outputs, const char* key) {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "files.hpp"
 #include "plot.hpp"
 
 namespace jelly::grade {
@@ -307,11 +308,9 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames, const 
     } else {
       const auto cell = [&](const std::string& file, const std::string& alt) {
         if (file.empty()) return std::string("<td>—</td>");
-        std::ifstream in(dir / file, std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        if (bytes.str().empty()) return std::string("<td>—</td>");
-        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," + base64(bytes.str()) + "\"></td>";
+        const std::string bytes = read_file(dir / file);
+        if (bytes.empty()) return std::string("<td>—</td>");
+        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," + base64(bytes) + "\"></td>";
       };
       o << "<table><tr><th>t [s]</th><th>yours</th><th>reference</th></tr>\n";
       for (const FrameRow& row : frames->rows)

@@ -1,6 +1,6 @@
 // Internal to jelly::core: the parameter declaration table behind params.hpp and the scene loader.
 //
-// Every scene parameter is declared once in params.cpp (key pattern, value kind, unit, default,
+// Every scene parameter is declared once in param_rows.cpp (key pattern, value kind, unit, default,
 // range, description, and how to read and write it in a SceneSpec). The scene loader, set_parameter,
 // get_parameter, scene_parameters, to_toml and docs/scenes.md all go through these declarations.
 #pragma once
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "jelly/params.hpp"
-#include "jelly/scene.hpp"
+#include "jelly/scene_spec.hpp"
 
 namespace jelly::params_detail {
 
@@ -53,7 +53,9 @@ struct Decl {
   Scope scope = Scope::Always;
   ValueKind kind = ValueKind::Real;
   std::string_view unit;          ///< "m", "s", "N/m", "" for dimensionless
-  std::string_view default_text;  ///< in set_parameter's text form; "" when there is none
+  bool has_default = false;       ///< whether the parameter has a default
+  std::string default_text;       ///< the default in set_parameter's text form (read from the
+                                  ///< default-constructed structs); "" when there is none
   bool bounded = false;           ///< whether min/max apply (Real, Integer, RealList elements)
   double min = 0.0;
   double max = 0.0;
@@ -120,14 +122,23 @@ struct CrossError {
 /// Checks the scene as a whole; the first problem or nullopt.
 std::optional<CrossError> check_scene(const SceneSpec& s);
 
-/// Terrain names must be usable inside dotted keys: letters, digits, '_' and '-'.
-bool valid_terrain_name(std::string_view name);
+/// Terrain names must be usable inside dotted keys: letters, digits, '_' and '-', at most this many.
+inline constexpr std::size_t kMaxTerrainName = 64;
+/// Why `name` cannot name a terrain ("must use letters, ..."), or nullopt when it can.
+std::optional<std::string> check_terrain_name(std::string_view name);
+/// The message when terrains[0 … before−1] of `s` already use `name`, else nullopt.
+std::optional<std::string> check_unique_terrain_name(const SceneSpec& s, std::string_view name,
+                                                     std::size_t before);
 
 /// A terrain of the given type with that type's default geometry and default surface.
 Terrain default_terrain(std::string_view name, std::string_view type);
 
 /// Shortest text that reads back to the same double ("0.001", "2000", "1e-07").
 std::string format_double(double v);
+/// Text without leading and trailing white space (' ', \t, \n, \v, \f, \r).
+std::string_view trim(std::string_view t);
+/// Text in double quotes for messages, cut after 60 characters ("...").
+std::string in_quotes(std::string_view t);
 /// Describes the kind for messages: "a number", "an integer", "true or false", ...
 std::string expected_text(const Decl& d);
 

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <stdexcept>
 
+#include "jelly/fnv1a.hpp"
+
 namespace jelly {
 
 FrameSummary summarize(const World& w, const State& s, double t) {
@@ -92,17 +94,10 @@ void CsvWriter::flush() {
 }
 
 std::uint64_t state_hash(const State& s) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  auto mix = [&](const Vec3Array& a) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(a.data());
-    for (Eigen::Index k = 0; k < a.size() * static_cast<Eigen::Index>(sizeof(double)); ++k) {
-      h ^= bytes[k];
-      h *= 0x100000001b3ull;
-    }
+  const auto bytes = [](const Vec3Array& a) {
+    return static_cast<std::size_t>(a.size()) * sizeof(double);
   };
-  mix(s.x);
-  mix(s.v);
-  return h;
+  return fnv1a(s.v.data(), bytes(s.v), fnv1a(s.x.data(), bytes(s.x)));
 }
 
 }  // namespace jelly

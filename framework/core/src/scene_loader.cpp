@@ -1,4 +1,4 @@
-// Scene files: reading (TOML via toml++), validating, `--set` overrides and writing back.
+// Scene files: reading (TOML via toml++), validating and writing back (`--set`: params.cpp).
 //
 // Every key is looked up in the declaration table (param_table.hpp): a key that is not declared
 // is an error (with a "did you mean" when a declared key is close), and every value is converted
@@ -12,6 +12,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "jelly/scene.hpp"
 #include "param_table.hpp"
 
 namespace jelly {
@@ -35,13 +36,6 @@ Pos pos_of_key(const toml::key& k, const toml::node& value) {
   const auto& b = k.source().begin;
   if (b.line > 0) return Pos{static_cast<int>(b.line), static_cast<int>(b.column)};
   return pos_of(value);
-}
-
-std::string in_quotes(std::string_view t) {
-  std::string s = "\"";
-  s.append(t.substr(0, 60));
-  if (t.size() > 60) s += "...";
-  return s + "\"";
 }
 
 /// "a string ("abc")", "an integer (5)", ... for "got ..." in messages.
@@ -513,22 +507,17 @@ class Loader {
       terrain = default_terrain(*name, *type);
     }
     if (name) {
-      if (!valid_terrain_name(*name)) {
-        error(label + ".name", pos_of(*t.get("name")),
-              "must use letters, digits, '_' and '-' only (at most 64), got " + in_quotes(*name));
+      if (auto msg = check_terrain_name(*name)) {
+        error(label + ".name", pos_of(*t.get("name")), *msg);
         return;
       }
       terrain.name = *name;
     }
     const std::string prefix = "terrain." + terrain.name;
     const Pos name_pos = t.get("name") ? pos_of(*t.get("name")) : entry_pos;
-    for (const Terrain& other : spec_.terrains) {
-      if (other.name == terrain.name) {
-        error(prefix, name_pos,
-              "two terrains are named " + in_quotes(terrain.name) +
-                  "; terrain names must be unique (give one another name = \"...\")");
-        return;
-      }
+    if (auto msg = check_unique_terrain_name(spec_, terrain.name, spec_.terrains.size())) {
+      error(prefix, name_pos, *msg);
+      return;
     }
     where_[prefix] = entry_pos;
     spec_.terrains.push_back(std::move(terrain));
@@ -688,54 +677,6 @@ SceneResult load_scene(const std::filesystem::path& path) {
     r.error = SceneError{file, "", 0, 0, std::string("cannot read the scene file: ") + e.what()};
     return r;
   }
-}
-
-std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
-                                        std::string_view value) {
-  const std::string k(key);
-  const auto fail = [&](const std::string& at, std::string message) {
-    return SceneError{"--set", at, 0, 0, std::move(message)};
-  };
-  try {
-    const auto b = resolve(scene, key);
-    if (!b) {
-      if (const auto any = resolve_any(scene, key)) return fail(k, inapplicable_reason(*any, scene));
-      std::vector<std::string> keys;
-      for (const ParamInfo& p : scene_parameters(scene)) keys.push_back(p.key);
-      std::string msg = "not a parameter of this scene";
-      const std::string near = closest(key, keys);
-      if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
-      return fail(k, msg);
-    }
-    auto parsed = parse_text(*b->decl, value);
-    if (const auto* msg = std::get_if<std::string>(&parsed)) return fail(k, *msg);
-    const Value& v = std::get<Value>(parsed);
-    if (auto msg = check_value(*b->decl, v)) return fail(k, *msg);
-    if (auto msg = check_in_scene(*b, scene, v)) return fail(k, *msg);
-    SceneSpec changed = scene;
-    b->decl->set(changed, b->ctx, v);
-    if (auto cross = check_scene(changed))
-      return fail(cross->key, cross->message + " (after setting " + k + "=" + std::string(value) + ")");
-    scene = std::move(changed);
-    return std::nullopt;
-  } catch (const std::exception& e) {
-    return fail(k, std::string("internal error: ") + e.what());
-  }
-}
-
-std::optional<SceneError> set_assignment(SceneSpec& scene, std::string_view assignment) {
-  const auto trim = [](std::string_view t) {
-    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
-    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
-    return t;
-  };
-  const std::string_view item = trim(assignment);
-  const std::size_t eq = item.find('=');
-  if (eq == std::string_view::npos || trim(item.substr(0, eq)).empty())
-    return SceneError{"--set", "", 0, 0,
-                      "expected key=value (e.g. springs.shear.ks=5000; keys: `jelly params SCENE`), got '" +
-                          std::string(item) + "'"};
-  return set_parameter(scene, trim(item.substr(0, eq)), trim(item.substr(eq + 1)));
 }
 
 std::string to_toml(const SceneSpec& scene) {

@@ -123,7 +123,7 @@ std::unique_ptr<World> build_world(const SceneSpec& scene, const TaskTable& task
         g.kd = settings->kd;
         double shortest = p.springs.front().rest_length;
         for (const Spring& s : p.springs) shortest = std::min(shortest, s.rest_length);
-        g.degenerate_length = 1e-12 * shortest;
+        g.degenerate_length = degenerate_length_for(shortest);
         g.springs = p.springs;
         world->add_spring_group(std::move(g));
       }

@@ -1,6 +1,8 @@
 // Probes each student task once on a tiny input (see task_probe.hpp).
 #include "jelly/task_probe.hpp"
 
+#include <string>
+
 #include "jelly/test_systems.hpp"
 
 namespace jelly {
@@ -45,6 +47,46 @@ TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
   return st;
 }
 
+// A particle just above the plane y = 0 and the bottom of the probe's bowl: φ = 0.001 < ε for both.
+const Vec3 kNearBottom(0.0, 0.001, 0.0);
+
+// A1.T6–T7: a particle moving into the terrain must respond (return true or change v).
+template <typename Shape>
+TaskStatus probe_collision(std::string id, std::string name,
+                           bool (*fn)(const Shape&, const Vec3&, Vec3&), const Shape& shape,
+                           const std::string& terrain) {
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  if (!fn) return st;
+  const Vec3 incoming(0.0, -1.0, 0.0);
+  Vec3 v = incoming;
+  st.implemented = fn(shape, kNearBottom, v) || v != incoming;
+  st.evidence = st.implemented ? "a particle moving into the " + terrain + " responded"
+                               : "a particle moving into the " + terrain + " did not collide";
+  return st;
+}
+
+// How the contact evidence names the particle's place: resting on/in, pressed onto/into.
+struct ContactWords {
+  const char* resting;
+  const char* pressed;
+};
+
+// A1.T8–T9: a particle pressed onto the terrain must get a contact force (return true or change f).
+template <typename Shape>
+TaskStatus probe_contact(std::string id, std::string name,
+                         bool (*fn)(const Shape&, const Vec3&, const Vec3&, Vec3&),
+                         const Shape& shape, ContactWords words) {
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  if (!fn) return st;
+  const Vec3 pressing(0.0, -10.0, 0.0);
+  Vec3 f = pressing;
+  st.implemented = fn(shape, kNearBottom, Vec3::Zero(), f) || f != pressing;
+  st.evidence = st.implemented
+                    ? "a particle " + std::string(words.resting) + " got a contact force"
+                    : "a particle " + std::string(words.pressed) + " got no contact force";
+  return st;
+}
+
 }  // namespace
 
 std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
@@ -79,49 +121,12 @@ std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
   bowl.center = Vec3(0.0, 1.0, 0.0);
   bowl.radius = 1.0;
   bowl.rim_height = 1.0;
-  const Vec3 near_bottom(0.0, 0.001, 0.0);  // φ = 0.001 < ε for both
-  {
-    TaskStatus st{"A1.T6", "plane collision", false, "function missing from the task table"};
-    if (t.collide_plane) {
-      Vec3 v(0.0, -1.0, 0.0);
-      st.implemented = t.collide_plane(plane, near_bottom, v) || v != Vec3(0.0, -1.0, 0.0);
-      st.evidence = st.implemented ? "a particle moving into the plane responded"
-                                   : "a particle moving into the plane did not collide";
-    }
-    out.push_back(st);
-  }
-  {
-    TaskStatus st{"A1.T7", "bowl collision", false, "function missing from the task table"};
-    if (t.collide_bowl) {
-      Vec3 v(0.0, -1.0, 0.0);
-      st.implemented = t.collide_bowl(bowl, near_bottom, v) || v != Vec3(0.0, -1.0, 0.0);
-      st.evidence = st.implemented ? "a particle moving into the bowl responded"
-                                   : "a particle moving into the bowl did not collide";
-    }
-    out.push_back(st);
-  }
-  {
-    TaskStatus st{"A1.T8", "plane contact", false, "function missing from the task table"};
-    if (t.contact_plane) {
-      Vec3 f(0.0, -10.0, 0.0);
-      st.implemented = t.contact_plane(plane, near_bottom, Vec3::Zero(), f) ||
-                       f != Vec3(0.0, -10.0, 0.0);
-      st.evidence = st.implemented ? "a particle resting on the plane got a contact force"
-                                   : "a particle pressed onto the plane got no contact force";
-    }
-    out.push_back(st);
-  }
-  {
-    TaskStatus st{"A1.T9", "bowl contact", false, "function missing from the task table"};
-    if (t.contact_bowl) {
-      Vec3 f(0.0, -10.0, 0.0);
-      st.implemented = t.contact_bowl(bowl, near_bottom, Vec3::Zero(), f) ||
-                       f != Vec3(0.0, -10.0, 0.0);
-      st.evidence = st.implemented ? "a particle resting in the bowl got a contact force"
-                                   : "a particle pressed into the bowl got no contact force";
-    }
-    out.push_back(st);
-  }
+  out.push_back(probe_collision("A1.T6", "plane collision", t.collide_plane, plane, "plane"));
+  out.push_back(probe_collision("A1.T7", "bowl collision", t.collide_bowl, bowl, "bowl"));
+  out.push_back(probe_contact("A1.T8", "plane contact", t.contact_plane, plane,
+                              {"resting on the plane", "pressed onto the plane"}));
+  out.push_back(probe_contact("A1.T9", "bowl contact", t.contact_bowl, bowl,
+                              {"resting in the bowl", "pressed into the bowl"}));
   out.push_back(probe_integrator("A1.T10", "explicit Euler", t.explicit_euler_step));
   out.push_back(probe_integrator("A1.T11", "implicit Euler (predictor-corrector)",
                                  t.implicit_euler_step));

@@ -79,7 +79,7 @@ std::unique_ptr<LinearSystem> make_linear_two_particle_spring(double stretch) {
   g.type = SpringType::Structural;
   g.ks = TwoParticleSpring::kStiffness;
   g.kd = 0.0;
-  g.degenerate_length = 1e-12 * TwoParticleSpring::kRestLength;
+  g.degenerate_length = degenerate_length_for(TwoParticleSpring::kRestLength);
   g.springs.push_back({0, 1, TwoParticleSpring::kRestLength});
   world.add_spring_group(std::move(g));
   Vec3Array x_eq(3, 2);

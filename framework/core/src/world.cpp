@@ -45,6 +45,30 @@ bool tangent_plane(const Sphere& s, const Vec3& x, Plane& out) {
   return true;
 }
 
+// The per-shape loop of collision and contact, written once: calls on_plane(plane, i) or
+// on_bowl(bowl, i) for every particle i of x, for a sphere on_plane(its tangent plane at x_i, i)
+// (no call at its centre), and returns how many calls returned true. The shape is chosen once per
+// pass, not per particle.
+template <typename OnPlane, typename OnBowl>
+std::int64_t count_per_particle(const Terrain& terrain, const Vec3Array& x, OnPlane on_plane,
+                                OnBowl on_bowl) {
+  const Eigen::Index n = x.cols();
+  std::int64_t hits = 0;
+  if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (on_plane(*plane, i)) ++hits;
+  } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (on_bowl(*bowl, i)) ++hits;
+  } else {
+    const auto& sphere = std::get<Sphere>(terrain.shape);
+    Plane tangent;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (tangent_plane(sphere, x.col(i), tangent) && on_plane(tangent, i)) ++hits;
+  }
+  return hits;
+}
+
 // Lower and upper corners of the particles' bounding box: four particles (12 doubles) at a time
 // into 12 running minima and maxima held in vector registers (Eigen's rowwise min and max would
 // make six strided passes).
@@ -81,7 +105,9 @@ void bounding_box(const Vec3Array& x, Vec3& lo, Vec3& hi) {
 
 }  // namespace
 
-World::World(TaskTable tasks) : tasks_(tasks) {}
+World::World(TaskTable tasks)
+    : tasks_(tasks),
+      spring_pass_(tasks.make_spring_group_pass ? tasks.make_spring_group_pass() : nullptr) {}
 
 int World::add_cube(const CubeSpec& spec) {
   const auto first = static_cast<int>(state_.size());
@@ -123,7 +149,7 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
   group.type = type;
   group.ks = ks;
   group.kd = kd;
-  group.degenerate_length = 1e-12 * lattice.spacing();
+  group.degenerate_length = degenerate_length_for(lattice.spacing());
   const char* builder = "";
   switch (type) {
     case SpringType::Structural:
@@ -152,7 +178,7 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
           g.springs.erase(std::remove_if(g.springs.begin(), g.springs.end(),
                                          [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
                           g.springs.end());
-          g.task_cache.reset();  // its springs changed
+          if (spring_pass_) spring_pass_->springs_changed();
         }
       }
       break;
@@ -176,7 +202,6 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
 }
 
 void World::add_spring_group(SpringGroup group) {
-  group.threads = threads_;
   groups_.push_back(std::move(group));
   pairs_.clear();
 }
@@ -185,7 +210,7 @@ void World::set_gravity(std::optional<Vec3> g) { gravity_ = g; }
 
 void World::set_force_threads(int threads) {
   threads_ = std::max(1, threads);
-  for (SpringGroup& g : groups_) g.threads = threads_;
+  if (spring_pass_) spring_pass_->set_threads(threads_);
 }
 
 void World::add_terrain(Terrain terrain) {
@@ -233,13 +258,13 @@ void World::acceleration(const State& s, Vec3Array& a) {
     force_.setZero();
   }
   // 2. Springs and dampers of every group the scene built: in one call when the task library
-  //    offers it (same bits), else group by group.
+  //    offers a spring engine, else group by group.
   for (const SpringGroup& g : groups_) {
     ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
     counters_.springs_evaluated += static_cast<std::int64_t>(g.springs.size());
   }
-  if (tasks_.accumulate_spring_groups) {
-    if (!groups_.empty()) tasks_.accumulate_spring_groups(groups_.data(), groups_.size(), s, force_);
+  if (spring_pass_) {
+    spring_pass_->accumulate(groups_.data(), groups_.size(), s, force_);
   } else {
     for (const SpringGroup& g : groups_) tasks_.accumulate_spring_forces(g, s, force_);
   }
@@ -274,36 +299,17 @@ void World::contact_pass(const State& s, Vec3Array& f) {
       continue;
     }
     counters_.contact_queries[t] += static_cast<std::int64_t>(n);
-    std::int64_t hits = 0;
-    if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
-      for (Eigen::Index i = 0; i < n; ++i) {
+    // A particle's force changes only where the student's function says it made contact.
+    const auto contact = [&](auto task) {
+      return [&, task](const auto& surface, Eigen::Index i) {
         Vec3 fi = f.col(i);
-        if (tasks_.contact_plane(*plane, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
-      for (Eigen::Index i = 0; i < n; ++i) {
-        Vec3 fi = f.col(i);
-        if (tasks_.contact_bowl(*bowl, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    } else {
-      const auto& sphere = std::get<Sphere>(terrain.shape);
-      Plane tangent;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
-        Vec3 fi = f.col(i);
-        if (tasks_.contact_plane(tangent, s.x.col(i), s.v.col(i), fi)) {
-          f.col(i) = fi;
-          ++hits;
-        }
-      }
-    }
-    counters_.contacts[t] += hits;
+        if (!task(surface, s.x.col(i), s.v.col(i), fi)) return false;
+        f.col(i) = fi;
+        return true;
+      };
+    };
+    counters_.contacts[t] += count_per_particle(terrain, s.x, contact(tasks_.contact_plane),
+                                                contact(tasks_.contact_bowl));
   }
 }
 
@@ -325,36 +331,17 @@ void World::apply_collisions(State& s) {
     }
     if (terrain.collision) {
       counters_.collision_queries[t] += static_cast<std::int64_t>(n);
-      std::int64_t hits = 0;
-      if (const auto* plane = std::get_if<Plane>(&terrain.shape)) {
-        for (Eigen::Index i = 0; i < n; ++i) {
+      // A particle's velocity changes only where the student's function says it collided.
+      const auto collide = [&](auto task) {
+        return [&, task](const auto& surface, Eigen::Index i) {
           Vec3 vi = s.v.col(i);
-          if (tasks_.collide_plane(*plane, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      } else if (const auto* bowl = std::get_if<Bowl>(&terrain.shape)) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-          Vec3 vi = s.v.col(i);
-          if (tasks_.collide_bowl(*bowl, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      } else {
-        const auto& sphere = std::get<Sphere>(terrain.shape);
-        Plane tangent;
-        for (Eigen::Index i = 0; i < n; ++i) {
-          if (!tangent_plane(sphere, s.x.col(i), tangent)) continue;
-          Vec3 vi = s.v.col(i);
-          if (tasks_.collide_plane(tangent, s.x.col(i), vi)) {
-            s.v.col(i) = vi;
-            ++hits;
-          }
-        }
-      }
-      counters_.collisions[t] += hits;
+          if (!task(surface, s.x.col(i), vi)) return false;
+          s.v.col(i) = vi;
+          return true;
+        };
+      };
+      counters_.collisions[t] += count_per_particle(terrain, s.x, collide(tasks_.collide_plane),
+                                                    collide(tasks_.collide_bowl));
     }
     if (terrain.project) {
       // Optional effect (contract §5): particles behind the surface, inside the extent, are moved

@@ -25,6 +25,23 @@ namespace jelly::render {
 
 namespace {
 
+/// How a lit surface shines: the Blinn-Phong specular strength and exponent of the lit shader.
+struct Material {
+  float specular;
+  float shininess;
+};
+constexpr Material kGroundMaterial{0.08f, 24.0f};  ///< planes and spheres: nearly matte
+constexpr Material kBowlMaterial{0.25f, 40.0f};    ///< the bowl: a glazed dish
+constexpr Material kJellyMaterial{0.45f, 48.0f};   ///< the jelly: wet and glossy
+/// Opacity of spring lines (the surface and other springs show through a little).
+constexpr float kSpringAlpha = 0.85f;
+/// Particle dots: `point_size` is in pixels at this viewport height, and never below the minimum.
+constexpr float kPointSizeReferenceHeight = 720.0f;
+constexpr float kMinPointSize = 2.0f;
+/// Surfaces are pushed back by this polygon offset (factor and units) so that lines drawn on them
+/// (springs) stay visible.
+constexpr float kSurfaceOffset = 1.0f;
+
 GLuint compile(const Gl& gl, GLenum type, const char* source) {
   const GLuint s = gl.CreateShader(type);
   gl.ShaderSource(s, 1, &source, nullptr);
@@ -301,6 +318,10 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
   const auto set3 = [&](GLuint p, const char* name, const Eigen::Vector3f& v) {
     g.Uniform3f(loc(p, name), v.x(), v.y(), v.z());
   };
+  const auto set_material = [&](const Material& m) {
+    g.Uniform1f(loc(sp, "u_specular"), m.specular);
+    g.Uniform1f(loc(sp, "u_shininess"), m.shininess);
+  };
   g.UseProgram(sp);
   g.UniformMatrix4fv(loc(sp, "u_view_projection"), 1, GL_FALSE, vpm.data());
   set3(sp, "u_eye", eye.cast<float>());
@@ -313,8 +334,7 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     const Terrain& t = terrains[i];
     g.Uniform1i(loc(sp, "u_plane"), 0);
     g.Uniform1i(loc(sp, "u_has_hole"), 0);
-    g.Uniform1f(loc(sp, "u_specular"), 0.08f);
-    g.Uniform1f(loc(sp, "u_shininess"), 24.0f);
+    set_material(kGroundMaterial);
     g.Uniform2f(loc(sp, "u_cavity"), 0.0f, 0.0f);
     if (const auto* p = std::get_if<Plane>(&t.shape)) {
       Vec3 u, w;
@@ -335,8 +355,7 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
       set3(sp, "u_color", colors::kBowl);
       g.Uniform2f(loc(sp, "u_cavity"), static_cast<float>(b->center.y() - b->radius),
                   static_cast<float>(b->rim_height));
-      g.Uniform1f(loc(sp, "u_specular"), 0.25f);
-      g.Uniform1f(loc(sp, "u_shininess"), 40.0f);
+      set_material(kBowlMaterial);
     } else {
       set3(sp, "u_color", colors::kSphere);
     }
@@ -350,11 +369,10 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     g.Uniform1i(loc(sp, "u_plane"), 0);
     g.Uniform1i(loc(sp, "u_has_hole"), 0);
     set3(sp, "u_color", colors::kJelly);
-    g.Uniform1f(loc(sp, "u_specular"), 0.45f);
-    g.Uniform1f(loc(sp, "u_shininess"), 48.0f);
+    set_material(kJellyMaterial);
     // Keep lines drawn on the surface (springs) visible: push the surface back a little.
     g.Enable(GL_POLYGON_OFFSET_FILL);
-    g.PolygonOffset(1.0f, 1.0f);
+    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
     for (std::size_t i = 0; i < d.surfaces_.size(); ++i) {
       const Mesh& m = d.surfaces_[i].mesh();
       gpu.surfaces[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
@@ -380,7 +398,7 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
       const auto type = static_cast<std::size_t>(gpu.spring_types[i]);
       if (!opt.springs[type]) continue;
       const Eigen::Vector3f& c = colors::kSprings[type];
-      g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 0.85f);
+      g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), kSpringAlpha);
       g.BindVertexArray(gpu.spring_lines[i].vao);
       g.DrawElements(GL_LINES, gpu.spring_lines[i].index_count, GL_UNSIGNED_INT, nullptr);
     }
@@ -388,7 +406,8 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     if (opt.particles) {
       g.Enable(GL_PROGRAM_POINT_SIZE);
       g.Uniform1i(loc(fp, "u_round"), 1);
-      g.Uniform1f(loc(fp, "u_point_size"), std::max(2.0f, opt.point_size * vp.height / 720.0f));
+      g.Uniform1f(loc(fp, "u_point_size"),
+                  std::max(kMinPointSize, opt.point_size * vp.height / kPointSizeReferenceHeight));
       const Eigen::Vector3f& c = colors::kParticle;
       g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 1.0f);
       g.BindVertexArray(gpu.particles.vao);

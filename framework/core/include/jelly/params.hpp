@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "jelly/scene.hpp"
+#include "jelly/scene_spec.hpp"
 
 namespace jelly {
 
@@ -37,6 +37,16 @@ std::optional<ParamInfo> find_parameter(const SceneSpec& scene, std::string_view
 
 /// The current value of a parameter as text in the form set_parameter accepts.
 std::optional<std::string> get_parameter(const SceneSpec& scene, std::string_view key);
+
+/// Sets a declared parameter from text ("5000", "-5,11,0", "true", "rk4"), validated like the
+/// file; key as in the file ("springs.shear.ks", "body.center", "terrain.floor.restitution",
+/// "simulation.dt"). Returns the error (file "--set") or nullopt.
+std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
+                                        std::string_view value);
+
+/// The same from one "key=value" (as `--set` takes it; spaces around key and value are ignored,
+/// the value may contain commas). Without '=' or with an empty key: an error saying so.
+std::optional<SceneError> set_assignment(SceneSpec& scene, std::string_view assignment);
 
 /// The value of a Real or Integer parameter as a double (for sliders); nullopt otherwise.
 std::optional<double> get_number(const SceneSpec& scene, std::string_view key);

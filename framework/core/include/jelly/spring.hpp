@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -14,6 +13,12 @@ enum class SpringType : std::uint8_t { Structural, Shear, ShearBody, Bending };
 
 /// Stable lower-case name of a spring type ("structural", "shear", "shear_body", "bending").
 std::string_view to_string(SpringType type);
+
+/// A spring shorter than this share of its body's length scale (the cube's grid spacing, the
+/// shortest rest length of explicit springs) has no direction and gets zero force (contract §2).
+inline constexpr double kDegenerateShare = 1e-12;
+/// The degenerate length of the springs of a body with length scale `spacing` [m].
+constexpr double degenerate_length_for(double spacing) { return kDegenerateShare * spacing; }
 
 /// One spring between particles a and b (indices into the state arrays).
 struct Spring {
@@ -29,15 +34,6 @@ struct SpringGroup {
   double kd = 0.0;                 ///< damping along the spring [N·s/m]
   double degenerate_length = 0.0;  ///< [m] below this current length a spring has no direction: zero force
   std::vector<Spring> springs;
-
-  /// Threads the task library may use for this group's pass (World::set_force_threads). The
-  /// reference splits the particles among them and gets the same bits for any count.
-  int threads = 1;
-
-  /// Opaque data a task library may attach on first use (the reference solution keeps its
-  /// vectorised layout of the springs here). Students can ignore it. Whoever changes `springs`
-  /// after the group was first evaluated must reset it.
-  mutable std::shared_ptr<const void> task_cache;
 };
 
 }  // namespace jelly

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string_view>
 #include <vector>
 
 #include "jelly/cube.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/system.hpp"
+#include "jelly/tasks/spring_groups.hpp"
 #include "jelly/terrain.hpp"
 
 namespace jelly {
@@ -29,11 +31,10 @@ struct TaskTable {
   Vec3 (*damper_force)(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double,
                        double) = nullptr;
   void (*accumulate_spring_forces)(const SpringGroup&, const State&, Vec3Array&) = nullptr;
-  /// Optional (nullptr unless the library provides it; the reference does): every group in one
-  /// call, bit for bit the same as accumulate_spring_forces group by group
-  /// (jelly/tasks/spring_groups.hpp). The World prefers it when set.
-  void (*accumulate_spring_groups)(const SpringGroup*, std::size_t, const State&,
-                                   Vec3Array&) = nullptr;
+  /// Optional (nullptr unless the library provides it; the reference does): makes a spring
+  /// engine that does every group in one call (jelly/tasks/spring_groups.hpp). A World makes one
+  /// when this is set and uses it instead of accumulate_spring_forces.
+  std::unique_ptr<SpringGroupPass> (*make_spring_group_pass)() = nullptr;
   // A1.T6–T7: collision response
   bool (*collide_plane)(const Plane&, const Vec3&, Vec3&) = nullptr;
   bool (*collide_bowl)(const Bowl&, const Vec3&, Vec3&) = nullptr;

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -101,6 +102,7 @@ class World : public JacobianSystem {
   void pattern_cache() const;
 
   TaskTable tasks_;
+  std::unique_ptr<SpringGroupPass> spring_pass_;  // the task library's engine, if it has one
   State state_;
   Eigen::VectorXd mass_;
   Eigen::VectorXd inv_mass_;

@@ -1,0 +1,96 @@
+// The reference table of every declared parameter as Markdown (docs/scenes.md, `jelly params`).
+#include <cmath>
+#include <string>
+
+#include "param_table.hpp"
+
+namespace jelly {
+
+namespace {
+
+std::string_view scope_text(params_detail::Scope s) {
+  using params_detail::Scope;
+  switch (s) {
+    case Scope::Always: return "every scene";
+    case Scope::GravityOn: return "with gravity";
+    case Scope::Cube: return "cube body";
+    case Scope::Particles: return "particles body";
+    case Scope::SpringAny: return "every spring type";
+    case Scope::SpringOn: return "present spring types";
+    case Scope::TerrainAny: return "every terrain";
+    case Scope::Plane: return "plane";
+    case Scope::PlaneHole: return "plane with a hole";
+    case Scope::Bowl: return "bowl";
+    case Scope::Sphere: return "sphere";
+  }
+  return "";
+}
+
+std::string_view kind_text(params_detail::ValueKind k) {
+  using params_detail::ValueKind;
+  switch (k) {
+    case ValueKind::Real: return "real";
+    case ValueKind::Integer: return "integer";
+    case ValueKind::Bool: return "bool";
+    case ValueKind::Vector3: return "vector x,y,z";
+    case ValueKind::Choice: return "choice";
+    case ValueKind::Text: return "text";
+    case ValueKind::Vec3List: return "list of points";
+    case ValueKind::IndexPairList: return "list of index pairs";
+    case ValueKind::RealList: return "list of reals";
+  }
+  return "";
+}
+
+std::string range_text(const params_detail::Decl& d) {
+  using params_detail::format_double;
+  using params_detail::ValueKind;
+  if (d.kind == ValueKind::Choice) {
+    std::string s;
+    for (std::string_view c : d.choices) s += (s.empty() ? "" : ", ") + std::string(c);
+    return s;
+  }
+  if (d.nonzero) return "non-zero length";
+  if (d.kind == ValueKind::IndexPairList) return "indices of positions, a ≠ b";
+  if (!d.bounded) {
+    return d.kind == ValueKind::Bool || d.kind == ValueKind::Text ? "" : "finite";
+  }
+  const bool has_max = std::isfinite(d.max);
+  std::string s;
+  if (!has_max) {
+    s = std::string(d.min_inclusive ? "≥ " : "> ") + format_double(d.min);
+  } else {
+    s = std::string(d.min_inclusive ? "[" : "(") + format_double(d.min) + ", " +
+        format_double(d.max) + (d.max_inclusive ? "]" : ")");
+  }
+  return d.kind == ValueKind::RealList ? "each " + s : s;
+}
+
+}  // namespace
+
+std::string parameter_reference_markdown() {
+  using namespace params_detail;
+  std::string out =
+      "| key | applies to | type | unit | default | valid range | description |\n"
+      "|---|---|---|---|---|---|---|\n";
+  const auto row = [&](const Decl& d, std::string key) {
+    const std::string def = d.default_text.empty() ? "—" : "`" + std::string(d.default_text) + "`";
+    out += "| `" + key + "` | " + std::string(scope_text(d.scope)) + " | " +
+           std::string(kind_text(d.kind)) + " | " + std::string(d.unit) + " | " + def + " | " +
+           range_text(d) + " | " + std::string(d.description) + " |\n";
+  };
+  for (const Decl& d : global_decls()) row(d, std::string(d.pattern));
+  for (const Decl& d : spring_decls()) {
+    std::string key(d.pattern);
+    key.replace(key.find('*'), 1, "<type>");
+    row(d, key);
+  }
+  for (const Decl& d : terrain_decls()) {
+    std::string key(d.pattern);
+    key.replace(key.find('*'), 1, "<name>");
+    row(d, key);
+  }
+  return out;
+}
+
+}  // namespace jelly

@@ -1,0 +1,240 @@
+// Parameter values as text: what `--set` and `jelly params` read and write ("5000", "-5,11,0",
+// "x,y,z; x,y,z"), parsed by a declaration's kind, and the shortest text of a double.
+#include <charconv>
+#include <string>
+#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
+#include <locale>
+#include <sstream>
+#endif
+
+#include "param_table.hpp"
+
+namespace jelly::params_detail {
+
+std::string format_double(double v) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
+std::string_view trim(std::string_view t) {
+  const auto is_space = [](char ch) {
+    return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\v' || ch == '\f' || ch == '\r';
+  };
+  while (!t.empty() && is_space(t.front())) t.remove_prefix(1);
+  while (!t.empty() && is_space(t.back())) t.remove_suffix(1);
+  return t;
+}
+
+std::string in_quotes(std::string_view t) {
+  std::string s = "\"";
+  s.append(t.substr(0, 60));
+  if (t.size() > 60) s += "...";
+  return s + "\"";
+}
+
+namespace {
+
+std::optional<double> parse_double(std::string_view t) {
+  t = trim(t);
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  if (t.empty() || t.front() == '+') return std::nullopt;
+  double v = 0.0;
+#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
+  // libc++ before LLVM 20 (Apple's Xcode, Debian 12's libc++) has no from_chars for double: read
+  // it with the classic "C" locale (correctly rounded there too), the same number of characters.
+  std::istringstream in{std::string(t)};
+  in.imbue(std::locale::classic());
+  in >> std::noskipws >> v;
+  if (in.fail() || in.peek() != std::char_traits<char>::eof()) return std::nullopt;
+#else
+  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
+#endif
+  return v;
+}
+
+std::optional<long long> parse_integer(std::string_view t) {
+  t = trim(t);
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  if (t.empty() || t.front() == '+') return std::nullopt;
+  long long v = 0;
+  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
+  return v;
+}
+
+std::vector<std::string_view> split(std::string_view t, char sep) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t at = t.find(sep, start);
+    out.push_back(trim(t.substr(start, at == std::string_view::npos ? at : at - start)));
+    if (at == std::string_view::npos) break;
+    start = at + 1;
+  }
+  return out;
+}
+
+std::string_view strip_brackets(std::string_view t) {
+  t = trim(t);
+  if (t.size() >= 2 && ((t.front() == '[' && t.back() == ']') || (t.front() == '(' && t.back() == ')')))
+    t = trim(t.substr(1, t.size() - 2));
+  return t;
+}
+
+std::optional<Vec3> parse_vec3(std::string_view t) {
+  const auto parts = split(strip_brackets(t), ',');
+  if (parts.size() != 3) return std::nullopt;
+  Vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    const auto d = parse_double(parts[static_cast<std::size_t>(i)]);
+    if (!d) return std::nullopt;
+    v[i] = *d;
+  }
+  return v;
+}
+
+bool valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t len = 0;
+    unsigned cp = 0;
+    if (c < 0x80) { ++i; continue; }
+    if ((c & 0xE0) == 0xC0) { len = 2; cp = c & 0x1Fu; }
+    else if ((c & 0xF0) == 0xE0) { len = 3; cp = c & 0x0Fu; }
+    else if ((c & 0xF8) == 0xF0) { len = 4; cp = c & 0x07u; }
+    else return false;
+    if (i + len > s.size()) return false;
+    for (std::size_t k = 1; k < len; ++k) {
+      const auto cc = static_cast<unsigned char>(s[i + k]);
+      if ((cc & 0xC0) != 0x80) return false;
+      cp = (cp << 6) | (cc & 0x3Fu);
+    }
+    if ((len == 2 && cp < 0x80) || (len == 3 && cp < 0x800) || (len == 4 && cp < 0x10000) ||
+        cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+      return false;
+    i += len;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string expected_text(const Decl& d) {
+  switch (d.kind) {
+    case ValueKind::Real: return "a number";
+    case ValueKind::Integer: return "an integer";
+    case ValueKind::Bool: return "true or false";
+    case ValueKind::Vector3: return "three numbers x,y,z";
+    case ValueKind::Choice: {
+      std::string s = "one of ";
+      for (std::size_t i = 0; i < d.choices.size(); ++i) {
+        if (i) s += ", ";
+        s += d.choices[i];
+      }
+      return s;
+    }
+    case ValueKind::Text: return "text";
+    case ValueKind::Vec3List: return "a list of points \"x,y,z; x,y,z\"";
+    case ValueKind::IndexPairList: return "a list of index pairs \"a,b; a,b\"";
+    case ValueKind::RealList: return "a list of numbers \"r,r\"";
+  }
+  return "a value";
+}
+
+std::variant<Value, std::string> parse_text(const Decl& d, std::string_view raw) {
+  const std::string_view t = trim(raw);
+  const std::string bad = "must be " + expected_text(d) + ", got " + in_quotes(raw);
+  switch (d.kind) {
+    case ValueKind::Real: {
+      if (auto v = parse_double(t)) return Value{*v};
+      return bad;
+    }
+    case ValueKind::Integer: {
+      if (auto v = parse_integer(t)) return Value{*v};
+      return bad;
+    }
+    case ValueKind::Bool:
+      if (t == "true") return Value{true};
+      if (t == "false") return Value{false};
+      return bad;
+    case ValueKind::Vector3: {
+      if (auto v = parse_vec3(t)) return Value{*v};
+      return bad;
+    }
+    case ValueKind::Choice: return Value{std::string(t)};
+    case ValueKind::Text:
+      if (!valid_utf8(raw)) return std::string("must be valid UTF-8 text");
+      return Value{std::string(raw)};
+    case ValueKind::Vec3List: {
+      std::vector<Vec3> out;
+      if (!t.empty())
+        for (std::string_view item : split(t, ';')) {
+          auto v = parse_vec3(item);
+          if (!v) return bad;
+          out.push_back(*v);
+        }
+      return Value{std::move(out)};
+    }
+    case ValueKind::IndexPairList: {
+      std::vector<IndexPair> out;
+      if (!t.empty())
+        for (std::string_view item : split(t, ';')) {
+          const auto ab = split(strip_brackets(item), ',');
+          if (ab.size() != 2) return bad;
+          const auto a = parse_integer(ab[0]);
+          const auto b = parse_integer(ab[1]);
+          if (!a || !b) return bad;
+          out.push_back({*a, *b});
+        }
+      return Value{std::move(out)};
+    }
+    case ValueKind::RealList: {
+      std::vector<double> out;
+      const std::string_view inner = strip_brackets(t);
+      if (!inner.empty())
+        for (std::string_view item : split(inner, ',')) {
+          auto v = parse_double(item);
+          if (!v) return bad;
+          out.push_back(*v);
+        }
+      return Value{std::move(out)};
+    }
+  }
+  return bad;
+}
+
+std::string format_text(ValueKind kind, const Value& v) {
+  const auto vec3 = [](const Vec3& p) {
+    return format_double(p.x()) + ',' + format_double(p.y()) + ',' + format_double(p.z());
+  };
+  switch (kind) {
+    case ValueKind::Real: return format_double(std::get<double>(v));
+    case ValueKind::Integer: return std::to_string(std::get<long long>(v));
+    case ValueKind::Bool: return std::get<bool>(v) ? "true" : "false";
+    case ValueKind::Vector3: return vec3(std::get<Vec3>(v));
+    case ValueKind::Choice:
+    case ValueKind::Text: return std::get<std::string>(v);
+    case ValueKind::Vec3List: {
+      std::string s;
+      for (const Vec3& p : std::get<std::vector<Vec3>>(v)) s += (s.empty() ? "" : "; ") + vec3(p);
+      return s;
+    }
+    case ValueKind::IndexPairList: {
+      std::string s;
+      for (const IndexPair& p : std::get<std::vector<IndexPair>>(v))
+        s += (s.empty() ? "" : "; ") + std::to_string(p[0]) + ',' + std::to_string(p[1]);
+      return s;
+    }
+    case ValueKind::RealList: {
+      std::string s;
+      for (double r : std::get<std::vector<double>>(v)) s += (s.empty() ? "" : ",") + format_double(r);
+      return s;
+    }
+  }
+  return {};
+}
+
+}  // namespace jelly::params_detail

@@ -1,0 +1,206 @@
+// Validation of scene values, in one place: a value against its declaration (range, kind), a
+// value against the rest of the scene (list lengths, indices), terrain names, and the scene as a
+// whole (bowl rim, particle counts, spring tables). The loader and set_parameter both call these.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "param_table.hpp"
+
+namespace jelly::params_detail {
+
+namespace {
+
+/// "must be a number > 0 s, got 0" / "must be an integer ≥ 2, got 1"; nullopt when in range.
+std::optional<std::string> check_number(const Decl& d, double x, std::string_view what) {
+  const std::string got = ", got " + format_double(x);
+  const std::string unit = d.unit.empty() ? std::string() : " " + std::string(d.unit);
+  if (!std::isfinite(x)) return "must be a finite number" + got;
+  if (!d.bounded) return std::nullopt;
+  const bool low = d.min_inclusive ? x < d.min : x <= d.min;
+  const bool high = d.max_inclusive ? x > d.max : x >= d.max;
+  if (low) {
+    return "must be " + std::string(what) + (d.min_inclusive ? " ≥ " : " > ") +
+           format_double(d.min) + unit + got;
+  }
+  if (high) {
+    return "must be " + std::string(what) + (d.max_inclusive ? " ≤ " : " < ") +
+           format_double(d.max) + unit + got;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> check_finite(const Vec3& v, std::string_view where) {
+  if (v.allFinite()) return std::nullopt;
+  return std::string(where) + "must be finite numbers, got " + format_double(v.x()) + ',' +
+         format_double(v.y()) + ',' + format_double(v.z());
+}
+
+}  // namespace
+
+std::optional<std::string> check_value(const Decl& d, const Value& v) {
+  switch (d.kind) {
+    case ValueKind::Real: return check_number(d, std::get<double>(v), "a number");
+    case ValueKind::Integer:
+      return check_number(d, static_cast<double>(std::get<long long>(v)), "an integer");
+    case ValueKind::Bool:
+    case ValueKind::Text: return std::nullopt;
+    case ValueKind::Vector3: {
+      const Vec3& p = std::get<Vec3>(v);
+      if (auto e = check_finite(p, "")) return e;
+      if (d.nonzero && !(p.norm() > 0.0))
+        return "must have non-zero length, got " + format_text(d.kind, v);
+      return std::nullopt;
+    }
+    case ValueKind::Choice: {
+      const std::string& s = std::get<std::string>(v);
+      for (std::string_view c : d.choices)
+        if (c == s) return std::nullopt;
+      std::vector<std::string> options(d.choices.begin(), d.choices.end());
+      std::string msg = "must be " + expected_text(d) + ", got " + in_quotes(s);
+      const std::string near = closest(s, options);
+      if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
+      return msg;
+    }
+    case ValueKind::Vec3List: {
+      const auto& list = std::get<std::vector<Vec3>>(v);
+      for (std::size_t i = 0; i < list.size(); ++i)
+        if (auto e = check_finite(list[i], "point " + std::to_string(i) + ": ")) return e;
+      return std::nullopt;
+    }
+    case ValueKind::IndexPairList: {
+      const auto& list = std::get<std::vector<IndexPair>>(v);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const IndexPair& p = list[i];
+        if (p[0] < 0 || p[1] < 0)
+          return "spring " + std::to_string(i) + ": indices must be ≥ 0, got " +
+                 std::to_string(p[0]) + ',' + std::to_string(p[1]);
+        if (p[0] == p[1])
+          return "spring " + std::to_string(i) + ": must join two different particles, got " +
+                 std::to_string(p[0]) + ',' + std::to_string(p[1]);
+      }
+      return std::nullopt;
+    }
+    case ValueKind::RealList: {
+      const auto& list = std::get<std::vector<double>>(v);
+      for (std::size_t i = 0; i < list.size(); ++i)
+        if (auto e = check_number(d, list[i], "a number"))
+          return "element " + std::to_string(i) + ": " + *e;
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+
+namespace {
+
+// The messages of checks made in two places (a key's value as it is set, and the scene as a whole).
+std::string velocity_count_message(Eigen::Index positions, Eigen::Index given) {
+  return "must give one velocity per position (" + std::to_string(positions) + "), got " +
+         std::to_string(given);
+}
+std::string spring_index_message(std::size_t i, long long a, long long b, Eigen::Index n) {
+  return "spring " + std::to_string(i) + " joins particles " + std::to_string(a) + " and " +
+         std::to_string(b) + "; expected two different indices in 0.." + std::to_string(n - 1);
+}
+
+bool valid_terrain_name(std::string_view name) {
+  if (name.empty() || name.size() > kMaxTerrainName) return false;
+  return std::all_of(name.begin(), name.end(), [](char ch) {
+    return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+           ch == '_' || ch == '-';
+  });
+}
+
+}  // namespace
+
+std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, const Value& v) {
+  if (b.decl->pattern == "body.rest_lengths") {
+    const std::size_t given = std::get<std::vector<double>>(v).size();
+    if (given != s.particles.springs.size())
+      return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
+             "), got " + std::to_string(given);
+  }
+  if (b.decl->pattern == "body.springs") {
+    // Checked here, before the indices are narrowed to int by the setter.
+    const Eigen::Index n = s.particles.positions.cols();
+    const auto& pairs = std::get<std::vector<IndexPair>>(v);
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i][0] >= n || pairs[i][1] >= n)
+        return spring_index_message(i, pairs[i][0], pairs[i][1], n);
+  }
+  if (b.decl->pattern == "body.velocities") {
+    const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
+    if (given != s.particles.positions.cols())
+      return velocity_count_message(s.particles.positions.cols(), given);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> check_terrain_name(std::string_view name) {
+  if (valid_terrain_name(name)) return std::nullopt;
+  return "must use letters, digits, '_' and '-' only (at most " + std::to_string(kMaxTerrainName) +
+         "), got " + in_quotes(name);
+}
+
+std::optional<std::string> check_unique_terrain_name(const SceneSpec& s, std::string_view name,
+                                                     std::size_t before) {
+  for (std::size_t j = 0; j < before && j < s.terrains.size(); ++j)
+    if (s.terrains[j].name == name)
+      return "two terrains are named " + in_quotes(name) +
+             "; terrain names must be unique (give one another name = \"...\")";
+  return std::nullopt;
+}
+
+std::optional<CrossError> check_scene(const SceneSpec& s) {
+  if (s.body_kind == BodyKind::Particles) {
+    const ParticleBodySpec& p = s.particles;
+    const Eigen::Index n = p.positions.cols();
+    if (n < 1) return CrossError{"body.positions", "a particles body needs at least one position, got none"};
+    if (p.velocities.cols() != n)
+      return CrossError{"body.velocities", velocity_count_message(n, p.velocities.cols())};
+    for (std::size_t i = 0; i < p.springs.size(); ++i) {
+      const Spring& sp = p.springs[i];
+      if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b)
+        return CrossError{"body.springs", spring_index_message(i, sp.a, sp.b, n)};
+      if (!(std::isfinite(sp.rest_length) && sp.rest_length > 0.0))
+        return CrossError{"body.rest_lengths",
+                          "spring " + std::to_string(i) + " has rest length " +
+                              format_double(sp.rest_length) +
+                              "; must be > 0 m (particles that start at the same place need an "
+                              "explicit rest length)"};
+    }
+    if (!p.springs.empty() && !spring_settings(s, p.spring_type).enabled) {
+      const std::string type(to_string(p.spring_type));
+      return CrossError{"body.spring_type", "the particles' springs use the [springs." + type +
+                                                "] coefficients, but the scene has no [springs." +
+                                                type + "] table"};
+    }
+  }
+  for (std::size_t i = 0; i < s.terrains.size(); ++i) {
+    const Terrain& t = s.terrains[i];
+    const std::string key = "terrain." + t.name;
+    if (auto msg = check_terrain_name(t.name))
+      return CrossError{"terrain", "terrain " + std::to_string(i) + ": name " + *msg};
+    if (auto msg = check_unique_terrain_name(s, t.name, i)) return CrossError{key + ".name", *msg};
+    if (const auto* pl = std::get_if<Plane>(&t.shape)) {
+      if (pl->has_hole && !(pl->hole_radius > 0.0))
+        return CrossError{key + ".hole_radius",
+                          "a hole needs hole_radius > 0 m, got " + format_double(pl->hole_radius)};
+    }
+    if (const auto* b = std::get_if<Bowl>(&t.shape)) {
+      const double lo = b->center.y() - b->radius;
+      const double hi = b->center.y();
+      if (!(b->rim_height > lo && b->rim_height <= hi))
+        return CrossError{key + ".rim_height",
+                          "must satisfy center.y - radius < rim_height ≤ center.y (here " +
+                              format_double(lo) + " < rim_height ≤ " + format_double(hi) +
+                              "), got " + format_double(b->rim_height)};
+    }
+  }
+  return std::nullopt;
+}
+
+
+}  // namespace jelly::params_detail
