@@ -329,6 +329,7 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   EXPECT_NE(list.find("setup.sh\n"), std::string::npos);
   EXPECT_NE(list.find("run_autograder\n"), std::string::npos);
   EXPECT_NE(list.find("source/grader/data/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("source/third_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
   EXPECT_EQ(list.find("solutions/"), std::string::npos);
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
   EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);

@@ -128,6 +128,18 @@ inline CLI::Validator positive_number(bool zero_ok = false) {
       "");
 }
 
+/// A finite number ≥ `lo`.
+inline CLI::Validator number_at_least(double lo) {
+  return CLI::Validator(
+      [lo](std::string& text) {
+        const auto v = detail::number(text);
+        char bound[32];
+        std::snprintf(bound, sizeof bound, "%g", lo);
+        return v && *v >= lo ? std::string() : std::string("expected a number ≥ ") + bound + ", got '" + text + "'";
+      },
+      "");
+}
+
 /// One of `choices`, spelled exactly.
 inline CLI::Validator one_of(std::vector<std::string> choices) {
   std::string list;
