@@ -15,10 +15,13 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "jelly/session/overrides.hpp"
+
 namespace jelly::app {
 
 namespace fs = std::filesystem;
 using namespace jelly::render;
+using namespace jelly::session;
 
 std::string usage() {
   return "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare a,b[,c[,d]]]\n"
@@ -416,10 +419,10 @@ int run_app(const AppOptions& opt) {
     s.frame.hints = task_hints(s);
     const std::vector<SimulationRun*> current = s.run_pointers();
     ensure_drawables(renderer, current);
-    if (s.camera_reset_requested && !current.empty() && current.front()->drawable()) {
+    if (s.camera_reset_requested && !current.empty() && drawable_of(*current.front())) {
       const auto vps = frame_viewports(static_cast<int>(current.size()), w, h, s.frame.left_margin);
       s.camera = OrbitCamera{};
-      s.camera.frame(current.front()->drawable()->bounds(), vps.front().aspect());
+      s.camera.frame(drawable_of(*current.front())->bounds(), vps.front().aspect());
       s.camera_reset_requested = false;
     }
     draw_panels(s, fps);

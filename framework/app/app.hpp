@@ -9,16 +9,17 @@
 
 #include "jelly/render/camera.hpp"
 #include "jelly/render/frame.hpp"
-#include "jelly/render/scene_catalog.hpp"
-#include "jelly/render/session.hpp"
 #include "jelly/render/window_backend.hpp"
+#include "jelly/session/real_time_clock.hpp"
+#include "jelly/session/scene_catalog.hpp"
+#include "jelly/session/simulation_run.hpp"
 #include "jelly/task_probe.hpp"
 
 namespace jelly::app {
 
 struct AppOptions {
   std::string scene = "course-2023";         ///< name under the scenes folder, or a path
-  std::filesystem::path scenes_dir;           ///< empty: render::default_scenes_dir()
+  std::filesystem::path scenes_dir;           ///< empty: session::default_scenes_dir()
   std::string integrator;                     ///< empty: the scene's
   double dt = 0.0;                            ///< 0: the scene's
   std::vector<std::string> compare;           ///< 2–4 integrators: start in comparison mode
@@ -45,7 +46,7 @@ int run_app(const AppOptions& options);
 struct CompareSlot {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
   double dt = 0.001;
-  std::string overrides;  ///< this run's own parameters, "key=value; …" (render::apply_overrides)
+  std::string overrides;  ///< this run's own parameters, "key=value; …" (session::apply_overrides)
   std::string error;      ///< why the overrides were not applied (shown under the field)
 };
 
@@ -53,7 +54,7 @@ struct CompareSlot {
 struct AppState {
   // scenes
   std::filesystem::path scenes_dir;
-  std::vector<render::SceneEntry> scenes;
+  std::vector<session::SceneEntry> scenes;
   int scene_index = -1;
   std::string open_path;          ///< the "open a file" text field
   std::string scene_error;        ///< last load or --set error, shown in the panel
@@ -65,8 +66,8 @@ struct AppState {
   bool playing = true;
   bool step_requested = false;
   bool reset_requested = false;
-  render::RealTimeClock clock;
-  std::vector<std::unique_ptr<render::SimulationRun>> runs;
+  session::RealTimeClock clock;
+  std::vector<std::unique_ptr<session::SimulationRun>> runs;
   // comparison
   bool comparing = false;
   std::vector<CompareSlot> slots;
@@ -87,7 +88,7 @@ struct AppState {
   std::vector<std::string> open_panels;  ///< headers to open on the first frame
   bool scripted = false;          ///< --smoke-test / --shot-at: time is not driven by the clock
 
-  std::vector<render::SimulationRun*> run_pointers() const;
+  std::vector<session::SimulationRun*> run_pointers() const;
 };
 
 /// Loads scene `index` of state.scenes (or the path in open_path when index < 0) into the state.

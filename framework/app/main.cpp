@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app.hpp"
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 
 int main(int argc, char** argv) {
   if (argc >= 2 && (std::strcmp(argv[1], "--headless") == 0 || std::strcmp(argv[1], "render") == 0)) {

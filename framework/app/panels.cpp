@@ -14,6 +14,7 @@
 namespace jelly::app {
 
 using namespace jelly::render;
+using namespace jelly::session;
 
 namespace {
 

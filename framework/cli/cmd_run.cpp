@@ -9,6 +9,7 @@
 #include "jelly/auto_step.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/recorder.hpp"
+#include "jelly/session/scene_catalog.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
 
@@ -18,7 +19,8 @@ namespace {
 
 constexpr const char* kRunHelp = R"(usage: jelly run SCENE [options]
 
-Runs SCENE (a .toml scene file) without a window and writes what happened as CSV.
+Runs SCENE (a .toml scene file, or a scene's name under scenes/ such as course-2023) without a
+window and writes what happened as CSV.
 
 options:
   --integrator NAME   explicit_euler | implicit_euler | midpoint | rk4 (the course's four, your
@@ -154,8 +156,8 @@ void add_scene_overrides(Command& command, SceneOverrides& into, bool run_option
   command.add_option("--duration", into.duration)->type_name("T");
 }
 
-std::optional<SceneSpec> load_with_overrides(const std::string& path, const SceneOverrides& overrides) {
-  SceneResult loaded = load_scene(path);
+std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const SceneOverrides& overrides) {
+  SceneResult loaded = session::resolve_scene(scene_name, session::default_scenes_dir());
   if (!loaded) {
     std::fprintf(stderr, "error: %s\n", loaded.error->text().c_str());
     return std::nullopt;

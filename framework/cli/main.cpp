@@ -6,7 +6,7 @@
 #include "commands.hpp"
 
 #ifdef JELLY_HAVE_RENDER
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 #endif
 #ifdef JELLY_HAVE_STUDY
 #include "study_command.hpp"
@@ -24,7 +24,8 @@ commands:
   render SCENE   draw frames (or --replay a recorded run) to PNG without a display (OSMesa)   [when built with the viewer]
   study ...      accuracy against cost, stability sweeps           [numerics study]
 
-`jelly COMMAND --help` tells more. Scenes live in scenes/; the format is in docs/scenes.md.
+SCENE is a .toml file or the name of one under scenes/ (course-2023, hard/stiff-springs), for
+every command. `jelly COMMAND --help` tells more; the scene format is in docs/scenes.md.
 )";
 
 }  // namespace

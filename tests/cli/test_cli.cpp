@@ -193,4 +193,32 @@ TEST_F(Cli, ParamsListsDeclaredKeys) {
     EXPECT_NE(r.output.find(k), std::string::npos) << k;
 }
 
+// Every command takes a scene by name (under scenes/, with or without .toml) as well as by path
+// (session::resolve_scene): the same run either way.
+TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
+  const std::string base = " --duration 0.02 --every 10 --quiet --out ";
+  const Result by_path = jelly("run " + scene("hard/n2.toml") + base + (dir_ / "path.csv").string());
+  const Result by_name = jelly("run hard/n2" + base + (dir_ / "name.csv").string());
+  ASSERT_EQ(by_path.code, 0) << by_path.output;
+  ASSERT_EQ(by_name.code, 0) << by_name.output;
+  std::ifstream a(dir_ / "path.csv"), b(dir_ / "name.csv");
+  std::stringstream sa, sb;
+  sa << a.rdbuf();
+  sb << b.rdbuf();
+  EXPECT_GT(sa.str().size(), 100u);
+  EXPECT_EQ(sa.str(), sb.str());
+  const Result params = jelly("params course-2023.toml");
+  EXPECT_EQ(params.code, 0) << params.output;
+  EXPECT_NE(params.output.find("scene.name"), std::string::npos) << params.output;
+}
+
+TEST_F(Cli, AnUnknownSceneSaysWhatWasTriedAndListsTheKnownNames) {
+  const Result r = jelly("run no-such-scene --out " + out());
+  EXPECT_EQ(r.code, 2);
+  for (const char* part : {"no-such-scene: no such scene", "no-such-scene.toml", "known scenes:", "course-2023",
+                           "hard/stiff-springs"})
+    EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing in:\n" << r.output;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
 }  // namespace

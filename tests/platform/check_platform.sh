@@ -6,8 +6,8 @@
 #   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE]]
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
-#                     under wine; also runs the unit tests that exist on Windows (stubs, render on the
-#                     null backend, the process launcher) under wine,
+#                     under wine; also runs the unit tests that exist on Windows (stubs, session,
+#                     render on the null backend, the process launcher) under wine,
 #                     and the self-check (jelly-grade.exe --runner, the `selfcheck` target): 0 points
 #                     for the stubs, full public marks for solutions/, and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
@@ -51,8 +51,8 @@ case "$platform" in
     run=("$wine")
     exe=.exe
     toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/mingw-w64-x86_64.cmake")
-    targets=(jelly jelly_tests_stubs jelly_tests_process_win jelly-grade jelly-grade-student-runner
-             jelly_tests_stub_runner_win)
+    targets=(jelly jelly_tests_stubs jelly_tests_session jelly_tests_process_win jelly-grade
+             jelly-grade-student-runner jelly_tests_stub_runner_win)
     [ -f "$src/solutions/forces.cpp" ] && targets+=(jelly-grade-reference-runner)
     viewer=OFF
     if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab jelly_tests_render)
@@ -153,9 +153,9 @@ if [ "$platform" = mingw ]; then
   stubs="$(find "$build" -name "jelly_tests_stubs$exe" -type f | head -1)"
   if [ -z "$stubs" ]; then say "FAILED: no jelly_tests_stubs$exe"; failed=1
   else
-    # The student release's unit tests that exist on Windows: the stubs' and the renderer's (null
-    # backend; its picture tests need OSMesa), plus the Windows process launcher's.
-    suites=(jelly_tests_process_win)
+    # The student release's unit tests that exist on Windows: the stubs', the session's and the
+    # renderer's (null backend; its picture tests need OSMesa), plus the Windows process launcher's.
+    suites=(jelly_tests_session jelly_tests_process_win)
     [ "$viewer" = ON ] && suites+=(jelly_tests_render)
     for name in jelly_tests_stubs "${suites[@]}"; do
       t="$(find "$build" -name "$name$exe" -type f | head -1)"

@@ -1,5 +1,5 @@
-// Draw proxies, camera and clock on the null backend (no GL): the geometry the renderer draws is
-// the physics' geometry, and simulated time does not depend on the frame rate.
+// Draw proxies and camera on the null backend (no GL): the geometry the renderer draws is the
+// physics' geometry. (The clock and the runs' history: tests/session.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,16 +9,19 @@
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/meshes.hpp"
-#include "jelly/render/scene_catalog.hpp"
-#include "jelly/render/session.hpp"
+#include "jelly/session/scene_catalog.hpp"
+#include "jelly/session/simulation_run.hpp"
 
 namespace jelly::render {
 namespace {
 
+using session::RunSetup;
+using session::SimulationRun;
+
 SceneSpec course_scene() {
-  SceneResult r = resolve_scene("course-2023", default_scenes_dir());
+  SceneResult r = session::resolve_scene("course-2023", session::default_scenes_dir());
   EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return r ? *r.scene : builtin_course_2023();
+  return r ? *r.scene : session::builtin_course_2023();
 }
 
 TEST(RenderMeshes, PlaneHoleInnerRingIsThePhysicalRadius) {
@@ -139,13 +142,13 @@ TEST(RenderNullBackend, DrawsWithoutGlAndFollowsTheState) {
   OrbitCamera cam;
   std::vector<SimulationRun*> runs{&run};
   draw_frame(renderer, runs, cam, FrameOptions{}, 320, 200);
-  ASSERT_NE(run.drawable(), nullptr);
-  ASSERT_EQ(run.drawable()->surfaces().size(), 1u);
-  EXPECT_EQ(run.drawable()->terrain_meshes().size(), run.simulator()->world().terrains().size());
-  const int p0 = run.drawable()->surfaces()[0].particles()[0];
+  ASSERT_NE(drawable_of(run), nullptr);
+  ASSERT_EQ(drawable_of(run)->surfaces().size(), 1u);
+  EXPECT_EQ(drawable_of(run)->terrain_meshes().size(), run.simulator()->world().terrains().size());
+  const int p0 = drawable_of(run)->surfaces()[0].particles()[0];
   run.simulator()->world().state().x.col(p0) += Vec3(0, 1, 0);
   draw_frame(renderer, runs, cam, FrameOptions{}, 320, 200);
-  EXPECT_FLOAT_EQ(run.drawable()->surfaces()[0].mesh().positions[0].y(),
+  EXPECT_FLOAT_EQ(drawable_of(run)->surfaces()[0].mesh().positions[0].y(),
                   static_cast<float>(run.simulator()->world().state().x(1, p0)));
   EXPECT_EQ(backend.backend->read_pixels().width, 320);
 }
@@ -154,59 +157,6 @@ TEST(RenderBackends, UnknownNameIsAnErrorThatListsTheChoices) {
   auto r = create_backend({"vulkan", 320, 200, "", false});
   EXPECT_FALSE(r.backend);
   EXPECT_NE(r.error.find("auto, window, offscreen or null"), std::string::npos) << r.error;
-}
-
-// Simulated time follows wall time × factor whatever the frame rate: 1 s of wall time at 60 Hz and
-// at 144 Hz reaches the same simulated time (to within one step).
-TEST(RealTimeClock, SimulatedTimeDoesNotDependOnTheFrameRate) {
-  for (double factor : {0.5, 1.0, 2.0}) {
-    double reached[2];
-    int k = 0;
-    const SceneSpec scene = course_scene();
-    for (double hz : {60.0, 144.0}) {
-      SimulationRun run(RunSetup::from_scene(scene), linked_tasks());
-      RealTimeClock clock;
-      clock.factor = factor;
-      clock.budget_ms = 1e9;  // this test is about time, not speed
-      for (int frame = 0; frame < static_cast<int>(hz * 0.5); ++frame) {  // 0.5 s of wall time
-        const double before = run.time();
-        run.advance_to(clock.target(before, 1.0 / hz));
-        clock.reached(before, run.time(), run.budget_hit());
-      }
-      EXPECT_FALSE(clock.behind());
-      reached[k++] = run.time();
-    }
-    // Whole steps only: within half a step of the asked time.
-    EXPECT_NEAR(reached[0], 0.5 * factor, 0.5 * scene.dt + 1e-12) << factor << "x at 60 Hz";
-    EXPECT_NEAR(reached[1], 0.5 * factor, 0.5 * scene.dt + 1e-12) << factor << "x at 144 Hz";
-  }
-}
-
-// When stepping is slower than real time the clock says so and reports the achieved rate, and
-// the debt is dropped instead of growing.
-TEST(RealTimeClock, ReportsWhenItCannotKeepUp) {
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
-  RealTimeClock clock;
-  clock.factor = 4.0;
-  clock.budget_ms = 0.0;  // one step per frame at most: far below 4× real time at 60 Hz
-  for (int frame = 0; frame < 120; ++frame) {
-    const double before = run.time();
-    run.advance_to(clock.target(before, 1.0 / 60.0), clock.budget_ms);
-    clock.reached(before, run.time(), run.budget_hit());
-  }
-  EXPECT_TRUE(clock.behind());
-  EXPECT_NEAR(clock.achieved_factor(), run.setup().dt * 60.0, 1e-9);  // one step per frame
-  EXPECT_EQ(run.simulator()->steps(), 120);
-}
-
-TEST(RunHistory, SamplesEnergyHeightAndCost) {
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
-  run.advance_to(0.2);
-  ASSERT_GE(run.history().size(), 2u);
-  EXPECT_DOUBLE_EQ(run.history().front().time, 0.0);
-  EXPECT_NEAR(run.history().back().time, 0.2, 1e-9);
-  EXPECT_NEAR(run.history().front().com_height, run.setup().scene.cube.center.y(), 1e-9);
-  EXPECT_GT(run.ms_per_step(), 0.0);
 }
 
 }  // namespace

@@ -10,14 +10,17 @@
 
 #include <Eigen/Geometry>
 
+#include "jelly/cli/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
-#include "jelly/render/render_command.hpp"
-#include "jelly/render/scene_catalog.hpp"
-#include "jelly/render/session.hpp"
+#include "jelly/session/captions.hpp"
+#include "jelly/session/scene_catalog.hpp"
+#include "jelly/session/simulation_run.hpp"
 
 namespace jelly::render {
 namespace {
+
+using namespace jelly::session;
 
 namespace fs = std::filesystem;
 const fs::path kArtifacts = fs::path(JELLY_BINARY_DIR) / "artifacts" / "render";
@@ -85,7 +88,7 @@ class HeadlessCourse : public ::testing::Test {
     run_ = std::make_unique<SimulationRun>(RunSetup::from_scene(*scene.scene), linked_tasks());
     ASSERT_TRUE(run_->ok()) << run_->error();
     ensure_drawables(*renderer_, {run_.get()});
-    camera_.frame(run_->drawable()->bounds(), static_cast<double>(kW) / kH);
+    camera_.frame(drawable_of(*run_)->bounds(), static_cast<double>(kW) / kH);
   }
   void TearDown() override {
     run_.reset();  // draw proxies hold GL objects: before the context goes

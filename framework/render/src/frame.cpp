@@ -35,9 +35,24 @@ std::string wrap_text(const std::string& text, int max_width, float scale) {
 
 float text_scale(int h) { return std::clamp(static_cast<float>(h) / 360.0f, 1.0f, 2.0f); }
 
-void ensure_drawables(Renderer& renderer, const std::vector<SimulationRun*>& runs) {
-  for (SimulationRun* r : runs)
-    if (r->ok() && !r->drawable()) r->set_drawable(renderer.make_drawable(r->simulator()->world()));
+SceneDrawable* drawable_of(const session::SimulationRun& run) { return dynamic_cast<SceneDrawable*>(run.attachment()); }
+
+void ensure_drawables(Renderer& renderer, const std::vector<session::SimulationRun*>& runs) {
+  for (session::SimulationRun* r : runs)
+    if (r->ok() && !drawable_of(*r)) r->attach(renderer.make_drawable(r->simulator()->world()));
+}
+
+std::vector<Viewport> comparison_layout(int count, int w, int h) {
+  std::vector<Viewport> out;
+  count = std::clamp(count, 1, 4);
+  const int cols = count == 4 ? 2 : count, rows = count == 4 ? 2 : 1;
+  for (int i = 0; i < count; ++i) {
+    const int c = i % cols, r = i / cols;
+    const int x0 = c * w / cols, x1 = (c + 1) * w / cols;
+    const int y0 = r * h / rows, y1 = (r + 1) * h / rows;
+    out.push_back({x0, y0, x1 - x0, y1 - y0});
+  }
+  return out;
 }
 
 std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin) {
@@ -46,7 +61,7 @@ std::vector<Viewport> frame_viewports(int count, int width, int height, int left
   return vps;
 }
 
-void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, const OrbitCamera& camera,
+void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs, const OrbitCamera& camera,
                 const FrameOptions& o, int width, int height) {
   ensure_drawables(renderer, runs);
   renderer.begin_frame(width, height);
@@ -54,9 +69,9 @@ void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, con
   const auto vps = frame_viewports(static_cast<int>(runs.size()), width, height, o.left_margin);
   const int pad = static_cast<int>(8 * s);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    SimulationRun& run = *runs[i];
+    session::SimulationRun& run = *runs[i];
     const Viewport& vp = vps[i];
-    if (run.ok()) renderer.draw(*run.drawable(), run.simulator()->world(), camera, o.draw, vp);
+    if (run.ok()) renderer.draw(*drawable_of(run), run.simulator()->world(), camera, o.draw, vp);
     int y = vp.y + pad;
     // Text scaled down to fit the viewport's width.
     const auto fit = [&](const std::string& text) {
@@ -69,7 +84,7 @@ void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, con
       renderer.draw_text(text, vp.x + pad, y, ts, color);
       y += Renderer::text_size(text, ts).y() + pad;
     };
-    if (o.labels && runs.size() > 1) put(run_label(run), {1.0f, 0.95f, 0.75f, 1.0f});
+    if (o.labels && runs.size() > 1) put(session::run_label(run), {1.0f, 0.95f, 0.75f, 1.0f});
     if (i == 0)
       for (const std::string& hint : o.hints) put(hint, {1.0f, 0.85f, 0.3f, 1.0f});
     if (!run.ok()) {
@@ -87,8 +102,8 @@ void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, con
   }
   if (o.caption && !runs.empty()) {
     double t = 0.0;  // the furthest run (a stopped run stays behind)
-    for (SimulationRun* r : runs) t = std::max(t, r->time());
-    const std::string text = caption(runs.front()->setup(), t, runs.size() == 1);
+    for (session::SimulationRun* r : runs) t = std::max(t, r->time());
+    const std::string text = session::caption(runs.front()->setup(), t, runs.size() == 1);
     // Shrink the caption to fit the width left of the panel.
     const int room = width - o.left_margin - 3 * pad;
     const float cs = std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));

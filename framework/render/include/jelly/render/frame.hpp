@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "jelly/render/renderer.hpp"
-#include "jelly/render/session.hpp"
+#include "jelly/session/captions.hpp"
+#include "jelly/session/simulation_run.hpp"
 
 namespace jelly::render {
 
@@ -26,12 +27,17 @@ std::string wrap_text(const std::string& text, int max_width, float scale);
 float text_scale(int frame_height);
 
 /// Makes sure every run has draw proxies (after a reset).
-void ensure_drawables(Renderer& renderer, const std::vector<SimulationRun*>& runs);
+void ensure_drawables(Renderer& renderer, const std::vector<session::SimulationRun*>& runs);
+/// A run's draw proxies (its attachment; null before ensure_drawables or after a reset).
+SceneDrawable* drawable_of(const session::SimulationRun& run);
 
 /// Draws `runs` side by side into a width×height frame (begin_frame … end_frame included).
 /// The camera is shared so comparison viewports show the same view.
-void draw_frame(Renderer& renderer, const std::vector<SimulationRun*>& runs, const OrbitCamera& camera,
+void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs, const OrbitCamera& camera,
                 const FrameOptions& options, int width, int height);
+
+/// Two to four viewports side by side (1×n; 2×2 for four) filling a w×h frame.
+std::vector<Viewport> comparison_layout(int count, int width, int height);
 
 /// The viewports draw_frame uses for `count` runs.
 std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin);

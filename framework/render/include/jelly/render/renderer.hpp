@@ -13,6 +13,7 @@
 #include "jelly/render/camera.hpp"
 #include "jelly/render/gl.hpp"
 #include "jelly/render/meshes.hpp"
+#include "jelly/session/simulation_run.hpp"
 #include "jelly/world.hpp"
 
 namespace jelly::render {
@@ -50,10 +51,11 @@ inline const std::array<Eigen::Vector3f, 4> kSprings{
 class Renderer;
 
 /// The draw proxies of one World: terrain meshes (static), jelly surfaces, particles and springs
-/// (updated from the state each frame). Make a new one when the world is rebuilt.
-class SceneDrawable {
+/// (updated from the state each frame). Make a new one when the world is rebuilt: a run holds it
+/// as its attachment, which the run drops when it rebuilds its world.
+class SceneDrawable : public session::RunAttachment {
  public:
-  ~SceneDrawable();
+  ~SceneDrawable() override;
   SceneDrawable(const SceneDrawable&) = delete;
   SceneDrawable& operator=(const SceneDrawable&) = delete;
   const Bounds& bounds() const { return bounds_; }

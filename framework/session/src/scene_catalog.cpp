@@ -1,11 +1,11 @@
-#include "jelly/render/scene_catalog.hpp"
+#include "jelly/session/scene_catalog.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <system_error>
 
-namespace jelly::render {
+namespace jelly::session {
 
 namespace fs = std::filesystem;
 
@@ -56,12 +56,19 @@ SceneResult resolve_scene(std::string_view what, const fs::path& dir) {
   if (fs::is_regular_file(s, ec)) return load_scene(s);
   const fs::path in_dir = dir / (s + ".toml");
   if (fs::is_regular_file(in_dir, ec)) return load_scene(in_dir);
+  const bool has_suffix = s.size() > 5 && s.compare(s.size() - 5, 5, ".toml") == 0;
+  const fs::path as_named = dir / s;
+  if (has_suffix && fs::is_regular_file(as_named, ec)) return load_scene(as_named);
   if (s == "course-2023") return load_entry({s, {}});  // no file yet: the built-in copy
+  if (fs::exists(s, ec)) return load_scene(s);  // e.g. a folder: load_scene says what is wrong
+  std::string known;
+  for (const SceneEntry& e : list_scenes(dir)) known += (known.empty() ? "" : ", ") + e.name;
   SceneResult r;
   r.error = SceneError{s, "", 0, 0,
-                       "no such scene: not a file, and no " + in_dir.string() +
-                           " (list them with `jelly-lab --list-scenes`)"};
+                       "no such scene: not a file, and not a name in " + dir.string() + " (tried " +
+                           (has_suffix ? as_named.string() : in_dir.string()) + "); known scenes: " + known +
+                           " (or a path to a .toml scene file)"};
   return r;
 }
 
-}  // namespace jelly::render
+}  // namespace jelly::session

@@ -12,7 +12,7 @@
 
 #include "jelly/types.hpp"
 
-namespace jelly::render {
+namespace jelly::session {
 
 /// One recorded frame: the positions of every particle at one time.
 struct ReplayFrame {
@@ -40,4 +40,4 @@ ReplayResult parse_replay(std::string_view text, std::string_view source_name);
 /// Reads and parses a replay file.
 ReplayResult load_replay(const std::filesystem::path& path);
 
-}  // namespace jelly::render
+}  // namespace jelly::session

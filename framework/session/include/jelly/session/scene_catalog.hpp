@@ -1,5 +1,5 @@
 // Finding scenes: every *.toml under the scenes folder, by name or path, plus a built-in copy of
-// the course scene (used only while scenes/course-2023.toml is not there).
+// the course scene (used only while scenes/course-2023.toml is not there). No GL: the CLI uses it.
 #pragma once
 
 #include <filesystem>
@@ -9,7 +9,7 @@
 
 #include "jelly/scene.hpp"
 
-namespace jelly::render {
+namespace jelly::session {
 
 struct SceneEntry {
   std::string name;             ///< path relative to the scenes folder without .toml, e.g. "hard/stiff"
@@ -21,11 +21,14 @@ std::filesystem::path default_scenes_dir();
 /// Every *.toml under `dir` (recursively), sorted by name; the built-in course scene is added
 /// when `dir` has no course-2023.toml.
 std::vector<SceneEntry> list_scenes(const std::filesystem::path& dir);
-/// A scene by name ("course-2023", "hard/stiff"), by path, or "builtin:course-2023".
+/// The one way every command (`jelly run/check/params/study/render`, jelly-lab) finds a scene:
+/// a path to a scene file; else a name under `dir`, with or without ".toml" ("course-2023",
+/// "hard/stiff-springs"); else "builtin:course-2023" (or "course-2023" when `dir` lacks it).
+/// When nothing fits, the error names the argument, every place tried and the known names.
 SceneResult resolve_scene(std::string_view name_or_path, const std::filesystem::path& dir);
 /// Loads one catalogue entry.
 SceneResult load_entry(const SceneEntry& entry);
 /// The 2023 course scene built in code from the terrain presets (course-anchor.md defaults).
 SceneSpec builtin_course_2023();
 
-}  // namespace jelly::render
+}  // namespace jelly::session

@@ -2,10 +2,10 @@
 // the stability estimate (capped by the scene's dt), and the run says what it chose.
 #include <gtest/gtest.h>
 
-#include "jelly/render/session.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/session/simulation_run.hpp"
 
-namespace jelly::render {
+namespace jelly::session {
 namespace {
 
 SceneSpec stiff_scene(bool auto_dt) {
@@ -35,7 +35,7 @@ TEST(SessionAutoStep, AutoDtChoosesTheEstimatedStableStepAndRunsStable) {
   EXPECT_LT(a.chosen_h, 0.005);
   EXPECT_LE(a.chosen_h, a.recommended_step);
   EXPECT_NE(a.message().find("auto step"), std::string::npos);
-#if !JELLY_RENDER_WITH_SOLUTIONS
+#if !JELLY_SESSION_WITH_SOLUTIONS
   GTEST_SKIP() << "the stability half needs the reference's forces (a student release has stubs)";
 #endif
   run.advance_to(0.2);
@@ -48,4 +48,4 @@ TEST(SessionAutoStep, AutoDtChoosesTheEstimatedStableStepAndRunsStable) {
 }
 
 }  // namespace
-}  // namespace jelly::render
+}  // namespace jelly::session

@@ -1,11 +1,11 @@
-#include "jelly/render/replay.hpp"
+#include "jelly/session/replay.hpp"
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
-namespace jelly::render {
+namespace jelly::session {
 
 namespace {
 
@@ -134,4 +134,4 @@ ReplayResult load_replay(const std::filesystem::path& path) {
   return parse_replay(s.str(), path.string());
 }
 
-}  // namespace jelly::render
+}  // namespace jelly::session

@@ -3,10 +3,12 @@
 // run with stiff springs that blows up beside one that does not.
 #include <gtest/gtest.h>
 
-#include "jelly/render/session.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/session/captions.hpp"
+#include "jelly/session/overrides.hpp"
+#include "jelly/session/simulation_run.hpp"
 
-namespace jelly::render {
+namespace jelly::session {
 namespace {
 
 TEST(ApplyOverrides, SetsEachKeyAndAcceptsCommasInValues) {
@@ -35,7 +37,7 @@ TEST(ApplyOverrides, AnErrorNamesTheKeyAndChangesNothing) {
 }
 
 TEST(ApplyOverrides, StiffRunBlowsUpBesideTheUnchangedOne) {
-#if !JELLY_RENDER_WITH_SOLUTIONS
+#if !JELLY_SESSION_WITH_SOLUTIONS
   GTEST_SKIP() << "needs the reference's forces (a student release has stubs)";
 #endif
   SceneSpec base = course_2023_scene();
@@ -53,4 +55,4 @@ TEST(ApplyOverrides, StiffRunBlowsUpBesideTheUnchangedOne) {
 }
 
 }  // namespace
-}  // namespace jelly::render
+}  // namespace jelly::session

@@ -1,4 +1,4 @@
-#include "jelly/render/render_command.hpp"
+#include "jelly/cli/render_command.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,8 +13,8 @@
 
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
-#include "jelly/render/replay.hpp"
-#include "jelly/render/scene_catalog.hpp"
+#include "jelly/session/replay.hpp"
+#include "jelly/session/scene_catalog.hpp"
 #include "jelly/task_probe.hpp"
 
 namespace jelly {
@@ -23,6 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace jelly::render;
+using namespace jelly::session;
 
 constexpr const char* kUsage =
     "usage: jelly render SCENE --frames DIR [--width W] [--height H] [--fps F] [--duration T]\n"
@@ -318,7 +319,7 @@ int render_command(int argc, char** argv) {
   OrbitCamera camera;
   ensure_drawables(renderer, run_ptrs);
   const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, 0);
-  camera.frame(runs.front()->drawable()->bounds(), vps.front().aspect());
+  camera.frame(drawable_of(*runs.front())->bounds(), vps.front().aspect());
   if (!a.camera.empty() && !apply_camera(a.camera, camera)) return 2;
 
   if (a.benchmark > 0) {

@@ -1,0 +1,77 @@
+# check_layers.cmake must be able to fail: a small tree with one planted include per rule (a lower
+# layer including a higher one, a header in no layer, GL in a GL-free layer) must fail naming each
+# file and line, and the same tree without them, including every allowed kind, must pass.
+#
+#   cmake -DCHECK=<check_layers.cmake> -DWORK=<scratch folder> -P check_layers_selftest.cmake
+cmake_minimum_required(VERSION 3.16)
+file(REMOVE_RECURSE "${WORK}")
+
+# Allowed includes, one per layer (the tree must pass with only these).
+set(_good
+  "framework/core/src/a.cpp|#include \"jelly/world.hpp\"\n#include \"jelly/tasks/forces.hpp\""
+  "assignments/forces.cpp|#include \"jelly/tasks/forces.hpp\""
+  "framework/session/src/a.cpp|#include \"jelly/session/x.hpp\"\n#include \"jelly/scene.hpp\""
+  "framework/render/src/a.cpp|#include <GL/glcorearb.h>\n#include \"jelly/session/x.hpp\"\n#include \"jelly/render/y.hpp\""
+  "framework/cli/a.cpp|#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
+  "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
+  "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"process.hpp\""
+  "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\""
+  "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_render)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()"
+  "framework/app/CMakeLists.txt|add_executable(jelly-lab main.cpp)\ntarget_link_libraries(jelly-lab PRIVATE jelly::render_command jelly::render)")
+# Planted violations: file|text|expected "FILE:LINE:" of the message.
+set(_bad
+  "framework/core/src/bad.cpp|// one\n\n#include \"jelly/session/scene_catalog.hpp\"|framework/core/src/bad.cpp:3:"
+  "framework/core/include/jelly/bad.hpp|#pragma once\n#include <GLFW/glfw3.h>|framework/core/include/jelly/bad.hpp:2:"
+  "solutions/bad.cpp|#include \"jelly/session/simulation_run.hpp\"|solutions/bad.cpp:1:"
+  "framework/session/src/bad.cpp|#include \"jelly/scene.hpp\"\n#include \"jelly/render/renderer.hpp\"|framework/session/src/bad.cpp:2:"
+  "framework/session/src/gl.cpp|#include <GL/glcorearb.h>|framework/session/src/gl.cpp:1:"
+  "framework/render/src/bad.cpp|#include \"jelly/cli/render_command.hpp\"|framework/render/src/bad.cpp:1:"
+  "framework/cli/bad.cpp|#  include <jelly/app/app.hpp>|framework/cli/bad.cpp:1:"
+  "framework/app/bad.cpp|#include \"jelly/cli/cli_args.hpp\"|framework/app/bad.cpp:1:"
+  "grader/src/bad.cpp|#include \"jelly/render/frame.hpp\"|grader/src/bad.cpp:1:"
+  "framework/render/src/nolayer.cpp|#include \"jelly/newthing/x.hpp\"|framework/render/src/nolayer.cpp:1:"
+  "framework/render/CMakeLists.txt|add_library(jelly_render a.cpp)\n# The CLI forwards `jelly render` here:\nif(TARGET jelly)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()|framework/render/CMakeLists.txt:3:"
+  "framework/session/CMakeLists.txt|add_library(jelly_session a.cpp)\ntarget_link_libraries(jelly_session PUBLIC jelly::core\n  jelly::render)|framework/session/CMakeLists.txt:3:")
+
+function(_plant entries)
+  foreach(entry IN LISTS entries)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 0 path)
+    list(GET parts 1 text)
+    string(REPLACE "\\n" "\n" text "${text}")
+    file(WRITE "${WORK}/${path}" "${text}\n")
+  endforeach()
+endfunction()
+
+function(_check expect_ok out)
+  execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${WORK} -P ${CHECK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(expect_ok AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "check_layers failed on a tree that follows the layers:\n${o}${e}")
+  elseif(NOT expect_ok AND rc EQUAL 0)
+    message(FATAL_ERROR "check_layers passed a tree with planted violations:\n${o}${e}")
+  endif()
+  set(${out} "${o}${e}" PARENT_SCOPE)
+endfunction()
+
+_plant("${_good}")
+_check(TRUE output)
+
+_plant("${_bad}")
+_check(FALSE output)
+list(LENGTH _bad expected)
+foreach(entry IN LISTS _bad)
+  string(REPLACE "|" ";" parts "${entry}")
+  list(GET parts 2 where)
+  string(FIND "${output}" "${where}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "check_layers did not report ${where}\n${output}")
+  endif()
+endforeach()
+string(REGEX MATCHALL "(^|\n)[a-z]+/[^\n:]*:[0-9]+: " reported "${output}")
+list(LENGTH reported count)
+if(NOT count EQUAL expected)
+  message(FATAL_ERROR "check_layers reported ${count} problems, ${expected} were planted (the allowed "
+                      "includes must not be reported):\n${output}")
+endif()
+message(STATUS "check_layers: all ${expected} planted violations reported with file and line; the allowed tree passes")

@@ -1,0 +1,95 @@
+// The one scene resolver every command uses (`jelly run/check/params/study/render`, jelly-lab):
+// a scene by path or by name, and an error that names what was tried and the known names.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "jelly/session/scene_catalog.hpp"
+
+namespace jelly::session {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(JELLY_SOURCE_DIR) / "scenes";
+
+/// A scenes folder of its own: a.toml and sub/b.toml (two particles each, told apart by name).
+class SceneCatalog : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "session" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "sub");
+    write(dir_ / "a.toml", "alpha");
+    write(dir_ / "sub" / "b.toml", "beta");
+  }
+  static void write(const fs::path& p, const std::string& name) {
+    std::ofstream(p) << "[scene]\nname = \"" << name << "\"\n[body]\ntype = \"particles\"\nmass = 1.0\n"
+                     << "positions = [[0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]\n";
+  }
+  static std::string name_of(const SceneResult& r) {
+    EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
+    return r ? r.scene->name : "";
+  }
+  fs::path dir_;
+};
+
+TEST_F(SceneCatalog, FindsAFileByItsPath) {
+  EXPECT_EQ(name_of(resolve_scene((dir_ / "sub" / "b.toml").string(), kScenes)), "beta");
+}
+
+TEST_F(SceneCatalog, FindsANameInTheScenesFolderWithOrWithoutToml) {
+  EXPECT_EQ(name_of(resolve_scene("a", dir_)), "alpha");
+  EXPECT_EQ(name_of(resolve_scene("sub/b", dir_)), "beta");
+  EXPECT_EQ(name_of(resolve_scene("sub/b.toml", dir_)), "beta");
+}
+
+TEST_F(SceneCatalog, TheCourseSceneIsBuiltInWhereTheFolderLacksIt) {
+  const SceneResult by_name = resolve_scene("course-2023", dir_);
+  ASSERT_TRUE(by_name) << by_name.error->text();
+  EXPECT_NE(by_name.scene->description.find("(built in)"), std::string::npos);
+  EXPECT_TRUE(resolve_scene("builtin:course-2023", dir_));
+  // The catalogue lists it first, then the folder's scenes by name.
+  const auto entries = list_scenes(dir_);
+  ASSERT_EQ(entries.size(), 3u);
+  EXPECT_EQ(entries[0].name, "builtin:course-2023");
+  EXPECT_EQ(entries[1].name, "a");
+  EXPECT_EQ(entries[2].name, "sub/b");
+}
+
+TEST_F(SceneCatalog, TheRepositorysScenesResolveByName) {
+  const SceneResult r = resolve_scene("hard/stiff-springs", kScenes);
+  ASSERT_TRUE(r) << r.error->text();
+  EXPECT_EQ(r.scene->description.find("(built in)"), std::string::npos);
+  EXPECT_TRUE(resolve_scene("course-2023", kScenes));
+}
+
+TEST_F(SceneCatalog, AnUnknownSceneNamesWhatWasTriedAndTheKnownNames) {
+  for (const std::string arg : {"nope", "nope.toml"}) {
+    const SceneResult r = resolve_scene(arg, dir_);
+    ASSERT_FALSE(r) << arg;
+    const std::string text = r.error->text();
+    EXPECT_EQ(text.rfind(arg + ": no such scene", 0), 0u) << text;
+    EXPECT_NE(text.find((dir_ / "nope.toml").string()), std::string::npos) << text;
+    EXPECT_NE(text.find("known scenes: builtin:course-2023, a, sub/b"), std::string::npos) << text;
+  }
+}
+
+TEST_F(SceneCatalog, AFileWithErrorsGivesTheLoadersMessageNotNoSuchScene) {
+  std::ofstream(dir_ / "bad.toml") << "[body]\nn = = 3\n";
+  for (const std::string& arg : {std::string("bad"), (dir_ / "bad.toml").string()}) {
+    const SceneResult r = resolve_scene(arg, dir_);
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error->text().find((dir_ / "bad.toml").string() + ":2"), std::string::npos) << r.error->text();
+  }
+  // A folder given as the scene says so.
+  const SceneResult folder = resolve_scene((dir_ / "sub").string(), dir_);
+  ASSERT_FALSE(folder);
+  EXPECT_NE(folder.error->text().find("is a directory"), std::string::npos) << folder.error->text();
+}
+
+}  // namespace
+}  // namespace jelly::session
