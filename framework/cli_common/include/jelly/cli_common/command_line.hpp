@@ -30,6 +30,9 @@ class Command : public CLI::App {
       : CLI::App("", program), program_(std::move(program)), help_(std::move(help)),
         after_error_(std::move(after_error)) {
     set_help_flag("-h,--help");
+    // CLI11's default on Windows reads "/x" as the option x: a path such as /home/a/scene.toml
+    // (MinGW under wine, MSYS) would be an unknown option. Options are --long only, everywhere.
+    allow_windows_style_options(false);
     option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     allow_extras();  // reported by parse_args() as "unknown option --x" / "unexpected argument 'x'"
   }
