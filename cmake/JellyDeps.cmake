@@ -10,7 +10,7 @@
 # student release carries it); nothing is ever downloaded at build time.
 #
 # Targets, the same in every mode:
-#   Eigen3::Eigen  tomlplusplus::tomlplusplus  nlohmann_json::nlohmann_json     (always)
+#   Eigen3::Eigen  tomlplusplus::tomlplusplus  nlohmann_json::nlohmann_json  CLI11::CLI11  (always)
 #   GTest::gtest  GTest::gtest_main                                            (JELLY_BUILD_TESTS)
 #   glfw  jelly::imgui (core + GLFW and OpenGL 3 backends)  jelly::stb (stb_image, stb_image_write,
 #   stb_easy_font, with their implementation)  jelly::gl_headers (GL/glcorearb.h, KHR/)   (viewer)
@@ -126,6 +126,36 @@ else()
   add_library(nlohmann_json::nlohmann_json ALIAS jelly_dep_nlohmann_json)
   jelly_dep_report(nlohmann/json "bundled ${dir}")
 endif()
+
+# ---- CLI11 (every program's command line; header-only) -------------------------------------------
+# Debian's libcli11-dev has a CMake package; elsewhere the headers alone (find_path) will do.
+# CMAKE_DISABLE_FIND_PACKAGE_CLI11 hides both (the Gradescope test: the zip's bundled headers).
+if(JELLY_DEPS_SYSTEM AND NOT CMAKE_DISABLE_FIND_PACKAGE_CLI11)
+  find_package(CLI11 2.1 CONFIG QUIET)
+  if(TARGET CLI11::CLI11)
+    jelly_dep_report(CLI11 "system package ${CLI11_DIR} (${CLI11_VERSION})")
+  else()
+    find_path(JELLY_CLI11_INCLUDE_DIR CLI/CLI.hpp)
+    if(JELLY_CLI11_INCLUDE_DIR)
+      add_library(jelly_dep_cli11 INTERFACE)
+      target_include_directories(jelly_dep_cli11 SYSTEM INTERFACE ${JELLY_CLI11_INCLUDE_DIR})
+      add_library(CLI11::CLI11 ALIAS jelly_dep_cli11)
+      jelly_dep_report(CLI11 "system headers ${JELLY_CLI11_INCLUDE_DIR}/CLI")
+    endif()
+  endif()
+endif()
+if(NOT TARGET CLI11::CLI11)
+  jelly_dep_bundle(dir cli11 include/CLI/CLI.hpp)
+  if(NOT dir)
+    jelly_dep_missing(CLI11 libcli11-dev cli11)
+  endif()
+  add_library(jelly_dep_cli11 INTERFACE)
+  target_include_directories(jelly_dep_cli11 SYSTEM INTERFACE ${dir}/include)
+  add_library(CLI11::CLI11 ALIAS jelly_dep_cli11)
+  jelly_dep_report(CLI11 "bundled ${dir} (header-only)")
+endif()
+# The folder holding CLI/CLI.hpp (the Gradescope zip copies it, as it does toml++'s).
+get_target_property(JELLY_CLI11_HEADERS CLI11::CLI11 INTERFACE_INCLUDE_DIRECTORIES)
 
 find_package(Threads REQUIRED)
 

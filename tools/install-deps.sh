@@ -11,7 +11,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake g++ pkg-config git
-  libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev
+  libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap

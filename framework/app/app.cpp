@@ -1,13 +1,8 @@
 #include "app.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <iostream>
-#include <sstream>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -15,6 +10,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "app_loop.hpp"
+#include "jelly/cli_common/exit_codes.hpp"
 #include "jelly/session/overrides.hpp"
 
 namespace jelly::app {
@@ -22,91 +19,6 @@ namespace jelly::app {
 namespace fs = std::filesystem;
 using namespace jelly::render;
 using namespace jelly::session;
-
-std::string usage() {
-  return "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare a,b[,c[,d]]]\n"
-         "                 [--slot-set K:key=value ...] (run K of --compare gets its own parameter)\n"
-         "                 [--size WxH] [--backend window|auto] [--factor F] [--particles] [--springs]\n"
-         "                 [--smoke-test] [--screenshot FILE] [--shot-at T] [--benchmark N] [--samples 0|2|4]\n"
-         "                 [--open scene,simulation,comparison,parameters,draw,plots,recording]\n"
-         "       jelly-lab --headless SCENE --frames DIR ...   (same as `jelly render`, no display)\n"
-         "keys: space play/pause, N single step, R reset, C reset camera, P screenshot, Esc quit\n"
-         "mouse: left-drag orbit, wheel zoom\n";
-}
-
-std::string parse_options(int argc, char** argv, AppOptions& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto next = [&](std::string& out) {
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "-h" || a == "--help") return "help";
-    if (a == "--scenes") {
-      if (!next(v)) return "--scenes needs a folder";
-      o.scenes_dir = v;
-    } else if (a == "--integrator") {
-      if (!next(o.integrator) || !integrator_from_string(o.integrator))
-        return "--integrator needs one of explicit_euler, implicit_euler, midpoint, rk4, "
-               "symplectic_euler, backward_euler";
-    } else if (a == "--dt" || a == "--shot-at" || a == "--factor" || a == "--benchmark" || a == "--samples") {
-      char* end = nullptr;
-      if (!next(v)) return a + " needs a number";
-      const double d = std::strtod(v.c_str(), &end);
-      if (!end || *end || !(d >= 0.0)) return a + " needs a number ≥ 0, got '" + v + "'";
-      if (a == "--dt") o.dt = d;
-      if (a == "--shot-at") o.shot_at = d;
-      if (a == "--factor") o.factor = d;
-      if (a == "--benchmark") o.benchmark = static_cast<int>(d);
-      if (a == "--samples") o.samples = static_cast<int>(d);
-    } else if (a == "--compare") {
-      if (!next(v)) return "--compare needs a,b[,c[,d]]";
-      std::stringstream ss(v);
-      std::string item;
-      o.compare.clear();
-      while (std::getline(ss, item, ','))
-        if (!integrator_from_string(item)) return "--compare: unknown integrator '" + item + "'";
-        else o.compare.push_back(item);
-      if (o.compare.size() < 2 || o.compare.size() > 4) return "--compare takes 2 to 4 integrators";
-    } else if (a == "--slot-set") {
-      if (!next(v)) return "--slot-set needs K:key=value";
-      const std::size_t colon = v.find(':');
-      int k = 0;
-      if (colon == std::string::npos || std::sscanf(v.substr(0, colon).c_str(), "%d", &k) != 1 || k < 1 ||
-          k > 4 || v.find('=', colon) == std::string::npos)
-        return "--slot-set needs K:key=value with K from 1 to 4, got '" + v + "'";
-      o.slot_sets.emplace_back(k, v.substr(colon + 1));
-    } else if (a == "--size") {
-      if (!next(v) || std::sscanf(v.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 320 ||
-          o.height < 240)
-        return "--size needs WxH (at least 320x240), got '" + v + "'";
-    } else if (a == "--backend") {
-      if (!next(o.backend) || (o.backend != "window" && o.backend != "auto"))
-        return "--backend for the app is window or auto (use --headless for offscreen)";
-    } else if (a == "--open") {
-      if (!next(v)) return "--open needs panel names, e.g. parameters,draw";
-      std::stringstream ss(v);
-      std::string item;
-      while (std::getline(ss, item, ',')) o.open_panels.push_back(item);
-    } else if (a == "--smoke-test") {
-      o.smoke_test = true;
-    } else if (a == "--screenshot") {
-      if (!next(v)) return "--screenshot needs a file";
-      o.screenshot = v;
-    } else if (a == "--particles") {
-      o.particles = true;
-    } else if (a == "--springs") {
-      o.springs = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return "unknown option " + a;
-    } else {
-      o.scene = a;
-    }
-  }
-  return {};
-}
 
 std::vector<SimulationRun*> AppState::run_pointers() const {
   std::vector<SimulationRun*> out;
@@ -150,62 +62,8 @@ void rebuild_runs(AppState& s) {
   s.clock.restart();
 }
 
-namespace {
-
-std::string timestamp() {
-  const std::time_t t = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", std::localtime(&t));
-  return buf;
-}
-
-bool ffmpeg_available() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
-
-void finish_recording(AppState& s) {
-  s.recording = false;
-  std::string msg = std::to_string(s.record_frame) + " frames in " + s.record_dir.string();
-  if (s.record_frame > 0 && ffmpeg_available()) {
-    const fs::path mp4 = s.record_dir / "video.mp4";
-    const std::string cmd = "ffmpeg -loglevel error -y -framerate 30 -i '" +
-                            (s.record_dir / "frame_%05d.png").string() +
-                            "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" + mp4.string() + "'";
-    msg += std::system(cmd.c_str()) == 0 ? ", " + mp4.filename().string() : " (ffmpeg failed)";
-  } else if (s.record_frame > 0) {
-    msg += " (no ffmpeg: PNG only)";
-  }
-  s.record_message = msg;
-}
-
-/// Hint lines for the frame when student tasks are missing.
-std::vector<std::string> task_hints(const AppState& s) {
-  std::vector<std::string> out;
-  std::string missing;
-  int count = 0;
-  for (const TaskStatus& t : s.tasks)
-    if (!t.implemented) {
-      missing += (count++ ? ", " : "") + t.id;
-    }
-  if (count == 0) return out;
-  out.push_back("Not implemented yet (" + std::to_string(count) + " of 13): " + missing);
-  const auto missing_integrator = [&](IntegratorKind k) {
-    const char* id = k == IntegratorKind::ExplicitEuler ? "A1.T10"
-                     : k == IntegratorKind::ImplicitEuler ? "A1.T11"
-                     : k == IntegratorKind::Midpoint    ? "A1.T12"
-                     : k == IntegratorKind::RK4         ? "A1.T13" : nullptr;
-    if (!id) return false;
-    for (const TaskStatus& t : s.tasks)
-      if (t.id == id) return !t.implemented;
-    return false;
-  };
-  if (missing_integrator(s.integrator))
-    out.push_back(std::string(display_name(s.integrator)) +
-                  " is a stub: nothing moves. Pick Symplectic Euler (framework) to watch the jelly fall.");
-  return out;
-}
-
-}  // namespace
-
 int run_app(const AppOptions& opt) {
+  // ---- set-up ----
   BackendOptions bo;
   bo.name = opt.backend;
   bo.width = opt.width;
@@ -216,86 +74,29 @@ int run_app(const AppOptions& opt) {
   if (!created.backend) {
     std::cerr << "jelly-lab: " << created.error
               << "\n(no display? use `jelly-lab --headless SCENE --frames DIR`)\n";
-    return 1;
+    return cli::kExitFailure;
   }
   auto* window = dynamic_cast<WindowBackend*>(created.backend.get());
   if (!window) {
     std::cerr << "jelly-lab: no window could be opened (" << created.backend->name()
               << " backend); use `jelly-lab --headless SCENE --frames DIR` to render without a display\n";
-    return 1;
+    return cli::kExitFailure;
   }
   Renderer renderer(window->gl(), opt.samples);
-
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // no imgui.ini next to the user's files
-  ImGui::StyleColorsDark();
-  ImGui::GetStyle().WindowRounding = 0.0f;
-  ImGui_ImplGlfw_InitForOpenGL(window->window(), true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-
+  init_imgui(*window);
   AppState s;
-  s.scripted = opt.smoke_test || opt.shot_at >= 0.0;
-  s.open_panels = opt.open_panels;
-  s.scenes_dir = opt.scenes_dir.empty() ? default_scenes_dir() : opt.scenes_dir;
-  s.scenes = list_scenes(s.scenes_dir);
-  s.tasks = probe_tasks(linked_tasks());
-  s.clock.factor = std::clamp(opt.factor, RealTimeClock::kMinFactor, RealTimeClock::kMaxFactor);
-  s.frame.draw.particles = opt.particles;
-  if (opt.springs) s.frame.draw.springs = {true, true, true, true};
-  int index = -1;
-  for (std::size_t i = 0; i < s.scenes.size(); ++i)
-    if (s.scenes[i].name == opt.scene || s.scenes[i].name == "builtin:" + opt.scene) index = static_cast<int>(i);
-  if (!load_scene_into(s, index, opt.scene)) {
-    std::cerr << "jelly-lab: " << s.scene_error << "\n";
-    if (s.scenes.empty() || !load_scene_into(s, 0)) return 1;
-  }
-  if (!opt.integrator.empty()) s.integrator = *integrator_from_string(opt.integrator);
-  if (opt.dt > 0.0) s.dt = opt.dt;
-  for (const std::string& name : opt.compare) s.slots.push_back(CompareSlot{*integrator_from_string(name), s.dt, {}, {}});
-  if (s.slots.empty())
-    s.slots = {CompareSlot{IntegratorKind::ExplicitEuler, s.dt, {}, {}}, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}}};
-  for (const auto& [k, assignment] : opt.slot_sets) {
-    if (k > static_cast<int>(s.slots.size())) {
-      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": there are only " << s.slots.size()
-                << " runs (--compare a,b[,c[,d]])\n";
-      return 2;
-    }
-    std::string& o = s.slots[static_cast<std::size_t>(k - 1)].overrides;
-    o += (o.empty() ? "" : "; ") + assignment;
-    SceneSpec probe = s.edited;
-    if (const auto error = apply_overrides(probe, o)) {
-      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": " << *error << "\n";
-      return 2;
-    }
-  }
-  s.comparing = !opt.compare.empty();
-  rebuild_runs(s);
-
-  // Scripted smoke test: every integrator for 2 s of simulated time, then every scene.
-  struct Script {
-    std::vector<IntegratorKind> integrators{kAllIntegrators.begin(), kAllIntegrators.end()};
-    std::size_t integrator = 0;
-    std::size_t scene = 0;
-    int scene_frames = 0;
-    bool scenes_phase = false;
-    int failures = 0;
-  } script;
-  if (opt.smoke_test) {
-    s.integrator = script.integrators[0];
-    s.comparing = false;
-    rebuild_runs(s);
-  }
+  if (const int code = init_state(s, opt); code != cli::kExitOk) return code;
+  SmokeScript script;
+  if (opt.smoke_test) script.begin(s);
 
   using clock = std::chrono::steady_clock;
   auto last = clock::now();
   double fps = 60.0;
-  std::vector<double> bench_ms, bench_cpu_ms;
-  int exit_code = 0;
+  FrameTimes bench;
+  ViewInput input;
+  int exit_code = cli::kExitOk;
   int frame_number = 0;
-  bool dragging = false;
-  double drag_x = 0.0, drag_y = 0.0;
+  const auto close = [&] { glfwSetWindowShouldClose(window->window(), GLFW_TRUE); };
 
   while (window->poll()) {
     const auto now = clock::now();
@@ -308,188 +109,41 @@ int run_app(const AppOptions& opt) {
     ImGui::NewFrame();
 
     // ---- input (outside ImGui's windows) ----
-    if (!io.WantCaptureKeyboard) {
-      if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) s.playing = !s.playing;
-      if (ImGui::IsKeyPressed(GLFW_KEY_N)) s.step_requested = true;
-      if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) s.reset_requested = true;
-      if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) s.camera_reset_requested = true;
-      if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) s.screenshot_requested = true;
-      if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
-    }
-    if (!io.WantCaptureMouse) {
-      if (ImGui::IsMouseClicked(0)) {
-        dragging = true;
-        drag_x = io.MousePos.x;
-        drag_y = io.MousePos.y;
-      }
-      if (io.MouseWheel != 0.0f) s.camera.zoom(io.MouseWheel);
-    }
-    if (!ImGui::IsMouseDown(0)) dragging = false;
-    if (dragging) {
-      s.camera.orbit(io.MousePos.x - drag_x, io.MousePos.y - drag_y);
-      drag_x = io.MousePos.x;
-      drag_y = io.MousePos.y;
-    }
+    if (input.handle(s)) close();
 
-    // ---- simulation: the Simulator's fixed step, driven by the clock (never in a draw call) ----
+    // ---- stepping ----
     if (s.reset_requested) {
       rebuild_runs(s);
       s.reset_requested = false;
     }
     const int w = window->width(), h = window->height();
-    const std::vector<SimulationRun*> runs = s.run_pointers();
-    if (opt.smoke_test) {
-      // 0.25 s of simulated time per frame, no wall clock (reproducible).
-      if (!script.scenes_phase) {
-        const double t = runs.front()->time() + 0.25;
-        runs.front()->advance_to(t);
-        if (!runs.front()->ok()) ++script.failures;
-        if (runs.front()->time() >= 2.0 - 1e-9 || runs.front()->unstable() || !runs.front()->ok()) {
-          std::printf("smoke: %-45s t = %.3f s, %ld steps, %.3f ms/step%s\n",
-                      std::string(display_name(s.integrator)).c_str(), runs.front()->time(),
-                      runs.front()->simulator() ? runs.front()->simulator()->steps() : 0L,
-                      runs.front()->ms_per_step(), runs.front()->unstable() ? " (detector stopped it)" : "");
-          if (++script.integrator < script.integrators.size()) {
-            s.integrator = script.integrators[script.integrator];
-          } else {
-            script.scenes_phase = true;
-            if (!s.scenes.empty() && !load_scene_into(s, 0)) {
-              std::printf("smoke: scene %s failed: %s\n", s.scenes[0].name.c_str(), s.scene_error.c_str());
-              ++script.failures;
-            }
-          }
-          rebuild_runs(s);
-        }
-      } else {
-        for (SimulationRun* r : runs) r->advance_to(r->time() + 0.1);
-        if (++script.scene_frames >= 3) {
-          std::printf("smoke: scene %-35s ok, t = %.2f s\n", s.edited.name.c_str(), runs.front()->time());
-          script.scene_frames = 0;
-          if (++script.scene < s.scenes.size()) {
-            if (!load_scene_into(s, static_cast<int>(script.scene))) {
-              std::printf("smoke: scene %s failed: %s\n", s.scenes[script.scene].name.c_str(),
-                          s.scene_error.c_str());
-              ++script.failures;
-            }
-          } else {
-            // Back to the course scene for the screenshot, a little after the start.
-            int course = 0;
-            for (std::size_t i = 0; i < s.scenes.size(); ++i)
-              if (s.scenes[i].name.find("course-2023") != std::string::npos) { course = static_cast<int>(i); break; }
-            load_scene_into(s, course);
-            for (SimulationRun* r : s.run_pointers()) r->advance_to(1.5);
-            s.screenshot_requested = !opt.screenshot.empty();
-            glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
-          }
-        }
-      }
-    } else if (opt.shot_at >= 0.0) {
-      for (SimulationRun* r : runs) r->advance_to(opt.shot_at);
-      if (frame_number > 4) {  // a few frames so ImGui's layout settles
-        s.screenshot_requested = true;
-        glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
-      }
-    } else if (s.recording) {
-      // Recording: a fixed 1/30 s × factor per frame, so the video plays at the chosen speed.
-      const double t = runs.front()->time() + s.clock.factor / 30.0;
-      for (SimulationRun* r : runs) r->advance_to(t);
-    } else if (s.playing && opt.benchmark == 0) {
-      double before = runs.front()->time();
-      for (SimulationRun* r : runs) before = std::min(before, r->time());
-      const double target = s.clock.target(before, wall_dt);
-      const double budget = s.clock.budget_ms / static_cast<double>(runs.size());
-      bool hit = false;
-      double after = target;
-      for (SimulationRun* r : runs) {
-        r->advance_to(target, budget);
-        hit = hit || r->budget_hit();
-        if (!r->unstable() && r->ok()) after = std::min(after, r->time());
-      }
-      s.clock.reached(before, after, hit);
-    }
-    if (s.step_requested) {
-      for (SimulationRun* r : s.run_pointers()) r->step_once();
-      s.step_requested = false;
-      s.playing = false;
-    }
+    if (advance_runs(s, opt, script, wall_dt, frame_number)) close();
+    apply_single_step(s);
 
-    // ---- draw ----
-    s.panel_width = std::min(420, w / 3);
-    s.frame.left_margin = s.panel_width;
-    s.frame.hints = task_hints(s);
-    const std::vector<SimulationRun*> current = s.run_pointers();
-    ensure_drawables(renderer, current);
-    if (s.camera_reset_requested && !current.empty() && drawable_of(*current.front())) {
-      const auto vps = frame_viewports(static_cast<int>(current.size()), w, h, s.frame.left_margin);
-      s.camera = OrbitCamera{};
-      s.camera.frame(drawable_of(*current.front())->bounds(), vps.front().aspect());
-      s.camera_reset_requested = false;
-    }
+    // ---- drawing, recording, screenshots ----
+    prepare_view(s, renderer, w, h);
     draw_panels(s, fps);
     ImGui::Render();
-    const auto t0 = clock::now();
-    const std::clock_t c0 = std::clock();
-    draw_frame(renderer, current, s.camera, s.frame, w, h);
-    if (s.recording) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.png", s.record_frame++);
-      // Recorded frames show the scene and its printed parameters, not the panels.
-      const Image shot = window->read_pixels();
-      const std::string err = write_png(s.record_dir / name, crop(shot, s.frame.left_margin, 0, shot.width - s.frame.left_margin, shot.height));
-      if (!err.empty()) {
-        s.record_message = err;
-        s.recording = false;
-      }
-    }
+    bench.start();
+    draw_frame(renderer, s.run_pointers(), s.camera, s.frame, w, h);
+    record_frame(s, *window);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (s.screenshot_requested) {
-      const fs::path file = !opt.screenshot.empty() ? opt.screenshot : fs::path("jelly-lab-" + timestamp() + ".png");
-      const std::string err = write_png(file, window->read_pixels());
-      s.screenshot_message = err.empty() ? "saved " + file.string() : err;
-      std::printf("%s\n", s.screenshot_message.c_str());
-      if (!err.empty()) exit_code = 1;
-      s.screenshot_requested = false;
-    }
+    if (s.screenshot_requested && !save_screenshot(s, opt.screenshot, *window)) exit_code = cli::kExitFailure;
     window->present();
     if (opt.benchmark > 0) {
-      bench_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - t0).count());
-      bench_cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-      if (static_cast<int>(bench_ms.size()) >= opt.benchmark + 3) glfwSetWindowShouldClose(window->window(), GLFW_TRUE);
+      bench.stop();
+      if (static_cast<int>(bench.count()) >= opt.benchmark + 3) close();
     }
   }
   if (s.recording) finish_recording(s);
-  if (opt.benchmark > 0 && bench_ms.size() > 3) {
-    std::vector<double> ms(bench_ms.begin() + 3, bench_ms.end());
-    std::vector<double> cpu(bench_cpu_ms.begin() + 3, bench_cpu_ms.end());
-    std::sort(ms.begin(), ms.end());
-    std::sort(cpu.begin(), cpu.end());
-    const double median = ms[ms.size() / 2];
-    std::printf("backend window, %dx%d, %d samples, %s\nframes %zu: median %.2f ms/frame = %.1f fps "
-                "(scene + ImGui + swap; min %.2f, max %.2f ms); median CPU %.2f ms/frame\n",
-                window->width(), window->height(), renderer.samples(), window->gl()->describe().c_str(),
-                ms.size(), median, 1000.0 / median, ms.front(), ms.back(), cpu[cpu.size() / 2]);
+  if (opt.benchmark > 0) bench.report(*window, renderer);
+  if (opt.smoke_test && script.failures() > 0) {
+    std::printf("smoke: %d failure(s)\n", script.failures());
+    exit_code = cli::kExitFailure;
   }
-  if (opt.smoke_test && script.failures > 0) {
-    std::printf("smoke: %d failure(s)\n", script.failures);
-    exit_code = 1;
-  }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
+  shutdown_imgui();
   s.runs.clear();  // drawables hold GL objects: free them while the context exists
   return exit_code;
-}
-
-/// Recording control used by the panel.
-void toggle_recording(AppState& s) {
-  if (s.recording) {
-    finish_recording(s);
-    return;
-  }
-  s.record_dir = fs::path("recordings") / timestamp();
-  s.record_frame = 0;
-  s.recording = true;
-  s.record_message = "recording to " + s.record_dir.string();
 }
 
 }  // namespace jelly::app

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,9 +37,9 @@ struct AppOptions {
   std::vector<std::string> open_panels;       ///< panel headers to open at start ("parameters", ...)
 };
 
-/// Parses the command line; "" on success, "help" for --help, else the error.
-std::string parse_options(int argc, char** argv, AppOptions& options);
-std::string usage();
+/// Reads the command line into `options` (options.cpp). nullopt: go on; else the exit code to
+/// return (the help or the error was printed).
+std::optional<int> parse_options(int argc, char** argv, AppOptions& options);
 /// Runs the app; returns the process exit code.
 int run_app(const AppOptions& options);
 

@@ -1,6 +1,5 @@
 // jelly-lab: the windowed viewer, or `jelly-lab --headless ...` = `jelly render ...`.
 #include <cstring>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -13,13 +12,6 @@ int main(int argc, char** argv) {
     return jelly::render_command(argc - 1, argv + 1);
   }
   jelly::app::AppOptions options;
-  if (const std::string err = jelly::app::parse_options(argc, argv, options); !err.empty()) {
-    if (err == "help") {
-      std::cout << jelly::app::usage();
-      return 0;
-    }
-    std::cerr << "jelly-lab: " << err << "\n" << jelly::app::usage();
-    return 2;
-  }
+  if (const auto code = jelly::app::parse_options(argc, argv, options)) return *code;
   return jelly::app::run_app(options);
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "jelly/cli_common/command_line.hpp"
 #include "jelly/params.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
@@ -40,15 +41,16 @@ std::string range_text(const ParamInfo& p) {
 }  // namespace
 
 int params_command(int argc, char** argv) {
-  const Args args(argc, argv, 2, {"--set"}, {"--help"});
-  if (args.has("--help") || !args.error().empty() || args.positionals().size() != 1) {
-    std::fputs("usage: jelly params SCENE [--set KEY=VALUE ...]\n"
-               "Lists every parameter SCENE declares: key, value, unit, valid range, meaning.\n"
-               "Any key can be changed with `jelly run SCENE --set KEY=VALUE`.\n",
-               args.has("--help") ? stdout : stderr);
-    return args.has("--help") ? kExitOk : kExitUsage;
-  }
-  const auto scene = load_with_overrides(args.positionals()[0], args);
+  const std::string usage = "usage: jelly params SCENE [--set KEY=VALUE ...]\n"
+                            "Lists every parameter SCENE declares: key, value, unit, valid range, meaning.\n"
+                            "Any key can be changed with `jelly run SCENE --set KEY=VALUE`.\n";
+  Command cmd("jelly params", usage, usage);
+  std::string scene_path;
+  SceneOverrides overrides;
+  cmd.add_option("SCENE", scene_path)->required();
+  add_scene_overrides(cmd, overrides, false);
+  if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
+  const auto scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
   std::printf("%-34s %-22s %-9s %-7s %-22s %s\n", "key", "value", "unit", "type", "range",
               "description");
@@ -61,15 +63,17 @@ int params_command(int argc, char** argv) {
 }
 
 int check_command(int argc, char** argv) {
-  const Args args(argc, argv, 2, {"--set", "--integrator", "--dt", "--duration"}, {"--help"});
-  if (args.has("--help") || !args.error().empty() || args.positionals().size() != 1) {
-    std::fputs("usage: jelly check SCENE [--set KEY=VALUE ...]\n"
-               "Validates SCENE, prints what it builds (particles, springs by type, terrains) and\n"
-               "the stable step size of every integrator from the linearised system (contract §8).\n",
-               args.has("--help") ? stdout : stderr);
-    return args.has("--help") ? kExitOk : kExitUsage;
-  }
-  const auto scene = load_with_overrides(args.positionals()[0], args);
+  const std::string usage =
+      "usage: jelly check SCENE [--set KEY=VALUE ...] [--integrator NAME] [--dt H] [--duration T]\n"
+      "Validates SCENE, prints what it builds (particles, springs by type, terrains) and\n"
+      "the stable step size of every integrator from the linearised system (contract §8).\n";
+  Command cmd("jelly check", usage, usage);
+  std::string scene_path;
+  SceneOverrides overrides;
+  cmd.add_option("SCENE", scene_path)->required();
+  add_scene_overrides(cmd, overrides);
+  if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
+  const auto scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
   std::unique_ptr<World> world;
   try {
@@ -108,8 +112,10 @@ int check_command(int argc, char** argv) {
 }
 
 int probe_command(int argc, char** argv) {
-  (void)argc;
-  (void)argv;
+  const char* usage = "usage: jelly probe\n"
+                      "Lists which student tasks (A1.T1-A1.T13) look implemented in this build.\n";
+  Command cmd("jelly probe", usage, usage);
+  if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const auto statuses = probe_tasks(linked_tasks());
   std::printf("student tasks linked into this build (%s):\n",
               std::string(linked_tasks().origin).c_str());

@@ -1,5 +1,7 @@
 #include "jelly/cli/render_command.hpp"
 
+#include "jelly/cli_common/command_line.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -7,6 +9,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace jelly::render;
+using jelly::cli::Command;
+using jelly::cli::positive_number;
+using jelly::cli::whole_number;
 using namespace jelly::session;
 
 constexpr const char* kUsage =
@@ -87,74 +93,46 @@ bool apply_camera(const std::string& text, OrbitCamera& camera) {
   return true;
 }
 
-/// Parses argv; returns an error text or "".
-std::string parse(int argc, char** argv, Args& a) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&](std::string& out) {
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    std::string v;
-    double d = 0.0;
-    if (arg == "--frames") {
-      if (!value(v)) return "--frames needs a folder";
-      a.frames = v;
-    } else if (arg == "--width" || arg == "--height" || arg == "--fps" || arg == "--duration" ||
-               arg == "--dt" || arg == "--benchmark" || arg == "--samples") {
-      const bool zero_ok = arg == "--duration" || arg == "--samples";
-      if (!value(v) || !parse_number(v, d) || d < 0.0 || (d == 0.0 && !zero_ok))
-        return arg + (zero_ok ? " needs a number ≥ 0" : " needs a number > 0") + ", got '" + v + "'";
-      if (arg == "--samples") a.samples = static_cast<int>(d);
-      if (arg == "--width") a.width = static_cast<int>(d);
-      if (arg == "--height") a.height = static_cast<int>(d);
-      if (arg == "--fps") a.fps = d;
-      if (arg == "--duration") a.duration = d;
-      if (arg == "--dt") a.dt = d;
-      if (arg == "--benchmark") a.benchmark = static_cast<int>(d);
-    } else if (arg == "--replay") {
-      if (!value(v)) return "--replay needs a CSV file (frame,time,particle,x,y,z)";
-      a.replay = v;
-    } else if (arg == "--label") {
-      if (!value(a.label)) return "--label needs a text";
-    } else if (arg == "--integrator") {
-      if (!value(a.integrator)) return "--integrator needs a name";
-    } else if (arg == "--backend") {
-      if (!value(a.backend)) return "--backend needs a name";
-    } else if (arg == "--camera") {
-      if (!value(a.camera)) return "--camera needs YAW,PITCH,DISTANCE";
-    } else if (arg == "--set") {
-      if (!value(v) || v.find('=') == std::string::npos) return "--set needs key=value, got '" + v + "'";
-      a.sets.push_back(v);
-    } else if (arg == "--compare") {
-      if (!value(v)) return "--compare needs a,b[,c[,d]]";
-      a.compare = split(v, ',');
-      if (a.compare.size() < 2 || a.compare.size() > 4)
-        return "--compare takes 2 to 4 integrators, got " + std::to_string(a.compare.size());
-    } else if (arg == "--particles") {
-      a.particles = true;
-    } else if (arg == "--springs") {
-      a.springs = true;
-    } else if (arg == "--no-caption") {
-      a.caption = false;
-    } else if (arg == "--no-video") {
-      a.video = false;
-    } else if (arg == "-h" || arg == "--help") {
-      return "help";
-    } else if (!arg.empty() && arg[0] == '-') {
-      return "unknown option " + arg;
-    } else if (a.scene.empty()) {
-      a.scene = arg;
-    } else {
-      return "unexpected argument '" + arg + "' (one scene only)";
-    }
+/// Reads argv (argv[0] = "render") into `a`. nullopt: go on; else the exit code to return.
+std::optional<int> parse(int argc, char** argv, Args& a) {
+  Command cmd("jelly render", kUsage, kUsage);
+  std::string compare, frames, replay;
+  cmd.add_option("SCENE", a.scene)->required();
+  cmd.add_option("--frames", frames)->type_name("DIR");
+  cmd.add_option("--width", a.width)->type_name("W")->check(whole_number(1));
+  cmd.add_option("--height", a.height)->type_name("H")->check(whole_number(1));
+  cmd.add_option("--fps", a.fps)->type_name("F")->check(positive_number());
+  cmd.add_option("--duration", a.duration)->type_name("T")->check(positive_number(true));
+  cmd.add_option("--dt", a.dt)->type_name("H")->check(positive_number());
+  cmd.add_option("--benchmark", a.benchmark)->type_name("N")->check(whole_number(1));
+  cmd.add_option("--samples", a.samples)->type_name("0|2|4")->check(whole_number(0));
+  cmd.add_option("--replay", replay)->type_name("FILE.csv");
+  cmd.add_option("--label", a.label)->type_name("TEXT");
+  cmd.add_option("--integrator", a.integrator)->type_name("NAME");
+  cmd.add_option("--backend", a.backend)->type_name("offscreen|window|null");
+  cmd.add_option("--camera", a.camera)->type_name("YAW,PITCH,DISTANCE");
+  cmd.repeated("--set", a.sets, "KEY=VALUE")->check(CLI::Validator(
+      [](std::string& kv) {
+        return kv.find('=') != std::string::npos ? std::string() : "expected KEY=VALUE, got '" + kv + "'";
+      },
+      ""));
+  cmd.add_option("--compare", compare)->type_name("A,B[,C[,D]]");
+  cmd.add_flag("--particles", a.particles);
+  cmd.add_flag("--springs", a.springs);
+  cmd.add_flag("--no-caption", [&a](std::int64_t) { a.caption = false; });
+  cmd.add_flag("--no-video", [&a](std::int64_t) { a.video = false; });
+  if (const auto code = cmd.parse_args(argc, argv, 1)) return code;
+  a.frames = frames;
+  a.replay = replay;
+  if (!compare.empty()) {
+    a.compare = split(compare, ',');
+    if (a.compare.size() < 2 || a.compare.size() > 4)
+      return cmd.error("--compare takes 2 to 4 integrators, got " + std::to_string(a.compare.size()));
   }
-  if (a.scene.empty()) return "no scene given";
-  if (a.frames.empty() && a.benchmark == 0) return "--frames DIR is required";
+  if (a.frames.empty() && a.benchmark == 0) return cmd.error("--frames DIR is required");
   if (!a.replay.empty() && (!a.compare.empty() || a.benchmark > 0 || !a.integrator.empty()))
-    return "--replay draws recorded positions: --compare, --integrator and --benchmark do not apply";
-  return {};
+    return cmd.error("--replay draws recorded positions: --compare, --integrator and --benchmark do not apply");
+  return std::nullopt;
 }
 
 bool on_path(const std::string& program) {
@@ -248,14 +226,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
 
 int render_command(int argc, char** argv) {
   Args a;
-  if (const std::string err = parse(argc, argv, a); !err.empty()) {
-    if (err == "help") {
-      std::cout << kUsage;
-      return 0;
-    }
-    std::cerr << "jelly render: " << err << "\n" << kUsage;
-    return 2;
-  }
+  if (const auto code = parse(argc, argv, a)) return *code;
   SceneResult loaded = resolve_scene(a.scene, default_scenes_dir());
   if (!loaded) {
     std::cerr << "jelly render: " << loaded.error->text() << "\n";

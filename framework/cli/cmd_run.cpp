@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "jelly/auto_step.hpp"
+#include "jelly/cli_common/command_line.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/simulator.hpp"
@@ -55,50 +56,33 @@ stability detector; 1 unexpected failure (e.g. an output file could not be writt
 }  // namespace
 
 int run_command(int argc, char** argv) {
-  const Args args(argc, argv, 2,
-                  {"--integrator", "--dt", "--duration", "--set", "--every", "--out", "--summary",
-                   "--threads"},
-                  {"--help", "--quiet", "--no-detector", "--auto-dt"});
-  if (args.has("--help")) {
-    std::fputs(kRunHelp, stdout);
-    return kExitOk;
-  }
-  if (!args.error().empty() || args.positionals().size() != 1) {
-    std::fprintf(stderr, "jelly run: %s\n(see jelly run --help)\n",
-                 !args.error().empty() ? args.error().c_str()
-                                       : "expected exactly one SCENE file");
-    return kExitUsage;
-  }
-  std::optional<long> every;
-  if (const auto e = args.value("--every")) {
-    every = parse_positive_integer(*e);
-    if (!every) {
-      std::fprintf(stderr, "jelly run: --every: expected a whole number ≥ 1, got '%s'\n", e->c_str());
-      return kExitUsage;
-    }
-  }
-  std::optional<long> threads;
-  if (const auto t = args.value("--threads")) {
-    threads = parse_positive_integer(*t);
-    if (!threads || *threads > 256) {
-      std::fprintf(stderr, "jelly run: --threads: expected a whole number from 1 to 256, got '%s'\n",
-                   t->c_str());
-      return kExitUsage;
-    }
-  }
-  const std::optional<SceneSpec> scene = load_with_overrides(args.positionals()[0], args);
+  Command cmd("jelly run", kRunHelp, "(see jelly run --help)\n");
+  std::string scene_path, out_path, summary_path;
+  SceneOverrides overrides;
+  long every = 0, threads = 0;  // 0: not given
+  bool quiet = false, no_detector = false, auto_dt = false;
+  cmd.add_option("SCENE", scene_path)->required();
+  add_scene_overrides(cmd, overrides);
+  cmd.add_option("--every", every)->type_name("K")->check(whole_number(1));
+  cmd.add_option("--threads", threads)->type_name("N")->check(whole_number(1, 256));
+  cmd.add_option("--out", out_path)->type_name("FILE.csv");
+  cmd.add_option("--summary", summary_path)->type_name("FILE.csv");
+  cmd.add_flag("--quiet", quiet);
+  cmd.add_flag("--no-detector", no_detector);
+  cmd.add_flag("--auto-dt", auto_dt);
+  if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
+  const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
-  const bool quiet = args.has("--quiet");
-  if (!quiet) print_missing_tasks_note();
+    if (!quiet) print_missing_tasks_note();
 
   std::unique_ptr<Simulator> sim;
   std::optional<AutoStep> auto_step;
   try {
     Simulator::Options options(scene->integrator, scene->dt);
-    options.detect_instability = !args.has("--no-detector");
+    options.detect_instability = !no_detector;
     std::unique_ptr<World> world = build_world(*scene, linked_tasks());
-    if (threads) world->set_force_threads(static_cast<int>(*threads));
-    if (args.has("--auto-dt") || scene->auto_dt) {
+    if (threads > 0) world->set_force_threads(static_cast<int>(threads));
+    if (auto_dt || scene->auto_dt) {
       // One frame = 1/60 s, the default recording interval; the scene's dt is the largest step.
       auto_step = choose_step(*world, world->state(), scene->integrator, 1.0 / 60.0, scene->dt);
       options.dt = auto_step->chosen_h;
@@ -111,16 +95,15 @@ int run_command(int argc, char** argv) {
     return kExitUsage;
   }
   const double h = sim->options().dt;
-  const long k = every ? *every
+  const long k = every > 0 ? every
                        : auto_step ? auto_step->substeps_per_frame
                                    : std::max(1L, std::lround(1.0 / (60.0 * h)));
 
   // Outputs are opened only now, after every input was validated: bad input writes nothing.
   std::unique_ptr<CsvWriter> out, summary;
   try {
-    if (const auto p = args.value("--out")) out = std::make_unique<CsvWriter>(*p, kTrajectoryHeader);
-    if (const auto p = args.value("--summary"))
-      summary = std::make_unique<CsvWriter>(*p, kSummaryHeader);
+    if (!out_path.empty()) out = std::make_unique<CsvWriter>(out_path, kTrajectoryHeader);
+    if (!summary_path.empty()) summary = std::make_unique<CsvWriter>(summary_path, kSummaryHeader);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "jelly run: %s\n", e.what());
     return kExitInternal;
@@ -159,13 +142,21 @@ int run_command(int argc, char** argv) {
         static_cast<std::size_t>(sim->state().size()), sim->world().spring_count(),
         sim->world().terrains().size(), sim->evaluations(), end.com.x(), end.com.y(),
         end.com.z(), end.max_speed, end.kinetic, end.potential, end.spring);
-    if (out) std::printf("  wrote %ld frames to %s\n", frame, args.value("--out")->c_str());
-    if (summary) std::printf("  wrote %ld summary rows to %s\n", frame, args.value("--summary")->c_str());
+    if (out) std::printf("  wrote %ld frames to %s\n", frame, out_path.c_str());
+    if (summary) std::printf("  wrote %ld summary rows to %s\n", frame, summary_path.c_str());
   }
   return kExitOk;
 }
 
-std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const Args& args) {
+void add_scene_overrides(Command& command, SceneOverrides& into, bool run_options) {
+  command.repeated("--set", into.sets, "KEY=VALUE");
+  if (!run_options) return;
+  command.add_option("--integrator", into.integrator)->type_name("NAME");
+  command.add_option("--dt", into.dt)->type_name("H");
+  command.add_option("--duration", into.duration)->type_name("T");
+}
+
+std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const SceneOverrides& overrides) {
   SceneResult loaded = session::resolve_scene(scene_name, session::default_scenes_dir());
   if (!loaded) {
     std::fprintf(stderr, "error: %s\n", loaded.error->text().c_str());
@@ -179,10 +170,10 @@ std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, cons
     }
     return true;
   };
-  if (const auto v = args.value("--integrator"); v && !apply("simulation.integrator", *v)) return std::nullopt;
-  if (const auto v = args.value("--dt"); v && !apply("simulation.dt", *v)) return std::nullopt;
-  if (const auto v = args.value("--duration"); v && !apply("simulation.duration", *v)) return std::nullopt;
-  for (const std::string& kv : args.values("--set")) {
+  if (!overrides.integrator.empty() && !apply("simulation.integrator", overrides.integrator)) return std::nullopt;
+  if (!overrides.dt.empty() && !apply("simulation.dt", overrides.dt)) return std::nullopt;
+  if (!overrides.duration.empty() && !apply("simulation.duration", overrides.duration)) return std::nullopt;
+  for (const std::string& kv : overrides.sets) {
     if (const auto err = set_assignment(scene, kv)) {
       std::fprintf(stderr, "error: %s\n", err->text().c_str());
       return std::nullopt;

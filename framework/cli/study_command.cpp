@@ -1,13 +1,12 @@
-// `jelly study`: dispatch and command line of the numerical studies (accuracy, effects).
+// `jelly study`: dispatch and command line of the numerical studies.
 #include "study_command.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 
-#include "cli_args.hpp"
 #include "commands.hpp"
+#include "jelly/cli_common/command_line.hpp"
 #include "study_accuracy.hpp"
 #include "study_effects.hpp"
 
@@ -39,12 +38,12 @@ options:
                       midpoint, rk4, symplectic_euler, backward_euler)
   --steps H1,H2,...   step sizes [s] (default: 4 x the scene's dt halved --levels times)
   --h-max H           coarsest step of a halving sweep [s] (default 4 x the scene's dt)
-  --levels K          number of steps in the halving sweep (default 5)
+  --levels K          number of steps in the halving sweep, 1 to 30 (default 5)
   --duration T        simulated time [s] (default: the scene's duration)
   --sample-dt S       error sample interval [s] (default 0.01); a whole multiple of every h
   --ref-factor F      h_ref = smallest h / F (default 16)
   --no-ref-check      skip the h_ref / 2 check run
-  --repeats R         timing: minimum wall time of R runs (default 1)
+  --repeats R         timing: minimum wall time of R runs, 1 to 100 (default 1)
   --set KEY=VALUE     change any scene parameter (repeatable), as for `jelly run`
   --out PREFIX        output files PREFIX.csv/.md/.dat/.gp/.svg/.png (default study-SCENENAME)
   --title TEXT        plot and table title (default: the scene's name)
@@ -100,96 +99,66 @@ exit codes: 0 done (also when runs were unstable: they are marked); 2 bad comman
 key or value (nothing is run or written); 1 a file could not be written.
 )";
 
-/// Comma-separated items; `separator` ';' for lists of vectors.
-std::vector<std::string> split(const std::string& text, char separator = ',') {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, separator);)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
-std::optional<double> positive(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !(v > 0.0) || !std::isfinite(v)) return std::nullopt;
-  return v;
+/// --integrators A,B: each name must be an integrator's.
+CLI::Validator integrator_name() {
+  return CLI::Validator(
+      [](std::string& name) {
+        return integrator_from_string(name) ? std::string() : "unknown integrator '" + name + "'";
+      },
+      "");
 }
 
 int accuracy(int argc, char** argv) {
-  const Args args(argc, argv, 3,
-                  {"--integrators", "--steps", "--h-max", "--levels", "--duration", "--sample-dt",
-                   "--ref-factor", "--repeats", "--set", "--out", "--title"},
-                  {"--help", "--no-ref-check", "--quiet"});
-  if (args.has("--help")) {
-    std::fputs(kStudyHelp, stdout);
-    return kExitOk;
-  }
-  const auto usage = [](const std::string& what) {
-    std::fprintf(stderr, "jelly study accuracy: %s\n(see jelly study --help)\n", what.c_str());
-    return kExitUsage;
-  };
-  if (!args.error().empty()) return usage(args.error());
-  if (args.positionals().size() != 1) return usage("expected exactly one SCENE file");
-  const std::optional<SceneSpec> scene = load_with_overrides(args.positionals()[0], args);
+  Command cmd("jelly study accuracy", kStudyHelp, "(see jelly study --help)\n");
+  std::string scene_path, prefix, title;
+  SceneOverrides overrides;
+  std::vector<std::string> integrators;
+  std::vector<double> steps;
+  double h_max = 0.0, sample_dt = 0.0;  // 0: not given
+  long levels = 5, ref_factor = 0, repeats = 0;
+  bool no_ref_check = false, quiet = false;
+  cmd.add_option("SCENE", scene_path)->required();
+  cmd.add_option("--integrators", integrators)->type_name("A,B")->delimiter(',')->check(integrator_name())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--steps", steps)->type_name("H1,H2")->delimiter(',')->check(positive_number())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--h-max", h_max)->type_name("H")->check(positive_number());
+  cmd.add_option("--levels", levels)->type_name("K")->check(whole_number(1, 30));
+  cmd.add_option("--duration", overrides.duration)->type_name("T");
+  cmd.add_option("--sample-dt", sample_dt)->type_name("S")->check(positive_number());
+  cmd.add_option("--ref-factor", ref_factor)->type_name("F")->check(whole_number(1));
+  cmd.add_option("--repeats", repeats)->type_name("R")->check(whole_number(1, 100));
+  add_scene_overrides(cmd, overrides, false);
+  cmd.add_option("--out", prefix)->type_name("PREFIX");
+  cmd.add_option("--title", title)->type_name("TEXT");
+  cmd.add_flag("--no-ref-check", no_ref_check);
+  cmd.add_flag("--quiet", quiet);
+  if (const auto code = cmd.parse_args(argc, argv, 3)) return *code;
+  const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
 
   study::SweepOptions o;
   o.duration = scene->duration;
-  if (const auto v = args.value("--integrators")) {
-    for (const std::string& name : split(*v)) {
-      const auto k = integrator_from_string(name);
-      if (!k) return usage("--integrators: unknown integrator '" + name + "'");
-      o.integrators.push_back(*k);
-    }
-  } else {
-    o.integrators.assign(kAllIntegrators.begin(), kAllIntegrators.end());
-  }
-  if (const auto v = args.value("--steps")) {
-    for (const std::string& t : split(*v)) {
-      const auto h = positive(t);
-      if (!h) return usage("--steps: expected positive numbers separated by commas, got '" + t + "'");
-      o.steps.push_back(*h);
-    }
-  } else {
-    double h = 4.0 * scene->dt;
-    long levels = 5;
-    if (const auto hm = args.value("--h-max")) {
-      const auto p = positive(*hm);
-      if (!p) return usage("--h-max: expected a number > 0, got '" + *hm + "'");
-      h = *p;
-    }
-    if (const auto lv = args.value("--levels")) {
-      const auto p = parse_positive_integer(*lv);
-      if (!p || *p > 30) return usage("--levels: expected a whole number 1..30, got '" + *lv + "'");
-      levels = *p;
-    }
+  for (const std::string& name : integrators) o.integrators.push_back(*integrator_from_string(name));
+  if (integrators.empty()) o.integrators.assign(kAllIntegrators.begin(), kAllIntegrators.end());
+  o.steps = steps;
+  if (steps.empty()) {
+    double h = h_max > 0.0 ? h_max : 4.0 * scene->dt;
     for (long i = 0; i < levels; ++i, h /= 2.0) o.steps.push_back(h);
   }
-  if (const auto v = args.value("--sample-dt")) {
-    const auto p = positive(*v);
-    if (!p) return usage("--sample-dt: expected a number > 0, got '" + *v + "'");
-    o.sample_dt = *p;
-  }
-  if (const auto v = args.value("--ref-factor")) {
-    const auto p = parse_positive_integer(*v);
-    if (!p) return usage("--ref-factor: expected a whole number >= 1, got '" + *v + "'");
-    o.reference_factor = static_cast<int>(*p);
-  }
-  if (const auto v = args.value("--repeats")) {
-    const auto p = parse_positive_integer(*v);
-    if (!p || *p > 100) return usage("--repeats: expected a whole number 1..100, got '" + *v + "'");
-    o.repeats = static_cast<int>(*p);
-  }
-  o.check_reference = !args.has("--no-ref-check");
-  const std::string prefix = args.value("--out").value_or("study-" + scene->name);
-  const std::string title = args.value("--title").value_or(scene->name);
+  if (sample_dt > 0.0) o.sample_dt = sample_dt;
+  if (ref_factor > 0) o.reference_factor = static_cast<int>(ref_factor);
+  if (repeats > 0) o.repeats = static_cast<int>(repeats);
+  o.check_reference = !no_ref_check;
+  if (prefix.empty()) prefix = "study-" + scene->name;
+  if (title.empty()) title = scene->name;
 
   study::SweepResult result;
   try {
-    result = study::run_sweep(*scene, o, args.has("--quiet") ? nullptr : stdout);
+    result = study::run_sweep(*scene, o, quiet ? nullptr : stdout);
   } catch (const std::invalid_argument& e) {
-    return usage(e.what());
+    return cmd.error(e.what());
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "jelly study accuracy: %s\n", e.what());
     return kExitInternal;
@@ -203,63 +172,71 @@ int accuracy(int argc, char** argv) {
     return kExitInternal;
   }
   if (!note.empty()) std::fprintf(stderr, "jelly study accuracy: %s\n", note.c_str());
-  if (!args.has("--quiet"))
+  if (!quiet)
     for (const auto& f : files) std::printf("wrote %s\n", f.string().c_str());
   return kExitOk;
 }
 
+
+/// --values: comma-separated, or ';'-separated when any value is a vector ("0,9,0;0,30,0").
+std::vector<std::string> split_values(const std::string& text) {
+  const char separator = text.find(';') != std::string::npos ? ';' : ',';
+  std::vector<std::string> out;
+  std::string item;
+  for (std::size_t i = 0; i <= text.size(); ++i)
+    if (i == text.size() || text[i] == separator) {
+      if (!item.empty()) out.push_back(item);
+      item.clear();
+    } else {
+      item += text[i];
+    }
+  return out;
+}
+
 int effects(int argc, char** argv) {
-  const Args args(argc, argv, 3,
-                  {"--param", "--values", "--integrators", "--duration", "--set", "--dt", "--rest-speed",
-                   "--rest-hold", "--sample-dt", "--repeats", "--out", "--title"},
-                  {"--help", "--quiet"});
-  if (args.has("--help")) {
-    std::fputs(kEffectsHelp, stdout);
-    return kExitOk;
-  }
-  const auto usage = [](const std::string& what) {
-    std::fprintf(stderr, "jelly study effects: %s\n(see jelly study effects --help)\n", what.c_str());
-    return kExitUsage;
-  };
-  if (!args.error().empty()) return usage(args.error());
-  if (args.positionals().size() != 1) return usage("expected exactly one SCENE file");
-  const std::optional<SceneSpec> scene = load_with_overrides(args.positionals()[0], args);
+  Command cmd("jelly study effects", kEffectsHelp, "(see jelly study effects --help)\n");
+  std::string scene_path, prefix, title, key, values;
+  SceneOverrides overrides;
+  std::vector<std::string> integrators;
+  double rest_speed = 0.0, rest_hold = 0.0, sample_dt = 0.0;  // 0: not given
+  long repeats = 0;
+  bool quiet = false;
+  cmd.add_option("SCENE", scene_path)->required();
+  cmd.add_option("--param", key)->type_name("KEY");
+  cmd.add_option("--values", values)->type_name("A,B");
+  cmd.add_option("--integrators", integrators)->type_name("A,B")->delimiter(',')->check(integrator_name())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--rest-speed", rest_speed)->type_name("V")->check(positive_number());
+  cmd.add_option("--rest-hold", rest_hold)->type_name("S")->check(positive_number());
+  cmd.add_option("--sample-dt", sample_dt)->type_name("S")->check(positive_number());
+  cmd.add_option("--repeats", repeats)->type_name("R")->check(whole_number(1, 100));
+  add_scene_overrides(cmd, overrides);
+  cmd.add_option("--out", prefix)->type_name("PREFIX");
+  cmd.add_option("--title", title)->type_name("TEXT");
+  cmd.add_flag("--quiet", quiet);
+  if (const auto code = cmd.parse_args(argc, argv, 3)) return *code;
+  const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
 
   study::EffectsOptions o;
   o.duration = scene->duration;
-  o.key = args.value("--param").value_or("");
-  if (const auto v = args.value("--values")) o.values = split(*v, v->find(';') != std::string::npos ? ';' : ',');
-  if (const auto v = args.value("--integrators")) {
-    for (const std::string& name : split(*v)) {
-      const auto k = integrator_from_string(name);
-      if (!k) return usage("--integrators: unknown integrator '" + name + "'");
-      o.integrators.push_back(*k);
-    }
-  }
-  if (o.key.empty() && o.integrators.empty()) return usage("nothing to sweep: give --param KEY --values A,B,... or --integrators A,B");
-  const std::pair<const char*, double*> reals[] = {
-      {"--rest-speed", &o.rest_speed}, {"--rest-hold", &o.rest_hold}, {"--sample-dt", &o.series_dt}};
-  for (const auto& [flag, target] : reals)
-    if (const auto v = args.value(flag)) {
-      const auto p = positive(*v);
-      if (!p) return usage(std::string(flag) + ": expected a number > 0, got '" + *v + "'");
-      *target = *p;
-    }
-  if (const auto v = args.value("--repeats")) {
-    const auto p = parse_positive_integer(*v);
-    if (!p || *p > 100) return usage("--repeats: expected a whole number 1..100, got '" + *v + "'");
-    o.repeats = static_cast<int>(*p);
-  }
-  const std::string prefix = args.value("--out").value_or("effects-" + scene->name);
-  const std::string title =
-      args.value("--title").value_or(scene->name + (o.key.empty() ? std::string(": integrators") : ": " + o.key));
+  o.key = key;
+  o.values = split_values(values);
+  for (const std::string& name : integrators) o.integrators.push_back(*integrator_from_string(name));
+  if (o.key.empty() && o.integrators.empty())
+    return cmd.error("nothing to sweep: give --param KEY --values A,B,... or --integrators A,B");
+  if (rest_speed > 0.0) o.rest_speed = rest_speed;
+  if (rest_hold > 0.0) o.rest_hold = rest_hold;
+  if (sample_dt > 0.0) o.series_dt = sample_dt;
+  if (repeats > 0) o.repeats = static_cast<int>(repeats);
+  if (prefix.empty()) prefix = "effects-" + scene->name;
+  if (title.empty()) title = scene->name + (o.key.empty() ? std::string(": integrators") : ": " + o.key);
 
   study::EffectsResult result;
   try {
-    result = study::run_effects(*scene, o, args.has("--quiet") ? nullptr : stdout);
+    result = study::run_effects(*scene, o, quiet ? nullptr : stdout);
   } catch (const std::invalid_argument& e) {
-    return usage(e.what());
+    return cmd.error(e.what());
   }
   std::string note;
   std::vector<std::filesystem::path> files;
@@ -270,11 +247,10 @@ int effects(int argc, char** argv) {
     return kExitInternal;
   }
   if (!note.empty()) std::fprintf(stderr, "jelly study effects: %s\n", note.c_str());
-  if (!args.has("--quiet"))
+  if (!quiet)
     for (const auto& f : files) std::printf("wrote %s\n", f.string().c_str());
   return kExitOk;
 }
-
 }  // namespace
 
 int study_command(int argc, char** argv) {

@@ -3,7 +3,7 @@
 
 namespace jelly::cli {
 
-/// jelly study accuracy|effects SCENE ... (argv[1] is "study"). Returns an ExitCode (cli_args.hpp).
+/// jelly study accuracy|effects SCENE ... (argv[1] is "study"). Returns an ExitCode (jelly/cli_common/exit_codes.hpp).
 int study_command(int argc, char** argv);
 
 }  // namespace jelly::cli

@@ -208,6 +208,33 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   return status;
 }
 
+namespace {
+
+/// Copies the header folder INCLUDE_DIR/SUBDIR (which must hold FILE) into the zip's
+/// source/third_party/NAME/include/SUBDIR with the first licence that exists; says what is
+/// missing and returns false when the headers are not there.
+bool bundle_headers(const fs::path& stage, const std::string& name, const fs::path& include_dir,
+                    const std::string& subdir, const std::string& file, const std::vector<fs::path>& licences,
+                    const std::string& package) {
+  const fs::path headers = include_dir / subdir;
+  const fs::path bundle = stage / "source" / "third_party" / name;
+  if (!fs::exists(headers / file)) {
+    std::cerr << "jelly-grade: gradescope-zip: " << name << " headers not found at " << headers.string()
+              << " (expected " << file << " there; install " << package << ")\n";
+    return false;
+  }
+  fs::create_directories(bundle / "include");
+  fs::copy(headers, bundle / "include" / subdir, fs::copy_options::recursive);
+  for (const fs::path& licence : licences)
+    if (fs::exists(licence)) {
+      fs::copy_file(licence, bundle / "LICENSE", fs::copy_options::overwrite_existing);
+      break;
+    }
+  return true;
+}
+
+}  // namespace
+
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
   fs::remove_all(stage);
@@ -221,23 +248,15 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   // Not needed to grade, and the mutants quote the reference solution.
   fs::remove_all(stage / "source" / "grader" / "tests");
   fs::remove_all(stage / "source" / "grader" / "mutants");
-  // toml++'s headers, for an image without libtomlplusplus-dev (Gradescope's Ubuntu): the build
-  // then uses them header-only (CMakeLists.txt). Taken from this machine, with their licence.
-  const fs::path toml_headers = fs::path(JELLY_TOMLPLUSPLUS_INCLUDE_DIR) / "toml++";
-  const fs::path bundle = stage / "source" / "third_party" / "tomlplusplus";
-  if (!fs::exists(toml_headers / "toml.h")) {
-    std::cerr << "jelly-grade: gradescope-zip: toml++ headers not found at " << toml_headers.string()
-              << " (expected toml.h there; install libtomlplusplus-dev)\n";
+  // toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
+  // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
+  // this machine, with their licences.
+  if (!bundle_headers(stage, "tomlplusplus", JELLY_TOMLPLUSPLUS_INCLUDE_DIR, "toml++", "toml.h",
+                      {"/usr/share/doc/libtomlplusplus-dev/copyright", JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
+                      "libtomlplusplus-dev") ||
+      !bundle_headers(stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
+                      {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"}, "libcli11-dev"))
     return 2;
-  }
-  fs::create_directories(bundle / "include");
-  fs::copy(toml_headers, bundle / "include" / "toml++", fs::copy_options::recursive);
-  for (const char* licence : {"/usr/share/doc/libtomlplusplus-dev/copyright",
-                              JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"})
-    if (fs::exists(licence)) {
-      fs::copy_file(licence, bundle / "LICENSE", fs::copy_options::overwrite_existing);
-      break;
-    }
   std::ofstream(stage / "setup.sh") <<
       "#!/usr/bin/env bash\n"
       "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
@@ -245,9 +264,11 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
       "apt-get update\n"
       "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev nlohmann-json3-dev "
       "libseccomp-dev bubblewrap\n"
-      "# toml++: the package where the distribution has it, else the headers bundled in source/.\n"
+      "# toml++ and CLI11: the packages where the distribution has them, else the headers bundled in source/.\n"
       "apt-get install -y --no-install-recommends libtomlplusplus-dev || "
       "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
+      "apt-get install -y --no-install-recommends libcli11-dev || "
+      "echo 'setup.sh: no libcli11-dev; using source/third_party/cli11'\n"
       "cd /autograder/source\n"
       "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments -DJELLY_BUILD_TESTS=OFF "
       "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"

@@ -136,6 +136,36 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"zero_dt", "\ndt = 0.001", "\ndt = 0.0", "simulation.dt"}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
 
+// The command line (CLI11, jelly::cli::Command): a bad option is named with what it expects, the
+// exit code is 2 and nothing is written; --help is the hand-written text on stdout, exit code 0.
+TEST_F(Cli, BadOptionsAreNamedWithWhatTheyExpect) {
+  const std::string run = "run " + scene("course-2023.toml") + " --out " + out();
+  const struct {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {" --bogus", "jelly run: unknown option --bogus"},
+      {" --every", "jelly run: --every needs a value (K)"},
+      {" --every 1.5", "jelly run: --every: expected a whole number ≥ 1, got '1.5'"},
+      {" --threads=300", "jelly run: --threads: expected a whole number from 1 to 256, got '300'"},
+      {" other.toml", "jelly run: unexpected argument 'other.toml'"},
+  };
+  for (const auto& c : cases) {
+    const Result r = jelly(run + c.args);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ":\n" << r.output;
+    EXPECT_NE(r.output.find("(see jelly run --help)"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out())) << c.args;
+  }
+  const Result missing = jelly("check");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.output.find("jelly check: SCENE is required"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("usage: jelly check SCENE"), std::string::npos) << missing.output;
+  const Result help = jelly("params --help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_EQ(help.output.rfind("usage: jelly params SCENE", 0), 0u) << help.output;
+}
+
 TEST_F(Cli, MissingSceneFile) {
   const Result r = jelly("run " + (dir_ / "nope.toml").string() + " --out " + out());
   EXPECT_EQ(r.code, 2);

@@ -1,5 +1,6 @@
 # Configures the source tree in a way that must fail, and checks the message names the fix.
 #   CASE=missing_system   JELLY_DEPS=system with Eigen hidden: names libeigen3-dev and the bundled way
+#   CASE=missing_cli11    JELLY_DEPS=system with CLI11 hidden (package and headers): names libcli11-dev
 #   CASE=missing_bundled  JELLY_DEPS=bundled with no third_party/: names tools/fetch-third-party
 #   CASE=no_compiler      CXX points nowhere: names what to install per OS
 file(REMOVE_RECURSE "${WORK}")
@@ -10,6 +11,9 @@ if(CASE STREQUAL "missing_system")
   list(APPEND args -DJELLY_DEPS=system -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON)
   set(expect "Eigen not found (JELLY_DEPS=system): install the Debian package libeigen3-dev"
              "or use the student release / -DJELLY_DEPS=bundled")
+elseif(CASE STREQUAL "missing_cli11")
+  list(APPEND args -DJELLY_DEPS=system -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON)
+  set(expect "CLI11 not found (JELLY_DEPS=system): install the Debian package libcli11-dev")
 elseif(CASE STREQUAL "missing_bundled")
   list(APPEND args -DJELLY_DEPS=bundled -DJELLY_THIRD_PARTY_DIR=${WORK}/no-third-party)
   set(expect "Eigen: JELLY_DEPS=bundled, but ${WORK}/no-third-party/eigen does not exist"

@@ -1,6 +1,6 @@
 # The Gradescope autograder end to end, as far as one machine can take it: build the zip, unpack
 # it where /autograder would be, configure and build it exactly as its setup.sh does but WITHOUT
-# the toml++ package (Gradescope's Ubuntu image may lack it; the zip's bundled headers must do),
+# the toml++ and CLI11 packages (Gradescope's Ubuntu image may lack them; the zip's bundled headers must do),
 # then grade the reference's five files and the stubs as run_autograder does, and check
 # results.json. Then a hostile submission that tries to read source/grader/data at compile time
 # (.incbin) and at run time (a static constructor, before the seccomp filter), graded with the
@@ -22,7 +22,10 @@ set(src "${WORK}/autograder/source")
 if(NOT EXISTS "${src}/third_party/tomlplusplus/include/toml++/toml.h" OR NOT EXISTS "${src}/third_party/tomlplusplus/LICENSE")
   message(FATAL_ERROR "the zip has no bundled toml++ headers and licence under source/third_party/tomlplusplus")
 endif()
-# setup.sh's configure line, plus: pretend the distribution has no toml++ package.
+if(NOT EXISTS "${src}/third_party/cli11/include/CLI/CLI.hpp" OR NOT EXISTS "${src}/third_party/cli11/LICENSE")
+  message(FATAL_ERROR "the zip has no bundled CLI11 headers and licence under source/third_party/cli11")
+endif()
+# setup.sh's configure line, plus: pretend the distribution has neither toml++ nor CLI11.
 file(READ "${WORK}/autograder/setup.sh" setup)
 string(FIND "${setup}" "-DJELLY_TASKS=assignments" at)
 if(at EQUAL -1)
@@ -31,14 +34,17 @@ endif()
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${src}" -B "${src}/build" -DCMAKE_BUILD_TYPE=Release
                         -DJELLY_TASKS=assignments -DJELLY_BUILD_TESTS=OFF -DJELLY_BUILD_BENCHMARKS=OFF
                         -DJELLY_BUILD_VIEWER=OFF -DCMAKE_DISABLE_FIND_PACKAGE_tomlplusplus=ON
+                        -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "configure failed (${rc}):\n${out}${err}")
 endif()
-string(FIND "${out}" "third_party/tomlplusplus" used)
-if(used EQUAL -1)
-  message(FATAL_ERROR "the build did not use the bundled toml++:\n${out}")
-endif()
+foreach(lib tomlplusplus cli11)
+  string(FIND "${out}" "third_party/${lib}" used)
+  if(used EQUAL -1)
+    message(FATAL_ERROR "the build did not use the bundled ${lib}:\n${out}")
+  endif()
+endforeach()
 execute_process(COMMAND "${CMAKE_COMMAND}" --build "${src}/build" -j2 --target jelly-grade
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)

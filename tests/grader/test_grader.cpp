@@ -121,6 +121,34 @@ void check_prairielearn_schema(const Json& j) {
 
 }  // namespace
 
+// Each command takes only its own options; a bad one is named with what it expects (exit code 2,
+// before anything is built); --help prints the usage with exit code 0.
+TEST(Grader, BadCommandLinesNameTheOptionAndExitTwo) {
+  const struct {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {"grade x --format terminal,pdf", "jelly-grade grade: --format: expected one of terminal, gradescope, "
+                                         "prairielearn, junit, markdown, html, got 'pdf'"},
+      {"grade x --table t.md", "jelly-grade grade: unknown option --table"},
+      {"grade x --timeout 0", "jelly-grade grade: --timeout: expected a number > 0, got '0'"},
+      {"grade x --compile-memory 10", "jelly-grade grade: --compile-memory: expected a number ≥ 64, got '10'"},
+      {"grade x --jobs", "jelly-grade grade: --jobs needs a value (N)"},
+      {"grade", "jelly-grade grade: SUBMISSION_DIR is required"},
+      {"batch in", "jelly-grade batch: --out is required"},
+      {"regrade x", "jelly-grade: unknown command regrade"},
+  };
+  for (const auto& c : cases) {
+    const Cmd r = run(c.args);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << ":\n" << r.out;
+    EXPECT_NE(r.out.find("usage:"), std::string::npos) << r.out;
+  }
+  const Cmd help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_EQ(help.out.rfind("usage:", 0), 0u) << help.out;
+}
+
 TEST(Grader, ReferenceScoresFullMarksAndOutputsHaveTheirSchemas) {
   const Json r = grade(submission("reference"), "reference");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
@@ -329,6 +357,7 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   EXPECT_NE(list.find("setup.sh\n"), std::string::npos);
   EXPECT_NE(list.find("run_autograder\n"), std::string::npos);
   EXPECT_NE(list.find("source/grader/data/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("source/third_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
   EXPECT_EQ(list.find("solutions/"), std::string::npos);
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
   EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);

@@ -20,6 +20,7 @@ set(_folders
   "assignments/"       tasks
   "solutions/"         tasks
   "framework/session/" session
+  "framework/cli_common/" cli_common
   "framework/render/"  render
   "framework/cli/"     cli
   "framework/app/"     app
@@ -30,22 +31,23 @@ set(_folders
 set(_may_core    core)
 set(_may_tasks   core)
 set(_may_session core session)
+set(_may_cli_common cli_common)
 set(_may_render  core session render)
-set(_may_cli     core session render cli)
-set(_may_app     core session render app)
-set(_may_grader  core grader)
+set(_may_cli     core session render cli cli_common)
+set(_may_app     core session render app cli_common)
+set(_may_grader  core grader cli_common)
 set(_may_bench   core)
 # Single headers a layer may include besides: jelly-lab --headless is `jelly render`.
 set(_extra_app "jelly/cli/render_command.hpp")
 # Layers that must stay free of GL (and of windowing and GUI libraries).
-set(_no_gl core tasks session cli grader bench)
+set(_no_gl core tasks session cli_common cli grader bench)
 set(_gl_regex "^(GL|GLFW|KHR|EGL|OpenGL)/|^imgui|osmesa")
 
 # Layer of an included header path "jelly/..."; "?" when no layer owns its folder.
 function(_header_layer header out)
   if(header MATCHES "^jelly/[^/]+$" OR header MATCHES "^jelly/tasks/")
     set(${out} core PARENT_SCOPE)
-  elseif(header MATCHES "^jelly/(session|render|cli|app|grader)/")
+  elseif(header MATCHES "^jelly/(session|render|cli_common|cli|app|grader)/")
     set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
   else()
     set(${out} "?" PARENT_SCOPE)

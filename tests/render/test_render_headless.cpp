@@ -216,6 +216,9 @@ TEST(RenderCommand, UsageErrorsReturnTwo) {
       {"render", "course-2023"},                                    // no --frames
       {"render", "course-2023", "--frames", "/tmp/x", "--bogus"},   // unknown option
       {"render", "course-2023", "--frames", "/tmp/x", "--compare", "rk4"},  // one integrator
+      {"render", "course-2023", "--frames", "/tmp/x", "--width", "0"},
+      {"render", "course-2023", "--frames", "/tmp/x", "--set", "no-equals-sign"},
+      {"render", "course-2023", "--frames", "/tmp/x", "--replay", "a.csv", "--benchmark", "2"},
       {"render", "no-such-scene", "--frames", "/tmp/x"},
   };
   for (auto& args : cases) {
