@@ -25,7 +25,7 @@ void midpoint_step(System& system, State& s, double h, Workspace& w) {
 
 void rk4_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T13): classical fourth-order Runge–Kutta on (x, v).
-  // docs/handout/T13-rk4.md. 1/6 is 0 in C++; every stage starts from the state at the step's start.
+  // docs/handout/T13-rk4.md. 1/6 is 0 in C++; each stage starts from the step's start state.
   (void)system, (void)s, (void)h, (void)w;
 }
 

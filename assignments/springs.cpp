@@ -6,8 +6,9 @@ namespace jelly::tasks {
 
 void add_structural_springs(const CubeLattice& cube, std::vector<Spring>& out) {
   // TODO(A1.T1): structural springs to the forward neighbours (1,0,0), (0,1,0), (0,0,1).
-  // docs/handout/T1-structural.md. Append to `out` (never clear it); index with cube.index(i, j, k),
-  // test neighbours with cube.contains(...); rest length = distance at construction.
+  // docs/handout/T1-structural.md. Append to `out` (never clear it); index with
+  // cube.index(i, j, k), test neighbours with cube.contains(...); rest length = distance at
+  // construction.
   (void)cube;
   (void)out;
 }

@@ -5,8 +5,8 @@
 //   BM_StepThreads/<n>/<threads> explicit Euler with the spring pass on 1 or 2 threads (wall time)
 #include <benchmark/benchmark.h>
 
-#include "jelly/simulator.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/simulator.hpp"
 
 namespace {
 
@@ -34,8 +34,8 @@ void run_steps(benchmark::State& state, Simulator& sim, bool rewind) {
       since = 0;
     }
   }
-  state.counters["steps/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                 benchmark::Counter::kIsRate);
+  state.counters["steps/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["springs"] = static_cast<double>(sim.world().spring_count());
   // Per spring and acceleration evaluation: the rate inverted, in ns.
   state.counters["ns_per_spring_eval"] = benchmark::Counter(
@@ -107,5 +107,8 @@ BENCHMARK(BM_Step)->Apply(integrators_n10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Step)->Name("BM_StepSize")->Apply(sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepResting)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepSprings)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_StepThreads)->ArgsProduct({{10, 30}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_StepThreads)
+    ->ArgsProduct({{10, 30}, {1, 2}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 BENCHMARK_MAIN();

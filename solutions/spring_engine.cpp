@@ -58,7 +58,7 @@ struct OffsetRun {
 };
 
 struct Plan {
-  std::vector<OffsetRun> runs;   // ascending offset
+  std::vector<OffsetRun> runs;    // ascending offset
   std::vector<Spring> leftovers;  // scalar path, in list order
 };
 
@@ -103,13 +103,13 @@ std::unique_ptr<Plan> make_plan(const std::vector<Spring>& springs) {
 // between calls, so that a step allocates nothing once warmed up.
 struct Scratch {
   std::vector<double> x, y, z, vx, vy, vz;
-  std::vector<double> sums;  // per group: its force sums fx, fy, fz (3 n each), from zero
+  std::vector<double> sums;        // per group: its force sums fx, fy, fz (3 n each), from zero
   std::vector<const Plan*> plans;  // per group: its layout (nullptr: no springs)
 };
 
 // Forces on the owners a = 0 … count−1 of springs (a, a + off), with positions and velocities given
-// from the first owner on: one lane per spring, no branch, so that the loop vectorises. An absent or
-// degenerate spring gets u = 0 and so a zero force.
+// from the first owner on: one lane per spring, no branch, so that the loop vectorises. An absent
+// or degenerate spring gets u = 0 and so a zero force.
 JELLY_VECTOR_CLONES
 void spring_lane(int count, int off, const double* __restrict x, const double* __restrict y,
                  const double* __restrict z, const double* __restrict vx,
@@ -185,8 +185,8 @@ void pass_over_block(const Plan& plan, double ks, double kd, double degenerate, 
       const int c0 = std::max(lo, c1 - kChunk);
       const double* __restrict rest = run.rest.data() + (c0 - run.first);
       const double* __restrict present = run.present.data() + (c0 - run.first);
-      spring_lane(c1 - c0, off, x + c0, y + c0, z + c0, vx + c0, vy + c0, vz + c0, rest, present, ks,
-                  kd, degenerate, tx, ty, tz);
+      spring_lane(c1 - c0, off, x + c0, y + c0, z + c0, vx + c0, vy + c0, vz + c0, rest, present,
+                  ks, kd, degenerate, tx, ty, tz);
       for (int a = std::max(c0, j0); a < c1; ++a) {  // + on the owner a
         fx[a] += tx[a - c0];
         fy[a] += ty[a - c0];
@@ -317,7 +317,8 @@ void SpringEngine::accumulate(const SpringGroup* groups, std::size_t count, cons
   }
 }
 
-
-std::unique_ptr<SpringGroupPass> make_spring_group_pass() { return std::make_unique<SpringEngine>(); }
+std::unique_ptr<SpringGroupPass> make_spring_group_pass() {
+  return std::make_unique<SpringEngine>();
+}
 
 }  // namespace jelly::tasks

@@ -33,8 +33,16 @@ void add_structural_springs(const CubeLattice& cube, std::vector<Spring>& out) {
 
 void add_shear_springs(const CubeLattice& cube, std::vector<Spring>& out) {
   add_forward_springs(cube,
-                      {{0, 1, 1}, {0, 1, -1}, {1, 0, 1}, {1, 0, -1}, {1, 1, 0}, {1, -1, 0},
-                       {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}},
+                      {{0, 1, 1},
+                       {0, 1, -1},
+                       {1, 0, 1},
+                       {1, 0, -1},
+                       {1, 1, 0},
+                       {1, -1, 0},
+                       {1, 1, 1},
+                       {1, 1, -1},
+                       {1, -1, 1},
+                       {1, -1, -1}},
                       out);
 }
 

@@ -28,8 +28,10 @@ std::vector<SimulationRun*> AppState::run_pointers() const {
 
 bool load_scene_into(AppState& s, int index, const std::string& path) {
   SceneResult r;
-  if (index >= 0 && index < static_cast<int>(s.scenes.size())) r = load_entry(s.scenes[index]);
-  else r = resolve_scene(path, s.scenes_dir);
+  if (index >= 0 && index < static_cast<int>(s.scenes.size()))
+    r = load_entry(s.scenes[index]);
+  else
+    r = resolve_scene(path, s.scenes_dir);
   if (!r) {
     s.scene_error = r.error->text();
     return false;
@@ -57,7 +59,8 @@ void rebuild_runs(AppState& s) {
       s.runs.push_back(std::make_unique<SimulationRun>(setup, tasks));
     }
   } else {
-    s.runs.push_back(std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt, {}}, tasks));
+    s.runs.push_back(
+        std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt, {}}, tasks));
   }
   s.clock.restart();
 }
@@ -78,8 +81,9 @@ int run_app(const AppOptions& opt) {
   }
   auto* window = dynamic_cast<WindowBackend*>(created.backend.get());
   if (!window) {
-    std::cerr << "jelly-lab: no window could be opened (" << created.backend->name()
-              << " backend); use `jelly-lab --headless SCENE --frames DIR` to render without a display\n";
+    std::cerr
+        << "jelly-lab: no window could be opened (" << created.backend->name()
+        << " backend); use `jelly-lab --headless SCENE --frames DIR` to render without a display\n";
     return cli::kExitFailure;
   }
   Renderer renderer(window->gl(), opt.samples);
@@ -102,7 +106,8 @@ int run_app(const AppOptions& opt) {
     const auto now = clock::now();
     const double wall_dt = std::chrono::duration<double>(now - last).count();
     last = now;
-    if (frame_number++ > 0 && wall_dt > 1e-4) fps = frame_number == 2 ? 1.0 / wall_dt : 0.9 * fps + 0.1 / wall_dt;
+    if (frame_number++ > 0 && wall_dt > 1e-4)
+      fps = frame_number == 2 ? 1.0 / wall_dt : 0.9 * fps + 0.1 / wall_dt;
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -128,7 +133,8 @@ int run_app(const AppOptions& opt) {
     draw_frame(renderer, s.run_pointers(), s.camera, s.frame, w, h);
     record_frame(s, *window);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (s.screenshot_requested && !save_screenshot(s, opt.screenshot, *window)) exit_code = cli::kExitFailure;
+    if (s.screenshot_requested && !save_screenshot(s, opt.screenshot, *window))
+      exit_code = cli::kExitFailure;
     window->present();
     if (opt.benchmark > 0) {
       bench.stop();

@@ -19,22 +19,22 @@
 namespace jelly::app {
 
 struct AppOptions {
-  std::string scene = "course-2023";         ///< name under the scenes folder, or a path
-  std::filesystem::path scenes_dir;           ///< empty: session::default_scenes_dir()
-  std::string integrator;                     ///< empty: the scene's
-  double dt = 0.0;                            ///< 0: the scene's
-  std::vector<std::string> compare;           ///< 2–4 integrators: start in comparison mode
+  std::string scene = "course-2023";  ///< name under the scenes folder, or a path
+  std::filesystem::path scenes_dir;   ///< empty: session::default_scenes_dir()
+  std::string integrator;             ///< empty: the scene's
+  double dt = 0.0;                    ///< 0: the scene's
+  std::vector<std::string> compare;   ///< 2–4 integrators: start in comparison mode
   std::vector<std::pair<int, std::string>> slot_sets;  ///< --slot-set K:key=value (1-based slot)
-  std::string backend = "window";             ///< window | auto (auto falls back to offscreen)
+  std::string backend = "window";  ///< window | auto (auto falls back to offscreen)
   int width = 1600, height = 900;
-  bool smoke_test = false;                    ///< scripted run: every integrator 2 s, every scene
-  std::filesystem::path screenshot;           ///< save the last frame here (smoke test, --shot-at)
-  double shot_at = -1.0;                      ///< run to this simulated time, screenshot, exit
-  int benchmark = 0;                          ///< draw N frames of the first state, print fps
-  bool particles = false, springs = false;    ///< initial draw options
-  double factor = 1.0;                        ///< real-time factor
-  int samples = 4;                            ///< multisampling (0 is faster on software GL)
-  std::vector<std::string> open_panels;       ///< panel headers to open at start ("parameters", ...)
+  bool smoke_test = false;                  ///< scripted run: every integrator 2 s, every scene
+  std::filesystem::path screenshot;         ///< save the last frame here (smoke test, --shot-at)
+  double shot_at = -1.0;                    ///< run to this simulated time, screenshot, exit
+  int benchmark = 0;                        ///< draw N frames of the first state, print fps
+  bool particles = false, springs = false;  ///< initial draw options
+  double factor = 1.0;                      ///< real-time factor
+  int samples = 4;                          ///< multisampling (0 is faster on software GL)
+  std::vector<std::string> open_panels;     ///< panel headers to open at start ("parameters", ...)
 };
 
 /// Reads the command line into `options` (options.cpp). nullopt: go on; else the exit code to
@@ -57,10 +57,10 @@ struct AppState {
   std::filesystem::path scenes_dir;
   std::vector<session::SceneEntry> scenes;
   int scene_index = -1;
-  std::string open_path;          ///< the "open a file" text field
-  std::string scene_error;        ///< last load or --set error, shown in the panel
-  SceneSpec original;             ///< as loaded (the "reset to the scene's values" target)
-  SceneSpec edited;               ///< with the panel's changes
+  std::string open_path;    ///< the "open a file" text field
+  std::string scene_error;  ///< last load or --set error, shown in the panel
+  SceneSpec original;       ///< as loaded (the "reset to the scene's values" target)
+  SceneSpec edited;         ///< with the panel's changes
   // simulation
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
   double dt = 0.001;
@@ -87,7 +87,7 @@ struct AppState {
   std::string screenshot_message;
   int panel_width = 400;
   std::vector<std::string> open_panels;  ///< headers to open on the first frame
-  bool scripted = false;          ///< --smoke-test / --shot-at: time is not driven by the clock
+  bool scripted = false;  ///< --smoke-test / --shot-at: time is not driven by the clock
 
   std::vector<session::SimulationRun*> run_pointers() const;
 };

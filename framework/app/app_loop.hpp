@@ -24,7 +24,8 @@ int init_state(AppState& state, const AppOptions& options);
 
 // ---- input (input.cpp) ----
 
-/// Keys and mouse outside ImGui's windows: play/pause, step, reset, camera, screenshot, orbit, zoom.
+/// Keys and mouse outside ImGui's windows: play/pause, step, reset, camera, screenshot, orbit,
+/// zoom.
 class ViewInput {
  public:
   /// Applies this frame's keys and mouse to `state`; true when Esc asked to quit.
@@ -94,6 +95,7 @@ void record_frame(AppState& state, const render::WindowBackend& window);
 void finish_recording(AppState& state);
 /// Saves the window to `file` (empty: jelly-lab-TIMESTAMP.png) and prints what happened; false
 /// when it could not be written.
-bool save_screenshot(AppState& state, const std::filesystem::path& file, const render::WindowBackend& window);
+bool save_screenshot(AppState& state, const std::filesystem::path& file,
+                     const render::WindowBackend& window);
 
 }  // namespace jelly::app

@@ -23,18 +23,20 @@ std::vector<std::string> task_hints(const AppState& s) {
   if (count == 0) return out;
   out.push_back("Not implemented yet (" + std::to_string(count) + " of 13): " + missing);
   const auto missing_integrator = [&](IntegratorKind k) {
-    const char* id = k == IntegratorKind::ExplicitEuler ? "A1.T10"
+    const char* id = k == IntegratorKind::ExplicitEuler   ? "A1.T10"
                      : k == IntegratorKind::ImplicitEuler ? "A1.T11"
-                     : k == IntegratorKind::Midpoint    ? "A1.T12"
-                     : k == IntegratorKind::RK4         ? "A1.T13" : nullptr;
+                     : k == IntegratorKind::Midpoint      ? "A1.T12"
+                     : k == IntegratorKind::RK4           ? "A1.T13"
+                                                          : nullptr;
     if (!id) return false;
     for (const TaskStatus& t : s.tasks)
       if (t.id == id) return !t.implemented;
     return false;
   };
   if (missing_integrator(s.integrator))
-    out.push_back(std::string(display_name(s.integrator)) +
-                  " is a stub: nothing moves. Pick Symplectic Euler (framework) to watch the jelly fall.");
+    out.push_back(
+        std::string(display_name(s.integrator)) +
+        " is a stub: nothing moves. Pick Symplectic Euler (framework) to watch the jelly fall.");
   return out;
 }
 
@@ -60,7 +62,8 @@ void FrameTimes::start() {
 }
 
 void FrameTimes::stop() {
-  ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count());
+  ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count());
   cpu_ms_.push_back(1000.0 * static_cast<double>(std::clock() - c0_) / CLOCKS_PER_SEC);
 }
 
@@ -71,10 +74,11 @@ void FrameTimes::report(const WindowBackend& window, const Renderer& renderer) c
   std::sort(ms.begin(), ms.end());
   std::sort(cpu.begin(), cpu.end());
   const double median = ms[ms.size() / 2];
-  std::printf("backend window, %dx%d, %d samples, %s\nframes %zu: median %.2f ms/frame = %.1f fps "
-              "(scene + ImGui + swap; min %.2f, max %.2f ms); median CPU %.2f ms/frame\n",
-              window.width(), window.height(), renderer.samples(), window.gl()->describe().c_str(), ms.size(),
-              median, 1000.0 / median, ms.front(), ms.back(), cpu[cpu.size() / 2]);
+  std::printf(
+      "backend window, %dx%d, %d samples, %s\nframes %zu: median %.2f ms/frame = %.1f fps "
+      "(scene + ImGui + swap; min %.2f, max %.2f ms); median CPU %.2f ms/frame\n",
+      window.width(), window.height(), renderer.samples(), window.gl()->describe().c_str(),
+      ms.size(), median, 1000.0 / median, ms.front(), ms.back(), cpu[cpu.size() / 2]);
 }
 
 }  // namespace jelly::app

@@ -7,7 +7,8 @@
 #include "jelly/cli/render_command.hpp"
 
 int main(int argc, char** argv) {
-  if (argc >= 2 && (std::strcmp(argv[1], "--headless") == 0 || std::strcmp(argv[1], "render") == 0)) {
+  if (argc >= 2 &&
+      (std::strcmp(argv[1], "--headless") == 0 || std::strcmp(argv[1], "render") == 0)) {
     // Same path as `jelly render`: argv[0] becomes the command name.
     return jelly::render_command(argc - 1, argv + 1);
   }

@@ -136,8 +136,8 @@ bool parameter_widgets(AppState& s) {
       std::string tip = p.description + "\ndefault " + p.default_text;
       if (p.bounded) {
         char buf[96];
-        std::snprintf(buf, sizeof buf, "\nrange %s%g, %g%s", p.min_inclusive ? "[" : "(", p.min, p.max,
-                      p.max_inclusive ? "]" : ")");
+        std::snprintf(buf, sizeof buf, "\nrange %s%g, %g%s", p.min_inclusive ? "[" : "(", p.min,
+                      p.max, p.max_inclusive ? "]" : ")");
         tip += buf;
       }
       ImGui::SetTooltip("%s", tip.c_str());
@@ -154,13 +154,15 @@ bool parameter_widgets(AppState& s) {
   return changed;
 }
 
-void plot(const char* label, const std::deque<RunSample>& h, double RunSample::*field, const char* unit) {
+void plot(const char* label, const std::deque<RunSample>& h, double RunSample::*field,
+          const char* unit) {
   const std::size_t n = std::min<std::size_t>(h.size(), 600);
   std::vector<float> v(n);
   for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<float>(h[h.size() - n + i].*field);
   char overlay[64] = "";
   if (!v.empty()) std::snprintf(overlay, sizeof overlay, "%.4g %s", v.back(), unit);
-  ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(0, 60));
+  ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                   ImVec2(0, 60));
 }
 
 /// A collapsing header that --open can open on the first frame.
@@ -176,7 +178,8 @@ void draw_panels(AppState& s, double fps) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.panel_width), io.DisplaySize.y));
-  ImGui::Begin("Jelly Lab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Jelly Lab", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::PushItemWidth(-170);
   const std::vector<SimulationRun*> runs = s.run_pointers();
   SimulationRun* main_run = runs.empty() ? nullptr : runs.front();
@@ -184,7 +187,8 @@ void draw_panels(AppState& s, double fps) {
   // ---- student hints ----
   int missing = 0;
   for (const TaskStatus& t : s.tasks) missing += t.implemented ? 0 : 1;
-  if (missing > 0 && ImGui::CollapsingHeader("Tasks not implemented yet", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (missing > 0 &&
+      ImGui::CollapsingHeader("Tasks not implemented yet", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (const TaskStatus& t : s.tasks)
       if (!t.implemented) {
         ImGui::TextColored(kYellow, "%s %s", t.id.c_str(), t.name.c_str());
@@ -194,7 +198,8 @@ void draw_panels(AppState& s, double fps) {
 
   // ---- scenes ----
   if (header(s, "Scene", "scene", true)) {
-    const char* current = s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
+    const char* current =
+        s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
     if (ImGui::BeginCombo("scene", current)) {
       for (std::size_t i = 0; i < s.scenes.size(); ++i)
         if (ImGui::Selectable(s.scenes[i].name.c_str(), static_cast<int>(i) == s.scene_index))
@@ -220,9 +225,11 @@ void draw_panels(AppState& s, double fps) {
     ImGui::SameLine();
     if (ImGui::Button("Camera (C)")) s.camera_reset_requested = true;
     if (main_run && main_run->simulator())
-      ImGui::Text("t = %.3f s   step %ld   %.0f fps", main_run->time(), main_run->simulator()->steps(), fps);
+      ImGui::Text("t = %.3f s   step %ld   %.0f fps", main_run->time(),
+                  main_run->simulator()->steps(), fps);
     float factor = static_cast<float>(s.clock.factor);
-    if (ImGui::SliderFloat("real-time factor", &factor, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderFloat("real-time factor", &factor, 0.1f, 4.0f, "%.2fx",
+                           ImGuiSliderFlags_Logarithmic)) {
       s.clock.factor = factor;
       s.clock.restart();
     }
@@ -230,21 +237,27 @@ void draw_panels(AppState& s, double fps) {
       ImGui::TextDisabled("scripted run (not real time)");
     } else if (s.playing && !s.recording) {
       if (s.clock.behind())
-        ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time", s.clock.achieved_factor());
+        ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time",
+                           s.clock.achieved_factor());
       else
         ImGui::TextColored(kGreen, "running at %.2fx real time", s.clock.achieved_factor());
     }
     if (!s.comparing) {
       if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
-      if (step_input(s.edited.auto_dt ? "largest step h" : "step h", s.dt)) s.reset_requested = true;
-      if (ImGui::Checkbox("automatic step (stability estimate)", &s.edited.auto_dt)) s.reset_requested = true;
+      if (step_input(s.edited.auto_dt ? "largest step h" : "step h", s.dt))
+        s.reset_requested = true;
+      if (ImGui::Checkbox("automatic step (stability estimate)", &s.edited.auto_dt))
+        s.reset_requested = true;
       s.edited.integrator = s.integrator;  // keep the parameter view in step
       s.edited.dt = s.dt;
-      if (main_run && main_run->auto_step()) ImGui::TextWrapped("%s", main_run->auto_step()->message().c_str());
+      if (main_run && main_run->auto_step())
+        ImGui::TextWrapped("%s", main_run->auto_step()->message().c_str());
       if (main_run && main_run->simulator()) {
         const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
-        if (std::isinf(hc)) ImGui::TextDisabled("stable step estimate: any h");
-        else if (hc > 0.0) ImGui::TextDisabled("stable step estimate: h <= %.3g s", hc);
+        if (std::isinf(hc))
+          ImGui::TextDisabled("stable step estimate: any h");
+        else if (hc > 0.0)
+          ImGui::TextDisabled("stable step estimate: h <= %.3g s", hc);
       }
     }
     // Instability banner with one-click retry.
@@ -257,8 +270,10 @@ void draw_panels(AppState& s, double fps) {
                          rep.step_size, rep.reason.c_str());
       ImGui::PopStyleColor();
       char label[96];
-      std::snprintf(label, sizeof label, "Retry at h = %.3g s##%p", rep.recommended_step, static_cast<void*>(r));
-      if (ImGui::Button(label) && rep.recommended_step > 0.0 && std::isfinite(rep.recommended_step)) {
+      std::snprintf(label, sizeof label, "Retry at h = %.3g s##%p", rep.recommended_step,
+                    static_cast<void*>(r));
+      if (ImGui::Button(label) && rep.recommended_step > 0.0 &&
+          std::isfinite(rep.recommended_step)) {
         if (s.comparing) {
           for (CompareSlot& slot : s.slots)
             if (slot.integrator == rep.integrator) slot.dt = rep.recommended_step;
@@ -288,8 +303,8 @@ void draw_panels(AppState& s, double fps) {
       // This run's own parameters, e.g. "springs.structural.ks=1e5" beside an unchanged run.
       char buf[256];
       std::snprintf(buf, sizeof buf, "%s", slot.overrides.c_str());
-      if (ImGui::InputTextWithHint("own parameters", "key=value; ... (jelly params)", buf, sizeof buf,
-                                   ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (ImGui::InputTextWithHint("own parameters", "key=value; ... (jelly params)", buf,
+                                   sizeof buf, ImGuiInputTextFlags_EnterReturnsTrue)) {
         slot.overrides = buf;
         s.reset_requested = s.comparing;
       }
@@ -325,7 +340,8 @@ void draw_panels(AppState& s, double fps) {
   if (header(s, "Draw", "draw", false)) {
     ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
     ImGui::Checkbox("particles", &s.frame.draw.particles);
-    static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear", "bending springs"};
+    static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear",
+                                   "bending springs"};
     for (int i = 0; i < 4; ++i) {
       const auto& c = colors::kSprings[i];
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
@@ -339,7 +355,8 @@ void draw_panels(AppState& s, double fps) {
   // ---- plots ----
   if (header(s, "Plots", "plots", true)) {
     for (SimulationRun* r : runs) {
-      if (runs.size() > 1) ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
+      if (runs.size() > 1)
+        ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
       ImGui::PushID(r);
       plot("energy", r->history(), &RunSample::energy, "J");
       plot("COM height", r->history(), &RunSample::com_height, "m");
@@ -353,8 +370,9 @@ void draw_panels(AppState& s, double fps) {
     if (ImGui::Button(s.recording ? "Stop recording" : "Record PNG frames")) toggle_recording(s);
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (P)")) s.screenshot_requested = true;
-    ImGui::TextWrapped("Frames advance 1/30 s x factor each, so the video plays at the chosen speed; "
-                       "MP4 when ffmpeg is installed.");
+    ImGui::TextWrapped(
+        "Frames advance 1/30 s x factor each, so the video plays at the chosen speed; "
+        "MP4 when ffmpeg is installed.");
     if (!s.record_message.empty()) ImGui::TextWrapped("%s", s.record_message.c_str());
     if (!s.screenshot_message.empty()) ImGui::TextWrapped("%s", s.screenshot_message.c_str());
   }

@@ -30,7 +30,8 @@ void finish_recording(AppState& s) {
     const fs::path mp4 = s.record_dir / "video.mp4";
     const std::string cmd = "ffmpeg -loglevel error -y -framerate 30 -i '" +
                             (s.record_dir / "frame_%05d.png").string() +
-                            "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" + mp4.string() + "'";
+                            "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" +
+                            mp4.string() + "'";
     msg += std::system(cmd.c_str()) == 0 ? ", " + mp4.filename().string() : " (ffmpeg failed)";
   } else if (s.record_frame > 0) {
     msg += " (no ffmpeg: PNG only)";
@@ -57,7 +58,8 @@ void record_frame(AppState& s, const WindowBackend& window) {
   // Recorded frames show the scene and its printed parameters, not the panels.
   const Image shot = window.read_pixels();
   const std::string err =
-      write_png(s.record_dir / name, crop(shot, s.frame.left_margin, 0, shot.width - s.frame.left_margin, shot.height));
+      write_png(s.record_dir / name,
+                crop(shot, s.frame.left_margin, 0, shot.width - s.frame.left_margin, shot.height));
   if (!err.empty()) {
     s.record_message = err;
     s.recording = false;
@@ -65,7 +67,8 @@ void record_frame(AppState& s, const WindowBackend& window) {
 }
 
 bool save_screenshot(AppState& s, const fs::path& requested, const WindowBackend& window) {
-  const fs::path file = !requested.empty() ? requested : fs::path("jelly-lab-" + timestamp() + ".png");
+  const fs::path file =
+      !requested.empty() ? requested : fs::path("jelly-lab-" + timestamp() + ".png");
   const std::string err = write_png(file, window.read_pixels());
   s.screenshot_message = err.empty() ? "saved " + file.string() : err;
   std::printf("%s\n", s.screenshot_message.c_str());

@@ -43,20 +43,23 @@ int init_state(AppState& s, const AppOptions& opt) {
   if (opt.springs) s.frame.draw.springs = {true, true, true, true};
   int index = -1;
   for (std::size_t i = 0; i < s.scenes.size(); ++i)
-    if (s.scenes[i].name == opt.scene || s.scenes[i].name == "builtin:" + opt.scene) index = static_cast<int>(i);
+    if (s.scenes[i].name == opt.scene || s.scenes[i].name == "builtin:" + opt.scene)
+      index = static_cast<int>(i);
   if (!load_scene_into(s, index, opt.scene)) {
     std::cerr << "jelly-lab: " << s.scene_error << "\n";
     if (s.scenes.empty() || !load_scene_into(s, 0)) return cli::kExitFailure;
   }
   if (!opt.integrator.empty()) s.integrator = *integrator_from_string(opt.integrator);
   if (opt.dt > 0.0) s.dt = opt.dt;
-  for (const std::string& name : opt.compare) s.slots.push_back(CompareSlot{*integrator_from_string(name), s.dt, {}, {}});
+  for (const std::string& name : opt.compare)
+    s.slots.push_back(CompareSlot{*integrator_from_string(name), s.dt, {}, {}});
   if (s.slots.empty())
-    s.slots = {CompareSlot{IntegratorKind::ExplicitEuler, s.dt, {}, {}}, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}}};
+    s.slots = {CompareSlot{IntegratorKind::ExplicitEuler, s.dt, {}, {}},
+               CompareSlot{IntegratorKind::RK4, s.dt, {}, {}}};
   for (const auto& [k, assignment] : opt.slot_sets) {
     if (k > static_cast<int>(s.slots.size())) {
-      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": there are only " << s.slots.size()
-                << " runs (--compare a,b[,c[,d]])\n";
+      std::cerr << "jelly-lab: --slot-set " << k << ":" << assignment << ": there are only "
+                << s.slots.size() << " runs (--compare a,b[,c[,d]])\n";
       return cli::kExitUsage;
     }
     std::string& o = s.slots[static_cast<std::size_t>(k - 1)].overrides;

@@ -24,13 +24,15 @@ bool SmokeScript::frame(AppState& s, bool screenshot) {
       std::printf("smoke: %-45s t = %.3f s, %ld steps, %.3f ms/step%s\n",
                   std::string(display_name(s.integrator)).c_str(), runs.front()->time(),
                   runs.front()->simulator() ? runs.front()->simulator()->steps() : 0L,
-                  runs.front()->ms_per_step(), runs.front()->unstable() ? " (detector stopped it)" : "");
+                  runs.front()->ms_per_step(),
+                  runs.front()->unstable() ? " (detector stopped it)" : "");
       if (++integrator_ < integrators_.size()) {
         s.integrator = integrators_[integrator_];
       } else {
         scenes_phase_ = true;
         if (!s.scenes.empty() && !load_scene_into(s, 0)) {
-          std::printf("smoke: scene %s failed: %s\n", s.scenes[0].name.c_str(), s.scene_error.c_str());
+          std::printf("smoke: scene %s failed: %s\n", s.scenes[0].name.c_str(),
+                      s.scene_error.c_str());
           ++failures_;
         }
       }
@@ -44,7 +46,8 @@ bool SmokeScript::frame(AppState& s, bool screenshot) {
   scene_frames_ = 0;
   if (++scene_ < s.scenes.size()) {
     if (!load_scene_into(s, static_cast<int>(scene_))) {
-      std::printf("smoke: scene %s failed: %s\n", s.scenes[scene_].name.c_str(), s.scene_error.c_str());
+      std::printf("smoke: scene %s failed: %s\n", s.scenes[scene_].name.c_str(),
+                  s.scene_error.c_str());
       ++failures_;
     }
     return false;

@@ -7,7 +7,8 @@ namespace jelly::app {
 
 using session::SimulationRun;
 
-bool advance_runs(AppState& s, const AppOptions& opt, SmokeScript& script, double wall_dt, int frame_number) {
+bool advance_runs(AppState& s, const AppOptions& opt, SmokeScript& script, double wall_dt,
+                  int frame_number) {
   if (opt.smoke_test) return script.frame(s, !opt.screenshot.empty());
   const std::vector<SimulationRun*> runs = s.run_pointers();
   if (opt.shot_at >= 0.0) {

@@ -41,9 +41,10 @@ std::string range_text(const ParamInfo& p) {
 }  // namespace
 
 int params_command(int argc, char** argv) {
-  const std::string usage = "usage: jelly params SCENE [--set KEY=VALUE ...]\n"
-                            "Lists every parameter SCENE declares: key, value, unit, valid range, meaning.\n"
-                            "Any key can be changed with `jelly run SCENE --set KEY=VALUE`.\n";
+  const std::string usage =
+      "usage: jelly params SCENE [--set KEY=VALUE ...]\n"
+      "Lists every parameter SCENE declares: key, value, unit, valid range, meaning.\n"
+      "Any key can be changed with `jelly run SCENE --set KEY=VALUE`.\n";
   Command cmd("jelly params", usage, usage);
   std::string scene_path;
   SceneOverrides overrides;
@@ -85,14 +86,19 @@ int check_command(int argc, char** argv) {
   std::printf("%s: valid. %lld particles, %zu springs", scene->name.c_str(),
               static_cast<long long>(world->particle_count()), world->spring_count());
   for (const SpringGroup& g : world->spring_groups())
-    std::printf(", %zu %s (ks %g, kd %g)", g.springs.size(), std::string(to_string(g.type)).c_str(), g.ks, g.kd);
-  std::printf("; gravity %s; %zu terrains", scene->gravity ? "on" : "off", world->terrains().size());
+    std::printf(", %zu %s (ks %g, kd %g)", g.springs.size(), std::string(to_string(g.type)).c_str(),
+                g.ks, g.kd);
+  std::printf("; gravity %s; %zu terrains", scene->gravity ? "on" : "off",
+              world->terrains().size());
   for (const Terrain& t : world->terrains())
-    std::printf(" [%s%s%s]", t.name.c_str(), t.collision ? " collision" : "", t.contact ? " contact" : "");
+    std::printf(" [%s%s%s]", t.name.c_str(), t.collision ? " collision" : "",
+                t.contact ? " contact" : "");
   std::printf("\n");
   const StabilityEstimate e = estimate_stability(*world, world->state());
-  std::printf("linearised at rest: omega_max = %.4g rad/s, tau = kd/ks = %.4g s, top-mode damping "
-              "ratio %.3g\n", e.omega_max, e.tau, e.zeta_top);
+  std::printf(
+      "linearised at rest: omega_max = %.4g rad/s, tau = kd/ks = %.4g s, top-mode damping "
+      "ratio %.3g\n",
+      e.omega_max, e.tau, e.zeta_top);
   std::printf("%-18s %-14s %-14s %s\n", "integrator", "limit h [s]", "recommended", "scene h");
   for (IntegratorKind k : kAllIntegrators) {
     const double crit = e.critical_step(k), rec = e.recommended_step(k);
@@ -102,18 +108,22 @@ int check_command(int argc, char** argv) {
       std::snprintf(b, sizeof b, "%.4g", v);
       return std::string(b);
     };
-    const char* verdict = scene->dt <= rec ? "ok" : scene->dt < crit ? "near the limit" : "UNSTABLE";
+    const char* verdict = scene->dt <= rec   ? "ok"
+                          : scene->dt < crit ? "near the limit"
+                                             : "UNSTABLE";
     std::printf("%-18s %-14s %-14s %g: %s\n", std::string(to_string(k)).c_str(), fmt(crit).c_str(),
                 fmt(rec).c_str(), scene->dt, verdict);
   }
-  std::printf("(limit: the linearised rest state's modes leave the stability region; recommended: "
-              "half of it, since contact stiffens the cube)\n");
+  std::printf(
+      "(limit: the linearised rest state's modes leave the stability region; recommended: "
+      "half of it, since contact stiffens the cube)\n");
   return kExitOk;
 }
 
 int probe_command(int argc, char** argv) {
-  const char* usage = "usage: jelly probe\n"
-                      "Lists which student tasks (A1.T1-A1.T13) look implemented in this build.\n";
+  const char* usage =
+      "usage: jelly probe\n"
+      "Lists which student tasks (A1.T1-A1.T13) look implemented in this build.\n";
   Command cmd("jelly probe", usage, usage);
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const auto statuses = probe_tasks(linked_tasks());

@@ -37,7 +37,8 @@ constexpr const char* kUsage =
     "                    [--backend offscreen|window|null] [--camera YAW,PITCH,DISTANCE]\n"
     "                    [--particles] [--springs] [--no-caption] [--no-video] [--benchmark N]\n"
     "                    [--samples 0|2|4]\n"
-    "       jelly render SCENE --replay FILE.csv --frames DIR [--label TEXT] [--width W] [--height H]\n"
+    "       jelly render SCENE --replay FILE.csv --frames DIR [--label TEXT] [--width W] [--height "
+    "H]\n"
     "                    [--camera ...] [--particles] [--no-caption] [--samples 0|2|4]\n"
     "  SCENE    a scene name under scenes/ (course-2023) or a .toml path\n"
     "  --replay   draw recorded positions instead of simulating: one PNG per recorded frame; the\n"
@@ -111,11 +112,13 @@ std::optional<int> parse(int argc, char** argv, Args& a) {
   cmd.add_option("--integrator", a.integrator)->type_name("NAME");
   cmd.add_option("--backend", a.backend)->type_name("offscreen|window|null");
   cmd.add_option("--camera", a.camera)->type_name("YAW,PITCH,DISTANCE");
-  cmd.repeated("--set", a.sets, "KEY=VALUE")->check(CLI::Validator(
-      [](std::string& kv) {
-        return kv.find('=') != std::string::npos ? std::string() : "expected KEY=VALUE, got '" + kv + "'";
-      },
-      ""));
+  cmd.repeated("--set", a.sets, "KEY=VALUE")
+      ->check(CLI::Validator(
+          [](std::string& kv) {
+            return kv.find('=') != std::string::npos ? std::string()
+                                                     : "expected KEY=VALUE, got '" + kv + "'";
+          },
+          ""));
   cmd.add_option("--compare", compare)->type_name("A,B[,C[,D]]");
   cmd.add_flag("--particles", a.particles);
   cmd.add_flag("--springs", a.springs);
@@ -127,11 +130,13 @@ std::optional<int> parse(int argc, char** argv, Args& a) {
   if (!compare.empty()) {
     a.compare = split(compare, ',');
     if (a.compare.size() < 2 || a.compare.size() > 4)
-      return cmd.error("--compare takes 2 to 4 integrators, got " + std::to_string(a.compare.size()));
+      return cmd.error("--compare takes 2 to 4 integrators, got " +
+                       std::to_string(a.compare.size()));
   }
   if (a.frames.empty() && a.benchmark == 0) return cmd.error("--frames DIR is required");
   if (!a.replay.empty() && (!a.compare.empty() || a.benchmark > 0 || !a.integrator.empty()))
-    return cmd.error("--replay draws recorded positions: --compare, --integrator and --benchmark do not apply");
+    return cmd.error(
+        "--replay draws recorded positions: --compare, --integrator and --benchmark do not apply");
   return std::nullopt;
 }
 
@@ -178,7 +183,8 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
   std::error_code ec;
   fs::create_directories(a.frames, ec);
   if (ec) {
-    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message() << "\n";
+    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message()
+              << "\n";
     return 1;
   }
   // Framed on the scene at its start, so every frame of every replay of a scene has one view.
@@ -202,11 +208,14 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
     char when[48];
     std::snprintf(when, sizeof when, "t = %.2f s", f.time);
     const std::string label = a.label.empty() ? std::string(when) : a.label + "   " + when;
-    renderer.draw_text(wrap_text(label, a.width - 3 * pad, s), pad, pad, s, {1.0f, 0.95f, 0.75f, 1.0f});
+    renderer.draw_text(wrap_text(label, a.width - 3 * pad, s), pad, pad, s,
+                       {1.0f, 0.95f, 0.75f, 1.0f});
     if (a.caption) {
-      const std::string text = wrap_text(caption(setup, f.time, false), a.width - 3 * pad, s * 0.75f);
+      const std::string text =
+          wrap_text(caption(setup, f.time, false), a.width - 3 * pad, s * 0.75f);
       const Eigen::Vector2i size = Renderer::text_size(text, s * 0.75f);
-      renderer.draw_text(text, pad, a.height - size.y() - pad / 2, s * 0.75f, {0.92f, 0.94f, 1.0f, 1.0f});
+      renderer.draw_text(text, pad, a.height - size.y() - pad / 2, s * 0.75f,
+                         {0.92f, 0.94f, 1.0f, 1.0f});
     }
     renderer.end_frame();
     const Image img = be.read_pixels();
@@ -218,7 +227,8 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
       return 1;
     }
   }
-  std::cout << "wrote " << replay.frames.size() << " replayed frames to " << a.frames.string() << "\n";
+  std::cout << "wrote " << replay.frames.size() << " replayed frames to " << a.frames.string()
+            << "\n";
   return 0;
 }
 
@@ -256,13 +266,15 @@ int render_command(int argc, char** argv) {
   RunSetup base = RunSetup::from_scene(scene);
   if (a.dt > 0.0) base.dt = a.dt;
   std::vector<std::string> names = a.compare;
-  if (names.empty()) names.push_back(a.integrator.empty() ? std::string(to_string(base.integrator)) : a.integrator);
+  if (names.empty())
+    names.push_back(a.integrator.empty() ? std::string(to_string(base.integrator)) : a.integrator);
   std::vector<std::unique_ptr<SimulationRun>> runs;
   for (const std::string& name : names) {
     const auto kind = integrator_from_string(name);
     if (!kind) {
       std::cerr << "jelly render: unknown integrator '" << name
-                << "' (explicit_euler, implicit_euler, midpoint, rk4, symplectic_euler, backward_euler)\n";
+                << "' (explicit_euler, implicit_euler, midpoint, rk4, symplectic_euler, "
+                   "backward_euler)\n";
       return 2;
     }
     RunSetup s = base;
@@ -304,7 +316,8 @@ int render_command(int argc, char** argv) {
       draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
       const Image img = be.read_pixels();
       be.present();
-      const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double dt =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       if (i >= 3) {  // the first frames compile shaders and warm caches
         ms.push_back(dt);
         cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
@@ -313,11 +326,13 @@ int render_command(int argc, char** argv) {
     std::sort(ms.begin(), ms.end());
     std::sort(cpu_ms.begin(), cpu_ms.end());
     const double median = ms[ms.size() / 2];
-    std::printf("backend %s, %dx%d, %d samples, %s\nframes %d: median %.2f ms/frame = %.1f fps (min %.2f, max %.2f ms); "
-                "median CPU %.2f ms/frame\n",
-                std::string(be.name()).c_str(), be.width(), be.height(), renderer.samples(),
-                be.gl() ? be.gl()->describe().c_str() : "no GL", a.benchmark, median, 1000.0 / median,
-                ms.front(), ms.back(), cpu_ms[cpu_ms.size() / 2]);
+    std::printf(
+        "backend %s, %dx%d, %d samples, %s\nframes %d: median %.2f ms/frame = %.1f fps (min %.2f, "
+        "max %.2f ms); "
+        "median CPU %.2f ms/frame\n",
+        std::string(be.name()).c_str(), be.width(), be.height(), renderer.samples(),
+        be.gl() ? be.gl()->describe().c_str() : "no GL", a.benchmark, median, 1000.0 / median,
+        ms.front(), ms.back(), cpu_ms[cpu_ms.size() / 2]);
     return 0;
   }
 
@@ -326,7 +341,8 @@ int render_command(int argc, char** argv) {
   std::error_code ec;
   fs::create_directories(a.frames, ec);
   if (ec) {
-    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message() << "\n";
+    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message()
+              << "\n";
     return 1;
   }
   int status = 0;
@@ -359,12 +375,15 @@ int render_command(int argc, char** argv) {
 #else
       const char q = '\'';
 #endif
-      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i " + q +
-                              (a.frames / "frame_%05d.png").string() + q + " -vf " + q +
-                              "pad=ceil(iw/2)*2:ceil(ih/2)*2" + q + " -pix_fmt yuv420p -c:v libx264 " + q +
-                              mp4.string() + q;
-      if (std::system(cmd.c_str()) == 0) std::cout << "wrote " << mp4.string() << "\n";
-      else std::cerr << "jelly render: ffmpeg failed; the PNG frames are in " << a.frames.string() << "\n";
+      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i " +
+                              q + (a.frames / "frame_%05d.png").string() + q + " -vf " + q +
+                              "pad=ceil(iw/2)*2:ceil(ih/2)*2" + q +
+                              " -pix_fmt yuv420p -c:v libx264 " + q + mp4.string() + q;
+      if (std::system(cmd.c_str()) == 0)
+        std::cout << "wrote " << mp4.string() << "\n";
+      else
+        std::cerr << "jelly render: ffmpeg failed; the PNG frames are in " << a.frames.string()
+                  << "\n";
     } else {
       std::cout << "(no ffmpeg on PATH: PNG frames only)\n";
     }

@@ -73,7 +73,7 @@ int run_command(int argc, char** argv) {
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
-    if (!quiet) print_missing_tasks_note();
+  if (!quiet) print_missing_tasks_note();
 
   std::unique_ptr<Simulator> sim;
   std::optional<AutoStep> auto_step;
@@ -95,9 +95,9 @@ int run_command(int argc, char** argv) {
     return kExitUsage;
   }
   const double h = sim->options().dt;
-  const long k = every > 0 ? every
-                       : auto_step ? auto_step->substeps_per_frame
-                                   : std::max(1L, std::lround(1.0 / (60.0 * h)));
+  const long k = every > 0   ? every
+                 : auto_step ? auto_step->substeps_per_frame
+                             : std::max(1L, std::lround(1.0 / (60.0 * h)));
 
   // Outputs are opened only now, after every input was validated: bad input writes nothing.
   std::unique_ptr<CsvWriter> out, summary;
@@ -119,15 +119,15 @@ int run_command(int argc, char** argv) {
   record(*sim);
   const auto t0 = std::chrono::steady_clock::now();
   const StepResult result = sim->run_until(scene->duration, record);
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out) out->flush();
   if (summary) summary->flush();
 
   if (result == StepResult::Unstable) {
     std::fprintf(stderr, "jelly run: %s\n", sim->instability()->message().c_str());
     if (out || summary)
-      std::fprintf(stderr, "jelly run: kept the %ld frames written before the detector fired.\n", frame);
+      std::fprintf(stderr, "jelly run: kept the %ld frames written before the detector fired.\n",
+                   frame);
     return kExitUnstable;
   }
   if (!quiet) {
@@ -137,11 +137,11 @@ int run_command(int argc, char** argv) {
         "  %zu particles, %zu springs, %zu terrains; %ld acceleration evaluations\n"
         "  final centre of mass (%.6f, %.6f, %.6f), largest speed %.4g m/s\n"
         "  energy: kinetic %.6g J, gravitational %.6g J, spring %.6g J\n",
-        scene->name.c_str(), sim->steps(), std::string(to_string(scene->integrator)).c_str(),
-        h, sim->time(), wall, wall > 0 ? static_cast<double>(sim->steps()) / wall : 0.0,
+        scene->name.c_str(), sim->steps(), std::string(to_string(scene->integrator)).c_str(), h,
+        sim->time(), wall, wall > 0 ? static_cast<double>(sim->steps()) / wall : 0.0,
         static_cast<std::size_t>(sim->state().size()), sim->world().spring_count(),
-        sim->world().terrains().size(), sim->evaluations(), end.com.x(), end.com.y(),
-        end.com.z(), end.max_speed, end.kinetic, end.potential, end.spring);
+        sim->world().terrains().size(), sim->evaluations(), end.com.x(), end.com.y(), end.com.z(),
+        end.max_speed, end.kinetic, end.potential, end.spring);
     if (out) std::printf("  wrote %ld frames to %s\n", frame, out_path.c_str());
     if (summary) std::printf("  wrote %ld summary rows to %s\n", frame, summary_path.c_str());
   }
@@ -156,7 +156,8 @@ void add_scene_overrides(Command& command, SceneOverrides& into, bool run_option
   command.add_option("--duration", into.duration)->type_name("T");
 }
 
-std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const SceneOverrides& overrides) {
+std::optional<SceneSpec> load_with_overrides(const std::string& scene_name,
+                                             const SceneOverrides& overrides) {
   SceneResult loaded = session::resolve_scene(scene_name, session::default_scenes_dir());
   if (!loaded) {
     std::fprintf(stderr, "error: %s\n", loaded.error->text().c_str());
@@ -170,9 +171,11 @@ std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, cons
     }
     return true;
   };
-  if (!overrides.integrator.empty() && !apply("simulation.integrator", overrides.integrator)) return std::nullopt;
+  if (!overrides.integrator.empty() && !apply("simulation.integrator", overrides.integrator))
+    return std::nullopt;
   if (!overrides.dt.empty() && !apply("simulation.dt", overrides.dt)) return std::nullopt;
-  if (!overrides.duration.empty() && !apply("simulation.duration", overrides.duration)) return std::nullopt;
+  if (!overrides.duration.empty() && !apply("simulation.duration", overrides.duration))
+    return std::nullopt;
   for (const std::string& kv : overrides.sets) {
     if (const auto err = set_assignment(scene, kv)) {
       std::fprintf(stderr, "error: %s\n", err->text().c_str());
@@ -187,11 +190,12 @@ void print_missing_tasks_note() {
   if (missing.empty()) return;
   std::string list;
   for (const std::string& id : missing) list += (list.empty() ? "" : ", ") + id;
-  std::fprintf(stderr,
-               "note: these student tasks still return the stub's neutral value: %s.\n"
-               "      Until they are done the jelly has no springs or falls through the floor, and\n"
-               "      your integrators leave it where it is. See docs/handout/README.md.\n",
-               list.c_str());
+  std::fprintf(
+      stderr,
+      "note: these student tasks still return the stub's neutral value: %s.\n"
+      "      Until they are done the jelly has no springs or falls through the floor, and\n"
+      "      your integrators leave it where it is. See docs/handout/README.md.\n",
+      list.c_str());
 }
 
 }  // namespace jelly::cli

@@ -31,8 +31,10 @@ void add_scene_overrides(Command& command, SceneOverrides& into, bool run_option
 
 /// Loads SCENE (a path or a name under scenes/: session::resolve_scene) and applies --integrator,
 /// --dt, --duration and every --set, in that order, through the parameter declarations. On error
-/// prints the message (file, key, line; or the places tried and the known names) and returns nullopt.
-std::optional<SceneSpec> load_with_overrides(const std::string& scene_name, const SceneOverrides& overrides);
+/// prints the message (file, key, line; or the places tried and the known names) and returns
+/// nullopt.
+std::optional<SceneSpec> load_with_overrides(const std::string& scene_name,
+                                             const SceneOverrides& overrides);
 
 /// Prints a note naming the student tasks that still look unimplemented (nothing when all are).
 void print_missing_tasks_note();

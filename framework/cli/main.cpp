@@ -54,7 +54,8 @@ int main(int argc, char** argv) {
     return kExitInternal;
   }
   if (command == "render" || command == "study") {
-    std::fprintf(stderr, "jelly: '%s' is not part of this build (configure with the viewer/study on)\n",
+    std::fprintf(stderr,
+                 "jelly: '%s' is not part of this build (configure with the viewer/study on)\n",
                  command.c_str());
     return kExitUsage;
   }

@@ -130,7 +130,8 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
   row.sim_time = sim.time();
   row.wall = wall;
   row.evaluations = sim.evaluations() - evaluations0;
-  if (const BackwardEulerSolver* be = sim.backward_euler()) row.cg_iterations = be->total_iterations();
+  if (const BackwardEulerSolver* be = sim.backward_euler())
+    row.cg_iterations = be->total_iterations();
   if (!reference) {
     row.error_rms = row.error_final = kNaN;
   } else if (!row.finite) {
@@ -152,7 +153,8 @@ double order(double e_coarse, double e_fine, double h_coarse, double h_fine) {
 SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress) {
   if (o.steps.empty()) throw std::invalid_argument("no step sizes to sweep");
   if (!(o.duration > 0.0) || !(o.sample_dt > 0.0) || o.reference_factor < 1 || o.repeats < 1)
-    throw std::invalid_argument("duration, sample interval, reference factor and repeats must be > 0");
+    throw std::invalid_argument(
+        "duration, sample interval, reference factor and repeats must be > 0");
   SweepResult r;
   r.options = o;
   std::sort(r.options.steps.begin(), r.options.steps.end(), std::greater<>());
@@ -184,16 +186,22 @@ SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* 
 
   // The reference: RK4 at h_ref = h_min / factor, checked against RK4 at h_ref / 2.
   r.reference.h = r.options.steps.back() / o.reference_factor;
-  if (progress) std::fprintf(progress, "reference: rk4, h = %g s ...\n", r.reference.h), std::fflush(progress);
+  if (progress)
+    std::fprintf(progress, "reference: rk4, h = %g s ...\n", r.reference.h), std::fflush(progress);
   RunOutput ref = run_once(scene, IntegratorKind::RK4, r.reference.h, o, nullptr, true);
   r.reference.wall = ref.row.wall;
   r.reference.stable = ref.row.stable && ref.row.finite;
   r.first_collision_step = ref.first_collision_step;
-  r.first_collision_time = ref.first_collision_step < 0 ? -1.0 : ref.first_collision_step * r.reference.h;
-  if (!ref.row.finite) throw std::runtime_error("the RK4 reference run blew up; choose smaller steps");
+  r.first_collision_time =
+      ref.first_collision_step < 0 ? -1.0 : ref.first_collision_step * r.reference.h;
+  if (!ref.row.finite)
+    throw std::runtime_error("the RK4 reference run blew up; choose smaller steps");
   if (o.check_reference) {
-    if (progress) std::fprintf(progress, "reference check: rk4, h = %g s ...\n", r.reference.h / 2), std::fflush(progress);
-    const RunOutput half = run_once(scene, IntegratorKind::RK4, r.reference.h / 2, o, &ref.samples, false);
+    if (progress)
+      std::fprintf(progress, "reference check: rk4, h = %g s ...\n", r.reference.h / 2),
+          std::fflush(progress);
+    const RunOutput half =
+        run_once(scene, IntegratorKind::RK4, r.reference.h / 2, o, &ref.samples, false);
     r.reference.checked = true;
     r.reference.check_rms = half.row.error_rms;
     r.reference.check_final = half.row.error_final;

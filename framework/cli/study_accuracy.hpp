@@ -26,29 +26,29 @@ struct SweepOptions {
 /// One run of one integrator at one step size.
 struct RunRow {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
-  double h = 0.0;               ///< [s]
-  bool stable = true;           ///< the §8 detector never fired over the run
-  std::string reason;           ///< the detector's reason when it fired
-  double detected_at = -1.0;    ///< simulated time when it fired [s]; −1 when it did not
-  bool finite = true;           ///< the state stayed finite to the end
-  double sim_time = 0.0;        ///< simulated time covered [s] (< T when the state blew up)
-  double wall = 0.0;            ///< wall time of the stepping only (minimum over repeats) [s]
-  long evaluations = 0;         ///< acceleration (force) evaluations
-  long cg_iterations = 0;       ///< backward Euler's CG iterations (sparse mat-vec products)
-  double error_rms = 0.0;       ///< RMS over particles and samples of |x − x_ref| [m]
-  double error_final = 0.0;     ///< max over particles of |x − x_ref| at T [m]
-  double order_rms = 0.0;       ///< observed order from the next coarser h (NaN when none)
+  double h = 0.0;             ///< [s]
+  bool stable = true;         ///< the §8 detector never fired over the run
+  std::string reason;         ///< the detector's reason when it fired
+  double detected_at = -1.0;  ///< simulated time when it fired [s]; −1 when it did not
+  bool finite = true;         ///< the state stayed finite to the end
+  double sim_time = 0.0;      ///< simulated time covered [s] (< T when the state blew up)
+  double wall = 0.0;          ///< wall time of the stepping only (minimum over repeats) [s]
+  long evaluations = 0;       ///< acceleration (force) evaluations
+  long cg_iterations = 0;     ///< backward Euler's CG iterations (sparse mat-vec products)
+  double error_rms = 0.0;     ///< RMS over particles and samples of |x − x_ref| [m]
+  double error_final = 0.0;   ///< max over particles of |x − x_ref| at T [m]
+  double order_rms = 0.0;     ///< observed order from the next coarser h (NaN when none)
   double order_final = 0.0;
   double wall_per_sim() const { return sim_time > 0.0 ? wall / sim_time : 0.0; }
 };
 
 /// The reference run and how well it agrees with itself at half its step.
 struct ReferenceInfo {
-  double h = 0.0;              ///< [s]
-  double wall = 0.0;           ///< [s]
+  double h = 0.0;     ///< [s]
+  double wall = 0.0;  ///< [s]
   bool checked = false;
-  double check_rms = 0.0;      ///< RMS difference RK4(h_ref) − RK4(h_ref/2) [m]
-  double check_final = 0.0;    ///< max difference at T [m]
+  double check_rms = 0.0;    ///< RMS difference RK4(h_ref) − RK4(h_ref/2) [m]
+  double check_final = 0.0;  ///< max difference at T [m]
   bool stable = true;
 };
 

@@ -99,7 +99,6 @@ exit codes: 0 done (also when runs were unstable: they are marked); 2 bad comman
 key or value (nothing is run or written); 1 a file could not be written.
 )";
 
-
 /// --integrators A,B: each name must be an integrator's.
 CLI::Validator integrator_name() {
   return CLI::Validator(
@@ -119,9 +118,15 @@ int accuracy(int argc, char** argv) {
   long levels = 5, ref_factor = 0, repeats = 0;
   bool no_ref_check = false, quiet = false;
   cmd.add_option("SCENE", scene_path)->required();
-  cmd.add_option("--integrators", integrators)->type_name("A,B")->delimiter(',')->check(integrator_name())
+  cmd.add_option("--integrators", integrators)
+      ->type_name("A,B")
+      ->delimiter(',')
+      ->check(integrator_name())
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cmd.add_option("--steps", steps)->type_name("H1,H2")->delimiter(',')->check(positive_number())
+  cmd.add_option("--steps", steps)
+      ->type_name("H1,H2")
+      ->delimiter(',')
+      ->check(positive_number())
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd.add_option("--h-max", h_max)->type_name("H")->check(positive_number());
   cmd.add_option("--levels", levels)->type_name("K")->check(whole_number(1, 30));
@@ -140,7 +145,8 @@ int accuracy(int argc, char** argv) {
 
   study::SweepOptions o;
   o.duration = scene->duration;
-  for (const std::string& name : integrators) o.integrators.push_back(*integrator_from_string(name));
+  for (const std::string& name : integrators)
+    o.integrators.push_back(*integrator_from_string(name));
   if (integrators.empty()) o.integrators.assign(kAllIntegrators.begin(), kAllIntegrators.end());
   o.steps = steps;
   if (steps.empty()) {
@@ -177,7 +183,6 @@ int accuracy(int argc, char** argv) {
   return kExitOk;
 }
 
-
 /// --values: comma-separated, or ';'-separated when any value is a vector ("0,9,0;0,30,0").
 std::vector<std::string> split_values(const std::string& text) {
   const char separator = text.find(';') != std::string::npos ? ';' : ',';
@@ -204,7 +209,10 @@ int effects(int argc, char** argv) {
   cmd.add_option("SCENE", scene_path)->required();
   cmd.add_option("--param", key)->type_name("KEY");
   cmd.add_option("--values", values)->type_name("A,B");
-  cmd.add_option("--integrators", integrators)->type_name("A,B")->delimiter(',')->check(integrator_name())
+  cmd.add_option("--integrators", integrators)
+      ->type_name("A,B")
+      ->delimiter(',')
+      ->check(integrator_name())
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd.add_option("--rest-speed", rest_speed)->type_name("V")->check(positive_number());
   cmd.add_option("--rest-hold", rest_hold)->type_name("S")->check(positive_number());
@@ -222,7 +230,8 @@ int effects(int argc, char** argv) {
   o.duration = scene->duration;
   o.key = key;
   o.values = split_values(values);
-  for (const std::string& name : integrators) o.integrators.push_back(*integrator_from_string(name));
+  for (const std::string& name : integrators)
+    o.integrators.push_back(*integrator_from_string(name));
   if (o.key.empty() && o.integrators.empty())
     return cmd.error("nothing to sweep: give --param KEY --values A,B,... or --integrators A,B");
   if (rest_speed > 0.0) o.rest_speed = rest_speed;
@@ -230,7 +239,8 @@ int effects(int argc, char** argv) {
   if (sample_dt > 0.0) o.series_dt = sample_dt;
   if (repeats > 0) o.repeats = static_cast<int>(repeats);
   if (prefix.empty()) prefix = "effects-" + scene->name;
-  if (title.empty()) title = scene->name + (o.key.empty() ? std::string(": integrators") : ": " + o.key);
+  if (title.empty())
+    title = scene->name + (o.key.empty() ? std::string(": integrators") : ": " + o.key);
 
   study::EffectsResult result;
   try {
@@ -261,7 +271,8 @@ int study_command(int argc, char** argv) {
   const std::string what = argv[2];
   if (what == "accuracy") return accuracy(argc, argv);
   if (what == "effects") return effects(argc, argv);
-  std::fprintf(stderr, "jelly study: unknown study '%s' (known: accuracy, effects)\n%s", what.c_str(), kStudyHelp);
+  std::fprintf(stderr, "jelly study: unknown study '%s' (known: accuracy, effects)\n%s",
+               what.c_str(), kStudyHelp);
   return kExitUsage;
 }
 

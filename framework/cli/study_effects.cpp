@@ -58,8 +58,10 @@ std::string loadavg() {
   return a + " " + b + " " + c;
 }
 
-/// Sets `key` (one declared key, or a vector key + ".x"/".y"/".z") to `value`; the error text or "".
-std::string set_one(SceneSpec& scene, const std::string& key, const std::string& value, int component) {
+/// Sets `key` (one declared key, or a vector key + ".x"/".y"/".z") to `value`; the error text or
+/// "".
+std::string set_one(SceneSpec& scene, const std::string& key, const std::string& value,
+                    int component) {
   if (component < 0) {
     if (const auto e = set_parameter(scene, key, value)) return e->text();
     return "";
@@ -134,8 +136,9 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   monitor.start(row.energy_start);
   row.particles = static_cast<long>(world.particle_count());
   row.springs = static_cast<long>(world.spring_count());
-  const Vec3 up = world.gravity() && world.gravity()->norm() > 0.0 ? Vec3(-world.gravity()->normalized())
-                                                                    : Vec3(0.0, 1.0, 0.0);
+  const Vec3 up = world.gravity() && world.gravity()->norm() > 0.0
+                      ? Vec3(-world.gravity()->normalized())
+                      : Vec3(0.0, 1.0, 0.0);
   const Eigen::VectorXd& mass = world.masses();
   const double total_mass = mass.sum();
   const CubeLattice* cube = world.cubes().empty() ? nullptr : &world.cubes().front();
@@ -145,7 +148,10 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
            std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0});
   };
-  struct Look { Vec3 com_v; double height, max_speed; };
+  struct Look {
+    Vec3 com_v;
+    double height, max_speed;
+  };
   const auto look = [&](const State& s) {
     Look l{Vec3::Zero(), 0.0, 0.0};
     Vec3 com = Vec3::Zero();
@@ -214,8 +220,10 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
       volume = cube_volume(*cube, s.x);
       row.cave_in = std::max(row.cave_in, 1.0 - volume / row.rest_volume);
     }
-    if (now.max_speed >= o.rest_speed) rest_since = kNaN;
-    else if (std::isnan(rest_since)) rest_since = sim.time();
+    if (now.max_speed >= o.rest_speed)
+      rest_since = kNaN;
+    else if (std::isnan(rest_since))
+      rest_since = sim.time();
     bool fired = false;
     if (monitor.wants_sample(step))
       if (auto reason = monitor.check(sim.energy().total(), true)) {
@@ -231,13 +239,16 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   }
   if (turned) row.bounce = row.com_apex - turn_height;
   row.sim_time = sim.time();
-  row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9 ? rest_since : kNaN;
+  row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9
+                      ? rest_since
+                      : kNaN;
   row.cave_in = cube ? row.cave_in : kNaN;
   row.cave_in_final = cube ? 1.0 - volume / row.rest_volume : kNaN;
   row.energy_end = sim.energy().total();
   row.wall = wall;
   row.evaluations = sim.evaluations();
-  if (const BackwardEulerSolver* be = sim.backward_euler()) row.cg_iterations = be->total_iterations();
+  if (const BackwardEulerSolver* be = sim.backward_euler())
+    row.cg_iterations = be->total_iterations();
   return row;
 }
 
@@ -274,9 +285,10 @@ std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptio
   if (keys.empty()) {
     // Let the declarations say what is wrong (with their "did you mean").
     SceneSpec copy = scene;
-    std::string why = o.key.find('*') != std::string::npos
-                          ? "--param " + o.key + ": matches no parameter of this scene (see jelly params SCENE)"
-                          : set_one(copy, o.key, o.values.front(), -1);
+    std::string why =
+        o.key.find('*') != std::string::npos
+            ? "--param " + o.key + ": matches no parameter of this scene (see jelly params SCENE)"
+            : set_one(copy, o.key, o.values.front(), -1);
     if (why.empty()) why = "--param " + o.key + ": not a parameter of this scene";
     throw std::invalid_argument(why);
   }
@@ -287,23 +299,27 @@ std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptio
       if (std::string why = set_one(s, key, value, component); !why.empty()) {
         const auto info = find_parameter(scene, key);
         if (info && info->type == ParamType::Vector3 && component < 0)
-          why += " (separate vector values with ';', e.g. --values '0,9,0;0,30,0', or sweep one "
-                 "component: --param " + key + ".y)";
+          why +=
+              " (separate vector values with ';', e.g. --values '0,9,0;0,30,0', or sweep one "
+              "component: --param " +
+              key + ".y)";
         throw std::invalid_argument(why);
       }
     scenes.push_back(std::move(s));
   }
   if (keys_out) {
     keys_out->clear();
-    for (const std::string& k : keys) keys_out->push_back(component < 0 ? k : k + "." + "xyz"[component]);
+    for (const std::string& k : keys)
+      keys_out->push_back(component < 0 ? k : k + "." + "xyz"[component]);
   }
   return scenes;
 }
 
 EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::FILE* progress) {
-  // Every value is checked (effects_scenes) before anything runs: bad input runs and writes nothing.
-  if (!(o.duration > 0.0) || !(o.rest_speed > 0.0) || !(o.rest_hold >= 0.0) || !(o.series_dt > 0.0) ||
-      o.repeats < 1)
+  // Every value is checked (effects_scenes) before anything runs: bad input runs and writes
+  // nothing.
+  if (!(o.duration > 0.0) || !(o.rest_speed > 0.0) || !(o.rest_hold >= 0.0) ||
+      !(o.series_dt > 0.0) || o.repeats < 1)
     throw std::invalid_argument("duration, rest speed, sample interval and repeats must be > 0");
   EffectsResult r;
   r.options = o;
@@ -323,18 +339,20 @@ EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::
       if (o.repeats > 1) {
         std::vector<double> walls{row.wall};
         const long steps = std::lround(row.sim_time / row.h);
-        for (int rep = 1; rep < o.repeats; ++rep) walls.push_back(time_again(scenes[i], kind, steps));
+        for (int rep = 1; rep < o.repeats; ++rep)
+          walls.push_back(time_again(scenes[i], kind, steps));
         row.wall = median(walls);
       }
       ++done;
       if (progress) {
-        std::fprintf(progress, "[%zu/%zu] %s%s%s %s h=%g: %s cave-in %s %%, bounce %s m, rest %s, wall %.3g s\n",
-                     done, runs, o.key.c_str(), o.key.empty() ? "" : "=", row.value.c_str(),
-                     std::string(to_string(kind)).c_str(), row.h,
-                     row.stable ? "stable," : "UNSTABLE,", fmt("%.3g", 100.0 * row.cave_in).c_str(),
-                     fmt("%.3g", row.bounce).c_str(),
-                     std::isnan(row.rest_time) ? "never" : (fmt("%.3g", row.rest_time) + " s").c_str(),
-                     row.wall);
+        std::fprintf(
+            progress,
+            "[%zu/%zu] %s%s%s %s h=%g: %s cave-in %s %%, bounce %s m, rest %s, wall %.3g s\n", done,
+            runs, o.key.c_str(), o.key.empty() ? "" : "=", row.value.c_str(),
+            std::string(to_string(kind)).c_str(), row.h, row.stable ? "stable," : "UNSTABLE,",
+            fmt("%.3g", 100.0 * row.cave_in).c_str(), fmt("%.3g", row.bounce).c_str(),
+            std::isnan(row.rest_time) ? "never" : (fmt("%.3g", row.rest_time) + " s").c_str(),
+            row.wall);
         std::fflush(progress);
       }
       r.rows.push_back(std::move(row));

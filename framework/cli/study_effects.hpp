@@ -31,11 +31,12 @@ struct EffectsOptions {
 /// What one run measured (definitions: docs/parameters.md, "What is measured").
 struct EffectsRow {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
-  std::string value;           ///< the swept value as given ("" when only integrators are swept)
-  double h = 0.0;              ///< step [s]
+  std::string value;  ///< the swept value as given ("" when only integrators are swept)
+  double h = 0.0;     ///< step [s]
   long particles = 0;
   long springs = 0;
-  double contact_time = -1.0;  ///< first step with a collision response or contact force [s]; NaN: none
+  double contact_time =
+      -1.0;  ///< first step with a collision response or contact force [s]; NaN: none
   double impact_speed = 0.0;   ///< centre-of-mass speed just before it [m/s]
   double turn_time = 0.0;      ///< first time after contact the centre of mass stops descending [s]
   double peak_speed = 0.0;     ///< largest centre-of-mass speed from turn_time on [m/s]
@@ -44,17 +45,18 @@ struct EffectsRow {
   double rest_volume = 0.0;    ///< volume inside the cube's outer surface at t = 0 [m³]
   double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction; cube bodies)
   double cave_in_final = 0.0;  ///< 1 − V(T)/V(0)
-  double rest_time = 0.0;      ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
-  double energy_start = 0.0;   ///< kinetic + gravitational + spring at t = 0 [J]
-  double energy_end = 0.0;     ///< the same at the end [J]
-  bool stable = true;          ///< the §8 detector never fired (the run stops when it does)
-  bool finite = true;          ///< the state stayed finite
-  double detected_at = -1.0;   ///< when the detector fired [s]; −1 when it did not
-  std::string reason;          ///< the detector's reason
-  double sim_time = 0.0;       ///< simulated time covered [s]
-  double wall = 0.0;           ///< wall time of the steps only, median over repeats [s]
-  long evaluations = 0;        ///< acceleration (force) evaluations
-  long cg_iterations = 0;      ///< backward Euler's CG iterations
+  double rest_time =
+      0.0;  ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
+  double energy_start = 0.0;  ///< kinetic + gravitational + spring at t = 0 [J]
+  double energy_end = 0.0;    ///< the same at the end [J]
+  bool stable = true;         ///< the §8 detector never fired (the run stops when it does)
+  bool finite = true;         ///< the state stayed finite
+  double detected_at = -1.0;  ///< when the detector fired [s]; −1 when it did not
+  std::string reason;         ///< the detector's reason
+  double sim_time = 0.0;      ///< simulated time covered [s]
+  double wall = 0.0;          ///< wall time of the steps only, median over repeats [s]
+  long evaluations = 0;       ///< acceleration (force) evaluations
+  long cg_iterations = 0;     ///< backward Euler's CG iterations
   double dissipated() const { return energy_start - energy_end; }
   double wall_per_sim() const { return sim_time > 0.0 ? wall / sim_time : 0.0; }
 };
@@ -69,8 +71,8 @@ struct EffectsResult {
   std::string scene_file;
   std::vector<std::string> keys;  ///< the declared keys the swept key stands for
   EffectsOptions options;
-  std::vector<EffectsRow> rows;   ///< integrator-major, values in the order given
-  std::vector<EffectsSeries> series;  ///< one per row
+  std::vector<EffectsRow> rows;         ///< integrator-major, values in the order given
+  std::vector<EffectsSeries> series;    ///< one per row
   std::string load_before, load_after;  ///< /proc/loadavg at start and end
 };
 
@@ -82,7 +84,8 @@ std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptio
 
 /// Runs the sweep; one progress line per run goes to `progress` unless null.
 /// Throws std::invalid_argument for bad options or values.
-EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& options, std::FILE* progress);
+EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& options,
+                          std::FILE* progress);
 
 /// Writes PREFIX.csv, PREFIX.md, PREFIX.dat/.gp/.svg/.png (each measure against the swept value)
 /// and PREFIX-time.dat/.gp/.svg/.png (centre-of-mass height, volume and speed over time).

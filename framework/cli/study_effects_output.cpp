@@ -11,8 +11,8 @@ namespace jelly::cli::study {
 
 namespace {
 
-const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#555555",
-                          "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                          "#555555", "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
 
 std::string csv_text(const std::string& s) {
   std::string out = "\"";
@@ -45,9 +45,10 @@ std::string plot_script(const std::string& header, const std::string& svg, const
   std::ostringstream gp;
   gp << header;
   gp << "set terminal svg size " << width << "," << height
-     << " dynamic enhanced font 'sans,11' background '#ffffff'\nset output '" << svg << "'\n" << body;
-  gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo size " << width << ","
-     << height << " enhanced font 'sans,10'\n  set output '" << png << "'\n";
+     << " dynamic enhanced font 'sans,11' background '#ffffff'\nset output '" << svg << "'\n"
+     << body;
+  gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo size " << width
+     << "," << height << " enhanced font 'sans,10'\n  set output '" << png << "'\n";
   std::istringstream lines(body);
   for (std::string line; std::getline(lines, line);) gp << "  " << line << '\n';
   gp << "}\nset output\n";
@@ -70,19 +71,21 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,contact_time,"
          "impact_speed,turn_time,peak_speed_after_impact,com_apex,bounce_height,rest_volume,"
          "cave_in_max,cave_in_final,rest_time,energy_start,energy_end,energy_dissipated,"
-         "dissipated_fraction,sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,reason\n";
+         "dissipated_fraction,sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,"
+         "reason\n";
   for (const EffectsRow& row : r.rows)
     csv << r.scene_name << ',' << csv_text(o.key) << ',' << csv_text(row.value) << ','
-        << to_string(row.integrator) << ',' << num(row.h) << ',' << row.particles << ',' << row.springs
-        << ',' << (row.stable ? "true" : "false") << ',' << (row.finite ? "true" : "false") << ','
-        << num(row.detected_at) << ',' << num(row.contact_time) << ',' << num(row.impact_speed) << ','
-        << num(row.turn_time) << ',' << num(row.peak_speed) << ',' << num(row.com_apex) << ','
-        << num(row.bounce) << ',' << num(row.rest_volume) << ',' << num(row.cave_in) << ','
-        << num(row.cave_in_final) << ',' << num(row.rest_time) << ',' << num(row.energy_start) << ','
-        << num(row.energy_end) << ',' << num(row.dissipated()) << ','
+        << to_string(row.integrator) << ',' << num(row.h) << ',' << row.particles << ','
+        << row.springs << ',' << (row.stable ? "true" : "false") << ','
+        << (row.finite ? "true" : "false") << ',' << num(row.detected_at) << ','
+        << num(row.contact_time) << ',' << num(row.impact_speed) << ',' << num(row.turn_time) << ','
+        << num(row.peak_speed) << ',' << num(row.com_apex) << ',' << num(row.bounce) << ','
+        << num(row.rest_volume) << ',' << num(row.cave_in) << ',' << num(row.cave_in_final) << ','
+        << num(row.rest_time) << ',' << num(row.energy_start) << ',' << num(row.energy_end) << ','
+        << num(row.dissipated()) << ','
         << num(row.energy_start != 0.0 ? row.dissipated() / row.energy_start : 0.0) << ','
-        << num(row.sim_time) << ',' << row.evaluations << ',' << row.cg_iterations << ',' << num(row.wall)
-        << ',' << num(row.wall_per_sim()) << ',' << csv_text(row.reason) << '\n';
+        << num(row.sim_time) << ',' << row.evaluations << ',' << row.cg_iterations << ','
+        << num(row.wall) << ',' << num(row.wall_per_sim()) << ',' << csv_text(row.reason) << '\n';
   write_file(with(".csv"), csv.str());
   written.push_back(with(".csv"));
 
@@ -94,32 +97,40 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     md << ", swept `" << o.key << "`";
     if (r.keys.size() > 1 || (r.keys.size() == 1 && r.keys[0] != o.key)) {
       md << " (";
-      for (std::size_t i = 0; i < r.keys.size(); ++i) md << (i ? ", " : "") << "`" << r.keys[i] << "`";
+      for (std::size_t i = 0; i < r.keys.size(); ++i)
+        md << (i ? ", " : "") << "`" << r.keys[i] << "`";
       md << ")";
     }
   }
   md << "; T = " << num(o.duration) << " s per run; at rest = every particle slower than "
      << num(o.rest_speed) << " m/s from then to the end (at least " << num(o.rest_hold)
      << " s). Wall time is the stepping only (median of " << o.repeats << " run"
-     << (o.repeats > 1 ? "s" : "") << "); load average " << r.load_before << " before, " << r.load_after
-     << " after (a shared machine). Definitions: docs/parameters.md.\n\n";
+     << (o.repeats > 1 ? "s" : "") << "); load average " << r.load_before << " before, "
+     << r.load_after << " after (a shared machine). Definitions: docs/parameters.md.\n\n";
   md << "| integrator |" << (o.key.empty() ? "" : " value |")
-     << " h [s] | stable | impact speed [m/s] | peak speed after [m/s] | bounce [m] | cave-in max | "
-        "cave-in at end | at rest from [s] | energy lost | wall s / sim s | force evals / sim s |\n";
-  md << "|---|" << (o.key.empty() ? "" : "---|") << "---|---|---|---|---|---|---|---|---|---|---|\n";
+     << " h [s] | stable | impact speed [m/s] | peak speed after [m/s] | bounce [m] | cave-in max "
+        "| "
+        "cave-in at end | at rest from [s] | energy lost | wall s / sim s | force evals / sim s "
+        "|\n";
+  md << "|---|" << (o.key.empty() ? "" : "---|")
+     << "---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const EffectsRow& row : r.rows) {
     std::string stable = row.stable ? "yes" : "**no**";
     if (!row.stable)
-      stable += " (" + std::string(row.finite ? "detector" : "blew up") + " at t = " +
-                fmt("%.3g", row.detected_at) + " s)";
+      stable += " (" + std::string(row.finite ? "detector" : "blew up") +
+                " at t = " + fmt("%.3g", row.detected_at) + " s)";
     md << "| " << to_string(row.integrator) << " |" << (o.key.empty() ? "" : " " + row.value + " |")
        << " " << num(row.h) << " | " << stable << " | " << fmt("%.2f", row.impact_speed) << " | "
        << fmt("%.2f", row.peak_speed) << " | " << fmt("%.3f", row.bounce) << " | "
        << fmt("%.1f %%", 100.0 * row.cave_in) << " | " << fmt("%.1f %%", 100.0 * row.cave_in_final)
-       << " | " << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time)) << " | "
-       << fmt("%.0f %%", row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0)
+       << " | " << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time))
+       << " | "
+       << fmt("%.0f %%",
+              row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0)
        << " | " << fmt("%.3g", row.wall_per_sim()) << " | "
-       << fmt("%.0f", row.sim_time > 0 ? static_cast<double>(row.evaluations + row.cg_iterations) / row.sim_time : 0.0)
+       << fmt("%.0f", row.sim_time > 0
+                          ? static_cast<double>(row.evaluations + row.cg_iterations) / row.sim_time
+                          : 0.0)
        << " |\n";
   }
   write_file(with(".md"), md.str());
@@ -128,15 +139,18 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   // ----- measures against the swept value: one block per integrator -----
   const std::vector<double> xs = numeric_values(r);
   const bool numeric = !xs.empty();
-  const bool logx = numeric && *std::min_element(xs.begin(), xs.end()) > 0.0 &&
-                    *std::max_element(xs.begin(), xs.end()) >= 20.0 * *std::min_element(xs.begin(), xs.end());
+  const bool logx =
+      numeric && *std::min_element(xs.begin(), xs.end()) > 0.0 &&
+      *std::max_element(xs.begin(), xs.end()) >= 20.0 * *std::min_element(xs.begin(), xs.end());
   const std::size_t per_block = o.key.empty() ? r.rows.size() : o.values.size();
   const std::size_t blocks = per_block ? r.rows.size() / per_block : 0;
   std::ostringstream dat;
   dat << "# x stable peak_speed bounce cave_in_% rest_time dissipated_% wall_per_sim label\n";
   for (std::size_t b = 0; b < blocks; ++b) {
     if (b) dat << "\n\n";
-    dat << "# " << (o.key.empty() ? "runs" : std::string(to_string(r.rows[b * per_block].integrator))) << '\n';
+    dat << "# "
+        << (o.key.empty() ? "runs" : std::string(to_string(r.rows[b * per_block].integrator)))
+        << '\n';
     for (std::size_t i = 0; i < per_block; ++i) {
       const EffectsRow& row = r.rows[b * per_block + i];
       const std::string label = o.key.empty() ? std::string(to_string(row.integrator)) : row.value;
@@ -155,7 +169,8 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::ostringstream body;
   {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 2,3 title \"%s\" noenhanced font ',12'\n", title.c_str());
+    std::snprintf(buf, sizeof buf, "set multiplot layout 2,3 title \"%s\" noenhanced font ',12'\n",
+                  title.c_str());
     body << buf;
   }
   const char* panels[6][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
@@ -166,35 +181,39 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
                               {"8", "wall time per simulated second [s]"}};
   // Which measure has any finite value (gnuplot refuses a panel without one).
   const auto measure = [](const EffectsRow& row, int p) {
-    const double v[6] = {row.peak_speed, row.bounce, row.cave_in, row.rest_time, row.dissipated(),
-                         row.wall_per_sim()};
+    const double v[6] = {row.peak_speed, row.bounce,       row.cave_in,
+                         row.rest_time,  row.dissipated(), row.wall_per_sim()};
     return v[p];
   };
   bool cross_titled = false;
   for (int p = 0; p < 6; ++p) {
     body << "set ylabel '" << panels[p][1] << "' font ',9'\n";
     body << (p == 5 ? "set logscale y\n" : "unset logscale y\n");
-    const bool any = std::any_of(r.rows.begin(), r.rows.end(),
-                                 [&](const EffectsRow& row) { return std::isfinite(measure(row, p)); });
+    const bool any = std::any_of(r.rows.begin(), r.rows.end(), [&](const EffectsRow& row) {
+      return std::isfinite(measure(row, p));
+    });
     if (!any) {
-      body << "set yrange [0:1]\nset label 1 'no run has this measure' at graph 0.5, graph 0.5 center\n"
+      body << "set yrange [0:1]\nset label 1 'no run has this measure' at graph 0.5, graph 0.5 "
+              "center\n"
            << "plot 1/0 notitle\nunset label 1\nset yrange [*:*]\n";
       continue;
     }
     body << "plot ";
     for (std::size_t b = 0; b < blocks; ++b) {
-      const std::string name = o.key.empty() ? "runs" : std::string(to_string(r.rows[b * per_block].integrator));
+      const std::string name =
+          o.key.empty() ? "runs" : std::string(to_string(r.rows[b * per_block].integrator));
       const char* colour = kColours[b % (sizeof kColours / sizeof *kColours)];
-      body << (b ? ", \\\n     " : "") << "'" << dat_name << "' index " << b << " using 1:" << panels[p][0]
-           << (numeric ? "" : ":xtic(9)") << " with linespoints pt 7 ps 0.7 lw 1.5 lc rgb '" << colour
-           << "' title '" << name << "' noenhanced";
+      body << (b ? ", \\\n     " : "") << "'" << dat_name << "' index " << b
+           << " using 1:" << panels[p][0] << (numeric ? "" : ":xtic(9)")
+           << " with linespoints pt 7 ps 0.7 lw 1.5 lc rgb '" << colour << "' title '" << name
+           << "' noenhanced";
       const bool unstable = std::any_of(r.rows.begin() + static_cast<long>(b * per_block),
                                         r.rows.begin() + static_cast<long>((b + 1) * per_block),
                                         [](const EffectsRow& row) { return !row.stable; });
       if (unstable) {
-        body << ", \\\n     '" << dat_name << "' index " << b << " using 1:($2 == 0 ? $" << panels[p][0]
-             << " : 1/0) with points pt 2 ps 1.8 lw 2 lc rgb '" << colour << "' title '"
-             << (cross_titled ? "" : "detector fired") << "'";
+        body << ", \\\n     '" << dat_name << "' index " << b << " using 1:($2 == 0 ? $"
+             << panels[p][0] << " : 1/0) with points pt 2 ps 1.8 lw 2 lc rgb '" << colour
+             << "' title '" << (cross_titled ? "" : "detector fired") << "'";
         cross_titled = true;
       }
     }
@@ -205,10 +224,11 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::ostringstream header;
   header << "# Written by `jelly study effects`; run: gnuplot " << with(".gp").filename().string()
          << " (in this folder). Crosses: the stability detector fired in that run.\n"
-         << "set datafile missing 'nan'\nset grid\nset key top left font ',9'\nset xlabel '" << xlabel
-         << "' noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
-         << "set xrange [" << (numeric ? num(*std::min_element(xs.begin(), xs.end())) : "0.5") << ":"
-         << (numeric ? num(*std::max_element(xs.begin(), xs.end())) : num(per_block + 0.5)) << "]\n"
+         << "set datafile missing 'nan'\nset grid\nset key top left font ',9'\nset xlabel '"
+         << xlabel << "' noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
+         << "set xrange [" << (numeric ? num(*std::min_element(xs.begin(), xs.end())) : "0.5")
+         << ":" << (numeric ? num(*std::max_element(xs.begin(), xs.end())) : num(per_block + 0.5))
+         << "]\n"
          << (logx ? "set logscale x\n" : "") << "set pointsize 1.0\n";
   write_file(with(".gp"), plot_script(header.str(), with(".svg").filename().string(),
                                       with(".png").filename().string(), body.str(), 1500, 800));
@@ -227,7 +247,8 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     tdat << "# " << run_label(r, r.rows[i]) << '\n';
     for (std::size_t j = 0; j < s.t.size(); ++j)
       tdat << num(s.t[j]) << ' ' << num(s.com_height[j]) << ' ' << num(s.com_speed[j]) << ' '
-           << num(s.volume_ratio[j]) << ' ' << num(s.max_speed[j]) << ' ' << num(s.energy[j]) << '\n';
+           << num(s.volume_ratio[j]) << ' ' << num(s.max_speed[j]) << ' ' << num(s.energy[j])
+           << '\n';
   }
   write_file(with("-time.dat"), tdat.str());
   written.push_back(with("-time.dat"));
@@ -235,7 +256,8 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::ostringstream tbody;
   {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 2,2 title \"%s\" noenhanced font ',12'\n", title.c_str());
+    std::snprintf(buf, sizeof buf, "set multiplot layout 2,2 title \"%s\" noenhanced font ',12'\n",
+                  title.c_str());
     tbody << buf;
   }
   const char* tpanels[4][2] = {{"2", "centre-of-mass height [m]"},
@@ -245,19 +267,22 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   for (int p = 0; p < 4; ++p) {
     tbody << "set ylabel '" << tpanels[p][1] << "'\nplot ";
     for (std::size_t i = 0; i < r.series.size(); ++i)
-      tbody << (i ? ", \\\n     " : "") << "'" << tdat_name << "' index " << i << " using 1:" << tpanels[p][0]
-            << " with lines lw 1.5 lc rgb '" << kColours[i % (sizeof kColours / sizeof *kColours)]
-            << "' title '" << run_label(r, r.rows[i]) << "' noenhanced";
+      tbody << (i ? ", \\\n     " : "") << "'" << tdat_name << "' index " << i
+            << " using 1:" << tpanels[p][0] << " with lines lw 1.5 lc rgb '"
+            << kColours[i % (sizeof kColours / sizeof *kColours)] << "' title '"
+            << run_label(r, r.rows[i]) << "' noenhanced";
     if (r.series.empty()) tbody << "1/0 notitle";
     tbody << "\n";
   }
   tbody << "unset multiplot\n";
   std::ostringstream theader;
-  theader << "# Written by `jelly study effects`: every run over time; run: gnuplot "
-          << with("-time.gp").filename().string() << " (in this folder).\n"
-          << "set datafile missing 'nan'\nset grid\nset key top right font ',8'\nset xlabel 't [s]'\n";
-  write_file(with("-time.gp"), plot_script(theader.str(), with("-time.svg").filename().string(),
-                                           with("-time.png").filename().string(), tbody.str(), 1300, 800));
+  theader
+      << "# Written by `jelly study effects`: every run over time; run: gnuplot "
+      << with("-time.gp").filename().string() << " (in this folder).\n"
+      << "set datafile missing 'nan'\nset grid\nset key top right font ',8'\nset xlabel 't [s]'\n";
+  write_file(with("-time.gp"),
+             plot_script(theader.str(), with("-time.svg").filename().string(),
+                         with("-time.png").filename().string(), tbody.str(), 1300, 800));
   written.push_back(with("-time.gp"));
   if (run_gnuplot(with("-time.gp"), with("-time.svg"), with("-time.png"), note)) {
     if (fs::exists(with("-time.svg"))) written.push_back(with("-time.svg"));
@@ -267,7 +292,8 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::istringstream lines(note);
   std::string kept;
   for (std::string line; std::getline(lines, line);)
-    if (line.find("empty y range") == std::string::npos && line.find("empty x range") == std::string::npos)
+    if (line.find("empty y range") == std::string::npos &&
+        line.find("empty x range") == std::string::npos)
       kept += line + '\n';
   note = kept;
   return written;

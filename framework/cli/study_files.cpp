@@ -42,10 +42,12 @@ bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   fs::remove(png);
 #ifdef _WIN32
   // cmd.exe: double quotes, and /d to change drive too.
-  const std::string cmd = "cd /d \"" + dir.string() + "\" && gnuplot \"" + script.filename().string() + "\" 2>&1";
+  const std::string cmd =
+      "cd /d \"" + dir.string() + "\" && gnuplot \"" + script.filename().string() + "\" 2>&1";
   std::FILE* pipe = _popen(cmd.c_str(), "r");
 #else
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + script.filename().string() + "' 2>&1";
+  const std::string cmd =
+      "cd '" + dir.string() + "' && gnuplot '" + script.filename().string() + "' 2>&1";
   std::FILE* pipe = popen(cmd.c_str(), "r");
 #endif
   std::string out;
@@ -59,8 +61,10 @@ bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   const int status = pipe ? pclose(pipe) : -1;
 #endif
   if (status != 0) {
-    note += "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
-            "script " + script.string() + " is kept.\n" + out;
+    note +=
+        "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
+        "script " +
+        script.string() + " is kept.\n" + out;
     return false;
   }
   note += out;  // warnings

@@ -68,24 +68,26 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   std::ostringstream md;
   md << "### " << title << "\n\n";
   md << "Scene `" << r.scene_name << "`: " << r.particles << " particles, " << r.springs
-     << " springs, " << r.terrains << " terrains; T = " << num(o.duration) << " s, errors sampled every "
-     << num(o.sample_dt) << " s.";
+     << " springs, " << r.terrains << " terrains; T = " << num(o.duration)
+     << " s, errors sampled every " << num(o.sample_dt) << " s.";
   if (r.first_collision_time >= 0)
-    md << " First collision response in the reference run at t = " << fmt("%.4f", r.first_collision_time) << " s.";
+    md << " First collision response in the reference run at t = "
+       << fmt("%.4f", r.first_collision_time) << " s.";
   else
     md << " No collision happened in the reference run (the trajectory is smooth).";
-  md << "\n\nReference: RK4 at h_ref = " << num(r.reference.h) << " s (" << fmt("%.3g", r.reference.wall)
-     << " s of wall time).";
+  md << "\n\nReference: RK4 at h_ref = " << num(r.reference.h) << " s ("
+     << fmt("%.3g", r.reference.wall) << " s of wall time).";
   if (r.reference.checked)
-    md << " RK4 at h_ref/2 differs from it by " << fmt("%.2e", r.reference.check_rms) << " m (RMS) and "
-       << fmt("%.2e", r.reference.check_final) << " m (max at T); the smallest stable RMS error measured is "
-       << fmt("%.2e", smallest) << " m (ratio " << fmt("%.2g", r.reference.check_rms / smallest) << ").";
+    md << " RK4 at h_ref/2 differs from it by " << fmt("%.2e", r.reference.check_rms)
+       << " m (RMS) and " << fmt("%.2e", r.reference.check_final)
+       << " m (max at T); the smallest stable RMS error measured is " << fmt("%.2e", smallest)
+       << " m (ratio " << fmt("%.2g", r.reference.check_rms / smallest) << ").";
   md << "\n\nError norms: `error_rms` = RMS over particles and sample times of |x − x_ref|; "
         "`error_final` = largest |x − x_ref| over particles at T. `order` = log(e_coarse/e_fine) / "
         "log(h_coarse/h_fine) from the next coarser step (RMS error). Wall time is the stepping "
-        "only (minimum of " << o.repeats << " run" << (o.repeats > 1 ? "s" : "")
-     << "); load average " << r.load_before << " before, " << r.load_after
-     << " after (a shared 2-core machine).\n\n";
+        "only (minimum of "
+     << o.repeats << " run" << (o.repeats > 1 ? "s" : "") << "); load average " << r.load_before
+     << " before, " << r.load_after << " after (a shared 2-core machine).\n\n";
   md << "Automatic step (`jelly run --auto-dt`: half the estimated limit, at most the scene's dt):";
   for (std::size_t i = 0; i < r.auto_steps.size() && i < o.integrators.size(); ++i)
     md << (i ? "; " : " ") << to_string(o.integrators[i]) << " " << r.auto_steps[i];
@@ -96,12 +98,13 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   for (const RunRow& row : r.rows) {
     std::string stable = row.stable ? "yes" : "**no**";
     if (!row.stable)
-      stable += " (" + std::string(row.finite ? "detector" : "blew up") + " at t = " +
-                fmt("%.3g", row.detected_at) + " s)";
+      stable += " (" + std::string(row.finite ? "detector" : "blew up") +
+                " at t = " + fmt("%.3g", row.detected_at) + " s)";
     md << "| " << to_string(row.integrator) << " | " << num(row.h) << " | " << stable << " | "
        << fmt("%.3e", row.error_rms) << " | " << fmt("%.3e", row.error_final) << " | "
        << fmt("%.2f", row.order_rms) << " | " << fmt("%.3g", row.wall_per_sim()) << " | "
-       << row.evaluations << " | " << (row.cg_iterations ? std::to_string(row.cg_iterations) : "") << " |\n";
+       << row.evaluations << " | " << (row.cg_iterations ? std::to_string(row.cg_iterations) : "")
+       << " |\n";
   }
   write_file(with(".md"), md.str());
   written.push_back(with(".md"));
@@ -110,7 +113,11 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   const double cap = plot_cap(r);
   std::ostringstream dat;
   dat << "# h error_rms(plotted) wall_s_per_sim_s work(evaluations+cg) error_final(plotted)\n";
-  struct Block { IntegratorKind kind; bool stable; int index; };
+  struct Block {
+    IntegratorKind kind;
+    bool stable;
+    int index;
+  };
   std::vector<Block> blocks;
   int index = 0;
   for (IntegratorKind kind : o.integrators)
@@ -143,12 +150,13 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   gp << "set datafile missing 'nan'\nset logscale xy\nset grid\nset key top right font ',9'\n"
         "set format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'RMS position error [m]'\n"
         "set pointsize 1.0\n";
-  std::string panels[3] = {"wall time per simulated second [s]", "force evaluations (+ CG mat-vec products)",
-                           "step h [s]"};
+  std::string panels[3] = {"wall time per simulated second [s]",
+                           "force evaluations (+ CG mat-vec products)", "step h [s]"};
   const int ycol[3] = {3, 4, 1};
   const auto draw = [&](std::ostream& g) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 1,3 title \"%s\" noenhanced font ',12'\n", title.c_str());
+    std::snprintf(buf, sizeof buf, "set multiplot layout 1,3 title \"%s\" noenhanced font ',12'\n",
+                  title.c_str());
     g << buf;
     for (int p = 0; p < 3; ++p) {
       g << "set ylabel '" << panels[p] << "'\n";
@@ -177,7 +185,8 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
      << "set output '" << svg << "'\n";
   draw(gp);
   gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-     << "  set terminal pngcairo size 1500,520 enhanced font 'sans,10'\n  set output '" << png << "'\n";
+     << "  set terminal pngcairo size 1500,520 enhanced font 'sans,10'\n  set output '" << png
+     << "'\n";
   std::ostringstream inner;
   draw(inner);
   std::istringstream lines(inner.str());

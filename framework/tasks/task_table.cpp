@@ -5,8 +5,8 @@
 #include "jelly/tasks/contact.hpp"
 #include "jelly/tasks/forces.hpp"
 #include "jelly/tasks/integrators.hpp"
-#include "jelly/tasks/springs.hpp"
 #include "jelly/tasks/spring_groups.hpp"
+#include "jelly/tasks/springs.hpp"
 
 #ifndef JELLY_TASKS_ORIGIN
 #define JELLY_TASKS_ORIGIN "unknown"

@@ -17,8 +17,8 @@ namespace {
 struct SpringInput {
   std::string label;
   Vec3 xa, xb, va, vb;
-  double k;       // ks or kd
-  double rest;    // rest length (spring_force only)
+  double k;     // ks or kd
+  double rest;  // rest length (spring_force only)
   double degenerate;
 };
 
@@ -69,18 +69,22 @@ std::vector<SpringInput> random_inputs(const Params& random) {
 }
 
 std::vector<SpringInput> inputs(const Params& params, bool damper) {
-  return params.has("random") ? random_inputs(params.table("random")) : listed_inputs(params, damper);
+  return params.has("random") ? random_inputs(params.table("random"))
+                              : listed_inputs(params, damper);
 }
 
 std::string describe(const SpringInput& s, int i, bool damper) {
   if (!s.label.empty()) return s.label;
   char buf[256];
   if (damper)
-    std::snprintf(buf, sizeof buf, "random damper #%d: x_a=(%.3g,%.3g,%.3g) x_b=(%.3g,%.3g,%.3g) v_a=(%.3g,%.3g,%.3g) v_b=(%.3g,%.3g,%.3g) kd=%.4g",
+    std::snprintf(buf, sizeof buf,
+                  "random damper #%d: x_a=(%.3g,%.3g,%.3g) x_b=(%.3g,%.3g,%.3g) "
+                  "v_a=(%.3g,%.3g,%.3g) v_b=(%.3g,%.3g,%.3g) kd=%.4g",
                   i, s.xa.x(), s.xa.y(), s.xa.z(), s.xb.x(), s.xb.y(), s.xb.z(), s.va.x(), s.va.y(),
                   s.va.z(), s.vb.x(), s.vb.y(), s.vb.z(), s.k);
   else
-    std::snprintf(buf, sizeof buf, "random spring #%d: x_a=(%.3g,%.3g,%.3g) x_b=(%.3g,%.3g,%.3g) ks=%.4g rest=%.4g",
+    std::snprintf(buf, sizeof buf,
+                  "random spring #%d: x_a=(%.3g,%.3g,%.3g) x_b=(%.3g,%.3g,%.3g) ks=%.4g rest=%.4g",
                   i, s.xa.x(), s.xa.y(), s.xa.z(), s.xb.x(), s.xb.y(), s.xb.z(), s.k, s.rest);
   return buf;
 }
@@ -114,7 +118,8 @@ void run_cube_scene(const TaskTable& tasks, const Params& params, const Json& in
   add_prepared_cube(world, params, input, params.number("ks"), params.number("kd"));
   State& s = world.state();
   Sequence r(static_cast<std::uint64_t>(params.integer("seed")));
-  const double stretch = params.number("stretch"), jitter = params.number("jitter"), speed = params.number("speed");
+  const double stretch = params.number("stretch"), jitter = params.number("jitter"),
+               speed = params.number("speed");
   const double h = params.number("h");
   const long steps = params.integer("steps"), every = params.integer("sample_every");
   const Vec3 c = s.x.rowwise().mean();
@@ -128,8 +133,8 @@ void run_cube_scene(const TaskTable& tasks, const Params& params, const Json& in
   for (long step = 1; step <= steps; ++step) {
     symplectic_euler_step(world, s, h, w);
     if (step % every == 0) {
-      std::snprintf(what, sizeof what, "positions of the %ld particles after %ld steps of %g s", static_cast<long>(s.size()),
-                    step, h);
+      std::snprintf(what, sizeof what, "positions of the %ld particles after %ld steps of %g s",
+                    static_cast<long>(s.size()), step, h);
       out.array("x_step" + std::to_string(step), s.x,
                 std::string(what) + " (framework symplectic Euler, your forces) [m]");
     }
@@ -141,13 +146,22 @@ void run_cube_scene(const TaskTable& tasks, const Params& params, const Json& in
 // spring_force / damper_force: the student's function on each listed (or random) input; output
 // fNN is the force on particle a of input NN. force_scene: see run_cube_scene.
 void register_force_cases(Registry& r) {
-  r.add({"spring_force", "spring_force on hand-made (params.springs) or random (params.random) springs", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_springs(t, inputs(p, false), o); }});
-  r.add({"damper_force", "damper_force on hand-made (params.dampers) or random (params.random) dampers", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_dampers(t, inputs(p, true), o); }});
-  r.add({"force_scene", "a deformed, moving cube with the reference springs, your forces, framework integrator",
+  r.add({"spring_force",
+         "spring_force on hand-made (params.springs) or random (params.random) springs", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_springs(t, inputs(p, false), o);
+         }});
+  r.add({"damper_force",
+         "damper_force on hand-made (params.dampers) or random (params.random) dampers", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_dampers(t, inputs(p, true), o);
+         }});
+  r.add({"force_scene",
+         "a deformed, moving cube with the reference springs, your forces, framework integrator",
          &prepare_cube_springs,
-         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) { run_cube_scene(t, p, in, o); }});
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) {
+           run_cube_scene(t, p, in, o);
+         }});
 }
 
 }  // namespace jelly::grade

@@ -33,7 +33,8 @@ const Method& method(const Params& params) {
   const std::string key = params.text("method");
   for (const Method& m : kMethods)
     if (key == m.key) return m;
-  throw std::runtime_error("params.method: expected explicit_euler, implicit_euler, midpoint or rk4, got " + key);
+  throw std::runtime_error(
+      "params.method: expected explicit_euler, implicit_euler, midpoint or rk4, got " + key);
 }
 
 void step_n(StepFunction fn, System& system, State& s, double h, long n) {
@@ -57,8 +58,10 @@ void run_free_fall(const TaskTable& t, const Params& params, Outputs& out) {
   s.v << 0.0, 1.0, 0.0, 0.0, 0.0, 3.0, 0.0, 0.5, 0.0;
   step_n(t.*(m.member), system, s, h, steps);
   char what[160];
-  std::snprintf(what, sizeof what, "after %ld steps of %g s of a particle dropped from rest at y = 11 m (contract §9) [m]",
-                steps, h);
+  std::snprintf(
+      what, sizeof what,
+      "after %ld steps of %g s of a particle dropped from rest at y = 11 m (contract §9) [m]",
+      steps, h);
   out.value("y0", s.x(1, 0), std::string("height ") + what);
   out.array("x", s.x, "positions of three falling particles at the end [m]");
   out.array("v", s.v, "velocities of three falling particles at the end [m/s]");
@@ -124,7 +127,9 @@ void run_convergence(const TaskTable& t, const Params& params, Outputs& out) {
     list += b;
   }
   const std::size_t k = errors.size();
-  out.values("errors", errors, "largest position error at t = 1 s on the two-particle spring for h = " + list + " [m]");
+  out.values(
+      "errors", errors,
+      "largest position error at t = 1 s on the two-particle spring for h = " + list + " [m]");
   out.value("order", std::log2(errors[k - 2] / errors[k - 1]),
             "observed order of accuracy from the last two step sizes (log2 of the error ratio)");
 }
@@ -149,7 +154,8 @@ void run_energy(const TaskTable& t, const Params& params, const Json& input, Out
   }
   char what[120];
   std::snprintf(what, sizeof what, "over %ld steps of %g s of the damped linear cube", steps, h);
-  out.value("max_energy_ratio", max_ratio, std::string("largest E(t)/E(0) ") + what + " (damping on: must stay ≤ 1)");
+  out.value("max_energy_ratio", max_ratio,
+            std::string("largest E(t)/E(0) ") + what + " (damping on: must stay ≤ 1)");
   out.value("final_energy_ratio", system->energy(s) / e0, std::string("E(end)/E(0) ") + what);
 }
 
@@ -158,13 +164,23 @@ void run_energy(const TaskTable& t, const Params& params, const Json& input, Out
 // Every generator takes params.method (explicit_euler, implicit_euler, midpoint, rk4).
 void register_integrator_cases(Registry& r) {
   r.add({"integrator_free_fall", "one integrator on three particles in free fall", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_free_fall(t, p, o); }});
-  r.add({"integrator_single_step", "one step of one integrator on the damped linear cube", &prepare_cube_springs,
-         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) { run_single_step(t, p, in, o); }});
-  r.add({"integrator_convergence", "one integrator's order of accuracy on the two-particle spring", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_convergence(t, p, o); }});
-  r.add({"integrator_energy", "one integrator's energy on the damped linear cube", &prepare_cube_springs,
-         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) { run_energy(t, p, in, o); }});
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_free_fall(t, p, o);
+         }});
+  r.add({"integrator_single_step", "one step of one integrator on the damped linear cube",
+         &prepare_cube_springs,
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) {
+           run_single_step(t, p, in, o);
+         }});
+  r.add({"integrator_convergence", "one integrator's order of accuracy on the two-particle spring",
+         nullptr, [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_convergence(t, p, o);
+         }});
+  r.add({"integrator_energy", "one integrator's energy on the damped linear cube",
+         &prepare_cube_springs,
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) {
+           run_energy(t, p, in, o);
+         }});
 }
 
 }  // namespace jelly::grade

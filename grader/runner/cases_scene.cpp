@@ -39,11 +39,13 @@ void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
   const double window = params.number("mean_window");
   const long steps = std::lround(duration / spec.dt);
   // Frames for the report: positions at the first step at or after each requested time [s].
-  const std::vector<double> frame_at = params.has("frame_times") ? params.numbers("frame_times") : std::vector<double>{};
+  const std::vector<double> frame_at =
+      params.has("frame_times") ? params.numbers("frame_times") : std::vector<double>{};
   std::vector<double> frame_times, frame_positions;
   std::size_t next_frame = 0;
   const auto record_frames = [&]() {
-    for (; next_frame < frame_at.size() && sim.time() + 0.5 * spec.dt >= frame_at[next_frame]; ++next_frame) {
+    for (; next_frame < frame_at.size() && sim.time() + 0.5 * spec.dt >= frame_at[next_frame];
+         ++next_frame) {
       const Vec3Array& x = sim.state().x;
       frame_times.push_back(sim.time());
       frame_positions.insert(frame_positions.end(), x.data(), x.data() + x.size());
@@ -85,21 +87,26 @@ void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
   const double axis = std::hypot(mean.x() - bowl.center.x(), mean.z() - bowl.center.z());
   const bool in_bowl = axis < bowl.rim_radius() && mean.y() < bowl.rim_height + 2.0;
   const Vec3 com = sim.state().x.rowwise().mean();
-  out.value("finished", unstable ? 0.0 : 1.0, "the run reached 10 s without the stability detector firing (1 yes)");
+  out.value("finished", unstable ? 0.0 : 1.0,
+            "the run reached 10 s without the stability detector firing (1 yes)");
   out.values("com_time", t, "times of the centre-of-mass samples [s]");
   out.values("com_y", cy, "centre-of-mass height every 50 ms [m]");
   out.values("com_x", cx, "centre-of-mass x every 50 ms [m]");
   out.values("com_z", cz, "centre-of-mass z every 50 ms [m]");
-  out.vec("mean_com_last_5s", mean, "mean centre of mass over the last 5 s (where the jelly settles) [m]");
+  out.vec("mean_com_last_5s", mean,
+          "mean centre of mass over the last 5 s (where the jelly settles) [m]");
   out.value("in_bowl", in_bowl ? 1.0 : 0.0, "the jelly ends up in the bowl (1 yes)");
   out.vec("final_com", com, "centre of mass at t = 10 s [m]");
   out.value("first_contact_time", first_contact, "time of the first collision or contact [s]");
-  out.value("max_penetration", max_penetration, "deepest any particle went behind the floor or the bowl's wall [m]");
+  out.value("max_penetration", max_penetration,
+            "deepest any particle went behind the floor or the bowl's wall [m]");
   out.value("final_kinetic_energy", sim.energy().kinetic, "kinetic energy at t = 10 s [J]");
   if (!frame_at.empty()) {
-    out.values("frame_times", frame_times, "times of the recorded frames [s] (for the report, not graded)");
+    out.values("frame_times", frame_times,
+               "times of the recorded frames [s] (for the report, not graded)");
     out.values("frame_positions", frame_positions,
-               "every particle's x, y, z at each recorded frame, frame after frame [m] (for the report, not graded)");
+               "every particle's x, y, z at each recorded frame, frame after frame [m] (for the "
+               "report, not graded)");
   }
 }
 
@@ -109,8 +116,10 @@ void run_course(const TaskTable& tasks, const Params& params, Outputs& out) {
 // mean over the last params.mean_window seconds; positions recorded at params.frame_times [s]
 // (optional).
 void register_scene_cases(Registry& r) {
-  r.add({"course_scene", "the 2023 course scene with all of the student's code (explicit Euler)", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_course(t, p, o); }});
+  r.add({"course_scene", "the 2023 course scene with all of the student's code (explicit Euler)",
+         nullptr, [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_course(t, p, o);
+         }});
 }
 
 }  // namespace jelly::grade

@@ -27,10 +27,12 @@ std::string lattice_words(const CubeSpec& spec, int first_index) {
   const Vec3& a = spec.rotation_axis;
   char rotation[96] = "";
   if (spec.rotation_degrees != 0.0)
-    std::snprintf(rotation, sizeof rotation, " rotated %g° about (%g,%g,%g)", spec.rotation_degrees, a.x(), a.y(), a.z());
+    std::snprintf(rotation, sizeof rotation, " rotated %g° about (%g,%g,%g)", spec.rotation_degrees,
+                  a.x(), a.y(), a.z());
   char first[96] = "";
   if (first_index != 0)
-    std::snprintf(first, sizeof first, " whose first particle has index %d (use cube.index(i, j, k))", first_index);
+    std::snprintf(first, sizeof first,
+                  " whose first particle has index %d (use cube.index(i, j, k))", first_index);
   std::snprintf(buf, sizeof buf, "a %d×%d×%d cube%s%s", spec.n, spec.n, spec.n, rotation, first);
   return buf;
 }
@@ -44,10 +46,10 @@ std::string offset_name(const Offset& o) {
 // Every grid offset a spring of the jelly cube can have, canonical (first non-zero component > 0).
 const std::vector<Offset>& all_offsets() {
   static const std::vector<Offset> v = {
-      {1, 0, 0},  {0, 1, 0},  {0, 0, 1},                                       // structural
-      {0, 1, 1},  {0, 1, -1}, {1, 0, 1}, {1, 0, -1}, {1, 1, 0}, {1, -1, 0},   // face shear
-      {1, 1, 1},  {1, 1, -1}, {1, -1, 1}, {1, -1, -1},                        // body shear
-      {2, 0, 0},  {0, 2, 0},  {0, 0, 2}};                                      // bending
+      {1, 0, 0}, {0, 1, 0},  {0, 0, 1},                                       // structural
+      {0, 1, 1}, {0, 1, -1}, {1, 0, 1},  {1, 0, -1},  {1, 1, 0}, {1, -1, 0},  // face shear
+      {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1},                         // body shear
+      {2, 0, 0}, {0, 2, 0},  {0, 0, 2}};                                      // bending
   return v;
 }
 
@@ -99,7 +101,8 @@ class SpringNames {
   int shown_ = 0;
 };
 
-void classify(const CubeLattice& cube, const std::string& what, const std::vector<Spring>& springs, Outputs& out) {
+void classify(const CubeLattice& cube, const std::string& what, const std::vector<Spring>& springs,
+              Outputs& out) {
   const int n = cube.n(), first = cube.first_index(), count = cube.particle_count();
   std::map<Offset, int> per_offset;
   std::map<Offset, SpringNames> yours_per_offset;
@@ -132,12 +135,12 @@ void classify(const CubeLattice& cube, const std::string& what, const std::vecto
       ++per_offset[o];
       yours_per_offset.try_emplace(o, cube).first->second.add(s.a, s.b);
     }
-    const double actual = (cube.initial_positions().col(rb) - cube.initial_positions().col(ra)).norm();
+    const double actual =
+        (cube.initial_positions().col(rb) - cube.initial_positions().col(ra)).norm();
     const double err = std::abs(s.rest_length - actual);
     rest_error = std::isfinite(err) ? std::max(rest_error, err) : err;
   }
-  out.value("count", static_cast<double>(springs.size()),
-            "number of springs appended for " + what);
+  out.value("count", static_cast<double>(springs.size()), "number of springs appended for " + what);
   for (const Offset& o : all_offsets()) {
     const std::string name = "offset" + offset_name(o);
     out.value(name, per_offset[o],
@@ -157,11 +160,13 @@ void classify(const CubeLattice& cube, const std::string& what, const std::vecto
     out.detail(name, missing.text().empty() ? "" : "missing: " + missing.text(),
                yours == yours_per_offset.end() ? "" : "yours: " + yours->second.text());
   }
-  out.value("other_offsets", other, "springs joining particles that are not neighbours at any spring offset of the cube");
+  out.value("other_offsets", other,
+            "springs joining particles that are not neighbours at any spring offset of the cube");
   out.detail("other_offsets", "", other > 0 ? "yours: " + other_names.text() : "");
   out.value("duplicates", duplicates, "springs that join a pair of particles already joined");
   out.detail("duplicates", "", duplicates > 0 ? "built again: " + duplicate_names.text() : "");
-  out.value("invalid", invalid, "springs with an index outside the cube's particles, or joining a particle to itself");
+  out.value("invalid", invalid,
+            "springs with an index outside the cube's particles, or joining a particle to itself");
   out.detail("invalid", "", invalid > 0 ? "yours: " + invalid_names.text() : "");
   out.value("rest_length_error", rest_error,
             "largest |rest_length − distance between the two particles at construction| [m]");
@@ -176,14 +181,17 @@ void classify(const CubeLattice& cube, const std::string& what, const std::vecto
 void register_spring_cases(Registry& r) {
   GeneratorDef def;
   def.name = "spring_builder";
-  def.description = "one spring builder on a cube lattice the framework makes; classifies what it returned";
+  def.description =
+      "one spring builder on a cube lattice the framework makes; classifies what it returned";
   def.run = [](const TaskTable& tasks, const Params& params, const Json&, Outputs& out) {
     const std::string which = params.text("builder");
     Builder TaskTable::*member = which == "structural" ? &TaskTable::add_structural_springs
                                  : which == "shear"    ? &TaskTable::add_shear_springs
                                  : which == "bending"  ? &TaskTable::add_bending_springs
                                                        : nullptr;
-    if (!member) throw std::runtime_error("params.builder: expected structural, shear or bending, got " + which);
+    if (!member)
+      throw std::runtime_error("params.builder: expected structural, shear or bending, got " +
+                               which);
     const int first = static_cast<int>(params.integer("first_index", 0));
     const CubeSpec spec = cube_from_params(params.table("cube"));
     const CubeLattice cube(spec, first);

@@ -50,7 +50,9 @@ Fn function_named(const std::string& name) {
   if (name == "collide_bowl") return Fn::CollideBowl;
   if (name == "contact_plane") return Fn::ContactPlane;
   if (name == "contact_bowl") return Fn::ContactBowl;
-  throw std::runtime_error("params.function: expected collide_plane, collide_bowl, contact_plane or contact_bowl, got " + name);
+  throw std::runtime_error(
+      "params.function: expected collide_plane, collide_bowl, contact_plane or contact_bowl, got " +
+      name);
 }
 
 // params.function on params.terrain for every probe of params.probes (label, x, v, f): each case
@@ -60,7 +62,8 @@ void run_probes(const TaskTable& t, const Params& params, Outputs& out) {
   const bool plane = fn == Fn::CollidePlane || fn == Fn::ContactPlane;
   const Terrain terrain = terrain_from_params(params.table("terrain"));
   if (plane != std::holds_alternative<Plane>(terrain.shape))
-    throw std::runtime_error("params.terrain: " + params.text("function") + " needs a " + (plane ? "plane" : "bowl"));
+    throw std::runtime_error("params.terrain: " + params.text("function") + " needs a " +
+                             (plane ? "plane" : "bowl"));
   const std::vector<Params> probes = params.list("probes");
   for (std::size_t i = 0; i < probes.size(); ++i) {
     const Params& p = probes[i];
@@ -71,26 +74,32 @@ void run_probes(const TaskTable& t, const Params& params, Outputs& out) {
     bool hit = false;
     if (fn == Fn::CollidePlane || fn == Fn::CollideBowl) {
       Vec3 v = v0;
-      hit = plane ? t.collide_plane(std::get<Plane>(terrain.shape), x, v) : t.collide_bowl(std::get<Bowl>(terrain.shape), x, v);
-      out.value(std::string("hit") + name, hit ? 1.0 : 0.0, "collided? (1 yes, 0 no) for a particle " + label);
+      hit = plane ? t.collide_plane(std::get<Plane>(terrain.shape), x, v)
+                  : t.collide_bowl(std::get<Bowl>(terrain.shape), x, v);
+      out.value(std::string("hit") + name, hit ? 1.0 : 0.0,
+                "collided? (1 yes, 0 no) for a particle " + label);
       out.vec(std::string("v") + name, v, "velocity after the response for a particle " + label);
     } else {
       Vec3 f = f0;
       hit = plane ? t.contact_plane(std::get<Plane>(terrain.shape), x, v0, f)
                   : t.contact_bowl(std::get<Bowl>(terrain.shape), x, v0, f);
-      out.value(std::string("hit") + name, hit ? 1.0 : 0.0, "in contact? (1 yes, 0 no) for a particle " + label);
-      out.vec(std::string("f") + name, f, "force after contact and friction for a particle " + label);
+      out.value(std::string("hit") + name, hit ? 1.0 : 0.0,
+                "in contact? (1 yes, 0 no) for a particle " + label);
+      out.vec(std::string("f") + name, f,
+              "force after contact and friction for a particle " + label);
     }
   }
 }
 
 // Initial particles of a cloud, from params.placement (U uniform in [−1, 1), drawn in the order
 // written):
-//   mode "drop":        x = center + (half.x·U, 0, half.z·U) + (0, half.y·U, 0), v = velocity ⊙ (U, U, U)
-//   mode "slide_plane": x = (center.x + half.x·U, center.y, center.z + half.z·U), v = (velocity.x·U, 0, velocity.z·U)
-//   mode "slide_bowl":  on the bowl's sphere at height height + height_jitter·U, at angle angle·U
+//   mode "drop":        x = center + (half.x·U, 0, half.z·U) + (0, half.y·U, 0), v = velocity ⊙ (U,
+//   U, U) mode "slide_plane": x = (center.x + half.x·U, center.y, center.z + half.z·U), v =
+//   (velocity.x·U, 0, velocity.z·U) mode "slide_bowl":  on the bowl's sphere at height height +
+//   height_jitter·U, at angle angle·U
 //                       about the vertical axis, moving along the horizontal tangent at speed·U
-void place_cloud(const Params& pl, const Terrain& terrain, Sequence& r, Vec3Array& x, Vec3Array& v) {
+void place_cloud(const Params& pl, const Terrain& terrain, Sequence& r, Vec3Array& x,
+                 Vec3Array& v) {
   const std::string mode = pl.text("mode");
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     if (mode == "drop") {
@@ -116,7 +125,8 @@ void place_cloud(const Params& pl, const Terrain& terrain, Sequence& r, Vec3Arra
       if (tangent.norm() < 1e-9) tangent = Vec3(1, 0, 0);
       v.col(i) = pl.number("speed") * r.next() * tangent.normalized();
     } else {
-      throw std::runtime_error("params.placement.mode: expected drop, slide_plane or slide_bowl, got " + mode);
+      throw std::runtime_error(
+          "params.placement.mode: expected drop, slide_plane or slide_bowl, got " + mode);
     }
   }
 }
@@ -154,8 +164,10 @@ void run_cloud(const TaskTable& tasks, const Params& params, Outputs& out) {
     symplectic_euler_step(world, s, h, w);
     if (step % every == 0) {
       char what[160];
-      std::snprintf(what, sizeof what, "positions of the %ld particles at t = %g s (framework symplectic Euler; only your ",
-                    n, static_cast<double>(step) * h);
+      std::snprintf(
+          what, sizeof what,
+          "positions of the %ld particles at t = %g s (framework symplectic Euler; only your ", n,
+          static_cast<double>(step) * h);
       out.array("x_t" + std::to_string(step), s.x, std::string(what) + fn + " acts on them) [m]");
     }
   }
@@ -164,9 +176,11 @@ void run_cloud(const TaskTable& tasks, const Params& params, Outputs& out) {
 }  // namespace
 
 void register_terrain_cases(Registry& r) {
-  r.add({"terrain_probes", "one terrain function on hand-made particles (params.probes)", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_probes(t, p, o); }});
-  r.add({"particle_cloud", "free particles over one terrain with only collision or only contact", nullptr,
+  r.add(
+      {"terrain_probes", "one terrain function on hand-made particles (params.probes)", nullptr,
+       [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_probes(t, p, o); }});
+  r.add({"particle_cloud", "free particles over one terrain with only collision or only contact",
+         nullptr,
          [](const TaskTable& t, const Params& p, const Json&, Outputs& o) { run_cloud(t, p, o); }});
 }
 

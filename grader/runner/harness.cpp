@@ -26,7 +26,8 @@ void Outputs::vec(const std::string& name, const Vec3& v, const std::string& not
   values(name, {v.x(), v.y(), v.z()}, note);
 }
 
-void Outputs::values(const std::string& name, const std::vector<double>& v, const std::string& note) {
+void Outputs::values(const std::string& name, const std::vector<double>& v,
+                     const std::string& note) {
   Json a = Json::array();
   for (double d : v) a.push_back(number(d));
   out_[name] = entry(std::move(a), note);
@@ -59,12 +60,14 @@ const GeneratorDef* Registry::find(const std::string& name) const {
 }
 
 const Json& Params::at(const std::string& key) const {
-  if (!has(key)) throw std::runtime_error(path_ + "." + key + " is missing (see the case in grader/cases/)");
+  if (!has(key))
+    throw std::runtime_error(path_ + "." + key + " is missing (see the case in grader/cases/)");
   return j_.at(key);
 }
 
 void Params::wrong(const std::string& key, const char* expected) const {
-  throw std::runtime_error(path_ + "." + key + ": expected " + expected + ", got " + j_.at(key).dump());
+  throw std::runtime_error(path_ + "." + key + ": expected " + expected + ", got " +
+                           j_.at(key).dump());
 }
 
 double Params::number(const std::string& key) const {
@@ -129,7 +132,8 @@ Json springs_to_json(const std::vector<Spring>& springs) {
 std::vector<Spring> springs_from_json(const Json& j) {
   std::vector<Spring> out;
   out.reserve(j.size());
-  for (const Json& s : j) out.push_back(Spring{s.at(0).get<int>(), s.at(1).get<int>(), s.at(2).get<double>()});
+  for (const Json& s : j)
+    out.push_back(Spring{s.at(0).get<int>(), s.at(1).get<int>(), s.at(2).get<double>()});
   return out;
 }
 
@@ -154,7 +158,8 @@ void prepare_cube_springs(const TaskTable& reference, const Params& params, Json
                       {"bending", springs_to_json(bending)}};
 }
 
-void add_prepared_cube(World& world, const Params& params, const Json& input, double ks, double kd) {
+void add_prepared_cube(World& world, const Params& params, const Json& input, double ks,
+                       double kd) {
   const int cube = world.add_cube(cube_from_params(params.table("cube")));
   const double spacing = world.cubes().at(static_cast<std::size_t>(cube)).spacing();
   const std::pair<const char*, SpringType> types[] = {{"structural", SpringType::Structural},

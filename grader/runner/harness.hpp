@@ -13,9 +13,9 @@
 
 #include "jelly/cube.hpp"
 #include "jelly/spring.hpp"
-#include "jelly/world.hpp"
 #include "jelly/task_table.hpp"
 #include "jelly/types.hpp"
+#include "jelly/world.hpp"
 
 namespace jelly::grade {
 
@@ -54,9 +54,13 @@ class Params {
   explicit Params(Json j, std::string path = "params") : j_(std::move(j)), path_(std::move(path)) {}
   bool has(const std::string& key) const { return j_.is_object() && j_.contains(key); }
   double number(const std::string& key) const;
-  double number(const std::string& key, double fallback) const { return has(key) ? number(key) : fallback; }
+  double number(const std::string& key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+  }
   long integer(const std::string& key) const;
-  long integer(const std::string& key, long fallback) const { return has(key) ? integer(key) : fallback; }
+  long integer(const std::string& key, long fallback) const {
+    return has(key) ? integer(key) : fallback;
+  }
   std::string text(const std::string& key) const;
   std::string text(const std::string& key, const std::string& fallback) const {
     return has(key) ? text(key) : fallback;
@@ -64,7 +68,9 @@ class Params {
   Vec3 vec(const std::string& key) const;
   /// An array of numbers (e.g. the times at which to record frames).
   std::vector<double> numbers(const std::string& key) const;
-  Vec3 vec(const std::string& key, const Vec3& fallback) const { return has(key) ? vec(key) : fallback; }
+  Vec3 vec(const std::string& key, const Vec3& fallback) const {
+    return has(key) ? vec(key) : fallback;
+  }
   Params table(const std::string& key) const;
   /// The elements of an array of tables (e.g. a list of hand-made springs).
   std::vector<Params> list(const std::string& key) const;
@@ -86,7 +92,8 @@ struct GeneratorDef {
   std::string name;
   std::string description;
   std::function<void(const TaskTable& tasks, const Params& params, Json& input)> prepare;
-  std::function<void(const TaskTable& tasks, const Params& params, const Json& input, Outputs& out)> run;
+  std::function<void(const TaskTable& tasks, const Params& params, const Json& input, Outputs& out)>
+      run;
 };
 
 class Registry {
@@ -125,7 +132,8 @@ void add_prepared_cube(World& world, const Params& params, const Json& input, do
 /// library gives the same numbers).
 class Sequence {
  public:
-  explicit Sequence(std::uint64_t seed) : state_(seed * 6364136223846793005ULL + 1442695040888963407ULL) {}
+  explicit Sequence(std::uint64_t seed)
+      : state_(seed * 6364136223846793005ULL + 1442695040888963407ULL) {}
   double next();
 
  private:

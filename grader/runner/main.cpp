@@ -61,9 +61,12 @@ bool write_all(int fd, const std::string& text) {
 #ifdef _WIN32
   // The orchestrator's result pipe (process_win.cpp); without it, the descriptor as on POSIX.
   if (const char* handle = std::getenv("JELLY_RESULT_HANDLE"); handle && fd != 1) {
-    HANDLE h = reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(handle, nullptr, 10)));
+    HANDLE h =
+        reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(handle, nullptr, 10)));
     DWORD n = 0;
-    while (left > 0 && WriteFile(h, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 20)), &n, nullptr) && n > 0)
+    while (left > 0 &&
+           WriteFile(h, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 20)), &n, nullptr) &&
+           n > 0)
       p += n, left -= n;
     return left == 0;
   }
@@ -78,7 +81,8 @@ bool write_all(int fd, const std::string& text) {
 }
 
 int usage() {
-  std::fputs("usage: runner --list | --request FILE [--result-fd N] [--prepare] [--no-sandbox]\n", stderr);
+  std::fputs("usage: runner --list | --request FILE [--result-fd N] [--prepare] [--no-sandbox]\n",
+             stderr);
   return 2;
 }
 
@@ -97,15 +101,22 @@ int main(int argc, char** argv) {
   bool prepare = false, sandbox = true, list = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--list") list = true;
-    else if (a == "--request" && i + 1 < argc) request_path = argv[++i];
-    else if (a == "--result-fd" && i + 1 < argc) result_fd = std::atoi(argv[++i]);
-    else if (a == "--prepare") prepare = true;
-    else if (a == "--no-sandbox") sandbox = false;
-    else return usage();
+    if (a == "--list")
+      list = true;
+    else if (a == "--request" && i + 1 < argc)
+      request_path = argv[++i];
+    else if (a == "--result-fd" && i + 1 < argc)
+      result_fd = std::atoi(argv[++i]);
+    else if (a == "--prepare")
+      prepare = true;
+    else if (a == "--no-sandbox")
+      sandbox = false;
+    else
+      return usage();
   }
   if (list) {
-    for (const auto& g : registry.generators()) std::printf("%s\t%s\n", g.name.c_str(), g.description.c_str());
+    for (const auto& g : registry.generators())
+      std::printf("%s\t%s\n", g.name.c_str(), g.description.c_str());
     return 0;
   }
   if (request_path.empty()) return usage();
@@ -125,7 +136,8 @@ int main(int argc, char** argv) {
     try {
       request = Json::parse(in);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(), e.what());
+      std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(),
+                   e.what());
       return 2;
     }
 #ifdef _WIN32
@@ -142,10 +154,12 @@ int main(int argc, char** argv) {
   const std::string generator = request.value("generator", std::string());
   const jelly::grade::GeneratorDef* def = registry.find(generator);
   if (!def) {
-    std::fprintf(stderr, "runner: case '%s': unknown generator '%s' (see --list)\n", case_id.c_str(), generator.c_str());
+    std::fprintf(stderr, "runner: case '%s': unknown generator '%s' (see --list)\n",
+                 case_id.c_str(), generator.c_str());
     return 2;
   }
-  const jelly::grade::Params params(request.contains("params") ? request["params"] : Json::object());
+  const jelly::grade::Params params(request.contains("params") ? request["params"]
+                                                               : Json::object());
   const Json input = request.contains("input") ? request["input"] : Json::object();
   const jelly::TaskTable tasks = jelly::linked_tasks();
 

@@ -60,20 +60,55 @@ bool install_sandbox(int result_fd) {
   }
   const int allowed[] = {
       // Computing, memory and printing on the descriptors it already has.
-      SCMP_SYS(read), SCMP_SYS(write), SCMP_SYS(readv), SCMP_SYS(writev), SCMP_SYS(close), SCMP_SYS(fstat),
-      SCMP_SYS(lseek), SCMP_SYS(mmap), SCMP_SYS(munmap), SCMP_SYS(mremap), SCMP_SYS(mprotect), SCMP_SYS(brk),
-      SCMP_SYS(madvise), SCMP_SYS(membarrier),
+      SCMP_SYS(read),
+      SCMP_SYS(write),
+      SCMP_SYS(readv),
+      SCMP_SYS(writev),
+      SCMP_SYS(close),
+      SCMP_SYS(fstat),
+      SCMP_SYS(lseek),
+      SCMP_SYS(mmap),
+      SCMP_SYS(munmap),
+      SCMP_SYS(mremap),
+      SCMP_SYS(mprotect),
+      SCMP_SYS(brk),
+      SCMP_SYS(madvise),
+      SCMP_SYS(membarrier),
       // Threads (a task library may use OpenMP or std::thread) and their synchronisation.
-      SCMP_SYS(futex), SCMP_SYS(futex_waitv), SCMP_SYS(set_robust_list), SCMP_SYS(get_robust_list),
-      SCMP_SYS(rseq), SCMP_SYS(set_tid_address), SCMP_SYS(sched_yield), SCMP_SYS(sched_getaffinity),
-      SCMP_SYS(getcpu), SCMP_SYS(exit), SCMP_SYS(exit_group), SCMP_SYS(restart_syscall),
+      SCMP_SYS(futex),
+      SCMP_SYS(futex_waitv),
+      SCMP_SYS(set_robust_list),
+      SCMP_SYS(get_robust_list),
+      SCMP_SYS(rseq),
+      SCMP_SYS(set_tid_address),
+      SCMP_SYS(sched_yield),
+      SCMP_SYS(sched_getaffinity),
+      SCMP_SYS(getcpu),
+      SCMP_SYS(exit),
+      SCMP_SYS(exit_group),
+      SCMP_SYS(restart_syscall),
       // Signals to itself (abort, a crash), their masks and stacks.
-      SCMP_SYS(rt_sigprocmask), SCMP_SYS(rt_sigreturn), SCMP_SYS(sigaltstack),
+      SCMP_SYS(rt_sigprocmask),
+      SCMP_SYS(rt_sigreturn),
+      SCMP_SYS(sigaltstack),
       // Clocks, ids and facts about itself.
-      SCMP_SYS(clock_gettime), SCMP_SYS(clock_getres), SCMP_SYS(gettimeofday), SCMP_SYS(time),
-      SCMP_SYS(nanosleep), SCMP_SYS(clock_nanosleep), SCMP_SYS(getpid), SCMP_SYS(gettid), SCMP_SYS(getuid),
-      SCMP_SYS(geteuid), SCMP_SYS(getgid), SCMP_SYS(getegid), SCMP_SYS(getrandom), SCMP_SYS(getrusage),
-      SCMP_SYS(times), SCMP_SYS(sysinfo), SCMP_SYS(uname),
+      SCMP_SYS(clock_gettime),
+      SCMP_SYS(clock_getres),
+      SCMP_SYS(gettimeofday),
+      SCMP_SYS(time),
+      SCMP_SYS(nanosleep),
+      SCMP_SYS(clock_nanosleep),
+      SCMP_SYS(getpid),
+      SCMP_SYS(gettid),
+      SCMP_SYS(getuid),
+      SCMP_SYS(geteuid),
+      SCMP_SYS(getgid),
+      SCMP_SYS(getegid),
+      SCMP_SYS(getrandom),
+      SCMP_SYS(getrusage),
+      SCMP_SYS(times),
+      SCMP_SYS(sysinfo),
+      SCMP_SYS(uname),
   };
   bool ok = true;
   for (int nr : allowed)
@@ -82,7 +117,8 @@ bool install_sandbox(int result_fd) {
   // isatty (ioctl TCGETS); neither can name a file.
   ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ALLOW, SCMP_SYS(newfstatat), 1,
                               SCMP_A3(SCMP_CMP_MASKED_EQ, AT_EMPTY_PATH, AT_EMPTY_PATH)) == 0;
-  ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ALLOW, SCMP_SYS(ioctl), 1, SCMP_A1(SCMP_CMP_EQ, TCGETS)) == 0;
+  ok = ok &&
+       seccomp_rule_add(ctx, SCMP_ACT_ALLOW, SCMP_SYS(ioctl), 1, SCMP_A1(SCMP_CMP_EQ, TCGETS)) == 0;
   // Threads, not processes: clone only with CLONE_THREAD; clone3 (whose flags a filter cannot
   // see) answers ENOSYS, and glibc then falls back to clone.
   ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ALLOW, SCMP_SYS(clone), 1,

@@ -27,7 +27,8 @@ std::string framework_headers_digest(const GradeConfig& config) {
   std::vector<fs::path> files;
   const auto inside = [](const fs::path& dir, const fs::path& root) {
     if (root.empty()) return false;
-    const std::string d = fs::weakly_canonical(dir).string(), r = fs::weakly_canonical(root).string();
+    const std::string d = fs::weakly_canonical(dir).string(),
+                      r = fs::weakly_canonical(root).string();
     return d.compare(0, r.size(), r) == 0;
   };
   for (const std::string& inc : config.include_dirs) {
@@ -35,7 +36,8 @@ std::string framework_headers_digest(const GradeConfig& config) {
     if (!inside(inc, config.source_dir) && !inside(inc, config.binary_dir)) continue;
     for (fs::recursive_directory_iterator it(inc, ec), end; !ec && it != end; it.increment(ec)) {
       const std::string ext = it->path().extension().string();
-      if (it->is_regular_file(ec) && (ext == ".hpp" || ext == ".h" || ext == ".hh" || ext == ".inl"))
+      if (it->is_regular_file(ec) &&
+          (ext == ".hpp" || ext == ".h" || ext == ".hh" || ext == ".inl"))
         files.push_back(it->path());
     }
   }
@@ -47,28 +49,33 @@ std::string framework_headers_digest(const GradeConfig& config) {
   return fnv_hex(all);
 }
 
-// Reads a task file of the submission itself, never what it points to: no symbolic links (O_NOFOLLOW),
-// no hard links (a second name of a grader file), no FIFOs or devices. "" and `refused` set otherwise.
+// Reads a task file of the submission itself, never what it points to: no symbolic links
+// (O_NOFOLLOW), no hard links (a second name of a grader file), no FIFOs or devices. "" and
+// `refused` set otherwise.
 std::string read_submitted(const fs::path& p, const std::string& shown, std::size_t max_bytes,
                            std::string& refused) {
   const int fd = open(p.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
   struct stat st {};
   if (fd < 0 || fstat(fd, &st) != 0) {
-    refused = shown + ": error: " + (errno == ELOOP ? "is a symbolic link" : std::string("cannot be read")) +
+    refused = shown + ": error: " +
+              (errno == ELOOP ? "is a symbolic link" : std::string("cannot be read")) +
               "; submit the file itself\n";
     if (fd >= 0) close(fd);
     return "";
   }
   std::string why;
-  if (!S_ISREG(st.st_mode)) why = "is not a regular file (a FIFO, device or socket)";
-  else if (st.st_nlink > 1) why = "is a hard link (it has " + std::to_string(st.st_nlink) + " names)";
+  if (!S_ISREG(st.st_mode))
+    why = "is not a regular file (a FIFO, device or socket)";
+  else if (st.st_nlink > 1)
+    why = "is a hard link (it has " + std::to_string(st.st_nlink) + " names)";
   else if (static_cast<std::size_t>(st.st_size) > max_bytes)
     why = "is larger than " + std::to_string(max_bytes >> 10) + " KiB";
   std::string text;
   if (why.empty()) {
     char buf[65536];
     ssize_t n;
-    while ((n = read(fd, buf, sizeof buf)) > 0 && text.size() <= max_bytes) text.append(buf, static_cast<std::size_t>(n));
+    while ((n = read(fd, buf, sizeof buf)) > 0 && text.size() <= max_bytes)
+      text.append(buf, static_cast<std::size_t>(n));
     if (text.size() > max_bytes) why = "is larger than " + std::to_string(max_bytes >> 10) + " KiB";
   }
   close(fd);
@@ -84,7 +91,8 @@ std::string read_submitted(const fs::path& p, const std::string& shown, std::siz
 std::vector<fs::path> find_named(const fs::path& root, const std::string& name) {
   std::vector<fs::path> hits;
   std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
+  for (auto it = fs::recursive_directory_iterator(
+           root, fs::directory_options::skip_permission_denied, ec);
        it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
     if (it->path().filename() == name && !it->is_directory(ec)) hits.push_back(it->path());
@@ -98,7 +106,8 @@ std::vector<fs::path> find_named(const fs::path& root, const std::string& name) 
 
 // Includes that name files outside the framework headers by a plain path are refused before
 // compiling, with a clearer message than "file not found". A courtesy, not the defence: C++ has
-// many other ways to name a file; the sandbox (isolation.hpp) is what keeps grader files unreadable.
+// many other ways to name a file; the sandbox (isolation.hpp) is what keeps grader files
+// unreadable.
 std::string include_policy(const std::string& shown, const std::string& text) {
   static const std::regex inc(R"(^\s*#\s*include\s*[<"]([^>"]*)[>"])");
   std::istringstream in(text);
@@ -112,7 +121,8 @@ std::string include_policy(const std::string& shown, const std::string& text) {
     if (!target.empty() && (target[0] == '/' || target.find("..") != std::string::npos ||
                             target.find("data/") != std::string::npos))
       errors += shown + ":" + std::to_string(number) + ": error: #include \"" + target +
-                "\" is not allowed in a graded file (only the standard library, Eigen and jelly/ headers)\n";
+                "\" is not allowed in a graded file (only the standard library, Eigen and jelly/ "
+                "headers)\n";
   }
   return errors;
 }
@@ -137,26 +147,32 @@ std::string seconds(double s) {
 }
 
 // When a compiler or linker run hit one of its limits: the student's terms, else "".
-std::string limit_hit(const std::string& what, const ChildResult& c, const std::string& text, const BuildLimits& lim) {
+std::string limit_hit(const std::string& what, const ChildResult& c, const std::string& text,
+                      const BuildLimits& lim) {
   auto has = [&](const char* s) { return text.find(s) != std::string::npos; };
-  if (c.timed_out) return what + " took longer than " + seconds(lim.timeout_s) + " s and was stopped";
+  if (c.timed_out)
+    return what + " took longer than " + seconds(lim.timeout_s) + " s and was stopped";
   if (c.output_flood)
-    return what + " printed more than " + human_bytes(lim.output_bytes) + " of messages and was stopped";
+    return what + " printed more than " + human_bytes(lim.output_bytes) +
+           " of messages and was stopped";
   if (c.signal == SIGXCPU || has("CPU time limit exceeded"))
     return what + " used more than " + seconds(lim.cpu_s) + " s of CPU time and was stopped";
   if (c.signal == SIGXFSZ || has("File size limit exceeded"))
     return what + " wrote a file larger than " + human_bytes(lim.file_bytes) + " and was stopped";
-  if (has("memory exhausted") || has("out of memory") || has("Cannot allocate memory") || has("bad_alloc") ||
-      has("Killed signal") || c.signal == SIGKILL || c.signal == SIGSEGV)
+  if (has("memory exhausted") || has("out of memory") || has("Cannot allocate memory") ||
+      has("bad_alloc") || has("Killed signal") || c.signal == SIGKILL || c.signal == SIGSEGV)
     return what + " used more than " + human_bytes(lim.memory_bytes) + " of memory and was stopped";
   return "";
 }
 
 }  // namespace
 
-std::string filter_diagnostics(const std::string& messages, const fs::path& cwd, const std::vector<fs::path>& allowed) {
-  // Where a line says it is: "PATH:LINE:..." or "In file included from PATH:LINE" / "from PATH:LINE".
-  static const std::regex located(R"(^(In file included from |\s+from )?([^:\s][^:]*):(\d+)(:\d+)?[:,])");
+std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
+                               const std::vector<fs::path>& allowed) {
+  // Where a line says it is: "PATH:LINE:..." or "In file included from PATH:LINE" / "from
+  // PATH:LINE".
+  static const std::regex located(
+      R"(^(In file included from |\s+from )?([^:\s][^:]*):(\d+)(:\d+)?[:,])");
   static const std::regex context(R"(^([^:\s][^:]*): (In |At )[^:]*:$)");
   auto allowed_path = [&](const std::string& p) {
     if (p == "<command-line>" || p == "<built-in>") return true;
@@ -164,7 +180,9 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
     const std::string a = abs.string();
     for (const fs::path& dir : allowed) {
       const std::string d = dir.lexically_normal().string();
-      if (a.size() > d.size() && a.compare(0, d.size(), d) == 0 && (a[d.size()] == '/' || d.back() == '/')) return true;
+      if (a.size() > d.size() && a.compare(0, d.size(), d) == 0 &&
+          (a[d.size()] == '/' || d.back() == '/'))
+        return true;
     }
     return false;
   };
@@ -176,7 +194,8 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
     if (std::regex_search(line, m, located)) {
       hiding = !allowed_path(m[2]);
       if (hiding) {
-        out += m[0].str() + " [hidden: a message about a file that is not part of your submission]\n";
+        out +=
+            m[0].str() + " [hidden: a message about a file that is not part of your submission]\n";
         continue;
       }
     } else if (std::regex_search(line, m, context)) {
@@ -188,7 +207,8 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
 }
 
 BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
-                             const fs::path& work_dir, int jobs, const Isolation& iso, const BuildLimits& limits) {
+                             const fs::path& work_dir, int jobs, const Isolation& iso,
+                             const BuildLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
   BuildResult r;
   const fs::path src = work_dir / "src", obj = work_dir / "obj";
@@ -200,13 +220,15 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   std::map<std::string, std::string> shown;  // task file → name shown in messages
   std::string policy_errors;
   for (const std::string& name : task_files()) {
-    std::vector<fs::path> hits = fs::is_directory(submission) ? find_named(submission, name) : std::vector<fs::path>{};
+    std::vector<fs::path> hits =
+        fs::is_directory(submission) ? find_named(submission, name) : std::vector<fs::path>{};
     fs::path from;
     if (hits.empty()) {
       from = config.assignments_dir() / name;
       r.used[name] = "stub";
-      r.notes.push_back(name + " was not found in the submission: graded as the unchanged stub "
-                               "(its tasks score 0)");
+      r.notes.push_back(name +
+                        " was not found in the submission: graded as the unchanged stub "
+                        "(its tasks score 0)");
       shown[name] = name;
     } else {
       from = hits.front();
@@ -214,11 +236,13 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       r.used[name] = rel;
       shown[name] = rel;
       if (hits.size() > 1)
-        r.notes.push_back("several files are called " + name + "; graded " + rel + " (the one nearest the top)");
+        r.notes.push_back("several files are called " + name + "; graded " + rel +
+                          " (the one nearest the top)");
     }
     std::string refused;
-    const std::string text = r.used[name] == "stub" ? read_file(from)
-                                                    : read_submitted(from, shown[name], limits.source_bytes, refused);
+    const std::string text = r.used[name] == "stub"
+                                 ? read_file(from)
+                                 : read_submitted(from, shown[name], limits.source_bytes, refused);
     policy_errors += refused;
     policy_errors += include_policy(shown[name], text);
     std::ofstream(src / name, std::ios::binary) << text;
@@ -290,7 +314,8 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         queue.erase(queue.begin());
       }
       const std::string text = read_file(src / name);
-      const fs::path cached = config.cache_dir() / (fnv_hex(flags_key + "\n" + name + "\n" + text) + ".o");
+      const fs::path cached =
+          config.cache_dir() / (fnv_hex(flags_key + "\n" + name + "\n" + text) + ".o");
       const fs::path out = obj / (name + ".o");
       std::error_code ec;
       if (fs::exists(cached)) {
@@ -305,7 +330,8 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
       const std::string hit = limit_hit("compiling " + name, c, c.err + c.out, limits);
       if (!hit.empty()) msg = name + ": error: " + hit + hint(hit) + "\n" + msg;
-      if (!c.started) msg += name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
+      if (!c.started)
+        msg += name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
       if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
         failed = true;
         messages[name] = msg;
@@ -331,8 +357,10 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     std::string line;
     while (std::getline(in, line)) {
       for (const auto& [name, rel] : shown)
-        if (line.rfind(name + ":", 0) == 0 && rel != name) line = rel + line.substr(name.size());
-        else line = replace_all(line, "from " + name + ":", "from " + rel + ":");
+        if (line.rfind(name + ":", 0) == 0 && rel != name)
+          line = rel + line.substr(name.size());
+        else
+          line = replace_all(line, "from " + name + ":", "from " + rel + ":");
       out += line + "\n";
     }
     return out;
@@ -361,9 +389,11 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   const ChildResult c = run_isolated(iso, argv, link_view, lim);
   if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
     const std::string hit = limit_hit("linking", c, c.err + c.out, limits);
-    r.errors = tidy(replace_all(filter_diagnostics(c.err + c.out, work_dir, allowed), obj.string() + "/", ""));
+    r.errors = tidy(
+        replace_all(filter_diagnostics(c.err + c.out, work_dir, allowed), obj.string() + "/", ""));
     if (!hit.empty()) r.errors = "error: " + hit + "\n" + r.errors;
-    if (!c.started) r.errors += "error: the grader could not start the linker: " + c.start_error + "\n";
+    if (!c.started)
+      r.errors += "error: the grader could not start the linker: " + c.start_error + "\n";
     if (r.errors.empty()) r.errors = "linking failed\n";
   } else {
     r.ok = true;

@@ -15,10 +15,11 @@ namespace jelly::grade {
 
 struct BuildResult {
   bool ok = false;
-  std::filesystem::path runner;          ///< the per-submission runner (when ok)
-  std::string errors;                    ///< compiler/linker messages, paths relative to the submission
-  std::vector<std::string> notes;        ///< e.g. "forces.cpp not found: graded as the stub"
-  std::map<std::string, std::string> used;  ///< task file → where it came from (relative path or "stub")
+  std::filesystem::path runner;    ///< the per-submission runner (when ok)
+  std::string errors;              ///< compiler/linker messages, paths relative to the submission
+  std::vector<std::string> notes;  ///< e.g. "forces.cpp not found: graded as the stub"
+  std::map<std::string, std::string>
+      used;  ///< task file → where it came from (relative path or "stub")
   double seconds = 0.0;
 };
 

@@ -9,10 +9,11 @@ namespace jelly::grade {
 
 BuildResult build_submission(const GradeConfig&, const fs::path& submission, const fs::path&, int,
                              const Isolation&, const BuildLimits&) {
-  throw std::runtime_error("on Windows jelly-grade does not compile " + submission.string() +
-                           " itself: build and run the self-check with `cmake --build --preset student --target "
-                           "selfcheck` (or the `selfcheck` target in your IDE), or pass a runner built by CMake "
-                           "with --runner FILE");
+  throw std::runtime_error(
+      "on Windows jelly-grade does not compile " + submission.string() +
+      " itself: build and run the self-check with `cmake --build --preset student --target "
+      "selfcheck` (or the `selfcheck` target in your IDE), or pass a runner built by CMake "
+      "with --runner FILE");
 }
 
 }  // namespace jelly::grade

@@ -38,13 +38,17 @@ Rule parse_rule(const std::string& text, const std::string& context,
     r.kind = Rule::Kind::Frames;
   } else if (word == "range") {
     r.kind = Rule::Kind::Range;
-    if (!(in >> r.lo >> r.hi)) throw std::runtime_error(context + ": expected \"range LO HI\", got \"" + text + "\"");
+    if (!(in >> r.lo >> r.hi))
+      throw std::runtime_error(context + ": expected \"range LO HI\", got \"" + text + "\"");
   } else if (word == "tol") {
     in >> r.tolerance;
     if (!tols.count(r.tolerance))
-      throw std::runtime_error(context + ": unknown tolerance \"" + r.tolerance + "\" (define it in cases/tolerances.toml)");
+      throw std::runtime_error(context + ": unknown tolerance \"" + r.tolerance +
+                               "\" (define it in cases/tolerances.toml)");
   } else {
-    throw std::runtime_error(context + ": expected \"tol NAME\", \"range LO HI\", \"info\" or \"frames\", got \"" + text + "\"");
+    throw std::runtime_error(
+        context + ": expected \"tol NAME\", \"range LO HI\", \"info\" or \"frames\", got \"" +
+        text + "\"");
   }
   return r;
 }
@@ -124,7 +128,8 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
                              std::string(e.description()));
   }
   book.rubric.autograded_total = rubric["autograded_total"].value_or(80.0);
-  book.rubric.hidden_visibility = rubric["hidden_visibility"].value_or(std::string("after_due_date"));
+  book.rubric.hidden_visibility =
+      rubric["hidden_visibility"].value_or(std::string("after_due_date"));
   const toml::array* tasks = rubric["task"].as_array();
   if (!tasks) throw std::runtime_error(rpath + ": expected [[task]] entries");
   for (const toml::node& n : *tasks) {
@@ -136,7 +141,8 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
     s.functions = t["functions"].value_or(std::string());
     const auto pts = t["points"].value<double>();
     if (s.id.empty() || !pts || *pts < 0.0)
-      throw std::runtime_error(where(rpath, n, "task") + ": every [[task]] needs an id and points ≥ 0");
+      throw std::runtime_error(where(rpath, n, "task") +
+                               ": every [[task]] needs an id and points ≥ 0");
     s.points = *pts;
     book.rubric.tasks.push_back(s);
   }
@@ -188,10 +194,12 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
       const std::string vis = t["visibility"].value_or(std::string("public"));
       const std::string ctx = where(f.string(), n, "case " + c.id);
       if (c.id.empty() || c.task.empty() || c.generator.empty())
-        throw std::runtime_error(ctx + ": needs id, task and generator (a name from `runner --list`)");
+        throw std::runtime_error(ctx +
+                                 ": needs id, task and generator (a name from `runner --list`)");
       if (const toml::node* params = t.get("params")) {
         if (!params->is_table())
-          throw std::runtime_error(ctx + ": params must be a table (params = { ... } or [case.params])");
+          throw std::runtime_error(ctx +
+                                   ": params must be a table (params = { ... } or [case.params])");
         try {
           c.params = to_json(*params);
         } catch (const std::exception& e) {
@@ -199,7 +207,8 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
         }
       }
       if (vis != "public" && vis != "hidden")
-        throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" + vis + "\"");
+        throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" +
+                                 vis + "\"");
       c.hidden = vis == "hidden";
       if (!book.rubric.find(c.task))
         throw std::runtime_error(ctx + ": task " + c.task + " is not in the rubric");
@@ -207,9 +216,10 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
         throw std::runtime_error(ctx + ": unknown tolerance \"" + c.tolerance + "\"");
       if (const toml::table* checks = t["checks"].as_table())
         for (const auto& [pattern, rule] : *checks)
-          c.rules.emplace_back(std::string(pattern.str()),
-                               parse_rule(rule.value_or(std::string()), ctx + ".checks." + std::string(pattern.str()),
-                                          book.tolerances));
+          c.rules.emplace_back(
+              std::string(pattern.str()),
+              parse_rule(rule.value_or(std::string()),
+                         ctx + ".checks." + std::string(pattern.str()), book.tolerances));
       for (const CaseSpec& other : book.cases)
         if (other.id == c.id) throw std::runtime_error(ctx + ": duplicate case id");
       book.cases.push_back(c);
@@ -247,14 +257,16 @@ std::string harness_digest(const GradeConfig& config) {
   static const char* const not_generator_code[] = {"main.cpp", "sandbox.cpp", "sandbox.hpp"};
   for (const auto& e : fs::directory_iterator(config.grader_dir() / "runner")) {
     const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && std::find(std::begin(not_generator_code), std::end(not_generator_code), name) ==
-                                   std::end(not_generator_code))
+    if (e.is_regular_file() &&
+        std::find(std::begin(not_generator_code), std::end(not_generator_code), name) ==
+            std::end(not_generator_code))
       files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   std::string all;
   for (const fs::path& f : files) {
-    // A Windows checkout may have CRLF line ends (git's core.autocrlf): the same code, the same digest.
+    // A Windows checkout may have CRLF line ends (git's core.autocrlf): the same code, the same
+    // digest.
     std::string text = read_file(f);
     text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
     all += f.filename().string() + "\n" + text;

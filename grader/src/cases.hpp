@@ -28,38 +28,39 @@ struct Tolerance {
 /// reference's are made by running the reference runner when the report is written).
 struct Rule {
   enum class Kind { Tolerance, Range, Info, Frames } kind = Kind::Tolerance;
-  std::string tolerance;  ///< Kind::Tolerance (text outputs always compare exactly)
+  std::string tolerance;      ///< Kind::Tolerance (text outputs always compare exactly)
   double lo = 0.0, hi = 0.0;  ///< Kind::Range: lo ≤ value ≤ hi (literal, not from the reference)
 };
 
 struct CaseSpec {
   std::string id;
-  std::string task;        ///< "A1.T4"
-  std::string title;       ///< one line for reports
-  double weight = 1.0;     ///< share of its task's points
+  std::string task;     ///< "A1.T4"
+  std::string title;    ///< one line for reports
+  double weight = 1.0;  ///< share of its task's points
   bool hidden = false;
-  double timeout_s = 0.0;  ///< 0: the command-line default
-  std::string generator;   ///< the runner's case generator (runner --list)
-  Json params = Json::object();  ///< the generator's parameters: every input the case feeds the student's code
-  std::string tolerance;   ///< default rule for every output
+  double timeout_s = 0.0;        ///< 0: the command-line default
+  std::string generator;         ///< the runner's case generator (runner --list)
+  Json params = Json::object();  ///< the generator's parameters: every input the case feeds the
+                                 ///< student's code
+  std::string tolerance;         ///< default rule for every output
   std::vector<std::pair<std::string, Rule>> rules;  ///< output-name pattern → rule (first match)
-  std::string source;      ///< file it came from
+  std::string source;                               ///< file it came from
 
   const Rule rule_for(const std::string& output) const;
 };
 
 struct TaskSpec {
-  std::string id;        ///< "A1.T4"
-  std::string title;     ///< "Spring force"
-  std::string category;  ///< "forces"
-  std::string functions; ///< the student's functions, for crash messages
-  double points = 0.0;   ///< rubric points (before scaling)
+  std::string id;         ///< "A1.T4"
+  std::string title;      ///< "Spring force"
+  std::string category;   ///< "forces"
+  std::string functions;  ///< the student's functions, for crash messages
+  double points = 0.0;    ///< rubric points (before scaling)
 };
 
 struct Rubric {
-  double autograded_total = 80.0;  ///< the points the score is scaled to
+  double autograded_total = 80.0;                    ///< the points the score is scaled to
   std::string hidden_visibility = "after_due_date";  ///< Gradescope visibility of hidden tests
-  std::vector<TaskSpec> tasks;     ///< in report order
+  std::vector<TaskSpec> tasks;                       ///< in report order
   double raw_total() const;
   double scale() const { return raw_total() > 0 ? autograded_total / raw_total() : 0.0; }
   const TaskSpec* find(const std::string& id) const;

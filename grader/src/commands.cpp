@@ -7,8 +7,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <set>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 #include <tuple>
@@ -49,8 +49,9 @@ std::string pts(double v) {
 }  // namespace
 
 std::string sandbox_setup_lines(const std::string& source) {
-  return std::string("id -u ") + kSandboxUser + " >/dev/null 2>&1 || useradd --system --no-create-home --shell " +
-         "/usr/sbin/nologin " + kSandboxUser + "\n" + "chown root:root " + source + "/grader/data " + source +
+  return std::string("id -u ") + kSandboxUser +
+         " >/dev/null 2>&1 || useradd --system --no-create-home --shell " + "/usr/sbin/nologin " +
+         kSandboxUser + "\n" + "chown root:root " + source + "/grader/data " + source +
          "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source + "/grader/cases\n" +
          "if [ -d " + source + "/build/grader/object-cache ]; then chmod 0700 " + source +
          "/build/grader/object-cache; fi\n";
@@ -58,8 +59,9 @@ std::string sandbox_setup_lines(const std::string& source) {
 
 int generate_reference(const GradeConfig& config, const CaseBook& book) {
   if (config.reference_runner.empty() || !fs::exists(config.reference_runner)) {
-    std::cerr << "jelly-grade: generate-reference needs the reference runner (solutions/ must exist and "
-                 "jelly-grade-reference-runner must be built)\n";
+    std::cerr
+        << "jelly-grade: generate-reference needs the reference runner (solutions/ must exist and "
+           "jelly-grade-reference-runner must be built)\n";
     return 2;
   }
   const std::string listing = run_text({config.reference_runner.string(), "--list"});
@@ -77,18 +79,21 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
   std::set<fs::path> written;
   for (const CaseSpec& c : book.cases) {
     if (!descriptions.count(c.generator)) {
-      std::cerr << "jelly-grade: " << c.source << ": case " << c.id << ": the runner has no generator \""
-                << c.generator << "\" (see jelly-grade-reference-runner --list)\n";
+      std::cerr << "jelly-grade: " << c.source << ": case " << c.id
+                << ": the runner has no generator \"" << c.generator
+                << "\" (see jelly-grade-reference-runner --list)\n";
       return 2;
     }
     const ChildResult prep = run_case(config.reference_runner, c, nullptr, work, 120.0, 0, true);
     Json input = Json::object();
     try {
       const Json prepared = Json::parse(prep.result);
-      if (prepared.contains("error")) throw std::runtime_error(prepared["error"].get<std::string>());
+      if (prepared.contains("error"))
+        throw std::runtime_error(prepared["error"].get<std::string>());
       input = prepared.at("input");
     } catch (const std::exception& e) {
-      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << e.what() << " " << prep.err << "\n";
+      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << e.what() << " " << prep.err
+                << "\n";
       return 2;
     }
     const ChildResult run = run_case(config.reference_runner, c, &input, work, 120.0, 0);
@@ -96,8 +101,8 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     try {
       result = Json::parse(run.result);
     } catch (const std::exception&) {
-      std::cerr << "jelly-grade: the reference failed on " << c.id << " (exit " << run.exit_code << ", signal "
-                << run.signal << "): " << run.err << "\n";
+      std::cerr << "jelly-grade: the reference failed on " << c.id << " (exit " << run.exit_code
+                << ", signal " << run.signal << "): " << run.err << "\n";
       return 2;
     }
     if (!result.contains("outputs")) {
@@ -145,18 +150,20 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     for (const auto& e : fs::directory_iterator(dir))
       if (e.path().extension() == ".json" && !written.count(e.path())) fs::remove(e.path());
   }
-  std::cout << "jelly-grade: wrote reference data for " << written.size() << " cases (commit " << commit << ")\n";
+  std::cout << "jelly-grade: wrote reference data for " << written.size() << " cases (commit "
+            << commit << ")\n";
   return 0;
 }
 
-int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out, int jobs,
-          const GradeOptions& options, bool frames) {
+int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
+          const std::string& out, int jobs, const GradeOptions& options, bool frames) {
   std::vector<fs::path> subs;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_directory()) subs.push_back(e.path());
   std::sort(subs.begin(), subs.end());
   fs::create_directories(out);
-  const int workers = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int workers =
+      jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<GradeReport> reports(subs.size());
   std::vector<std::string> errors(subs.size());
   std::atomic<std::size_t> next{0}, done{0};
@@ -170,7 +177,8 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       const std::string name = subs[i].filename().string();
       try {
         reports[i] = grade_submission(config, book, subs[i], fs::path(out) / name / "work", per);
-        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"}, frames ? &config : nullptr);
+        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"},
+                      frames ? &config : nullptr);
         fs::remove_all(fs::path(out) / name / "work");
       } catch (const std::exception& e) {
         errors[i] = e.what();
@@ -178,7 +186,8 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       std::lock_guard<std::mutex> lock(mutex);
       ++done;
       std::cerr << "\r[" << done << "/" << subs.size() << "] " << name << ": "
-                << (errors[i].empty() ? pts(reports[i].score) + " / " + pts(reports[i].max_score) : "grader error")
+                << (errors[i].empty() ? pts(reports[i].score) + " / " + pts(reports[i].max_score)
+                                      : "grader error")
                 << "            " << std::flush;
     }
   };
@@ -200,11 +209,13 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       status = 1;
       continue;
     }
-    csv << "," << pts(reports[i].score) << "," << pts(reports[i].max_score) << "," << (reports[i].compiled ? 1 : 0);
+    csv << "," << pts(reports[i].score) << "," << pts(reports[i].max_score) << ","
+        << (reports[i].compiled ? 1 : 0);
     for (const TaskResult& t : reports[i].tasks) csv << "," << pts(t.score);
     csv << ",\n";
   }
-  std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out << " (scores.csv)\n";
+  std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out
+            << " (scores.csv)\n";
   return status;
 }
 
@@ -214,13 +225,14 @@ namespace {
 /// source/third_party/NAME/include/SUBDIR with the first licence that exists; says what is
 /// missing and returns false when the headers are not there.
 bool bundle_headers(const fs::path& stage, const std::string& name, const fs::path& include_dir,
-                    const std::string& subdir, const std::string& file, const std::vector<fs::path>& licences,
-                    const std::string& package) {
+                    const std::string& subdir, const std::string& file,
+                    const std::vector<fs::path>& licences, const std::string& package) {
   const fs::path headers = include_dir / subdir;
   const fs::path bundle = stage / "source" / "third_party" / name;
   if (!fs::exists(headers / file)) {
-    std::cerr << "jelly-grade: gradescope-zip: " << name << " headers not found at " << headers.string()
-              << " (expected " << file << " there; install " << package << ")\n";
+    std::cerr << "jelly-grade: gradescope-zip: " << name << " headers not found at "
+              << headers.string() << " (expected " << file << " there; install " << package
+              << ")\n";
     return false;
   }
   fs::create_directories(bundle / "include");
@@ -252,45 +264,60 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
   // this machine, with their licences.
   if (!bundle_headers(stage, "tomlplusplus", JELLY_TOMLPLUSPLUS_INCLUDE_DIR, "toml++", "toml.h",
-                      {"/usr/share/doc/libtomlplusplus-dev/copyright", JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
+                      {"/usr/share/doc/libtomlplusplus-dev/copyright",
+                       JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
                       "libtomlplusplus-dev") ||
-      !bundle_headers(stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
-                      {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"}, "libcli11-dev"))
+      !bundle_headers(
+          stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
+          {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
+          "libcli11-dev"))
     return 2;
-  std::ofstream(stage / "setup.sh") <<
-      "#!/usr/bin/env bash\n"
-      "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
-      "set -euo pipefail\n"
-      "apt-get update\n"
-      "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev nlohmann-json3-dev "
-      "libseccomp-dev bubblewrap\n"
-      "# toml++ and CLI11: the packages where the distribution has them, else the headers bundled in source/.\n"
-      "apt-get install -y --no-install-recommends libtomlplusplus-dev || "
-      "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
-      "apt-get install -y --no-install-recommends libcli11-dev || "
-      "echo 'setup.sh: no libcli11-dev; using source/third_party/cli11'\n"
-      "cd /autograder/source\n"
-      "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments -DJELLY_BUILD_TESTS=OFF "
-      "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
-      "cmake --build build -j\"$(nproc)\" --target jelly-grade\n"
-      "# Warm the object cache with the stubs so that unchanged files are never recompiled.\n"
-      "build/grader/jelly-grade grade assignments --visibility public --out /tmp/warm --format gradescope || true\n"
-      "# Student code is compiled and run in a bubblewrap sandbox where the image allows user namespaces,\n"
-      "# else as this unprivileged user, with the grader's secrets readable by root only (docs/grader.md).\n"
+  std::ofstream(stage / "setup.sh")
+      << "#!/usr/bin/env bash\n"
+         "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
+         "set -euo pipefail\n"
+         "apt-get update\n"
+         "apt-get install -y --no-install-recommends cmake g++ make libeigen3-dev "
+         "nlohmann-json3-dev "
+         "libseccomp-dev bubblewrap\n"
+         "# toml++ and CLI11: the packages where the distribution has them, else the headers "
+         "bundled in source/.\n"
+         "apt-get install -y --no-install-recommends libtomlplusplus-dev || "
+         "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
+         "apt-get install -y --no-install-recommends libcli11-dev || "
+         "echo 'setup.sh: no libcli11-dev; using source/third_party/cli11'\n"
+         "cd /autograder/source\n"
+         "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments "
+         "-DJELLY_BUILD_TESTS=OFF "
+         "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
+         "cmake --build build -j\"$(nproc)\" --target jelly-grade\n"
+         "# Warm the object cache with the stubs so that unchanged files are never recompiled.\n"
+         "build/grader/jelly-grade grade assignments --visibility public --out /tmp/warm --format "
+         "gradescope || true\n"
+         "# Student code is compiled and run in a bubblewrap sandbox where the image allows user "
+         "namespaces,\n"
+         "# else as this unprivileged user, with the grader's secrets readable by root only "
+         "(docs/grader.md).\n"
       << sandbox_setup_lines("/autograder/source");
-  std::ofstream(stage / "run_autograder") <<
-      "#!/usr/bin/env bash\n"
-      "# Gradescope entry point: grades /autograder/submission, writes /autograder/results/results.json.\n"
-      "cd /autograder/source\n"
-      "mkdir -p /autograder/results\n"
-      "# Again at every run: an image made by an older setup.sh, or files restored with other modes.\n"
-      << sandbox_setup_lines("/autograder/source") <<
-      "# The unprivileged user must be able to reach its work folder under /autograder/results.\n"
-      "chmod o+x /autograder /autograder/results\n"
-      "build/grader/jelly-grade grade /autograder/submission --visibility all --out /autograder/results "
-      "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
-  fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
-  fs::permissions(stage / "run_autograder", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  std::ofstream(stage / "run_autograder")
+      << "#!/usr/bin/env bash\n"
+         "# Gradescope entry point: grades /autograder/submission, writes "
+         "/autograder/results/results.json.\n"
+         "cd /autograder/source\n"
+         "mkdir -p /autograder/results\n"
+         "# Again at every run: an image made by an older setup.sh, or files restored with other "
+         "modes.\n"
+      << sandbox_setup_lines("/autograder/source")
+      << "# The unprivileged user must be able to reach its work folder under "
+         "/autograder/results.\n"
+         "chmod o+x /autograder /autograder/results\n"
+         "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
+         "/autograder/results "
+         "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
+  fs::permissions(stage / "setup.sh",
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(stage / "run_autograder",
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   const fs::path zip = fs::absolute(zip_path);
   fs::remove(zip);
   Limits lim;
@@ -298,21 +325,25 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   lim.memory_bytes = 0;
   lim.limit_files = false;
   lim.result_pipe = false;
-  const ChildResult c = run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "setup.sh", "run_autograder", "source"}, lim, stage);
+  const ChildResult c =
+      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "setup.sh", "run_autograder", "source"},
+                lim, stage);
   if (c.exit_code != 0) {
     std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
     return 2;
   }
-  std::cout << "jelly-grade: wrote " << zip.string() << " (setup.sh, run_autograder, source/ without solutions/)\n";
+  std::cout << "jelly-grade: wrote " << zip.string()
+            << " (setup.sh, run_autograder, source/ without solutions/)\n";
   return 0;
 }
 
-int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path, const std::string& work,
-            int jobs, const GradeOptions& options) {
+int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
+            const std::string& work, int jobs, const GradeOptions& options) {
   struct Mutant {
     std::string name, task, file, description;
     bool public_catches = false;  // the handout says the self-check catches it: a public test must
-    std::vector<std::tuple<std::string, std::string, int>> replacements;  // find, with, nth occurrence
+    std::vector<std::tuple<std::string, std::string, int>>
+        replacements;  // find, with, nth occurrence
     fs::path dir;
     GradeReport report;
     std::string error;
@@ -325,8 +356,10 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
   fs::remove_all(root);
   // Entry 0: the reference; entry 1: the stubs; then the mutants.
-  list.push_back({"reference", "", "", "solutions/ unchanged", false, {}, config.solutions_dir(), {}, {}});
-  list.push_back({"stubs", "", "", "assignments/ unchanged", false, {}, config.assignments_dir(), {}, {}});
+  list.push_back(
+      {"reference", "", "", "solutions/ unchanged", false, {}, config.solutions_dir(), {}, {}});
+  list.push_back(
+      {"stubs", "", "", "assignments/ unchanged", false, {}, config.assignments_dir(), {}, {}});
   for (const fs::path& f : files) {
     toml::table t = toml::parse_file(f.string());
     Mutant m;
@@ -338,21 +371,25 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     if (const toml::array* reps = t["replace"].as_array())
       for (const toml::node& n : *reps) {
         const toml::table& r = *n.as_table();
-        m.replacements.emplace_back(r["find"].value_or(std::string()), r["with"].value_or(std::string()),
+        m.replacements.emplace_back(r["find"].value_or(std::string()),
+                                    r["with"].value_or(std::string()),
                                     static_cast<int>(r["nth"].value_or(1)));
       }
     if (m.task.empty() || m.file.empty() || m.replacements.empty()) {
-      std::cerr << "jelly-grade: " << f << ": a mutant needs task, file and at least one [[replace]]\n";
+      std::cerr << "jelly-grade: " << f
+                << ": a mutant needs task, file and at least one [[replace]]\n";
       return 2;
     }
     m.dir = root / m.name / "submission";
     fs::create_directories(m.dir);
     for (const std::string& name : task_files())
-      fs::copy_file(config.solutions_dir() / name, m.dir / name, fs::copy_options::overwrite_existing);
+      fs::copy_file(config.solutions_dir() / name, m.dir / name,
+                    fs::copy_options::overwrite_existing);
     std::string text = read_file(m.dir / m.file);
     for (const auto& [find, with, nth] : m.replacements) {
       auto at = text.find(find);
-      for (int k = 1; k < nth && at != std::string::npos; ++k) at = text.find(find, at + find.size());
+      for (int k = 1; k < nth && at != std::string::npos; ++k)
+        at = text.find(find, at + find.size());
       if (find.empty() || at == std::string::npos) {
         std::cerr << "jelly-grade: " << f << ": \"" << find << "\" is not in solutions/" << m.file
                   << " (the mutant no longer applies)\n";
@@ -363,7 +400,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     std::ofstream(m.dir / m.file, std::ios::binary) << text;
     list.push_back(std::move(m));
   }
-  const int workers = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int workers =
+      jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   GradeOptions per = options;
   per.jobs = 1;
   per.include_hidden = true;
@@ -374,7 +412,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
       const std::size_t i = next++;
       if (i >= list.size()) return;
       try {
-        list[i].report = grade_submission(config, book, list[i].dir, root / list[i].name / "work", per);
+        list[i].report =
+            grade_submission(config, book, list[i].dir, root / list[i].name / "work", per);
       } catch (const std::exception& e) {
         list[i].error = e.what();
       }
@@ -394,7 +433,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   const GradeReport& ref = list[0].report;
   bool all_ok = true;
   std::ostringstream table;
-  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Public tests | Verdict |\n"
+  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Public tests "
+           "| Verdict |\n"
            "|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Mutant& m = list[i];
@@ -434,33 +474,41 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
           caught += c.spec->id + " ";
           public_caught = public_caught || !c.spec->hidden;
         }
-      by_public = std::string(public_caught ? "caught" : "missed") + (m.public_catches ? " (required)" : "");
+      by_public = std::string(public_caught ? "caught" : "missed") +
+                  (m.public_catches ? " (required)" : "");
       ok = lost && !leak && (public_caught || !m.public_catches);
-      verdict = !lost ? "NOT caught ✗"
+      verdict = !lost  ? "NOT caught ✗"
                 : leak ? "loses points elsewhere ✗"
                 : !ok  ? "NOT caught by a public test ✗"
                        : "caught in its task only ✓";
     }
     if (elsewhere.empty()) elsewhere = "none";
     all_ok = all_ok && ok;
-    table << "| " << m.name << " | " << (m.task.empty() ? "all" : m.task) << " | " << m.description << " | " << own
-          << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | " << by_public << " | " << verdict
-          << " |\n";
+    table << "| " << m.name << " | " << (m.task.empty() ? "all" : m.task) << " | " << m.description
+          << " | " << own << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | "
+          << by_public << " | " << verdict << " |\n";
   }
   std::cout << table.str();
   if (!table_path.empty()) {
     std::ofstream f(table_path);
     f << "# Grader self-test: the mutation table\n\n"
-         "Generated by `jelly-grade mutants --table docs/mutation-table.md` (CTest `grader.mutants` runs the same\n"
+         "Generated by `jelly-grade mutants --table docs/mutation-table.md` (CTest "
+         "`grader.mutants` runs the same\n"
          "checks). Each mutant is a realistic mistake applied to a copy of `solutions/` (specs in\n"
-         "`grader/mutants/*.toml`) and graded with all tests, public and hidden. A mutant must lose points in\n"
-         "its own task and keep every point elsewhere; the reference must score full marks and the stubs zero.\n"
-         "\"Caught by\" lists the failing tests of the mutant's own task; \"Public tests\" says whether the public\n"
-         "tests alone (the student's self-check) catch it, and \"(required)\" marks the mistakes the handout says the\n"
-         "self-check catches (`public_catches = true` in the mutant's file): for those, \"missed\" fails the self-test.\n\n"
+         "`grader/mutants/*.toml`) and graded with all tests, public and hidden. A mutant must "
+         "lose points in\n"
+         "its own task and keep every point elsewhere; the reference must score full marks and the "
+         "stubs zero.\n"
+         "\"Caught by\" lists the failing tests of the mutant's own task; \"Public tests\" says "
+         "whether the public\n"
+         "tests alone (the student's self-check) catch it, and \"(required)\" marks the mistakes "
+         "the handout says the\n"
+         "self-check catches (`public_catches = true` in the mutant's file): for those, \"missed\" "
+         "fails the self-test.\n\n"
       << table.str();
   }
-  std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n" : "jelly-grade: mutation self-test FAILED\n");
+  std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n"
+                       : "jelly-grade: mutation self-test FAILED\n");
   return all_ok ? 0 : 1;
 }
 

@@ -12,11 +12,11 @@ namespace jelly::grade {
 int generate_reference(const GradeConfig& config, const CaseBook& book);
 
 /// Grades every folder in `dir` (one per student) in parallel; results per student and scores.csv.
-int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir, const std::string& out,
-          int jobs, const GradeOptions& options, bool frames = true);
+int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
+          const std::string& out, int jobs, const GradeOptions& options, bool frames = true);
 
-/// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user of
-/// the "user" sandbox and make the grader's secrets under `source` readable by root only.
+/// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user
+/// of the "user" sandbox and make the grader's secrets under `source` readable by root only.
 std::string sandbox_setup_lines(const std::string& source);
 
 /// Builds the Gradescope autograder zip (setup.sh, run_autograder, the framework without solutions/

@@ -39,7 +39,8 @@ GradeConfig load_config(const std::string& path) {
   }
   auto strings = [&](const char* key) {
     std::vector<std::string> out;
-    if (!j.contains(key) || !j[key].is_array()) throw std::runtime_error(p + ": missing array '" + key + "'");
+    if (!j.contains(key) || !j[key].is_array())
+      throw std::runtime_error(p + ": missing array '" + key + "'");
     for (const auto& s : j[key]) {
       const std::string v = s.get<std::string>();
       // /usr/include is searched anyway; naming it with -I breaks libstdc++'s #include_next.

@@ -19,7 +19,7 @@ struct GradeConfig {
   std::vector<std::string> link_objects;    ///< runner main + task_table for a submission
   std::vector<std::string> link_libraries;  ///< harness, core, seccomp
   std::vector<std::string> link_flags;
-  fs::path source_dir;        ///< the framework checkout (grader/, assignments/, solutions/?)
+  fs::path source_dir;  ///< the framework checkout (grader/, assignments/, solutions/?)
   fs::path binary_dir;
   fs::path reference_runner;  ///< empty in a student release
   /// The `jelly` CLI with `render --replay` (report frames); empty when built without the viewer.

@@ -10,7 +10,8 @@ namespace jelly::grade {
 
 std::string describe_signal(int sig) {
   switch (sig) {
-    case SIGSEGV: return "SIGSEGV (segmentation fault: an invalid memory access, e.g. an index out of range)";
+    case SIGSEGV:
+      return "SIGSEGV (segmentation fault: an invalid memory access, e.g. an index out of range)";
     case SIGABRT: return "SIGABRT (abort: a failed assert or std::terminate)";
     case SIGFPE: return "SIGFPE (arithmetic error, e.g. an integer division by zero)";
     case SIGILL: return "SIGILL (illegal instruction)";

@@ -19,7 +19,8 @@ namespace jelly::grade {
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;  // small: two renders of ~6 frames stay well under a second each
+constexpr int kWidth = 320,
+              kHeight = 240;  // small: two renders of ~6 frames stay well under a second each
 
 std::string fmt_time(double t) {
   char b[32];
@@ -37,9 +38,7 @@ std::string first_line(const std::string& text) {
 }
 
 // FNV-1a of a file's bytes (the reference runner: its frames are cached per binary).
-std::string file_digest(const fs::path& p) {
-  return fnv_hex(read_file(p));
-}
+std::string file_digest(const fs::path& p) { return fnv_hex(read_file(p)); }
 
 std::vector<double> numbers(const Json& outputs, const char* key) {
   std::vector<double> v;
@@ -49,34 +48,42 @@ std::vector<double> numbers(const Json& outputs, const char* key) {
   return v;
 }
 
-/// Runs `jelly render builtin:course-2023 --replay CSV --frames DIR ...`; "" or the reason it failed.
-std::string render(const fs::path& jelly, const fs::path& csv, const fs::path& dir, const std::string& label) {
+/// Runs `jelly render builtin:course-2023 --replay CSV --frames DIR ...`; "" or the reason it
+/// failed.
+std::string render(const fs::path& jelly, const fs::path& csv, const fs::path& dir,
+                   const std::string& label) {
   Limits lim;
   lim.timeout_s = 60.0;
   lim.memory_bytes = 0;
   lim.limit_files = false;
   lim.result_pipe = false;
-  const ChildResult c = run_child({jelly.string(), "render", "builtin:course-2023", "--replay", csv.string(), "--frames",
-                                   dir.string(), "--width", std::to_string(kWidth), "--height",
-                                   std::to_string(kHeight), "--samples", "0", "--no-caption", "--label", label},
-                                  lim);
+  const ChildResult c =
+      run_child({jelly.string(), "render", "builtin:course-2023", "--replay", csv.string(),
+                 "--frames", dir.string(), "--width", std::to_string(kWidth), "--height",
+                 std::to_string(kHeight), "--samples", "0", "--no-caption", "--label", label},
+                lim);
   if (!c.started) return "cannot start " + jelly.string() + ": " + c.start_error;
   if (c.timed_out) return "`jelly render --replay` took longer than 60 s";
   if (c.signal != 0) return "`jelly render --replay` crashed with " + describe_signal(c.signal);
   if (c.exit_code != 0)
-    return "`jelly render --replay` failed (exit " + std::to_string(c.exit_code) + "): " + first_line(c.err);
+    return "`jelly render --replay` failed (exit " + std::to_string(c.exit_code) +
+           "): " + first_line(c.err);
   return "";
 }
 
 /// The reference's recorded frames: from the cache, else by running the reference runner.
 /// Returns its outputs (frame_times, frame_positions) or sets `why`.
-Json reference_frames(const GradeConfig& config, const CaseSpec& spec, const fs::path& work, std::string& why) {
+Json reference_frames(const GradeConfig& config, const CaseSpec& spec, const fs::path& work,
+                      std::string& why) {
   if (config.reference_runner.empty() || !fs::exists(config.reference_runner)) {
-    why = "no reference runner in this copy of the grader (it is built only where solutions/ exists)";
+    why =
+        "no reference runner in this copy of the grader (it is built only where solutions/ exists)";
     return Json();
   }
-  const std::string key = fnv_hex(case_hash(spec, harness_digest(config)) + file_digest(config.reference_runner));
-  const fs::path cache = config.binary_dir / "grader" / "reference-frames" / (spec.id + "-" + key + ".json");
+  const std::string key =
+      fnv_hex(case_hash(spec, harness_digest(config)) + file_digest(config.reference_runner));
+  const fs::path cache =
+      config.binary_dir / "grader" / "reference-frames" / (spec.id + "-" + key + ".json");
   std::error_code ec;
   if (fs::exists(cache, ec)) {
     try {
@@ -95,7 +102,8 @@ Json reference_frames(const GradeConfig& config, const CaseSpec& spec, const fs:
     const Json result = Json::parse(c.result);
     outputs = result.at("outputs");
   } catch (const std::exception&) {
-    why = "the reference runner failed on " + spec.id + " (exit " + std::to_string(c.exit_code) + ")";
+    why =
+        "the reference runner failed on " + spec.id + " (exit " + std::to_string(c.exit_code) + ")";
     return Json();
   }
   Json kept = Json::object();
@@ -110,7 +118,8 @@ Json reference_frames(const GradeConfig& config, const CaseSpec& spec, const fs:
 
 }  // namespace
 
-std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path, std::vector<double>& dropped) {
+std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path,
+                                     std::vector<double>& dropped) {
   const std::vector<double> times = numbers(outputs, "frame_times");
   const std::vector<double> xs = numbers(outputs, "frame_positions");
   std::ofstream out(path);
@@ -129,8 +138,8 @@ std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path, 
       continue;
     }
     for (std::size_t i = 0; i < n; ++i) {
-      std::snprintf(line, sizeof line, "%zu,%.17g,%zu,%.17g,%.17g,%.17g\n", frame, times[f], i, x[3 * i],
-                    x[3 * i + 1], x[3 * i + 2]);
+      std::snprintf(line, sizeof line, "%zu,%.17g,%zu,%.17g,%.17g,%.17g\n", frame, times[f], i,
+                    x[3 * i], x[3 * i + 1], x[3 * i + 2]);
       out << line;
     }
     ++frame;
@@ -139,8 +148,8 @@ std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path, 
   return written;
 }
 
-CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report, const fs::path& out_dir,
-                                  const fs::path& work) {
+CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report,
+                                  const fs::path& out_dir, const fs::path& work) {
   CourseFrames result;
   const CaseResult* course = nullptr;
   for (const CaseResult& c : report.cases)
@@ -148,15 +157,18 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
   if (!course || !report.compiled) return result;
   result.shown = true;
   bool records = false;
-  for (const auto& [name, rule] : course->spec->rules) records = records || rule.kind == Rule::Kind::Frames;
+  for (const auto& [name, rule] : course->spec->rules)
+    records = records || rule.kind == Rule::Kind::Frames;
   if (!records || !course->spec->params.contains("frame_times")) {
-    result.unavailable = "the course scene case records no frames (no frame_times in grader/cases/" +
-                         course->spec->source + ")";
+    result.unavailable =
+        "the course scene case records no frames (no frame_times in grader/cases/" +
+        course->spec->source + ")";
     return result;
   }
   if (config.jelly_cli.empty()) {
-    result.unavailable = "this grader was built without the renderer (configure with -DJELLY_BUILD_VIEWER=ON, "
-                         "or set JELLY_GRADE_JELLY to a jelly program with `render --replay`)";
+    result.unavailable =
+        "this grader was built without the renderer (configure with -DJELLY_BUILD_VIEWER=ON, "
+        "or set JELLY_GRADE_JELLY to a jelly program with `render --replay`)";
     return result;
   }
   std::error_code ec;
@@ -170,36 +182,44 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
     fs::create_directories(dir);
     // The student's frames (recorded in the sandbox; drawn here).
     std::vector<double> dropped;
-    const std::vector<double> your_times = write_replay_csv(course->outputs, dir / "yours.csv", dropped);
+    const std::vector<double> your_times =
+        write_replay_csv(course->outputs, dir / "yours.csv", dropped);
     const bool yours = !your_times.empty();
     std::vector<double> ref_times;
     if (yours) {
-      if (const std::string err = render(config.jelly_cli, dir / "yours.csv", out_dir / "frames" / "yours", "yours");
+      if (const std::string err =
+              render(config.jelly_cli, dir / "yours.csv", out_dir / "frames" / "yours", "yours");
           !err.empty()) {
         result.unavailable = err;
         return result;
       }
     }
-    for (double t : dropped) result.notes.push_back("your frame at t = " + fmt_time(t) + " s has NaN or infinity: not drawn");
-    const std::vector<double> asked = course->spec->params["frame_times"].get<std::vector<double>>();
+    for (double t : dropped)
+      result.notes.push_back("your frame at t = " + fmt_time(t) +
+                             " s has NaN or infinity: not drawn");
+    const std::vector<double> asked =
+        course->spec->params["frame_times"].get<std::vector<double>>();
     if (!yours && dropped.empty())
-      result.notes.push_back(course->outputs.is_null()
-                                 ? "your run of the course scene produced no frames (it did not finish)"
-                                 : "your run of the course scene recorded no frames (it stopped before t = " +
-                                       fmt_time(asked.empty() ? 0.0 : asked.front()) + " s)");
+      result.notes.push_back(
+          course->outputs.is_null()
+              ? "your run of the course scene produced no frames (it did not finish)"
+              : "your run of the course scene recorded no frames (it stopped before t = " +
+                    fmt_time(asked.empty() ? 0.0 : asked.front()) + " s)");
     // The reference's.
     std::string why;
     const Json ref = reference_frames(config, *course->spec, work, why);
     std::vector<double> ref_dropped;
-    if (!ref.is_null() && !(ref_times = write_replay_csv(ref, dir / "reference.csv", ref_dropped)).empty()) {
-      if (const std::string err =
-              render(config.jelly_cli, dir / "reference.csv", out_dir / "frames" / "reference", "reference");
+    if (!ref.is_null() &&
+        !(ref_times = write_replay_csv(ref, dir / "reference.csv", ref_dropped)).empty()) {
+      if (const std::string err = render(config.jelly_cli, dir / "reference.csv",
+                                         out_dir / "frames" / "reference", "reference");
           !err.empty()) {
         result.unavailable = err;
         return result;
       }
     } else {
-      result.notes.push_back("reference frames not available: " + (why.empty() ? std::string("none recorded") : why));
+      result.notes.push_back("reference frames not available: " +
+                             (why.empty() ? std::string("none recorded") : why));
     }
     // Rows: every requested time that either side reached; PNGs are numbered in file order.
     const auto index_of = [](const std::vector<double>& times, double t) -> long {
@@ -226,10 +246,12 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
       if (!std::isnan(ty)) row.yours = png("yours", index_of(your_times, ty));
       if (!std::isnan(tr)) row.reference = png("reference", index_of(ref_times, tr));
       const bool was_dropped = !std::isnan(recorded(dropped, a));
-      if (std::isnan(ty) && yours && !was_dropped) result.notes.push_back("your run stopped before t = " + fmt_time(a) + " s");
+      if (std::isnan(ty) && yours && !was_dropped)
+        result.notes.push_back("your run stopped before t = " + fmt_time(a) + " s");
       result.rows.push_back(row);
     }
-    if (result.rows.empty() && result.unavailable.empty()) result.unavailable = "neither run recorded a frame";
+    if (result.rows.empty() && result.unavailable.empty())
+      result.unavailable = "neither run recorded a frame";
   } catch (const std::exception& e) {
     result.unavailable = std::string("the frames could not be made: ") + e.what();
     result.rows.clear();

@@ -23,8 +23,8 @@ struct FrameRow {
 };
 
 struct CourseFrames {
-  bool shown = false;        ///< the course scene was run: the report has a frames section
-  std::string unavailable;   ///< why there are no frames at all ("" when there are rows)
+  bool shown = false;              ///< the course scene was run: the report has a frames section
+  std::string unavailable;         ///< why there are no frames at all ("" when there are rows)
   std::vector<std::string> notes;  ///< partial gaps ("your run stopped before t = 5 s", ...)
   std::vector<FrameRow> rows;
 };
@@ -32,12 +32,14 @@ struct CourseFrames {
 /// Renders the course scene's frames into out_dir/frames/{yours,reference}/; `work` holds the
 /// replay files. Never throws: every problem becomes `unavailable` or a note.
 CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report,
-                                  const std::filesystem::path& out_dir, const std::filesystem::path& work);
+                                  const std::filesystem::path& out_dir,
+                                  const std::filesystem::path& work);
 
 /// Replay CSV (frame,time,particle,x,y,z; framework/session/include/jelly/session/replay.hpp) of
 /// recorded outputs frame_times / frame_positions. Frames with a non-finite number are left out
 /// and their times appended to `dropped`. Returns the times of the frames written, in order
 /// (frame k of the file is the k-th of them).
-std::vector<double> write_replay_csv(const Json& outputs, const std::filesystem::path& path, std::vector<double>& dropped);
+std::vector<double> write_replay_csv(const Json& outputs, const std::filesystem::path& path,
+                                     std::vector<double>& dropped);
 
 }  // namespace jelly::grade

@@ -6,13 +6,13 @@
 
 #include <algorithm>
 #include <atomic>
-#include <csignal>
-#include <optional>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -39,10 +39,13 @@ std::string element_name(std::size_t k, std::size_t n) {
 std::string describe_syscall_purpose(const std::string& name) {
   if (name.find("open") != std::string::npos || name == "creat") return "open a file";
   if (name.find("exec") != std::string::npos) return "start another program";
-  if (name == "fork" || name == "vfork" || name.find("clone") != std::string::npos) return "start a process or thread";
-  if (name == "socket" || name == "connect" || name == "bind" || name == "socketpair") return "use the network";
+  if (name == "fork" || name == "vfork" || name.find("clone") != std::string::npos)
+    return "start a process or thread";
+  if (name == "socket" || name == "connect" || name == "bind" || name == "socketpair")
+    return "use the network";
   if (name.find("io_uring") != std::string::npos) return "use asynchronous I/O (io_uring)";
-  if (name == "ptrace" || name.find("process_vm") != std::string::npos) return "inspect another process";
+  if (name == "ptrace" || name.find("process_vm") != std::string::npos)
+    return "inspect another process";
   if (name.find("unlink") != std::string::npos || name.find("rename") != std::string::npos ||
       name.find("mkdir") != std::string::npos)
     return "change files or folders";
@@ -64,8 +67,8 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   const Json& m = mine.at("value");
   if (r.is_string()) {
     if (m != r) {
-      failures.push_back(what + ": differs from the reference (expected " + r.get<std::string>() + ", got " +
-                         (m.is_string() ? m.get<std::string>() : m.dump()) + ")");
+      failures.push_back(what + ": differs from the reference (expected " + r.get<std::string>() +
+                         ", got " + (m.is_string() ? m.get<std::string>() : m.dump()) + ")");
       return false;
     }
     return true;
@@ -90,7 +93,8 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
     return true;
   }
   if (a.size() != b.size()) {
-    failures.push_back(what + ": expected " + std::to_string(b.size()) + " numbers, got " + std::to_string(a.size()));
+    failures.push_back(what + ": expected " + std::to_string(b.size()) + " numbers, got " +
+                       std::to_string(a.size()));
     return false;
   }
   const Tolerance& tol = tols.at(rule.tolerance);
@@ -102,22 +106,26 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
     if (!std::isfinite(a[k]) || !(diff <= allowed)) {
       if (bad == 0) first = k;
       ++bad;
-      const double excess = std::isfinite(diff) ? diff / (allowed > 0 ? allowed : 1e-300) : INFINITY;
+      const double excess =
+          std::isfinite(diff) ? diff / (allowed > 0 ? allowed : 1e-300) : INFINITY;
       if (excess > worst_excess) worst_excess = excess, worst = k;
     }
   }
   if (bad == 0) return true;
   const std::size_t k = std::isfinite(a[first]) ? worst : first;
-  std::string msg = what + element_name(k, a.size()) + ": expected " + fmt(b[k]) + ", got " +
-                    (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity (not a number)"));
+  std::string msg =
+      what + element_name(k, a.size()) + ": expected " + fmt(b[k]) + ", got " +
+      (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity (not a number)"));
   if (std::isfinite(a[k]))
-    msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " + fmt(tol.atol + tol.rtol * std::abs(b[k])) +
-           " by tolerance '" + tol.name + "')";
-  if (a.size() > 1) msg += "; " + std::to_string(bad) + " of " + std::to_string(a.size()) + " numbers differ";
+    msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " +
+           fmt(tol.atol + tol.rtol * std::abs(b[k])) + " by tolerance '" + tol.name + "')";
+  if (a.size() > 1)
+    msg += "; " + std::to_string(bad) + " of " + std::to_string(a.size()) + " numbers differ";
   // What the value is made of, when the case says (e.g. which springs are missing or extra).
   if (a.size() == 1 && std::isfinite(a[0])) {
     const char* side = a[0] < b[0] ? "detail_low" : "detail_high";
-    if (mine.contains(side) && mine.at(side).is_string()) msg += "; " + mine.at(side).get<std::string>();
+    if (mine.contains(side) && mine.at(side).is_string())
+      msg += "; " + mine.at(side).get<std::string>();
   }
   failures.push_back(msg);
   return false;
@@ -142,8 +150,9 @@ std::string syscall_name(int nr) {
 #endif
 }
 
-ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* input, const fs::path& work_dir,
-                     double timeout_s, std::size_t memory_bytes, bool prepare, const Isolation* iso) {
+ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* input,
+                     const fs::path& work_dir, double timeout_s, std::size_t memory_bytes,
+                     bool prepare, const Isolation* iso) {
   Json request = Json::object();
   request["case"] = spec.id;
   request["generator"] = spec.generator;
@@ -163,8 +172,9 @@ ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* i
   return run_isolated(*iso, argv, view, lim);
 }
 
-GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, const fs::path& submission,
-                             const fs::path& work_dir, const GradeOptions& options) {
+GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
+                             const fs::path& submission, const fs::path& work_dir,
+                             const GradeOptions& options) {
   GradeReport rep;
   rep.submission = submission.string();
   rep.visibility = options.include_hidden ? "all" : "public";
@@ -172,7 +182,9 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
   rep.isolation_description = options.isolation.description;
   rep.isolation_warning = options.isolation.warning;
   fs::create_directories(work_dir);
-  const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs = options.jobs > 0
+                       ? options.jobs
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
   // Select the cases and load their reference data (grader errors surface before any compiling).
   const std::string digest = harness_digest(config);
@@ -192,38 +204,47 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         r.status = "skipped";
       } else if (ref->value("format_version", 0) != kReferenceFormat) {
         throw std::runtime_error(reference_path(config, c).string() + ": format_version " +
-                                 std::to_string(ref->value("format_version", 0)) + ", this grader reads " +
-                                 std::to_string(kReferenceFormat) + "; run `jelly-grade generate-reference`");
+                                 std::to_string(ref->value("format_version", 0)) +
+                                 ", this grader reads " + std::to_string(kReferenceFormat) +
+                                 "; run `jelly-grade generate-reference`");
       } else if (ref->value("harness_digest", std::string()) != digest) {
-        throw std::runtime_error(reference_path(config, c).string() +
-                                 " was generated from different case code (grader/runner changed); run "
-                                 "`jelly-grade generate-reference`");
+        throw std::runtime_error(
+            reference_path(config, c).string() +
+            " was generated from different case code (grader/runner changed); run "
+            "`jelly-grade generate-reference`");
       } else if (ref->value("case_hash", std::string()) != case_hash(c, digest)) {
-        throw std::runtime_error(reference_path(config, c).string() + " was generated for a different version of case " +
-                                 c.id + " (its generator or params in grader/cases/" + c.source +
+        throw std::runtime_error(reference_path(config, c).string() +
+                                 " was generated for a different version of case " + c.id +
+                                 " (its generator or params in grader/cases/" + c.source +
                                  " changed); run `jelly-grade generate-reference`");
       }
     }
     rep.cases.push_back(std::move(r));
     refs.push_back(std::move(ref));
   }
-  const bool hidden_missing = std::any_of(rep.cases.begin(), rep.cases.end(), [&](const CaseResult& r) {
-    return r.status == "skipped" && r.spec->hidden && options.include_hidden;
-  });
+  const bool hidden_missing =
+      std::any_of(rep.cases.begin(), rep.cases.end(), [&](const CaseResult& r) {
+        return r.status == "skipped" && r.spec->hidden && options.include_hidden;
+      });
   if (hidden_missing)
-    rep.notes.push_back("hidden tests were not run: their reference data is not in this copy of the grader");
+    rep.notes.push_back(
+        "hidden tests were not run: their reference data is not in this copy of the grader");
   if (!options.include_hidden)
-    rep.notes.push_back("only the public tests were run (--visibility public); the final grade also has hidden tests");
+    rep.notes.push_back(
+        "only the public tests were run (--visibility public); the final grade also has hidden "
+        "tests");
 
   // Build.
   if (!rep.isolation_warning.empty()) rep.notes.push_back("WARNING: " + rep.isolation_warning);
   if (options.runner.empty()) {
-    rep.build = build_submission(config, submission, work_dir / "build", jobs, options.isolation, options.build_limits);
+    rep.build = build_submission(config, submission, work_dir / "build", jobs, options.isolation,
+                                 options.build_limits);
   } else {
     // The self-check: CMake built the runner from the student's tasks (jelly-grade-student-runner).
     if (!fs::is_regular_file(options.runner))
-      throw std::runtime_error("--runner " + options.runner.string() +
-                               ": no such program (build the target jelly-grade-student-runner first)");
+      throw std::runtime_error(
+          "--runner " + options.runner.string() +
+          ": no such program (build the target jelly-grade-student-runner first)");
     rep.build.ok = true;
     rep.build.runner = fs::absolute(options.runner);
     rep.prebuilt_runner = true;
@@ -270,11 +291,14 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         if (r.status == "skipped") continue;
         const Json& ref = *refs[i];
         const TaskSpec* task = book.rubric.find(r.spec->task);
-        const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
+        const std::string in_task =
+            task && !task->functions.empty() ? " in " + task->functions : "";
         const Json input = ref.contains("input") ? ref.at("input") : Json::object();
-        const double timeout = r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
-        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout, options.memory_bytes,
-                                         false, &options.isolation);
+        const double timeout = r.spec->timeout_s > 0
+                                   ? std::max(r.spec->timeout_s, options.timeout_s)
+                                   : options.timeout_s;
+        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout,
+                                       options.memory_bytes, false, &options.isolation);
         r.seconds = c.seconds;
         r.reference = ref.at("outputs");
         r.printed = c.out.substr(0, 2000);
@@ -289,13 +313,17 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
           }
         }
         std::string problem;
-        if (!c.started) problem = "the grader could not start your program: " + c.start_error;
+        if (!c.started)
+          problem = "the grader could not start your program: " + c.start_error;
         else if (parsed && result.contains("forbidden_syscall")) {
           const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
-          problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " + name + ")" + in_task +
-                    "; reading or writing files, starting programs and networking are not allowed while grading";
+          problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " +
+                    name + ")" + in_task +
+                    "; reading or writing files, starting programs and networking are not allowed "
+                    "while grading";
         } else if (c.timed_out) {
-          problem = "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" + in_task;
+          problem = "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" +
+                    in_task;
         } else if (c.output_flood) {
           problem = "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
         }
@@ -307,13 +335,15 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
         else if (c.signal != 0) {
           problem = "crashed with " + describe_signal(c.signal) + in_task;
         } else if (!parsed && c.exit_code == 0) {
-          problem = "your code ended the program before the test finished (exit() called?)" + in_task;
+          problem =
+              "your code ended the program before the test finished (exit() called?)" + in_task;
         } else if (!parsed) {
           problem = "the program ended with exit code " + std::to_string(c.exit_code) +
                     " before the test finished (exit() called, or out of memory?)" + in_task;
         } else if (result.contains("error")) {
           std::string e = result["error"].get<std::string>();
-          if (e.find("bad_alloc") != std::string::npos) e += " (more than the memory limit of 1 GiB?)";
+          if (e.find("bad_alloc") != std::string::npos)
+            e += " (more than the memory limit of 1 GiB?)";
           problem = e + in_task;
         }
         if (!problem.empty()) {
@@ -334,7 +364,8 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book, co
     std::vector<std::thread> threads;
     for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
     for (std::thread& t : threads) t.join();
-    rep.grading_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rep.grading_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   for (TaskResult& t : rep.tasks) {
     for (CaseResult* c : t.cases) t.score += c->score;

@@ -12,13 +12,13 @@ namespace jelly::grade {
 
 struct CaseResult {
   const CaseSpec* spec = nullptr;
-  std::string status;        ///< "passed", "failed", or "skipped" (hidden data absent)
-  double max_score = 0.0;    ///< scaled points
+  std::string status;      ///< "passed", "failed", or "skipped" (hidden data absent)
+  double max_score = 0.0;  ///< scaled points
   double score = 0.0;
   std::vector<std::string> failures;  ///< what failed and why, in the student's terms
-  std::string printed;       ///< an excerpt of what the student's code printed
-  Json outputs;              ///< the student's outputs (for plots)
-  Json reference;            ///< the reference outputs
+  std::string printed;                ///< an excerpt of what the student's code printed
+  Json outputs;                       ///< the student's outputs (for plots)
+  Json reference;                     ///< the reference outputs
   double seconds = 0.0;
 };
 
@@ -30,47 +30,50 @@ struct TaskResult {
 };
 
 struct GradeOptions {
-  bool include_hidden = true;   ///< --visibility all
-  double timeout_s = 10.0;      ///< per case unless the case sets its own
-  int jobs = 0;                 ///< parallel cases (0: all cores)
+  bool include_hidden = true;  ///< --visibility all
+  double timeout_s = 10.0;     ///< per case unless the case sets its own
+  int jobs = 0;                ///< parallel cases (0: all cores)
   std::size_t memory_bytes = 1ULL << 30;
-  Isolation isolation;          ///< where the compiler and the tests run (choose_isolation)
-  BuildLimits build_limits;     ///< limits of compiling and linking
-  std::filesystem::path runner; ///< --runner: a runner CMake built from the student's tasks; nothing
-                                ///< is compiled, and it runs without a sandbox (the self-check)
+  Isolation isolation;       ///< where the compiler and the tests run (choose_isolation)
+  BuildLimits build_limits;  ///< limits of compiling and linking
+  std::filesystem::path
+      runner;  ///< --runner: a runner CMake built from the student's tasks; nothing
+               ///< is compiled, and it runs without a sandbox (the self-check)
 };
 
-/// The isolation of the self-check (--runner): none, and the report says why in the student's terms.
+/// The isolation of the self-check (--runner): none, and the report says why in the student's
+/// terms.
 Isolation own_machine_isolation();
 
 struct GradeReport {
-  std::string submission;        ///< folder as given
+  std::string submission;  ///< folder as given
   bool compiled = false;
   bool prebuilt_runner = false;  ///< --runner: built by CMake, not compiled by the grader
   BuildResult build;
-  std::vector<CaseResult> cases; ///< in case-book order
-  std::vector<TaskResult> tasks; ///< in rubric order
+  std::vector<CaseResult> cases;  ///< in case-book order
+  std::vector<TaskResult> tasks;  ///< in rubric order
   double score = 0.0, max_score = 0.0;
   std::vector<std::string> notes;
   double grading_seconds = 0.0;  ///< running the cases (not compiling)
   std::string visibility;        ///< "public" or "all"
   std::string isolation;         ///< the mechanism used: "bwrap", "user" or "none"
   std::string isolation_description;
-  std::string isolation_warning; ///< non-empty when hidden tests were not protected
+  std::string isolation_warning;  ///< non-empty when hidden tests were not protected
 };
 
 /// Builds the submission's runner and runs every selected case. Throws std::runtime_error only
 /// for grader errors (missing or stale reference data, a case the runner does not know).
 GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
-                             const std::filesystem::path& submission, const std::filesystem::path& work_dir,
-                             const GradeOptions& options);
+                             const std::filesystem::path& submission,
+                             const std::filesystem::path& work_dir, const GradeOptions& options);
 
 /// Runs one case (its generator and params, plus the prepared input) with a runner binary in the
 /// sandbox (also used by generate-reference, with the trusted reference runner and no isolation).
 /// The request reaches the runner on its stdin, never as a file another case could read.
 ChildResult run_case(const std::filesystem::path& runner, const CaseSpec& spec, const Json* input,
-                     const std::filesystem::path& work_dir, double timeout_s, std::size_t memory_bytes,
-                     bool prepare = false, const Isolation* iso = nullptr);
+                     const std::filesystem::path& work_dir, double timeout_s,
+                     std::size_t memory_bytes, bool prepare = false,
+                     const Isolation* iso = nullptr);
 
 /// Name of a system call number (for "your code tried to open a file").
 std::string syscall_name(int nr);

@@ -27,7 +27,8 @@ fs::path absolute_clean(const fs::path& p) {
 }
 
 std::string find_bwrap() {
-  if (const char* env = std::getenv("JELLY_GRADE_BWRAP")) return env;  // another bwrap (tests: a broken one)
+  if (const char* env = std::getenv("JELLY_GRADE_BWRAP"))
+    return env;  // another bwrap (tests: a broken one)
   for (const char* p : {"/usr/bin/bwrap", "/bin/bwrap", "/usr/local/bin/bwrap"})
     if (access(p, X_OK) == 0) return p;
   return "";
@@ -44,20 +45,24 @@ std::vector<std::pair<std::string, std::string>> clean_env() {
 
 // bwrap's fixed part: namespaces, no capabilities, the toolchain read-only, a private /tmp.
 std::vector<std::string> bwrap_base(const std::string& bwrap) {
-  std::vector<std::string> a = {bwrap, "--unshare-all", "--unshare-user", "--die-with-parent", "--new-session",
-                                "--uid", "65534", "--gid", "65534"};
+  std::vector<std::string> a = {
+      bwrap,   "--unshare-all", "--unshare-user", "--die-with-parent", "--new-session", "--uid",
+      "65534", "--gid",         "65534"};
   if (geteuid() == 0) a.insert(a.end(), {"--cap-drop", "ALL"});
   a.insert(a.end(), {"--ro-bind", "/usr", "/usr"});
   for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
     std::error_code ec;
     const fs::file_status st = fs::symlink_status(top, ec);
     if (ec || !fs::exists(st)) continue;
-    if (fs::is_symlink(st)) a.insert(a.end(), {"--symlink", fs::read_symlink(top, ec).string(), top});
-    else if (fs::is_directory(st)) a.insert(a.end(), {"--ro-bind", top, top});
+    if (fs::is_symlink(st))
+      a.insert(a.end(), {"--symlink", fs::read_symlink(top, ec).string(), top});
+    else if (fs::is_directory(st))
+      a.insert(a.end(), {"--ro-bind", top, top});
   }
   // The dynamic loader's cache and the compiler's alternatives (/usr/bin/c++ -> /etc/alternatives).
-  a.insert(a.end(), {"--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache", "--ro-bind-try", "/etc/alternatives",
-                     "/etc/alternatives", "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp", "--clearenv"});
+  a.insert(a.end(), {"--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache", "--ro-bind-try",
+                     "/etc/alternatives", "/etc/alternatives", "--proc", "/proc", "--dev", "/dev",
+                     "--tmpfs", "/tmp", "--clearenv"});
   for (const auto& [k, v] : clean_env()) a.insert(a.end(), {"--setenv", k, v});
   return a;
 }
@@ -84,9 +89,14 @@ bool bwrap_works(const std::string& bwrap, std::string& why) {
 
 // The files only the grader may read.
 std::vector<fs::path> secrets_of(const GradeConfig& config) {
-  std::vector<fs::path> s = {config.data_dir(), config.cases_dir(), config.solutions_dir(), config.cache_dir(),
-                             config.grader_dir() / "mutants", config.binary_dir / "grader" / "mutants",
-                             config.binary_dir / "grader" / "generate", config.source_dir / ".git"};
+  std::vector<fs::path> s = {config.data_dir(),
+                             config.cases_dir(),
+                             config.solutions_dir(),
+                             config.cache_dir(),
+                             config.grader_dir() / "mutants",
+                             config.binary_dir / "grader" / "mutants",
+                             config.binary_dir / "grader" / "generate",
+                             config.source_dir / ".git"};
   if (!config.reference_runner.empty()) s.push_back(config.reference_runner);
   std::vector<fs::path> out;
   for (const fs::path& p : s) out.push_back(absolute_clean(p));
@@ -107,8 +117,9 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
       iso.kind = IsolationKind::Bwrap;
       iso.name = "bwrap";
       iso.bwrap = bwrap;
-      iso.description = "bubblewrap sandbox (own user, mount, pid and network namespaces; the compiler and the "
-                        "tests see only the toolchain, the public headers and the submission)";
+      iso.description =
+          "bubblewrap sandbox (own user, mount, pid and network namespaces; the compiler and the "
+          "tests see only the toolchain, the public headers and the submission)";
       return iso;
     }
     if (mode == "bwrap") throw std::runtime_error("--isolation bwrap: " + why_not_bwrap);
@@ -116,23 +127,27 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
   if (mode == "auto" || mode == "user") {
     if (geteuid() != 0) {
       if (mode == "user")
-        throw std::runtime_error("--isolation user needs jelly-grade to run as root (it drops to an unprivileged "
-                                 "user for the compiler and the tests)");
+        throw std::runtime_error(
+            "--isolation user needs jelly-grade to run as root (it drops to an unprivileged "
+            "user for the compiler and the tests)");
     } else {
       const passwd* pw = getpwnam(kSandboxUser);
       if (!pw) pw = getpwnam("nobody");
-      if (!pw || pw->pw_uid == 0) throw std::runtime_error(std::string("no user ") + kSandboxUser + " or nobody");
+      if (!pw || pw->pw_uid == 0)
+        throw std::runtime_error(std::string("no user ") + kSandboxUser + " or nobody");
       iso.kind = IsolationKind::User;
       iso.name = "user";
       iso.user = pw->pw_name;
       iso.uid = static_cast<int>(pw->pw_uid);
       iso.gid = static_cast<int>(pw->pw_gid);
-      // Root-only secrets: a folder 0700 cannot be entered by anyone else, whatever its files' modes.
+      // Root-only secrets: a folder 0700 cannot be entered by anyone else, whatever its files'
+      // modes.
       for (const fs::path& s : iso.secrets) {
         struct stat st {};
         if (lstat(s.c_str(), &st) != 0) continue;
         if (static_cast<int>(st.st_uid) == iso.uid)
-          throw std::runtime_error(s.string() + " belongs to " + iso.user + ", the user student code runs as");
+          throw std::runtime_error(s.string() + " belongs to " + iso.user +
+                                   ", the user student code runs as");
         if (chmod(s.c_str(), S_ISDIR(st.st_mode) ? 0700 : 0700 & st.st_mode) != 0)
           throw std::runtime_error("cannot make " + s.string() + " readable by its owner only");
       }
@@ -143,25 +158,28 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
     }
   }
   iso.description = "none";
-  // A student's copy of the grader (a release) has no hidden data and no solutions/: nothing to warn about.
+  // A student's copy of the grader (a release) has no hidden data and no solutions/: nothing to
+  // warn about.
   bool secrets = fs::exists(config.solutions_dir()) || fs::exists(config.reference_runner);
   std::error_code ec;
-  for (fs::directory_iterator it(config.data_dir() / "hidden", ec), end; !ec && it != end; it.increment(ec))
+  for (fs::directory_iterator it(config.data_dir() / "hidden", ec), end; !ec && it != end;
+       it.increment(ec))
     secrets = true;
   if (!secrets) {
     iso.description = "none (this copy of the grader holds no hidden data and no solutions)";
     return iso;
   }
-  iso.warning = "hidden tests are NOT protected: student code is compiled and run without isolation (" +
-                (why_not_bwrap.empty() ? std::string("--isolation none") : why_not_bwrap) +
-                (geteuid() == 0 ? "" : "; not root, so no unprivileged user either") +
-                "). Install bubblewrap or grade as root.";
+  iso.warning =
+      "hidden tests are NOT protected: student code is compiled and run without isolation (" +
+      (why_not_bwrap.empty() ? std::string("--isolation none") : why_not_bwrap) +
+      (geteuid() == 0 ? "" : "; not root, so no unprivileged user either") +
+      "). Install bubblewrap or grade as root.";
   std::cerr << "\n*** jelly-grade WARNING: " << iso.warning << " ***\n\n";
   return iso;
 }
 
-std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
-                                 Limits& limits) {
+std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::string>& argv,
+                                 const SandboxView& view, Limits& limits) {
   if (iso.kind == IsolationKind::User) {
     limits.run_as_uid = iso.uid;
     limits.run_as_gid = iso.gid;
@@ -188,21 +206,25 @@ std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::st
   // A secret that happens to lie inside a bound folder is covered up.
   for (const fs::path& s : iso.secrets) {
     if (!fs::exists(s)) continue;
-    if (std::none_of(bound.begin(), bound.end(), [&](const fs::path& b) { return under(s, b); })) continue;
-    if (fs::is_directory(s)) a.insert(a.end(), {"--tmpfs", s.string()});
-    else a.insert(a.end(), {"--ro-bind", "/dev/null", s.string()});
+    if (std::none_of(bound.begin(), bound.end(), [&](const fs::path& b) { return under(s, b); }))
+      continue;
+    if (fs::is_directory(s))
+      a.insert(a.end(), {"--tmpfs", s.string()});
+    else
+      a.insert(a.end(), {"--ro-bind", "/dev/null", s.string()});
   }
   if (!view.cwd.empty()) a.insert(a.end(), {"--chdir", absolute_clean(view.cwd).string()});
   a.insert(a.end(), argv.begin(), argv.end());
   return a;
 }
 
-ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
-                         Limits limits) {
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv,
+                         const SandboxView& view, Limits limits) {
   const std::vector<std::string> command = isolate(iso, argv, view, limits);
   ChildResult c = run_child(command, limits, view.cwd);
   // bwrap's own init reaps the tool and exits with 128 + the signal that ended it.
-  if (iso.kind == IsolationKind::Bwrap && c.signal == 0 && c.exit_code > 128 && c.exit_code <= 128 + 64) {
+  if (iso.kind == IsolationKind::Bwrap && c.signal == 0 && c.exit_code > 128 &&
+      c.exit_code <= 128 + 64) {
     c.signal = c.exit_code - 128;
     c.exit_code = -1;
   }
@@ -216,8 +238,9 @@ void give_to_sandbox(const Isolation& iso, const fs::path& dir) {
   for (fs::path p = abs.parent_path(); !p.empty() && p != p.parent_path(); p = p.parent_path()) {
     struct stat st {};
     if (stat(p.c_str(), &st) == 0 && !(st.st_mode & S_IXOTH))
-      throw std::runtime_error("the work folder " + abs.string() + " cannot be reached by user " + iso.user +
-                               " (" + p.string() + " is closed to other users): use --out in an open folder");
+      throw std::runtime_error("the work folder " + abs.string() + " cannot be reached by user " +
+                               iso.user + " (" + p.string() +
+                               " is closed to other users): use --out in an open folder");
   }
   auto own = [&](const fs::path& p) {
     if (lchown(p.c_str(), static_cast<uid_t>(iso.uid), static_cast<gid_t>(iso.gid)) != 0)

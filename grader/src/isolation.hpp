@@ -23,12 +23,12 @@ enum class IsolationKind { Bwrap, User, None };
 
 struct Isolation {
   IsolationKind kind = IsolationKind::None;
-  std::string name = "none";  ///< "bwrap", "user" or "none": what reports print
-  std::string description;    ///< one sentence for reports
-  std::string warning;        ///< non-empty when hidden tests are not protected
-  std::string bwrap;          ///< path of bwrap (kind Bwrap)
-  int uid = -1, gid = -1;     ///< the unprivileged user (kind User)
-  std::string user;           ///< its name
+  std::string name = "none";      ///< "bwrap", "user" or "none": what reports print
+  std::string description;        ///< one sentence for reports
+  std::string warning;            ///< non-empty when hidden tests are not protected
+  std::string bwrap;              ///< path of bwrap (kind Bwrap)
+  int uid = -1, gid = -1;         ///< the unprivileged user (kind User)
+  std::string user;               ///< its name
   std::vector<fs::path> secrets;  ///< hidden inside every sandbox
 };
 
@@ -55,8 +55,8 @@ std::vector<std::string> isolate(const Isolation& iso, const std::vector<std::st
 
 /// run_child(isolate(...)): a process that bubblewrap reports as exit status 128 + N is reported
 /// as ended by signal N, as it would be without the sandbox.
-ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
-                         Limits limits);
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv,
+                         const SandboxView& view, Limits limits);
 
 /// Makes `dir` (created) and everything in it belong to the unprivileged user (kind User), so the
 /// compiler and the runner can write there; throws when the user could not reach it.

@@ -10,20 +10,21 @@ namespace jelly::grade {
 
 Isolation choose_isolation(const GradeConfig&, const std::string& mode) {
   if (mode != "auto" && mode != "none")
-    throw std::runtime_error("--isolation " + mode + " needs Linux (bubblewrap or a sandbox user); here only "
+    throw std::runtime_error("--isolation " + mode +
+                             " needs Linux (bubblewrap or a sandbox user); here only "
                              "--isolation none (the self-check on your own code) is available");
   Isolation iso;
   iso.description = "none (not Linux: no sandbox here)";
   return iso;
 }
 
-std::vector<std::string> isolate(const Isolation&, const std::vector<std::string>& argv, const SandboxView&,
-                                 Limits&) {
+std::vector<std::string> isolate(const Isolation&, const std::vector<std::string>& argv,
+                                 const SandboxView&, Limits&) {
   return argv;
 }
 
-ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv, const SandboxView& view,
-                         Limits limits) {
+ChildResult run_isolated(const Isolation& iso, const std::vector<std::string>& argv,
+                         const SandboxView& view, Limits limits) {
   return run_child(isolate(iso, argv, view, limits), limits, view.cwd);
 }
 

@@ -5,10 +5,9 @@
 //               [--jobs N] [--verbose] [--no-frames] [--runner FILE] [--strict]
 //   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
 //               [--compile-memory MIB] [--compile-cpu S]
-//   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S] [--no-frames]
-//   jelly-grade generate-reference
-//   jelly-grade gradescope-zip OUT.zip
-//   jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S] [--jobs N]
+//   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S]
+//   [--no-frames] jelly-grade generate-reference jelly-grade gradescope-zip OUT.zip jelly-grade
+//   prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S] [--jobs N]
 //   jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility ...] [--timeout S]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
 //
@@ -18,8 +17,9 @@
 //
 // The command line is read by CLI11 (jelly/cli_common/command_line.hpp): each command accepts only
 // its own options, and a bad one is reported by name with what it expects.
-// Exit status (jelly/cli_common/exit_codes.hpp): 0 when grading ran, whatever the score (1 with --strict when it is not full); 1 when a self-test (mutants) fails or a batch
-// had a grader error; 2 on grader errors (bad arguments, missing or stale reference data).
+// Exit status (jelly/cli_common/exit_codes.hpp): 0 when grading ran, whatever the score (1 with
+// --strict when it is not full); 1 when a self-test (mutants) fails or a batch had a grader error;
+// 2 on grader errors (bad arguments, missing or stale reference data).
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -52,28 +52,36 @@ constexpr const char* kUsage =
     "  jelly-grade grade SUBMISSION_DIR [--visibility public|all] [--out DIR]\n"
     "                    [--format terminal,gradescope,prairielearn,junit,markdown,html]\n"
     "                    [--timeout S] [--jobs N] [--verbose] [--no-frames]\n"
-    "                    [--runner FILE (a prebuilt runner: the self-check, no sandbox)] [--strict]\n"
-    "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S] [--no-frames]\n"
+    "                    [--runner FILE (a prebuilt runner: the self-check, no sandbox)] "
+    "[--strict]\n"
+    "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout "
+    "S] [--no-frames]\n"
     "  jelly-grade generate-reference\n"
     "  jelly-grade gradescope-zip OUT.zip\n"
-    "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] [--timeout S] [--jobs N]\n"
-    "  jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility public|all] [--timeout S]\n"
+    "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] "
+    "[--timeout S] [--jobs N]\n"
+    "  jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility public|all] "
+    "[--timeout S]\n"
     "  common options: --config FILE (grade-config.json), --rubric FILE\n"
-    "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default auto),\n"
+    "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default "
+    "auto),\n"
     "    --compile-memory MIB (default 2048, at least 64), --compile-cpu S (default 120)\n"
-    "exit status: 0 grading ran, whatever the score (1 with --strict when it is not full); 1 a self-test\n"
-    "(mutants) failed or a batch had a grader error; 2 bad arguments, missing or stale reference data.\n";
+    "exit status: 0 grading ran, whatever the score (1 with --strict when it is not full); 1 a "
+    "self-test\n"
+    "(mutants) failed or a batch had a grader error; 2 bad arguments, missing or stale reference "
+    "data.\n";
 
 /// Every option of every command; each command declares the ones it takes.
 struct Options {
-  std::string positional, config_path, rubric_path, out, visibility = "all", table, student, results;
+  std::string positional, config_path, rubric_path, out, visibility = "all", table, student,
+                                                         results;
   std::vector<std::string> formats{"terminal", "gradescope"};
   double timeout = 10.0, compile_memory_mib = 2048, compile_cpu = 120;
   std::string isolation = "auto", runner;
-  int jobs = 0;             // 0: one per core
-  bool strict = false;      // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
+  int jobs = 0;         // 0: one per core
+  bool strict = false;  // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
   bool verbose = false;
-  bool no_frames = false;   // --no-frames: no rendered frames in report.md / report.html
+  bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
 };
 
 /// The options COMMAND takes, declared on `cmd`.
@@ -81,10 +89,13 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   using namespace jelly::cli;
   cmd.add_option("--config", o.config_path)->type_name("FILE");
   cmd.add_option("--rubric", o.rubric_path)->type_name("FILE");
-  const bool grades = command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants";
+  const bool grades =
+      command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants";
   if (grades) {
     cmd.add_option("--isolation", o.isolation)->type_name("auto|bwrap|user|none");
-    cmd.add_option("--compile-memory", o.compile_memory_mib)->type_name("MIB")->check(number_at_least(64));
+    cmd.add_option("--compile-memory", o.compile_memory_mib)
+        ->type_name("MIB")
+        ->check(number_at_least(64));
     cmd.add_option("--compile-cpu", o.compile_cpu)->type_name("S")->check(positive_number());
     cmd.add_option("--timeout", o.timeout)->type_name("S")->check(positive_number());
     cmd.add_option("--jobs", o.jobs)->type_name("N")->check(whole_number(0, 1024));
@@ -93,7 +104,9 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   if (command == "grade") {
     cmd.add_option("SUBMISSION_DIR", o.positional)->required();
     cmd.add_option("--out", o.out)->type_name("DIR");
-    cmd.add_option("--format", o.formats)->type_name("F1,F2")->delimiter(',')
+    cmd.add_option("--format", o.formats)
+        ->type_name("F1,F2")
+        ->delimiter(',')
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->check(one_of({"terminal", "gradescope", "prairielearn", "junit", "markdown", "html"}));
     cmd.add_flag("--verbose", o.verbose);
@@ -126,10 +139,13 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   options.build_limits.cpu_s = o.compile_cpu;
   // Student code is compiled and run only by these commands: the sandbox is chosen once for them.
   if (!o.runner.empty() && o.isolation != "auto" && o.isolation != "none")
-    return cmd.error("--runner runs your own code without a sandbox: --isolation must be auto or none");
+    return cmd.error(
+        "--runner runs your own code without a sandbox: --isolation must be auto or none");
   options.runner = o.runner;
-  if (!o.runner.empty()) options.isolation = own_machine_isolation();
-  else if (command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants")
+  if (!o.runner.empty())
+    options.isolation = own_machine_isolation();
+  else if (command == "grade" || command == "batch" || command == "prairielearn" ||
+           command == "mutants")
     options.isolation = choose_isolation(config, o.isolation);
   if (command == "grade") {
     const std::set<std::string> f(o.formats.begin(), o.formats.end());
@@ -144,9 +160,12 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     // such as the tolerance measurements of docs/tolerances.md.
     if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
     if (f.count("terminal")) std::cout << terminal_summary(r, o.verbose);
-    return o.strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9) ? kExitFailure : kExitOk;
+    return o.strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9)
+               ? kExitFailure
+               : kExitOk;
   }
-  if (command == "batch") return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames);
+  if (command == "batch")
+    return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames);
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
   if (command == "prairielearn") {
@@ -166,8 +185,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> commands{"grade", "batch", "generate-reference", "gradescope-zip", "prairielearn",
-                                       "mutants"};
+  const std::set<std::string> commands{"grade",          "batch",        "generate-reference",
+                                       "gradescope-zip", "prairielearn", "mutants"};
   const std::string command = argc >= 2 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help") {
     std::cout << kUsage;

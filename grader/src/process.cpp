@@ -2,9 +2,9 @@
 
 #include <fcntl.h>
 #include <grp.h>
-#include <sys/mman.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,7 +21,9 @@ namespace jelly::grade {
 namespace {
 
 void set_limit(int resource, rlim_t value) {
-  struct rlimit rl {value, value};
+  struct rlimit rl {
+    value, value
+  };
   setrlimit(resource, &rl);
 }
 
@@ -83,7 +85,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
                       const std::filesystem::path& cwd) {
   ChildResult r;
   int out_pipe[2], err_pipe[2], res_pipe[2] = {-1, -1};
-  if (!cloexec_pipe(out_pipe) || !cloexec_pipe(err_pipe) || (limits.result_pipe && !cloexec_pipe(res_pipe))) {
+  if (!cloexec_pipe(out_pipe) || !cloexec_pipe(err_pipe) ||
+      (limits.result_pipe && !cloexec_pipe(res_pipe))) {
     r.start_error = std::string("pipe: ") + std::strerror(errno);
     return r;
   }
@@ -137,8 +140,10 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
       if (limits.run_as_uid != 0 && setuid(0) == 0) _exit(125);
     }
     if (!dir.empty() && chdir(dir.c_str()) != 0) _exit(126);
-    if (limits.env.empty()) execv(args[0], args.data());
-    else execve(args[0], args.data(), envp.data());
+    if (limits.env.empty())
+      execv(args[0], args.data());
+    else
+      execve(args[0], args.data(), envp.data());
     const char msg[] = "jelly-grade: cannot execute the program\n";
     ssize_t ignored = write(2, msg, sizeof msg - 1);
     (void)ignored;

@@ -9,34 +9,34 @@
 namespace jelly::grade {
 
 struct Limits {
-  double timeout_s = 10.0;                  ///< wall clock; the process group is SIGKILLed after it
-  double cpu_s = 0.0;                       ///< RLIMIT_CPU (0: timeout + 1 s)
-  std::size_t memory_bytes = 1ULL << 30;    ///< RLIMIT_AS (0: unlimited)
-  std::size_t file_size_bytes = 0;          ///< RLIMIT_FSIZE (the runner writes no files)
-  bool limit_files = true;                  ///< apply RLIMIT_FSIZE
-  std::size_t keep_output = 64 * 1024;      ///< bytes of stdout/stderr kept for the report
-  std::size_t kill_output = 64ULL << 20;    ///< more output than this (both streams) kills the child
-  bool result_pipe = true;                  ///< give the child a pipe as fd 3 for its result
-  std::size_t max_processes = 0;            ///< RLIMIT_NPROC (0: unchanged); counts per user, so
-                                            ///< only meaningful for a dedicated user (isolation.hpp)
-  std::size_t max_open_files = 0;           ///< RLIMIT_NOFILE (0: unchanged)
-  int run_as_uid = -1, run_as_gid = -1;     ///< drop to this user and group before exec (-1: stay)
-  std::vector<std::string> env;             ///< the child's whole environment (empty: inherit ours)
-  std::string stdin_data;                   ///< what the child reads on fd 0 (empty: /dev/null); an
-                                            ///< anonymous in-memory file only this child has
+  double timeout_s = 10.0;                ///< wall clock; the process group is SIGKILLed after it
+  double cpu_s = 0.0;                     ///< RLIMIT_CPU (0: timeout + 1 s)
+  std::size_t memory_bytes = 1ULL << 30;  ///< RLIMIT_AS (0: unlimited)
+  std::size_t file_size_bytes = 0;        ///< RLIMIT_FSIZE (the runner writes no files)
+  bool limit_files = true;                ///< apply RLIMIT_FSIZE
+  std::size_t keep_output = 64 * 1024;    ///< bytes of stdout/stderr kept for the report
+  std::size_t kill_output = 64ULL << 20;  ///< more output than this (both streams) kills the child
+  bool result_pipe = true;                ///< give the child a pipe as fd 3 for its result
+  std::size_t max_processes = 0;          ///< RLIMIT_NPROC (0: unchanged); counts per user, so
+                                          ///< only meaningful for a dedicated user (isolation.hpp)
+  std::size_t max_open_files = 0;         ///< RLIMIT_NOFILE (0: unchanged)
+  int run_as_uid = -1, run_as_gid = -1;   ///< drop to this user and group before exec (-1: stay)
+  std::vector<std::string> env;           ///< the child's whole environment (empty: inherit ours)
+  std::string stdin_data;                 ///< what the child reads on fd 0 (empty: /dev/null); an
+                                          ///< anonymous in-memory file only this child has
 };
 
 struct ChildResult {
   bool started = false;
   std::string start_error;
-  int exit_code = -1;        ///< when it exited normally
-  int signal = 0;            ///< when a signal ended it
+  int exit_code = -1;  ///< when it exited normally
+  int signal = 0;      ///< when a signal ended it
   bool timed_out = false;
-  bool output_flood = false; ///< killed for printing more than kill_output
-  std::string out, err;      ///< the first keep_output bytes of each stream
+  bool output_flood = false;  ///< killed for printing more than kill_output
+  std::string out, err;       ///< the first keep_output bytes of each stream
   std::size_t out_bytes = 0, err_bytes = 0;
-  std::string result;        ///< everything written to fd 3
-  double seconds = 0.0;      ///< wall time
+  std::string result;    ///< everything written to fd 3
+  double seconds = 0.0;  ///< wall time
 };
 
 /// Runs argv[0] with the arguments, stdin from /dev/null (or limits.stdin_data), in its own process

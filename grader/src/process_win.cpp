@@ -47,8 +47,10 @@ void append_quoted(std::wstring& line, const std::wstring& arg) {
       line.append(backslashes * 2, L'\\');
       break;
     }
-    if (arg[i] == L'"') line.append(backslashes * 2 + 1, L'\\');
-    else line.append(backslashes, L'\\');
+    if (arg[i] == L'"')
+      line.append(backslashes * 2 + 1, L'\\');
+    else
+      line.append(backslashes, L'\\');
     line += arg[i];
   }
   line += L'"';
@@ -99,10 +101,12 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     if (h) CloseHandle(h);
     h = nullptr;
   };
-  if (!CreatePipe(&out_read, &out_write, &inherit, 0) || !CreatePipe(&err_read, &err_write, &inherit, 0) ||
+  if (!CreatePipe(&out_read, &out_write, &inherit, 0) ||
+      !CreatePipe(&err_read, &err_write, &inherit, 0) ||
       (limits.result_pipe && !CreatePipe(&res_read, &res_write, &inherit, 0))) {
     r.start_error = last_error_text("CreatePipe");
-    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write}) close(*h);
+    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write})
+      close(*h);
     return r;
   }
   // Only the child's ends are inherited.
@@ -110,11 +114,12 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     if (h) SetHandleInformation(h, HANDLE_FLAG_INHERIT, 0);
   HANDLE child_in = nullptr, in_write = nullptr;
   if (limits.stdin_data.empty()) {
-    child_in = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, OPEN_EXISTING, 0,
-                          nullptr);
+    child_in = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit,
+                           OPEN_EXISTING, 0, nullptr);
   } else if (!CreatePipe(&child_in, &in_write, &inherit, 0)) {
     r.start_error = last_error_text("CreatePipe");
-    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write}) close(*h);
+    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write})
+      close(*h);
     return r;
   } else {
     SetHandleInformation(in_write, HANDLE_FLAG_INHERIT, 0);
@@ -123,7 +128,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   // A job: the child and anything it starts die together; memory is capped.
   HANDLE job = CreateJobObjectW(nullptr, nullptr);
   JOBOBJECT_EXTENDED_LIMIT_INFORMATION info{};
-  info.BasicLimitInformation.LimitFlags = JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE | JOB_OBJECT_LIMIT_DIE_ON_UNHANDLED_EXCEPTION;
+  info.BasicLimitInformation.LimitFlags =
+      JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE | JOB_OBJECT_LIMIT_DIE_ON_UNHANDLED_EXCEPTION;
   if (limits.memory_bytes > 0) {
     info.BasicLimitInformation.LimitFlags |= JOB_OBJECT_LIMIT_JOB_MEMORY;
     info.JobMemoryLimit = limits.memory_bytes;
@@ -132,8 +138,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
 
   std::wstring command_line;
   for (const std::string& a : argv) append_quoted(command_line, widen(a));
-  std::wstring env = environment_with(
-      L"JELLY_RESULT_HANDLE=" + std::to_wstring(reinterpret_cast<std::uintptr_t>(res_write)));
+  std::wstring env = environment_with(L"JELLY_RESULT_HANDLE=" +
+                                      std::to_wstring(reinterpret_cast<std::uintptr_t>(res_write)));
   const std::wstring dir = cwd.empty() ? std::wstring() : cwd.wstring();
 
   // Exactly these handles reach the child.
@@ -143,9 +149,10 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   InitializeProcThreadAttributeList(nullptr, 1, 0, &attr_size);
   std::string attr_buffer(attr_size, '\0');
   auto attrs = reinterpret_cast<LPPROC_THREAD_ATTRIBUTE_LIST>(attr_buffer.data());
-  const bool have_list = InitializeProcThreadAttributeList(attrs, 1, 0, &attr_size) &&
-                         UpdateProcThreadAttribute(attrs, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST, handles,
-                                                   handle_count * sizeof(HANDLE), nullptr, nullptr);
+  const bool have_list =
+      InitializeProcThreadAttributeList(attrs, 1, 0, &attr_size) &&
+      UpdateProcThreadAttribute(attrs, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST, handles,
+                                handle_count * sizeof(HANDLE), nullptr, nullptr);
   STARTUPINFOEXW si{};
   si.StartupInfo.cb = sizeof si;
   si.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
@@ -155,10 +162,11 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   si.lpAttributeList = have_list ? attrs : nullptr;
   PROCESS_INFORMATION pi{};
   const auto start = std::chrono::steady_clock::now();
-  const BOOL created = CreateProcessW(
-      nullptr, command_line.data(), nullptr, nullptr, TRUE,
-      CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT | CREATE_NO_WINDOW | (have_list ? EXTENDED_STARTUPINFO_PRESENT : 0),
-      env.data(), dir.empty() ? nullptr : dir.c_str(), &si.StartupInfo, &pi);
+  const BOOL created =
+      CreateProcessW(nullptr, command_line.data(), nullptr, nullptr, TRUE,
+                     CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT | CREATE_NO_WINDOW |
+                         (have_list ? EXTENDED_STARTUPINFO_PRESENT : 0),
+                     env.data(), dir.empty() ? nullptr : dir.c_str(), &si.StartupInfo, &pi);
   if (have_list) DeleteProcThreadAttributeList(attrs);
   // Our copies of the child's ends: closed, so the pipes end when the child (and its children) do.
   close(out_write);
@@ -188,12 +196,15 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
         rd.text->append(buf, n);
         continue;
       }
-      if (rd.text->size() < rd.keep) rd.text->append(buf, std::min<std::size_t>(n, rd.keep - rd.text->size()));
+      if (rd.text->size() < rd.keep)
+        rd.text->append(buf, std::min<std::size_t>(n, rd.keep - rd.text->size()));
       total += n;
       if (limits.kill_output > 0 && total > limits.kill_output && !flood) {
         flood = true;
-        if (job) TerminateJobObject(job, 1);
-        else TerminateProcess(pi.hProcess, 1);
+        if (job)
+          TerminateJobObject(job, 1);
+        else
+          TerminateProcess(pi.hProcess, 1);
       }
     }
   };
@@ -205,7 +216,9 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
       const char* p = limits.stdin_data.data();
       std::size_t left = limits.stdin_data.size();
       DWORD n = 0;
-      while (left > 0 && WriteFile(in_write, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 16)), &n, nullptr) &&
+      while (left > 0 &&
+             WriteFile(in_write, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 16)), &n,
+                       nullptr) &&
              n > 0)
         p += n, left -= n;
       CloseHandle(in_write);
@@ -217,10 +230,13 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   if (res_read) t_res = std::thread(read_all, Reader{res_read, &r.result, &result_bytes, 0});
 
   const double timeout_ms = limits.timeout_s > 0 ? limits.timeout_s * 1000.0 : double(INFINITE);
-  if (WaitForSingleObject(pi.hProcess, static_cast<DWORD>(std::min(timeout_ms, 4.0e9))) == WAIT_TIMEOUT) {
+  if (WaitForSingleObject(pi.hProcess, static_cast<DWORD>(std::min(timeout_ms, 4.0e9))) ==
+      WAIT_TIMEOUT) {
     r.timed_out = true;
-    if (job) TerminateJobObject(job, 1);
-    else TerminateProcess(pi.hProcess, 1);
+    if (job)
+      TerminateJobObject(job, 1);
+    else
+      TerminateProcess(pi.hProcess, 1);
     WaitForSingleObject(pi.hProcess, INFINITE);
   }
   // Anything the child started is ended with it, so the pipes reach their end.
@@ -252,8 +268,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     case 0xC0000409u:  // __fastfail / stack buffer overrun (abort() in the UCRT)
       r.signal = SIGABRT;
       break;
-    default:
-      r.exit_code = static_cast<int>(code);
+    default: r.exit_code = static_cast<int>(code);
   }
   if (r.timed_out || r.output_flood) r.exit_code = -1, r.signal = 0;
   for (HANDLE* h : {&out_read, &err_read, &res_read, &job}) close(*h);

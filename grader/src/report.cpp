@@ -19,7 +19,8 @@ std::string pts(double v) {
 }
 
 std::string case_name(const CaseResult& c, const TaskSpec* t) {
-  return c.spec->task + (t ? " " + t->title : std::string()) + ": " + c.spec->title + " [" + c.spec->id + "]";
+  return c.spec->task + (t ? " " + t->title : std::string()) + ": " + c.spec->title + " [" +
+         c.spec->id + "]";
 }
 
 std::string case_output(const CaseResult& c) {
@@ -27,7 +28,8 @@ std::string case_output(const CaseResult& c) {
   if (c.status == "passed") o = "Passed.\n";
   for (std::size_t i = 0; i < c.failures.size() && i < 6; ++i) o += "- " + c.failures[i] + "\n";
   if (c.failures.size() > 6) o += "- … and " + std::to_string(c.failures.size() - 6) + " more\n";
-  if (!c.printed.empty()) o += "\nYour code printed (first lines):\n" + c.printed.substr(0, 1500) + "\n";
+  if (!c.printed.empty())
+    o += "\nYour code printed (first lines):\n" + c.printed.substr(0, 1500) + "\n";
   return o;
 }
 
@@ -40,8 +42,10 @@ std::string xml_escape(const std::string& s) {
       case '&': o += "&amp;"; break;
       case '"': o += "&quot;"; break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += '?';
-        else o += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
+          o += '?';
+        else
+          o += c;
     }
   }
   return o;
@@ -58,7 +62,8 @@ std::string base64(const std::string& in) {
   std::string out;
   std::size_t i = 0;
   for (; i + 2 < in.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(in[i]) << 16) | (static_cast<unsigned char>(in[i + 1]) << 8) |
+    const unsigned v = (static_cast<unsigned char>(in[i]) << 16) |
+                       (static_cast<unsigned char>(in[i + 1]) << 8) |
                        static_cast<unsigned char>(in[i + 2]);
     out += t[v >> 18], out += t[(v >> 12) & 63], out += t[(v >> 6) & 63], out += t[v & 63];
   }
@@ -78,8 +83,10 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
   std::ostringstream o;
   o << "Jelly Lab autograder — " << r.submission << " (" << r.visibility << " tests)\n";
   // "none" alone unless the description says more than the name (the self-check says why).
-  const bool plain = r.isolation_description.empty() || r.isolation_description.rfind("none", 0) == 0;
-  o << "  sandbox: " << r.isolation << (plain ? "" : " — ") << (plain ? "" : r.isolation_description) << "\n";
+  const bool plain =
+      r.isolation_description.empty() || r.isolation_description.rfind("none", 0) == 0;
+  o << "  sandbox: " << r.isolation << (plain ? "" : " — ")
+    << (plain ? "" : r.isolation_description) << "\n";
   for (const std::string& n : r.notes) o << "  note: " << n << "\n";
   if (!r.compiled) {
     o << "\nYour code did not compile. The compiler said:\n" << r.build.errors << "\n";
@@ -92,9 +99,13 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
     if (run == 0) continue;
     const bool full = t.score >= t.max_score - 1e-9;
     char line[200];
-    std::snprintf(line, sizeof line, "%-8s %-34s %6s / %-6s %s (%zu/%zu tests)\n", t.spec->id.c_str(),
-                  t.spec->title.c_str(), pts(t.score).c_str(), pts(t.max_score).c_str(),
-                  t.max_score == 0 ? (passed == run ? "ok  " : "FAIL") : full ? "PASS" : "FAIL", passed, run);
+    std::snprintf(line, sizeof line, "%-8s %-34s %6s / %-6s %s (%zu/%zu tests)\n",
+                  t.spec->id.c_str(), t.spec->title.c_str(), pts(t.score).c_str(),
+                  pts(t.max_score).c_str(),
+                  t.max_score == 0 ? (passed == run ? "ok  " : "FAIL")
+                  : full           ? "PASS"
+                                   : "FAIL",
+                  passed, run);
     o << line;
     for (const CaseResult* c : t.cases) {
       if (c->status == "failed" && r.compiled) {
@@ -105,7 +116,8 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
         // the IDE's selfcheck target (which takes no options) has its twin selfcheck-verbose. One
         // text for every path: the self-check's report is the grader's, line for line.
         if (!verbose && c->failures.size() > 2)
-          o << "               (" << c->failures.size() - 2 << " more: --verbose, or the selfcheck-verbose target)\n";
+          o << "               (" << c->failures.size() - 2
+            << " more: --verbose, or the selfcheck-verbose target)\n";
       } else if (verbose && c->status == "passed") {
         o << "           ✓ " << c->spec->title << "\n";
       }
@@ -114,8 +126,11 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
   o << "\nTotal: " << pts(r.score) << " / " << pts(r.max_score);
   if (r.compiled) {
     char t[64];
-    if (r.prebuilt_runner) std::snprintf(t, sizeof t, "   (tests ran in %.1f s; built by CMake)", r.grading_seconds);
-    else std::snprintf(t, sizeof t, "   (tests ran in %.1f s, compiling took %.1f s)", r.grading_seconds, r.build.seconds);
+    if (r.prebuilt_runner)
+      std::snprintf(t, sizeof t, "   (tests ran in %.1f s; built by CMake)", r.grading_seconds);
+    else
+      std::snprintf(t, sizeof t, "   (tests ran in %.1f s, compiling took %.1f s)",
+                    r.grading_seconds, r.build.seconds);
     o << t;
   }
   o << "\n";
@@ -131,12 +146,14 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   j["output"] = out;
   j["stdout_visibility"] = "hidden";
-  j["extra_data"] = {{"isolation", r.isolation}, {"isolation_description", r.isolation_description}};
+  j["extra_data"] = {{"isolation", r.isolation},
+                     {"isolation_description", r.isolation_description}};
   Json tests = Json::array();
   Json compile;
   compile["name"] = "Compilation of your five task files";
   compile["status"] = r.compiled ? "passed" : "failed";
-  compile["output"] = r.compiled ? std::string("Your code compiled.\n") : "Your code did not compile:\n" + r.build.errors;
+  compile["output"] = r.compiled ? std::string("Your code compiled.\n")
+                                 : "Your code did not compile:\n" + r.build.errors;
   compile["visibility"] = "visible";
   tests.push_back(compile);
   for (const CaseResult& c : r.cases) {
@@ -160,7 +177,8 @@ Json prairielearn_results(const GradeReport& r) {
   Json j;
   j["gradable"] = r.compiled;
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
-  j["message"] = r.compiled ? "Graded " + pts(r.score) + " / " + pts(r.max_score) : std::string("Your code did not compile.");
+  j["message"] = r.compiled ? "Graded " + pts(r.score) + " / " + pts(r.max_score)
+                            : std::string("Your code did not compile.");
   std::string out = "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   if (!r.compiled) out += r.build.errors;
@@ -174,7 +192,9 @@ Json prairielearn_results(const GradeReport& r) {
     t["description"] = c.spec->title;
     t["points"] = std::round(c.score * 1e6) / 1e6;
     t["max_points"] = std::round(c.max_score * 1e6) / 1e6;
-    t["message"] = c.status == "passed" ? std::string("Passed") : (c.failures.empty() ? std::string("Failed") : c.failures.front());
+    t["message"] = c.status == "passed"
+                       ? std::string("Passed")
+                       : (c.failures.empty() ? std::string("Failed") : c.failures.front());
     t["output"] = case_output(c);
     tests.push_back(t);
   }
@@ -182,8 +202,9 @@ Json prairielearn_results(const GradeReport& r) {
   const std::string svg = com_plot_svg(r);
   j["images"] = Json::array();
   if (!svg.empty())
-    j["images"].push_back({{"label", "Centre-of-mass height, course scene: yours and the reference"},
-                           {"url", "data:image/svg+xml;base64," + base64(svg)}});
+    j["images"].push_back(
+        {{"label", "Centre-of-mass height, course scene: yours and the reference"},
+         {"url", "data:image/svg+xml;base64," + base64(svg)}});
   return j;
 }
 
@@ -192,20 +213,23 @@ std::string junit_xml(const GradeReport& r) {
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"jelly-grade\">\n";
   o << "  <testsuite name=\"compile\" tests=\"1\" failures=\"" << (r.compiled ? 0 : 1) << "\">\n"
     << "    <testcase classname=\"compile\" name=\"compilation\">";
-  if (!r.compiled) o << "<failure message=\"did not compile\">" << xml_escape(r.build.errors) << "</failure>";
+  if (!r.compiled)
+    o << "<failure message=\"did not compile\">" << xml_escape(r.build.errors) << "</failure>";
   o << "</testcase>\n  </testsuite>\n";
   for (const TaskResult& t : r.tasks) {
     std::size_t n = 0, failed = 0;
     for (const CaseResult* c : t.cases)
       if (c->status != "skipped") ++n, failed += c->status == "failed";
     if (n == 0) continue;
-    o << "  <testsuite name=\"" << xml_escape(t.spec->id + " " + t.spec->title) << "\" tests=\"" << n
-      << "\" failures=\"" << failed << "\">\n";
+    o << "  <testsuite name=\"" << xml_escape(t.spec->id + " " + t.spec->title) << "\" tests=\""
+      << n << "\" failures=\"" << failed << "\">\n";
     for (const CaseResult* c : t.cases) {
       if (c->status == "skipped") continue;
-      o << "    <testcase classname=\"" << xml_escape(t.spec->id) << "\" name=\"" << xml_escape(c->spec->id) << "\">";
+      o << "    <testcase classname=\"" << xml_escape(t.spec->id) << "\" name=\""
+        << xml_escape(c->spec->id) << "\">";
       if (c->status == "failed")
-        o << "<failure message=\"" << xml_escape(c->failures.empty() ? "failed" : c->failures.front()) << "\">"
+        o << "<failure message=\""
+          << xml_escape(c->failures.empty() ? "failed" : c->failures.front()) << "\">"
           << xml_escape(case_output(*c)) << "</failure>";
       o << "</testcase>\n";
     }
@@ -225,7 +249,8 @@ std::string com_plot_svg(const GradeReport& r) {
       return v;
     };
     std::vector<Series> s;
-    s.push_back({"reference", "#1f77b4", vec(c.reference, "com_time"), vec(c.reference, "com_y"), false});
+    s.push_back(
+        {"reference", "#1f77b4", vec(c.reference, "com_time"), vec(c.reference, "com_y"), false});
     if (!c.outputs.is_null())
       s.push_back({"yours", "#d62728", vec(c.outputs, "com_time"), vec(c.outputs, "com_y"), true});
     return svg_plot("Course scene: centre-of-mass height", "time [s]", "height [m]", s);
@@ -235,9 +260,9 @@ std::string com_plot_svg(const GradeReport& r) {
 
 std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   std::ostringstream o;
-  o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score) << " / "
-    << pts(r.max_score) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation << "` — "
-    << r.isolation_description << "\n\n";
+  o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score)
+    << " / " << pts(r.max_score) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation
+    << "` — " << r.isolation_description << "\n\n";
   for (const std::string& n : r.notes) o << "> " << n << "\n\n";
   if (!r.compiled) o << "## Your code did not compile\n\n```\n" << r.build.errors << "```\n\n";
   o << "| Task | Points | Tests passed |\n|---|---|---|\n";
@@ -245,8 +270,9 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
     std::size_t n = 0, p = 0;
     for (const CaseResult* c : t.cases)
       if (c->status != "skipped") ++n, p += c->status == "passed";
-    if (n) o << "| " << t.spec->id << " " << t.spec->title << " | " << pts(t.score) << " / " << pts(t.max_score)
-             << " | " << p << "/" << n << " |\n";
+    if (n)
+      o << "| " << t.spec->id << " " << t.spec->title << " | " << pts(t.score) << " / "
+        << pts(t.max_score) << " | " << p << "/" << n << " |\n";
   }
   o << "\n## Failed tests\n\n";
   for (const CaseResult& c : r.cases)
@@ -256,7 +282,8 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
       o << "\n";
     }
   if (!com_plot_svg(r).empty())
-    o << "## Course scene\n\n![centre-of-mass height, yours against the reference](com-height.svg)\n\n";
+    o << "## Course scene\n\n![centre-of-mass height, yours against the "
+         "reference](com-height.svg)\n\n";
   if (frames && frames->shown) {
     o << "### Frames: yours beside the reference\n\n";
     if (!frames->unavailable.empty()) {
@@ -265,10 +292,12 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
       o << "| t [s] | yours | reference |\n|---|---|---|\n";
       for (const FrameRow& row : frames->rows)
         o << "| " << pts(row.time) << " | "
-          << (row.yours.empty() ? std::string("—") : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
+          << (row.yours.empty() ? std::string("—")
+                                : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
           << " | "
-          << (row.reference.empty() ? std::string("—")
-                                    : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
+          << (row.reference.empty()
+                  ? std::string("—")
+                  : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
           << " |\n";
       o << "\n";
     }
@@ -278,23 +307,25 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   return o.str();
 }
 
-std::string html_report(const GradeReport& r, const CourseFrames* frames, const std::filesystem::path& dir) {
+std::string html_report(const GradeReport& r, const CourseFrames* frames,
+                        const std::filesystem::path& dir) {
   std::ostringstream o;
   o << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab grading report</title>"
        "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
        ".fail{color:#b00}.pass{color:#070}</style></head><body>\n";
-  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>" << pts(r.score) << " / "
-    << pts(r.max_score) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation) << "</code> — "
-    << xml_escape(r.isolation_description) << "</p>\n";
+  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>" << pts(r.score)
+    << " / " << pts(r.max_score) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation)
+    << "</code> — " << xml_escape(r.isolation_description) << "</p>\n";
   for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
-  if (!r.compiled) o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
+  if (!r.compiled)
+    o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
   o << "<table><tr><th>Task</th><th>Points</th><th>Test</th><th>Result</th></tr>\n";
   for (const TaskResult& t : r.tasks)
     for (const CaseResult* c : t.cases) {
       if (c->status == "skipped") continue;
-      o << "<tr><td>" << xml_escape(t.spec->id + " " + t.spec->title) << "</td><td>" << pts(c->score) << " / "
-        << pts(c->max_score) << "</td><td>" << xml_escape(c->spec->title) << "</td><td class=\""
-        << (c->status == "passed" ? "pass\">passed" : "fail\">failed");
+      o << "<tr><td>" << xml_escape(t.spec->id + " " + t.spec->title) << "</td><td>"
+        << pts(c->score) << " / " << pts(c->max_score) << "</td><td>" << xml_escape(c->spec->title)
+        << "</td><td class=\"" << (c->status == "passed" ? "pass\">passed" : "fail\">failed");
       for (const std::string& f : c->failures) o << "<br>" << xml_escape(f);
       o << "</td></tr>\n";
     }
@@ -310,11 +341,13 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames, const 
         if (file.empty()) return std::string("<td>—</td>");
         const std::string bytes = read_file(dir / file);
         if (bytes.empty()) return std::string("<td>—</td>");
-        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," + base64(bytes) + "\"></td>";
+        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," +
+               base64(bytes) + "\"></td>";
       };
       o << "<table><tr><th>t [s]</th><th>yours</th><th>reference</th></tr>\n";
       for (const FrameRow& row : frames->rows)
-        o << "<tr><td>" << pts(row.time) << "</td>" << cell(row.yours, "yours at t = " + pts(row.time) + " s")
+        o << "<tr><td>" << pts(row.time) << "</td>"
+          << cell(row.yours, "yours at t = " + pts(row.time) + " s")
           << cell(row.reference, "reference at t = " + pts(row.time) + " s") << "</tr>\n";
       o << "</table>\n";
     }
@@ -341,8 +374,10 @@ void write_reports(const GradeReport& r, const CaseBook& book, const std::filesy
     f << text;
     if (!f) throw std::runtime_error("cannot write " + (out / name).string());
   };
-  if (formats.count("gradescope")) write("results.json", gradescope_results(r, book).dump(2) + "\n");
-  if (formats.count("prairielearn")) write("prairielearn.json", prairielearn_results(r).dump(2) + "\n");
+  if (formats.count("gradescope"))
+    write("results.json", gradescope_results(r, book).dump(2) + "\n");
+  if (formats.count("prairielearn"))
+    write("prairielearn.json", prairielearn_results(r).dump(2) + "\n");
   if (formats.count("junit")) write("junit.xml", junit_xml(r));
   if (formats.count("markdown")) {
     write("report.md", markdown_report(r, config ? &frames : nullptr));

@@ -53,7 +53,7 @@ TEST_P(NoAllocationPerStep, InContactWithTheFloorAndTheBowl) {
   scene.integrator = GetParam();
   Simulator sim(build_world(scene, linked_tasks()), {GetParam(), 0.0005});
   ASSERT_EQ(sim.run_until(2.5), StepResult::Ok);  // landed on the floor, tipping into the bowl
-  long touches = 0;  // collision responses and contact forces so far
+  long touches = 0;                               // collision responses and contact forces so far
   for (long c : sim.world().counters().collisions) touches += c;
   for (long c : sim.world().counters().contacts) touches += c;
   ASSERT_GT(touches, 0);
@@ -61,9 +61,9 @@ TEST_P(NoAllocationPerStep, InContactWithTheFloorAndTheBowl) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CourseIntegrators, NoAllocationPerStep,
-                         ::testing::Values(IntegratorKind::ExplicitEuler, IntegratorKind::ImplicitEuler,
-                                           IntegratorKind::Midpoint, IntegratorKind::RK4,
-                                           IntegratorKind::SymplecticEuler),
+                         ::testing::Values(IntegratorKind::ExplicitEuler,
+                                           IntegratorKind::ImplicitEuler, IntegratorKind::Midpoint,
+                                           IntegratorKind::RK4, IntegratorKind::SymplecticEuler),
                          [](const auto& p) { return std::string(to_string(p.param)); });
 
 // Four cubes, twelve spring groups: more groups than any fixed-size table would hold.

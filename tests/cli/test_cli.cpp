@@ -33,7 +33,8 @@ class Cli : public ::testing::Test {
     fs::create_directories(dir_);
   }
   // Writes a scene file with one line replaced (or appended) and returns its path.
-  std::string variant(const std::string& from, const std::string& old_line, const std::string& new_line) {
+  std::string variant(const std::string& from, const std::string& old_line,
+                      const std::string& new_line) {
     std::string text = file_text(scene(from));
     const auto at = text.find(old_line);
     EXPECT_NE(at, std::string::npos) << old_line;
@@ -49,15 +50,15 @@ class Cli : public ::testing::Test {
 TEST_F(Cli, HelpDocumentsEveryOption) {
   const Result r = jelly("run --help");
   EXPECT_EQ(r.code, 0);
-  for (const char* opt : {"--integrator", "--dt", "--duration", "--set", "--every", "--out", "--summary",
-                          "--threads", "explicit_euler", "implicit_euler", "midpoint", "rk4", "symplectic_euler",
-                          "backward_euler", "exit codes"})
+  for (const char* opt : {"--integrator", "--dt", "--duration", "--set", "--every", "--out",
+                          "--summary", "--threads", "explicit_euler", "implicit_euler", "midpoint",
+                          "rk4", "symplectic_euler", "backward_euler", "exit codes"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 
 TEST_F(Cli, RunWritesTrajectoryAndSummaryWithTheDocumentedHeaders) {
-  const Result r = jelly("run " + scene("course-2023.toml") + " --duration 0.05 --every 10 --out " + out() +
-                         " --summary " + (dir_ / "sum.csv").string());
+  const Result r = jelly("run " + scene("course-2023.toml") + " --duration 0.05 --every 10 --out " +
+                         out() + " --summary " + (dir_ / "sum.csv").string());
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream traj(out()), sum(dir_ / "sum.csv");
   std::string line;
@@ -72,7 +73,8 @@ TEST_F(Cli, RunWritesTrajectoryAndSummaryWithTheDocumentedHeaders) {
 
 // --threads splits the spring pass; the trajectory is the same to the last digit written.
 TEST_F(Cli, ThreadsGiveTheSameTrajectory) {
-  const std::string base = "run " + scene("course-2023.toml") + " --duration 0.05 --every 25 --quiet --out ";
+  const std::string base =
+      "run " + scene("course-2023.toml") + " --duration 0.05 --every 25 --quiet --out ";
   const Result one = jelly(base + (dir_ / "one.csv").string());
   const Result two = jelly(base + (dir_ / "two.csv").string() + " --threads 2");
   ASSERT_EQ(one.code, 0) << one.output;
@@ -88,7 +90,9 @@ TEST_F(Cli, ThreadsGiveTheSameTrajectory) {
 
 TEST_F(Cli, SetOverridesAParameterByItsName) {
   const Result r = jelly("run " + scene("course-2023.toml") +
-                         " --duration 0.01 --set body.center=-5,11,0 --set springs.shear.ks=5000 --every 10 --summary " + out());
+                         " --duration 0.01 --set body.center=-5,11,0 --set springs.shear.ks=5000 "
+                         "--every 10 --summary " +
+                         out());
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream sum(out());
   std::string header, first;
@@ -100,7 +104,8 @@ TEST_F(Cli, SetOverridesAParameterByItsName) {
 }
 
 TEST_F(Cli, UnknownIntegratorIsAUsageError) {
-  const Result r = jelly("run " + scene("course-2023.toml") + " --integrator leapfrog --out " + out());
+  const Result r =
+      jelly("run " + scene("course-2023.toml") + " --integrator leapfrog --out " + out());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("simulation.integrator"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out()));
@@ -118,10 +123,13 @@ class CliBadScene : public Cli, public ::testing::WithParamInterface<BadInput> {
 TEST_P(CliBadScene, OneClearMessageNamingFileAndKeyAndNothingWritten) {
   const BadInput& b = GetParam();
   const std::string path = variant("course-2023.toml", b.old_line, b.new_line);
-  const Result r = jelly("run " + path + " --out " + out() + " --summary " + (dir_ / "s.csv").string());
+  const Result r =
+      jelly("run " + path + " --out " + out() + " --summary " + (dir_ / "s.csv").string());
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find(path), std::string::npos) << "message does not name the file:\n" << r.output;
-  EXPECT_NE(r.output.find(b.key), std::string::npos) << "message does not name " << b.key << ":\n" << r.output;
+  EXPECT_NE(r.output.find(path), std::string::npos) << "message does not name the file:\n"
+                                                    << r.output;
+  EXPECT_NE(r.output.find(b.key), std::string::npos) << "message does not name " << b.key << ":\n"
+                                                     << r.output;
   EXPECT_FALSE(fs::exists(out()));
   EXPECT_FALSE(fs::exists(dir_ / "s.csv"));
 }
@@ -129,7 +137,8 @@ TEST_P(CliBadScene, OneClearMessageNamingFileAndKeyAndNothingWritten) {
 INSTANTIATE_TEST_SUITE_P(
     Scenes, CliBadScene,
     ::testing::Values(BadInput{"malformed", "\nn = 10", "\nn = = 10", ":"},
-                      BadInput{"unknown_key", "\nn = 10", "\nn = 10\nrotation_degree = 3", "rotation_degree"},
+                      BadInput{"unknown_key", "\nn = 10", "\nn = 10\nrotation_degree = 3",
+                               "rotation_degree"},
                       BadInput{"wrong_type", "\nn = 10", "\nn = \"ten\"", "body.n"},
                       BadInput{"n_below_2", "\nn = 10", "\nn = 1", "body.n"},
                       BadInput{"negative_mass", "\nmass = 1.0", "\nmass = -1.0", "body.mass"},
@@ -159,7 +168,8 @@ TEST_F(Cli, BadOptionsAreNamedWithWhatTheyExpect) {
   }
   const Result missing = jelly("check");
   EXPECT_EQ(missing.code, 2);
-  EXPECT_NE(missing.output.find("jelly check: SCENE is required"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("jelly check: SCENE is required"), std::string::npos)
+      << missing.output;
   EXPECT_NE(missing.output.find("usage: jelly check SCENE"), std::string::npos) << missing.output;
   const Result help = jelly("params --help");
   EXPECT_EQ(help.code, 0);
@@ -175,8 +185,9 @@ TEST_F(Cli, MissingSceneFile) {
 
 TEST_F(Cli, ZeroLengthNormal) {
   const std::string p = (dir_ / "plane.toml").string();
-  std::ofstream(p) << "[body]\ntype = \"cube\"\nn = 3\n[[terrain]]\nname = \"floor\"\ntype = \"plane\"\n"
-                      "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\n";
+  std::ofstream(p)
+      << "[body]\ntype = \"cube\"\nn = 3\n[[terrain]]\nname = \"floor\"\ntype = \"plane\"\n"
+         "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\n";
   const Result r = jelly("run " + p + " --out " + out());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("normal"), std::string::npos) << r.output;
@@ -184,16 +195,19 @@ TEST_F(Cli, ZeroLengthNormal) {
 }
 
 TEST_F(Cli, BadSetValueIsRejectedBeforeAnythingRuns) {
-  const Result r = jelly("run " + scene("course-2023.toml") + " --set springs.shear.ks=-1 --out " + out());
+  const Result r =
+      jelly("run " + scene("course-2023.toml") + " --set springs.shear.ks=-1 --out " + out());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("springs.shear.ks"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out()));
 }
 
 TEST_F(Cli, UnstableRunStopsWithItsOwnExitCodeAndKeepsWhatItWrote) {
-  if (std::string(JELLY_CLI_TASKS) != "solutions") GTEST_SKIP() << "needs the reference integrators";
+  if (std::string(JELLY_CLI_TASKS) != "solutions")
+    GTEST_SKIP() << "needs the reference integrators";
   // The course's implicit Euler at h = 0.001 diverges after impact (contract §6).
-  const Result r = jelly("run " + scene("course-2023.toml") + " --integrator implicit_euler --every 100 --summary " + out());
+  const Result r = jelly("run " + scene("course-2023.toml") +
+                         " --integrator implicit_euler --every 100 --summary " + out());
   EXPECT_EQ(r.code, 3) << r.output;
   EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Implicit Euler"), std::string::npos) << r.output;
@@ -219,7 +233,8 @@ TEST_F(Cli, CheckPrintsTheStableStepOfEveryIntegrator) {
 TEST_F(Cli, ParamsListsDeclaredKeys) {
   const Result r = jelly("params " + scene("course-2023.toml"));
   ASSERT_EQ(r.code, 0) << r.output;
-  for (const char* k : {"body.center", "springs.shear.ks", "terrain.floor.restitution", "simulation.dt"})
+  for (const char* k :
+       {"body.center", "springs.shear.ks", "terrain.floor.restitution", "simulation.dt"})
     EXPECT_NE(r.output.find(k), std::string::npos) << k;
 }
 
@@ -227,7 +242,8 @@ TEST_F(Cli, ParamsListsDeclaredKeys) {
 // (session::resolve_scene): the same run either way.
 TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
   const std::string base = " --duration 0.02 --every 10 --quiet --out ";
-  const Result by_path = jelly("run " + scene("hard/n2.toml") + base + (dir_ / "path.csv").string());
+  const Result by_path =
+      jelly("run " + scene("hard/n2.toml") + base + (dir_ / "path.csv").string());
   const Result by_name = jelly("run hard/n2" + base + (dir_ / "name.csv").string());
   ASSERT_EQ(by_path.code, 0) << by_path.output;
   ASSERT_EQ(by_name.code, 0) << by_name.output;
@@ -242,8 +258,8 @@ TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
 TEST_F(Cli, AnUnknownSceneSaysWhatWasTriedAndListsTheKnownNames) {
   const Result r = jelly("run no-such-scene --out " + out());
   EXPECT_EQ(r.code, 2);
-  for (const char* part : {"no-such-scene: no such scene", "no-such-scene.toml", "known scenes:", "course-2023",
-                           "hard/stiff-springs"})
+  for (const char* part : {"no-such-scene: no such scene", "no-such-scene.toml",
+                           "known scenes:", "course-2023", "hard/stiff-springs"})
     EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing in:\n" << r.output;
   EXPECT_FALSE(fs::exists(out()));
 }

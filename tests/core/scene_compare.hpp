@@ -14,7 +14,8 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
   const auto num = [](double x) { return std::to_string(x); };
   const auto v3 = [&](const Vec3& v) { return num(v.x()) + "," + num(v.y()) + "," + num(v.z()); };
 #define JELLY_CMP(expr_a, expr_b, label, fmt) \
-  if (!((expr_a) == (expr_b))) return std::string(label) + ": " + fmt(expr_a) + " vs " + fmt(expr_b);
+  if (!((expr_a) == (expr_b)))                \
+    return std::string(label) + ": " + fmt(expr_a) + " vs " + fmt(expr_b);
   const auto str = [](const std::string& s) { return s; };
   const auto i = [](long long x) { return std::to_string(x); };
   JELLY_CMP(a.name, b.name, "name", str);
@@ -42,7 +43,8 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
     if (p.positions != q.positions) return "particles.positions differ";
     JELLY_CMP(p.velocities.cols(), q.velocities.cols(), "particles.velocities count", i);
     if (p.velocities != q.velocities) return "particles.velocities differ";
-    JELLY_CMP(static_cast<int>(p.spring_type), static_cast<int>(q.spring_type), "particles.spring_type", i);
+    JELLY_CMP(static_cast<int>(p.spring_type), static_cast<int>(q.spring_type),
+              "particles.spring_type", i);
     JELLY_CMP(p.springs.size(), q.springs.size(), "particles.springs count", i);
     for (std::size_t k = 0; k < p.springs.size(); ++k) {
       const std::string at = "particles.springs[" + std::to_string(k) + "]";
@@ -52,7 +54,9 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
     }
   }
   const std::pair<const SpringSettings*, const SpringSettings*> springs[] = {
-      {&a.structural, &b.structural}, {&a.shear, &b.shear}, {&a.shear_body, &b.shear_body},
+      {&a.structural, &b.structural},
+      {&a.shear, &b.shear},
+      {&a.shear_body, &b.shear_body},
       {&a.bending, &b.bending}};
   const char* names[] = {"structural", "shear", "shear_body", "bending"};
   for (int k = 0; k < 4; ++k) {

@@ -27,7 +27,8 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, Determinism, ::testing::ValuesIn(kAllIn
                          testing::integrator_param_name);
 
 TEST(Determinism, HashSeesALastBitChange) {
-  Simulator sim(build_world(testing::course_2023(), linked_tasks()), {IntegratorKind::ExplicitEuler, 0.001});
+  Simulator sim(build_world(testing::course_2023(), linked_tasks()),
+                {IntegratorKind::ExplicitEuler, 0.001});
   State s = sim.state();
   const std::uint64_t h0 = state_hash(s);
   s.x(1, 17) = std::nextafter(s.x(1, 17), 1e9);

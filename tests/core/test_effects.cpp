@@ -12,8 +12,8 @@ namespace {
 
 // Call counts of a wrapped task table (a test-only recording pipeline).
 struct Calls {
-  long structural = 0, shear = 0, bending = 0, accumulate = 0, collide_plane = 0,
-       collide_bowl = 0, contact_plane = 0, contact_bowl = 0;
+  long structural = 0, shear = 0, bending = 0, accumulate = 0, collide_plane = 0, collide_bowl = 0,
+       contact_plane = 0, contact_bowl = 0;
 };
 Calls g_calls;
 TaskTable g_inner;
@@ -22,15 +22,39 @@ TaskTable counting_table() {
   g_inner = linked_tasks();
   g_calls = {};
   TaskTable t = g_inner;
-  t.add_structural_springs = [](const CubeLattice& c, std::vector<Spring>& o) { ++g_calls.structural; g_inner.add_structural_springs(c, o); };
-  t.add_shear_springs = [](const CubeLattice& c, std::vector<Spring>& o) { ++g_calls.shear; g_inner.add_shear_springs(c, o); };
-  t.add_bending_springs = [](const CubeLattice& c, std::vector<Spring>& o) { ++g_calls.bending; g_inner.add_bending_springs(c, o); };
-  t.accumulate_spring_forces = [](const SpringGroup& g, const State& s, Vec3Array& f) { ++g_calls.accumulate; g_inner.accumulate_spring_forces(g, s, f); };
+  t.add_structural_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+    ++g_calls.structural;
+    g_inner.add_structural_springs(c, o);
+  };
+  t.add_shear_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+    ++g_calls.shear;
+    g_inner.add_shear_springs(c, o);
+  };
+  t.add_bending_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+    ++g_calls.bending;
+    g_inner.add_bending_springs(c, o);
+  };
+  t.accumulate_spring_forces = [](const SpringGroup& g, const State& s, Vec3Array& f) {
+    ++g_calls.accumulate;
+    g_inner.accumulate_spring_forces(g, s, f);
+  };
   t.make_spring_group_pass = nullptr;  // count group by group (the engine gives the same forces)
-  t.collide_plane = [](const Plane& p, const Vec3& x, Vec3& v) { ++g_calls.collide_plane; return g_inner.collide_plane(p, x, v); };
-  t.collide_bowl = [](const Bowl& b, const Vec3& x, Vec3& v) { ++g_calls.collide_bowl; return g_inner.collide_bowl(b, x, v); };
-  t.contact_plane = [](const Plane& p, const Vec3& x, const Vec3& v, Vec3& f) { ++g_calls.contact_plane; return g_inner.contact_plane(p, x, v, f); };
-  t.contact_bowl = [](const Bowl& b, const Vec3& x, const Vec3& v, Vec3& f) { ++g_calls.contact_bowl; return g_inner.contact_bowl(b, x, v, f); };
+  t.collide_plane = [](const Plane& p, const Vec3& x, Vec3& v) {
+    ++g_calls.collide_plane;
+    return g_inner.collide_plane(p, x, v);
+  };
+  t.collide_bowl = [](const Bowl& b, const Vec3& x, Vec3& v) {
+    ++g_calls.collide_bowl;
+    return g_inner.collide_bowl(b, x, v);
+  };
+  t.contact_plane = [](const Plane& p, const Vec3& x, const Vec3& v, Vec3& f) {
+    ++g_calls.contact_plane;
+    return g_inner.contact_plane(p, x, v, f);
+  };
+  t.contact_bowl = [](const Bowl& b, const Vec3& x, const Vec3& v, Vec3& f) {
+    ++g_calls.contact_bowl;
+    return g_inner.contact_bowl(b, x, v, f);
+  };
   return t;
 }
 
@@ -54,12 +78,15 @@ TEST(Effects, StructuralOnlyCubeBuildsAndEvaluatesOnlyStructuralSprings) {
 }
 
 TEST(Effects, NoTerrainMeansNoCollisionOrContactPass) {
-  Simulator sim(build_world(testing::free_fall(), counting_table()), {IntegratorKind::Midpoint, 0.001});
+  Simulator sim(build_world(testing::free_fall(), counting_table()),
+                {IntegratorKind::Midpoint, 0.001});
   sim.run_until(0.05);
   const EffectCounters& c = sim.world().counters();
   EXPECT_EQ(c.collision_passes, 0);
   EXPECT_TRUE(c.collision_queries.empty());
-  EXPECT_EQ(g_calls.collide_plane + g_calls.collide_bowl + g_calls.contact_plane + g_calls.contact_bowl, 0);
+  EXPECT_EQ(
+      g_calls.collide_plane + g_calls.collide_bowl + g_calls.contact_plane + g_calls.contact_bowl,
+      0);
   EXPECT_EQ(c.gravity_applications, c.acceleration_evaluations);
 }
 
@@ -88,7 +115,8 @@ TEST(Effects, TerrainWithCollisionOffIsNeverAskedForCollision) {
 
 TEST(Effects, BroadPhaseSkipsTerrainsTheCubeCannotTouch) {
   // In free fall above the floor no particle is within ε of any terrain: nothing is queried.
-  Simulator sim(build_world(testing::course_2023(), counting_table()), {IntegratorKind::ExplicitEuler, 0.001});
+  Simulator sim(build_world(testing::course_2023(), counting_table()),
+                {IntegratorKind::ExplicitEuler, 0.001});
   sim.run_until(0.1);
   const EffectCounters& c = sim.world().counters();
   EXPECT_EQ(c.collision_queries[0] + c.collision_queries[1], 0);

@@ -37,7 +37,8 @@ TEST_P(ForcesFD, SpringForceIsMinusEnergyGradient) {
     Vec3 plus = s.x.col(0), minus = s.x.col(0);
     plus[d] += h;
     minus[d] -= h;
-    const double grad = (spring_energy(plus, s.x.col(1)) - spring_energy(minus, s.x.col(1))) / (2 * h);
+    const double grad =
+        (spring_energy(plus, s.x.col(1)) - spring_energy(minus, s.x.col(1))) / (2 * h);
     EXPECT_NEAR(f[d], -grad, 1e-5 * (1.0 + std::abs(grad))) << "component " << d;
   }
 }
@@ -55,7 +56,8 @@ TEST_P(ForcesFD, DamperForceMatchesItsVelocityJacobian) {
     const Vec3 fd = (t.damper_force(s.x.col(0), s.x.col(1), plus, s.v.col(1), kKd, kDegenerate) -
                      t.damper_force(s.x.col(0), s.x.col(1), minus, s.v.col(1), kKd, kDegenerate)) /
                     (2 * h);
-    EXPECT_TRUE(fd.isApprox(dfdv.col(d), 1e-7)) << fd.transpose() << " vs " << dfdv.col(d).transpose();
+    EXPECT_TRUE(fd.isApprox(dfdv.col(d), 1e-7))
+        << fd.transpose() << " vs " << dfdv.col(d).transpose();
   }
   // And the value itself: −kd ((va − vb)·u) u.
   const Vec3 f = t.damper_force(s.x.col(0), s.x.col(1), s.v.col(0), s.v.col(1), kKd, kDegenerate);

@@ -49,7 +49,8 @@ TEST(FreeFall, ContractTableValues) {
 
 TEST_P(FreeFall, FreeFallSystemGivesTheSameNumbers) {
   const IntegratorKind kind = GetParam();
-  if (kind == IntegratorKind::BackwardEuler) GTEST_SKIP() << "backward Euler steps Worlds via the Simulator";
+  if (kind == IntegratorKind::BackwardEuler)
+    GTEST_SKIP() << "backward Euler steps Worlds via the Simulator";
   FreeFallSystem sys(1, Vec3(0.0, -9.8, 0.0));
   State s;
   s.resize(1);
@@ -91,13 +92,16 @@ TEST_P(Convergence, ObservedOrderWithinPointThreeOfTheory) {
   EXPECT_LT(e4, error_at_one_second(kind, 1e-2));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    TwoParticleSpring, Convergence,
-    ::testing::Values(OrderCase{IntegratorKind::ExplicitEuler, 1}, OrderCase{IntegratorKind::ImplicitEuler, 1},
-                      OrderCase{IntegratorKind::Midpoint, 2}, OrderCase{IntegratorKind::RK4, 4},
-                      OrderCase{IntegratorKind::SymplecticEuler, 1},
-                      OrderCase{IntegratorKind::BackwardEuler, 1}),
-    [](const ::testing::TestParamInfo<OrderCase>& p) { return std::string(to_string(p.param.kind)); });
+INSTANTIATE_TEST_SUITE_P(TwoParticleSpring, Convergence,
+                         ::testing::Values(OrderCase{IntegratorKind::ExplicitEuler, 1},
+                                           OrderCase{IntegratorKind::ImplicitEuler, 1},
+                                           OrderCase{IntegratorKind::Midpoint, 2},
+                                           OrderCase{IntegratorKind::RK4, 4},
+                                           OrderCase{IntegratorKind::SymplecticEuler, 1},
+                                           OrderCase{IntegratorKind::BackwardEuler, 1}),
+                         [](const ::testing::TestParamInfo<OrderCase>& p) {
+                           return std::string(to_string(p.param.kind));
+                         });
 
 TEST(LinearTwoParticleSpring, MatchesTheNonlinearSpringAlongItsAxis) {
   auto lin = make_linear_two_particle_spring(0.1);

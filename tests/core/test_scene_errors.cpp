@@ -49,7 +49,9 @@ std::string with(const std::string& from, const std::string& to) {
   return s;
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 TEST(SceneErrors, TheBaseSceneIsValid) { EXPECT_TRUE(parse_scene(kBase, "base.toml")); }
 
@@ -80,7 +82,8 @@ TEST(SceneErrors, MalformedTomlGivesTheLine) {
 }
 
 TEST(SceneErrors, UnknownKeySuggestsTheDeclaredOne) {
-  const SceneError e = error_of(with("center = [0, 5, 0]", "center = [0, 5, 0]\nrotation_degree = 30"));
+  const SceneError e =
+      error_of(with("center = [0, 5, 0]", "center = [0, 5, 0]\nrotation_degree = 30"));
   EXPECT_EQ(e.key, "body.rotation_degree");
   EXPECT_EQ(e.line, 17);
   EXPECT_TRUE(contains(e.message, "unknown key")) << e.message;
@@ -178,7 +181,8 @@ TEST(SceneErrors, MoreRanges) {
 }
 
 TEST(SceneErrors, BowlRimMustBeInsideTheSphere) {
-  const std::string bowl = "\n[[terrain]]\nname = \"cup\"\ntype = \"bowl\"\ncenter = [0, 3, 0]\nradius = 2\n";
+  const std::string bowl =
+      "\n[[terrain]]\nname = \"cup\"\ntype = \"bowl\"\ncenter = [0, 3, 0]\nradius = 2\n";
   EXPECT_TRUE(parse_scene(kBase + bowl + "rim_height = 3\n", "ok"));
   EXPECT_TRUE(parse_scene(kBase + bowl + "rim_height = 1.5\n", "ok"));
   for (const char* rim : {"rim_height = 3.5\n", "rim_height = 1\n", "rim_height = 0\n"}) {
@@ -192,11 +196,14 @@ TEST(SceneErrors, BowlRimMustBeInsideTheSphere) {
 
 TEST(SceneErrors, TerrainEntries) {
   // A hole needs both keys.
-  SceneError e = error_of(kBase + "\n[[terrain]]\nname = \"p\"\ntype = \"plane\"\nhole_radius = 2\n");
+  SceneError e =
+      error_of(kBase + "\n[[terrain]]\nname = \"p\"\ntype = \"plane\"\nhole_radius = 2\n");
   EXPECT_EQ(e.key, "terrain.p.hole_radius");
   EXPECT_TRUE(contains(e.message, "hole_center is missing")) << e.message;
   // Names are unique.
-  e = error_of(kBase + "\n[[terrain]]\npreset = \"course-2021-plane\"\n[[terrain]]\npreset = \"course-2021-tilted\"\nname = \"plane\"\n");
+  e = error_of(kBase +
+               "\n[[terrain]]\npreset = \"course-2021-plane\"\n[[terrain]]\npreset = "
+               "\"course-2021-tilted\"\nname = \"plane\"\n");
   EXPECT_EQ(e.key, "terrain.plane");
   EXPECT_EQ(e.line, 26);
   EXPECT_TRUE(contains(e.message, "unique")) << e.message;
@@ -237,7 +244,8 @@ TEST(SceneErrors, ParticleBodies) {
   EXPECT_EQ(e.line, 4);
   EXPECT_TRUE(contains(e.message, "expected two different indices in 0..1")) << e.message;
 
-  e = error_of(head + "springs = [[0, 4294967297]]\n" + coeffs);  // must not wrap to a valid int index (1)
+  e = error_of(head + "springs = [[0, 4294967297]]\n" +
+               coeffs);  // must not wrap to a valid int index (1)
   EXPECT_EQ(e.key, "body.springs");
   e = error_of(head + "springs = [[1, 1]]\n" + coeffs);
   EXPECT_EQ(e.key, "body.springs");
@@ -258,7 +266,9 @@ TEST(SceneErrors, ParticleBodies) {
   EXPECT_EQ(e.line, 3);
   EXPECT_TRUE(contains(e.message, "element 1")) << e.message;
   // Two particles at one place need an explicit rest length.
-  e = error_of("[body]\ntype = \"particles\"\npositions = [[0, 0, 0], [0, 0, 0]]\nsprings = [[0, 1]]\n" + coeffs);
+  e = error_of(
+      "[body]\ntype = \"particles\"\npositions = [[0, 0, 0], [0, 0, 0]]\nsprings = [[0, 1]]\n" +
+      coeffs);
   EXPECT_EQ(e.key, "body.rest_lengths");
 }
 
@@ -271,7 +281,8 @@ TEST(SceneErrors, NonAsciiOnlyInStringsAndComments) {
   ASSERT_TRUE(ok) << ok.error->text();
   EXPECT_EQ(ok.scene->name, "é \" é");
   EXPECT_EQ(ok.scene->description, "é ");
-  const SceneResult ml = parse_scene("[scene]\ndescription = \"\"\"\né\"\"\"\"\" # two quotes of content\n", "ml");
+  const SceneResult ml =
+      parse_scene("[scene]\ndescription = \"\"\"\né\"\"\"\"\" # two quotes of content\n", "ml");
   ASSERT_TRUE(ml) << ml.error->text();
   EXPECT_EQ(ml.scene->description, "é\"\"");
   // Outside them: an error with the place (toml++ 3.3.0 misbehaves on some of these).
@@ -284,7 +295,7 @@ TEST(SceneErrors, NonAsciiOnlyInStringsAndComments) {
 }
 
 TEST(SceneErrors, TheFirstErrorInTheFileIsReported) {
-  std::string text = with("n = 4", "n = 1");           // line 14
+  std::string text = with("n = 4", "n = 1");                   // line 14
   text = text.replace(text.find("dt = 0.001"), 10, "dt = 0");  // line 6
   const SceneError e = error_of(text);
   EXPECT_EQ(e.key, "simulation.dt");
@@ -293,7 +304,8 @@ TEST(SceneErrors, TheFirstErrorInTheFileIsReported) {
 
 TEST(SceneErrors, GarbageNeverThrows) {
   for (const std::string& text :
-       {std::string("\0\1\2", 3), std::string("[[[[["), std::string("a = [[[[1]]]]\n[[[[\n"), std::string("[ #\n"), std::string("a = [[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]"),
+       {std::string("\0\1\2", 3), std::string("[[[[["), std::string("a = [[[[1]]]]\n[[[[\n"),
+        std::string("[ #\n"), std::string("a = [[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]"),
         std::string("[body]\npositions = 1e999\n"), std::string("\xff\xfe"),
         std::string("[[terrain]]\n[[terrain]]\n"), std::string("[springs]\nstructural = 3\n")}) {
     SceneResult r;

@@ -128,8 +128,9 @@ TEST(SceneLoader, Course2021ScenesHaveOneTerrainEach) {
     const char* terrain;
     std::size_t shape_index;  // 0 plane, 1 bowl, 2 sphere
   };
-  for (const Case& c : {Case{"course-2021-plane.toml", "plane", 0}, Case{"course-2021-sphere.toml", "sphere", 2},
-                        Case{"course-2021-bowl.toml", "bowl", 1}, Case{"course-2021-tilted.toml", "tilted", 0}}) {
+  for (const Case& c :
+       {Case{"course-2021-plane.toml", "plane", 0}, Case{"course-2021-sphere.toml", "sphere", 2},
+        Case{"course-2021-bowl.toml", "bowl", 1}, Case{"course-2021-tilted.toml", "tilted", 0}}) {
     SCOPED_TRACE(c.file);
     const SceneSpec s = load_ok(c.file);
     EXPECT_EQ(s.cube.center, Vec3(0.0, 9.0, 0.0));
@@ -290,7 +291,8 @@ center = [0, 5, 0]
   ASSERT_TRUE(g);
   ASSERT_TRUE(g.scene->gravity);
   EXPECT_EQ(*g.scene->gravity, Vec3(0.0, -9.8, 0.0));
-  const SceneResult off = parse_scene("[gravity]\nenabled = false\n[springs.shear]\nenabled = false\n", "g");
+  const SceneResult off =
+      parse_scene("[gravity]\nenabled = false\n[springs.shear]\nenabled = false\n", "g");
   ASSERT_TRUE(off) << off.error->text();
   EXPECT_FALSE(off.scene->gravity);
   EXPECT_FALSE(off.scene->shear.enabled);

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,18 +39,37 @@ TEST(SceneParams, CourseSceneListsItsKeysInAStableOrder) {
   const std::vector<std::string> keys = keys_of(s);
   ASSERT_GE(keys.size(), 10u);
   const std::vector<std::string> head(keys.begin(), keys.begin() + 8);
-  EXPECT_EQ(head, (std::vector<std::string>{"scene.name", "scene.description", "simulation.integrator",
-                                            "simulation.dt", "simulation.duration",
-                                            "simulation.auto_dt", "gravity.enabled",
-                                            "gravity.acceleration"}));
-  for (const char* k : {"body.type", "body.n", "body.edge", "body.mass", "body.center", "body.velocity",
-                        "body.rotation_axis", "body.rotation_degrees", "springs.structural.enabled",
-                        "springs.structural.ks", "springs.shear.kd", "springs.bending.ks",
-                        "springs.shear_body.enabled", "terrain.floor.type", "terrain.floor.point",
-                        "terrain.floor.normal", "terrain.floor.hole_center", "terrain.floor.hole_radius",
-                        "terrain.floor.epsilon", "terrain.floor.restitution", "terrain.floor.friction",
-                        "terrain.floor.collision", "terrain.floor.contact", "terrain.floor.project",
-                        "terrain.bowl.center", "terrain.bowl.radius", "terrain.bowl.rim_height"})
+  EXPECT_EQ(head,
+            (std::vector<std::string>{"scene.name", "scene.description", "simulation.integrator",
+                                      "simulation.dt", "simulation.duration", "simulation.auto_dt",
+                                      "gravity.enabled", "gravity.acceleration"}));
+  for (const char* k : {"body.type",
+                        "body.n",
+                        "body.edge",
+                        "body.mass",
+                        "body.center",
+                        "body.velocity",
+                        "body.rotation_axis",
+                        "body.rotation_degrees",
+                        "springs.structural.enabled",
+                        "springs.structural.ks",
+                        "springs.shear.kd",
+                        "springs.bending.ks",
+                        "springs.shear_body.enabled",
+                        "terrain.floor.type",
+                        "terrain.floor.point",
+                        "terrain.floor.normal",
+                        "terrain.floor.hole_center",
+                        "terrain.floor.hole_radius",
+                        "terrain.floor.epsilon",
+                        "terrain.floor.restitution",
+                        "terrain.floor.friction",
+                        "terrain.floor.collision",
+                        "terrain.floor.contact",
+                        "terrain.floor.project",
+                        "terrain.bowl.center",
+                        "terrain.bowl.radius",
+                        "terrain.bowl.rim_height"})
     EXPECT_TRUE(has(keys, k)) << k;
   // Keys of absent effects and of other shapes/kinds are not parameters of this scene.
   for (const char* k : {"springs.shear_body.ks", "terrain.floor.radius", "terrain.bowl.normal",
@@ -60,7 +79,9 @@ TEST(SceneParams, CourseSceneListsItsKeysInAStableOrder) {
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()).size(), keys.size());
   EXPECT_EQ(keys_of(s), keys);
   // Terrain keys follow scene order: floor's before bowl's.
-  const auto pos = [&](const std::string& k) { return std::find(keys.begin(), keys.end(), k) - keys.begin(); };
+  const auto pos = [&](const std::string& k) {
+    return std::find(keys.begin(), keys.end(), k) - keys.begin();
+  };
   EXPECT_LT(pos("terrain.floor.project"), pos("terrain.bowl.type"));
   EXPECT_LT(pos("springs.structural.kd"), pos("springs.shear.enabled"));
 }
@@ -194,9 +215,12 @@ TEST(SceneParams, SetParsesByTypeAndValidatesLikeTheFile) {
   expect_error("terrain.floor.restitution", "1.5", "terrain.floor.restitution", "≤ 1");
   expect_error("terrain.floor.contact", "yes", "terrain.floor.contact", "true or false");
   expect_error("terrain.bowl.rim_height", "7", "terrain.bowl.rim_height", "rim_height ≤ center.y");
-  expect_error("terrain.bowl.radius", "1", "terrain.bowl.rim_height", "after setting terrain.bowl.radius=1");
-  expect_error("body.rotation_degree", "30", "body.rotation_degree", "did you mean \"body.rotation_degrees\"");
-  expect_error("springs.shear_body.ks", "5", "springs.shear_body.ks", "springs.shear_body.enabled=true");
+  expect_error("terrain.bowl.radius", "1", "terrain.bowl.rim_height",
+               "after setting terrain.bowl.radius=1");
+  expect_error("body.rotation_degree", "30", "body.rotation_degree",
+               "did you mean \"body.rotation_degrees\"");
+  expect_error("springs.shear_body.ks", "5", "springs.shear_body.ks",
+               "springs.shear_body.enabled=true");
   expect_error("body.positions", "0,0,0", "body.positions", "particles body");
   expect_error("terrain.floor.radius", "3", "terrain.floor.radius", "plane");
   expect_error("body.type", "particles", "body.positions", "at least one position");
@@ -284,7 +308,8 @@ TEST(SceneParams, DeclaredDefaultsAreTheDefaultsTheCodeUses) {
   // A scene with every effect on, built from the structs' own defaults.
   SceneSpec s;
   s.gravity = Vec3(0.0, -9.8, 0.0);
-  for (SpringSettings* st : {&s.structural, &s.shear, &s.shear_body, &s.bending}) st->enabled = true;
+  for (SpringSettings* st : {&s.structural, &s.shear, &s.shear_body, &s.bending})
+    st->enabled = true;
   s.terrains = {Terrain{"p", Plane{}}, Terrain{"b", Bowl{}}, Terrain{"s", Sphere{}}};
   int checked = 0;
   for (const ParamInfo& p : scene_parameters(s)) {
@@ -292,20 +317,22 @@ TEST(SceneParams, DeclaredDefaultsAreTheDefaultsTheCodeUses) {
     SceneSpec copy = s;
     const auto e = set_parameter(copy, p.key, p.default_text);
     ASSERT_FALSE(e) << p.key << ": " << e->text();
-    EXPECT_EQ(testing::scene_difference(copy, s), "") << p.key << " declared default " << p.default_text
-                                                      << " differs from the code's default";
+    EXPECT_EQ(testing::scene_difference(copy, s), "")
+        << p.key << " declared default " << p.default_text << " differs from the code's default";
     ++checked;
   }
   EXPECT_GT(checked, 25);
   // Effects are off by default (an absent table), as declared.
   const SceneSpec plain;
-  EXPECT_EQ(get_parameter(plain, "gravity.enabled"), find_parameter(plain, "gravity.enabled")->default_text);
+  EXPECT_EQ(get_parameter(plain, "gravity.enabled"),
+            find_parameter(plain, "gravity.enabled")->default_text);
   EXPECT_EQ(get_parameter(plain, "springs.shear.enabled"),
             find_parameter(plain, "springs.shear.enabled")->default_text);
   // The default gravity that gravity.enabled=true adds is the declared one.
   SceneSpec g;
   ASSERT_EQ(set_parameter(g, "gravity.enabled", "true"), std::nullopt);
-  EXPECT_EQ(get_parameter(g, "gravity.acceleration"), find_parameter(g, "gravity.acceleration")->default_text);
+  EXPECT_EQ(get_parameter(g, "gravity.acceleration"),
+            find_parameter(g, "gravity.acceleration")->default_text);
 }
 
 }  // namespace
@@ -356,7 +383,8 @@ TEST(SceneParams, DocsTableIsTheDeclarationTable) {
   for (const ParamInfo& p : scene_parameters(scene("course-2023.toml"))) {
     std::string key = p.key;
     for (const char* t : {"floor", "bowl"})
-      if (key.rfind(std::string("terrain.") + t + ".", 0) == 0) key.replace(8, std::string(t).size(), "<name>");
+      if (key.rfind(std::string("terrain.") + t + ".", 0) == 0)
+        key.replace(8, std::string(t).size(), "<name>");
     for (const char* t : {"structural", "shear_body", "shear", "bending"})
       if (key.rfind(std::string("springs.") + t + ".", 0) == 0) {
         key.replace(8, std::string(t).size(), "<type>");

@@ -107,9 +107,9 @@ TEST(SpringPass, LoneSpringHasTheBitsOfTheTaskFunctions) {
   Vec3Array f = Vec3Array::Zero(3, fx.s.size());
   new_engine()->accumulate(&one, 1, fx.s, f);
   const Vec3 xa = fx.s.x.col(sp.a), xb = fx.s.x.col(sp.b);
-  const Vec3 fa = t.spring_force(xa, xb, one.ks, sp.rest_length, one.degenerate_length) +
-                  t.damper_force(xa, xb, fx.s.v.col(sp.a), fx.s.v.col(sp.b), one.kd,
-                                 one.degenerate_length);
+  const Vec3 fa =
+      t.spring_force(xa, xb, one.ks, sp.rest_length, one.degenerate_length) +
+      t.damper_force(xa, xb, fx.s.v.col(sp.a), fx.s.v.col(sp.b), one.kd, one.degenerate_length);
   EXPECT_GT(fa.norm(), 0.0);
   EXPECT_EQ(f.col(sp.a), fa);
   EXPECT_EQ(f.col(sp.b), -fa);

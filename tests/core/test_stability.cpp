@@ -34,7 +34,8 @@ TEST(StabilityEstimate, UndampedSpringHasNoStableExplicitEulerStep) {
   const StabilityEstimate e = estimate_stability(*world, world->state());
   EXPECT_EQ(e.critical_step(IntegratorKind::ExplicitEuler), 0.0);
   EXPECT_EQ(e.critical_step(IntegratorKind::Midpoint), 0.0);
-  // The course's implicit Euler keeps |hω| ≤ 1 of the imaginary axis (|1 + iy − y²|² = 1 − y² + y⁴).
+  // The course's implicit Euler keeps |hω| ≤ 1 of the imaginary axis (|1 + iy − y²|² = 1 − y² +
+  // y⁴).
   EXPECT_NEAR(e.critical_step(IntegratorKind::ImplicitEuler) * e.omega_max, 1.0, 1e-12);
   // RK4 on the imaginary axis: h ω ≤ 2√2; symplectic Euler: h ω < 2.
   EXPECT_NEAR(e.critical_step(IntegratorKind::RK4) * e.omega_max, 2.0 * std::sqrt(2.0), 0.01);
@@ -42,8 +43,10 @@ TEST(StabilityEstimate, UndampedSpringHasNoStableExplicitEulerStep) {
 }
 
 TEST(StabilityMonitor, ExplicitEulerFreeFallDriftDoesNotTripIt) {
-  Simulator sim(build_world(testing::free_fall(), linked_tasks()), {IntegratorKind::ExplicitEuler, 0.001});
-  Simulator fresh(build_world(testing::free_fall(), linked_tasks()), {IntegratorKind::ExplicitEuler, 0.001});
+  Simulator sim(build_world(testing::free_fall(), linked_tasks()),
+                {IntegratorKind::ExplicitEuler, 0.001});
+  Simulator fresh(build_world(testing::free_fall(), linked_tasks()),
+                  {IntegratorKind::ExplicitEuler, 0.001});
   const double e0 = fresh.energy().total();
   EXPECT_EQ(sim.run_until(1.0), StepResult::Ok);
   // Contract §8: ½ g² h² N per unit mass (N = 1000 steps), 0.036 % of E0 here: below the margin.
@@ -55,7 +58,8 @@ TEST(StabilityMonitor, ExplicitEulerFreeFallDriftDoesNotTripIt) {
 TEST(StabilityMonitor, ExplicitEulerBeyondItsLimitIsStoppedQuickly) {
   // h = 0.0025 is beyond explicit Euler's limit (≈ 0.0021 s); the run must stop in free fall,
   // before the cube reaches the floor at ≈ 1.4 s (growth starts from rounding noise).
-  Simulator sim(build_world(testing::free_fall(), linked_tasks()), {IntegratorKind::ExplicitEuler, 0.0025});
+  Simulator sim(build_world(testing::free_fall(), linked_tasks()),
+                {IntegratorKind::ExplicitEuler, 0.0025});
   ASSERT_EQ(sim.run_until(1.0), StepResult::Unstable);
   EXPECT_LT(sim.instability()->time, 1.0);
   EXPECT_LT(sim.instability()->recommended_step, 0.0025);

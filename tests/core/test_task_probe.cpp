@@ -11,8 +11,8 @@ TEST(TaskProbe, ReferenceSolutionHasAllThirteenTasks) {
   ASSERT_EQ(statuses.size(), 13u);
   for (std::size_t i = 0; i < statuses.size(); ++i) {
     EXPECT_EQ(statuses[i].id, "A1.T" + std::to_string(i + 1));
-    EXPECT_TRUE(statuses[i].implemented) << statuses[i].id << " " << statuses[i].name << ": "
-                                         << statuses[i].evidence;
+    EXPECT_TRUE(statuses[i].implemented)
+        << statuses[i].id << " " << statuses[i].name << ": " << statuses[i].evidence;
   }
   EXPECT_TRUE(missing_task_ids(statuses).empty());
 }

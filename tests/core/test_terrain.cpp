@@ -1,7 +1,8 @@
-// The framework's own terrain geometry (framework/core/src/terrain.cpp, jelly/terrain_geometry.hpp):
-// signed distance, normal, extent, lowest point and the broad phase's bounds, on the course's
-// terrains (the 2023 floor with its hole, the 2023 bowl) and a sphere. The viewer draws with these,
-// the projection effect moves particles with them and the energy is measured from lowest_point.
+// The framework's own terrain geometry (framework/core/src/terrain.cpp,
+// jelly/terrain_geometry.hpp): signed distance, normal, extent, lowest point and the broad phase's
+// bounds, on the course's terrains (the 2023 floor with its hole, the 2023 bowl) and a sphere. The
+// viewer draws with these, the projection effect moves particles with them and the energy is
+// measured from lowest_point.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -4,10 +4,10 @@
 //
 // Lines "#set key=value" in the input (TOML comments, so the loader ignores them) are applied
 // with set_parameter after loading, to fuzz the --set path too.
-#include <cstdint>
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <string_view>
@@ -45,7 +45,8 @@ void check_valid(const jelly::SceneSpec& s) {
         fail("bowl rim outside the sphere", t.name);
     }
     const jelly::SurfaceProperties& sp = t.surface();
-    if (!(sp.epsilon > 0.0) || !(sp.restitution >= 0.0 && sp.restitution <= 1.0) || !(sp.friction >= 0.0))
+    if (!(sp.epsilon > 0.0) || !(sp.restitution >= 0.0 && sp.restitution <= 1.0) ||
+        !(sp.friction >= 0.0))
       fail("bad surface", t.name);
   }
 }

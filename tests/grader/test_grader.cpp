@@ -50,11 +50,13 @@ fs::path submission(const std::string& name, const fs::path& overlay = {}) {
   const fs::path dir = kWork / "submissions" / name;
   fs::remove_all(dir);
   fs::create_directories(dir / "nested" / "src");
-  for (const char* f : {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"})
+  for (const char* f :
+       {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"})
     fs::copy_file(kSource / "solutions" / f, dir / "nested" / "src" / f);
   if (!overlay.empty())
     for (const auto& e : fs::directory_iterator(overlay))
-      fs::copy_file(e.path(), dir / "nested" / "src" / e.path().filename(), fs::copy_options::overwrite_existing);
+      fs::copy_file(e.path(), dir / "nested" / "src" / e.path().filename(),
+                    fs::copy_options::overwrite_existing);
   std::ofstream(dir / "README.txt") << "not graded\n";
   return dir;
 }
@@ -128,11 +130,13 @@ TEST(Grader, BadCommandLinesNameTheOptionAndExitTwo) {
     const char* args;
     const char* message;
   } cases[] = {
-      {"grade x --format terminal,pdf", "jelly-grade grade: --format: expected one of terminal, gradescope, "
-                                         "prairielearn, junit, markdown, html, got 'pdf'"},
+      {"grade x --format terminal,pdf",
+       "jelly-grade grade: --format: expected one of terminal, gradescope, "
+       "prairielearn, junit, markdown, html, got 'pdf'"},
       {"grade x --table t.md", "jelly-grade grade: unknown option --table"},
       {"grade x --timeout 0", "jelly-grade grade: --timeout: expected a number > 0, got '0'"},
-      {"grade x --compile-memory 10", "jelly-grade grade: --compile-memory: expected a number ≥ 64, got '10'"},
+      {"grade x --compile-memory 10",
+       "jelly-grade grade: --compile-memory: expected a number ≥ 64, got '10'"},
       {"grade x --jobs", "jelly-grade grade: --jobs needs a value (N)"},
       {"grade", "jelly-grade grade: SUBMISSION_DIR is required"},
       {"batch in", "jelly-grade batch: --out is required"},
@@ -152,7 +156,8 @@ TEST(Grader, BadCommandLinesNameTheOptionAndExitTwo) {
 TEST(Grader, ReferenceScoresFullMarksAndOutputsHaveTheirSchemas) {
   const Json r = grade(submission("reference"), "reference");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
-  for (const Json& t : r["tests"]) EXPECT_EQ(t["status"], "passed") << t["name"] << "\n" << t["output"];
+  for (const Json& t : r["tests"])
+    EXPECT_EQ(t["status"], "passed") << t["name"] << "\n" << t["output"];
   check_gradescope_schema(r);
   const fs::path out = kWork / "out" / "reference";
   check_prairielearn_schema(read_json(out / "prairielearn.json"));
@@ -196,9 +201,10 @@ TEST(Grader, PublicVisibilityRunsOnlyPublicTests) {
 
 struct Hostile {
   const char* name;
-  const char* case_id;         // a test of the attacked task
-  const char* message;         // what its output must say
-  const char* file_tasks;      // the tasks of the attacked file ("A1.T1 A1.T2 "): only these may lose points
+  const char* case_id;  // a test of the attacked task
+  const char* message;  // what its output must say
+  const char*
+      file_tasks;  // the tasks of the attacked file ("A1.T1 A1.T2 "): only these may lose points
 };
 
 class HostileSubmission : public ::testing::TestWithParam<Hostile> {};
@@ -206,7 +212,8 @@ class HostileSubmission : public ::testing::TestWithParam<Hostile> {};
 TEST_P(HostileSubmission, FailsItsTestsWithAClearMessageAndTheRestStillRun) {
   const Hostile h = GetParam();
   fs::remove("/tmp/jelly-grade-hostile-was-here");
-  const Json r = grade(submission(h.name, kSource / "grader" / "tests" / "hostile" / h.name), h.name, "--timeout 3");
+  const Json r = grade(submission(h.name, kSource / "grader" / "tests" / "hostile" / h.name),
+                       h.name, "--timeout 3");
   check_gradescope_schema(r);
   const Json* t = find_test(r, h.case_id);
   ASSERT_NE(t, nullptr) << r.dump(1);
@@ -224,26 +231,33 @@ INSTANTIATE_TEST_SUITE_P(
     Grader, HostileSubmission,
     ::testing::Values(
         Hostile{"segfault", "a1.t4.spring_force.values", "crashed with SIGSEGV", "A1.T4 A1.T5 "},
-        Hostile{"infinite_loop", "a1.t13.rk4.free_fall", "took longer than 3 s", "A1.T10 A1.T11 A1.T12 A1.T13 "},
+        Hostile{"infinite_loop", "a1.t13.rk4.free_fall", "took longer than 3 s",
+                "A1.T10 A1.T11 A1.T12 A1.T13 "},
         Hostile{"exit_in_function", "a1.t6.collide_plane.eps", "exit() called?", "A1.T6 A1.T7 "},
-        Hostile{"huge_output", "a1.t1.structural.n3", "printed more than 64 MiB", "A1.T1 A1.T2 A1.T3 "},
-        Hostile{"read_reference", "a1.t8.contact_plane.eps", "tried to open a file", "A1.T8 A1.T9 "},
+        Hostile{"huge_output", "a1.t1.structural.n3", "printed more than 64 MiB",
+                "A1.T1 A1.T2 A1.T3 "},
+        Hostile{"read_reference", "a1.t8.contact_plane.eps", "tried to open a file",
+                "A1.T8 A1.T9 "},
         Hostile{"write_outside", "a1.t2.shear.n3", "tried to open a file", "A1.T1 A1.T2 A1.T3 "}),
     [](const ::testing::TestParamInfo<Hostile>& i) { return std::string(i.param.name); });
 
 TEST(Grader, SubmissionThatDoesNotCompileGetsTheErrorsAndZero) {
-  const Json r = grade(submission("no_compile", kSource / "grader" / "tests" / "hostile" / "no_compile"), "no_compile");
+  const Json r =
+      grade(submission("no_compile", kSource / "grader" / "tests" / "hostile" / "no_compile"),
+            "no_compile");
   EXPECT_EQ(r["score"].get<double>(), 0.0);
   const Json& compile = r["tests"][0];
   EXPECT_EQ(compile["status"], "failed");
   const std::string o = compile["output"];
-  EXPECT_NE(o.find("nested/src/integrators.cpp:"), std::string::npos) << o;  // path as in the submission
+  EXPECT_NE(o.find("nested/src/integrators.cpp:"), std::string::npos)
+      << o;  // path as in the submission
   EXPECT_NE(o.find("error"), std::string::npos) << o;
 }
 
 TEST(Grader, IncludingTheHiddenDataIsRefusedBeforeCompiling) {
-  const Json r = grade(submission("include_hidden", kSource / "grader" / "tests" / "hostile" / "include_hidden"),
-                       "include_hidden");
+  const Json r = grade(
+      submission("include_hidden", kSource / "grader" / "tests" / "hostile" / "include_hidden"),
+      "include_hidden");
   EXPECT_EQ(r["score"].get<double>(), 0.0);
   const std::string o = r["tests"][0]["output"];
   EXPECT_NE(o.find("is not allowed in a graded file"), std::string::npos) << o;
@@ -278,7 +292,8 @@ TEST(GraderFrames, RecordedFramesAreNeitherGradedNorReferenceData) {
 
 TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
 #if !JELLY_GRADE_HAS_RENDER
-  GTEST_SKIP() << "built without the viewer: the report has no frames (covered by WithoutARenderer...)";
+  GTEST_SKIP()
+      << "built without the viewer: the report has no frames (covered by WithoutARenderer...)";
 #endif
   const Json r = grade(submission("frames"), "frames");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
@@ -289,7 +304,9 @@ TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
   // One row per frame time of grader/cases/course.toml (0.5, 1, 2, 3, 5, 10 s), both sides.
   EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
   EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
-  EXPECT_NE(md.find("| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)"),
+            std::string::npos)
+      << md;
   for (const char* side : {"yours", "reference"})
     for (int k = 0; k < 6; ++k) {
       char name[32];
@@ -317,9 +334,11 @@ TEST(GraderFrames, WithoutARendererTheReportSaysWhyAndGradingIsUnchanged) {
   EXPECT_EQ(a.dump(), b.dump());
   EXPECT_EQ(a.dump(), c.dump());
   const std::string md_missing = read_text(kWork / "out" / "frames-missing" / "report.md");
-  EXPECT_NE(md_missing.find("Frames not available: /no/such/jelly is missing"), std::string::npos) << md_missing;
+  EXPECT_NE(md_missing.find("Frames not available: /no/such/jelly is missing"), std::string::npos)
+      << md_missing;
   const std::string md_failing = read_text(kWork / "out" / "frames-failing" / "report.md");
-  EXPECT_NE(md_failing.find("Frames not available: `jelly render --replay` failed (exit 1)"), std::string::npos)
+  EXPECT_NE(md_failing.find("Frames not available: `jelly render --replay` failed (exit 1)"),
+            std::string::npos)
       << md_failing;
   const std::string html = read_text(kWork / "out" / "frames-failing" / "report.html");
   EXPECT_NE(html.find("<p>Frames not available: "), std::string::npos);
@@ -331,7 +350,8 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   fs::create_directories(dir / "in");
   fs::copy(submission("batch-ref"), dir / "in" / "alice", fs::copy_options::recursive);
   fs::copy(kSource / "assignments", dir / "in" / "bob", fs::copy_options::recursive);
-  const Cmd r = run("batch " + (dir / "in").string() + " --out " + (dir / "out").string() + " --jobs 2");
+  const Cmd r =
+      run("batch " + (dir / "in").string() + " --out " + (dir / "out").string() + " --jobs 2");
   ASSERT_EQ(r.status, 0) << r.out;
   std::ifstream csv(dir / "out" / "scores.csv");
   std::string header, alice, bob;
@@ -374,34 +394,45 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
   const std::string call = "add_forward_springs(cube, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, out);";
   const auto at = text.find(call);
   ASSERT_NE(at, std::string::npos) << "solutions/springs.cpp changed: update this test";
-  text.insert(at + call.size(),
-              "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
-              "  out.push_back(Spring{cube.index(0, 0, 0), cube.index(1, 1, 0),\n"
-              "                       (cube.position(1, 1, 0) - cube.position(0, 0, 0)).norm()});\n");
+  text.insert(
+      at + call.size(),
+      "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
+      "  out.push_back(Spring{cube.index(0, 0, 0), cube.index(1, 1, 0),\n"
+      "                       (cube.position(1, 1, 0) - cube.position(0, 0, 0)).norm()});\n");
   std::ofstream(file, std::ios::binary) << text;
   const fs::path out = kWork / "out" / "spring_names";
   fs::remove_all(out);
   setenv("JELLY_GRADE_KEEP_WORK", "1", 1);
-  const Cmd plain = run("grade " + sub.string() + " --visibility public --format terminal --out " + out.string());
+  const Cmd plain =
+      run("grade " + sub.string() + " --visibility public --format terminal --out " + out.string());
   unsetenv("JELLY_GRADE_KEEP_WORK");
   ASSERT_EQ(plain.status, 0) << plain.out;
   const std::string n3 = "[a1.t1.structural.n3]";
   ASSERT_NE(plain.out.find(n3), std::string::npos) << plain.out;
   const std::string after = plain.out.substr(plain.out.find(n3));
-  EXPECT_NE(after.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); missing: (0,0,0)–(1,0,0)\n"),
-            std::string::npos) << plain.out;
-  EXPECT_NE(after.find("expected 0, got 1 (difference 1, allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
-            std::string::npos) << plain.out;
-  EXPECT_NE(after.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << plain.out;
-  EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n" << plain.out;
+  EXPECT_NE(after.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); "
+                       "missing: (0,0,0)–(1,0,0)\n"),
+            std::string::npos)
+      << plain.out;
+  EXPECT_NE(after.find("expected 0, got 1 (difference 1, allowed 0 by tolerance 'exact'); yours: "
+                       "(0,0,0)–(1,1,0)\n"),
+            std::string::npos)
+      << plain.out;
+  EXPECT_NE(after.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos)
+      << plain.out;
+  EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n"
+                                              << plain.out;
 
   fs::path runner;
   for (const auto& e : fs::recursive_directory_iterator(out / ".work"))
     if (e.path().filename() == "runner" && e.is_regular_file()) runner = e.path();
   ASSERT_FALSE(runner.empty()) << "no built runner kept under " << out / ".work";
-  const std::string args = "grade " + sub.string() + " --visibility public --format terminal --runner " + runner.string();
+  const std::string args = "grade " + sub.string() +
+                           " --visibility public --format terminal --runner " + runner.string();
   const Cmd prebuilt = run(args + " --out " + (out / "prebuilt").string());
-  EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos) << prebuilt.out;
+  EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"),
+            std::string::npos)
+      << prebuilt.out;
   const Cmd verbose = run(args + " --verbose --out " + (out / "verbose").string());
   EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;

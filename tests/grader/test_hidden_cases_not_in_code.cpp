@@ -29,10 +29,10 @@ const fs::path kSource = JELLY_SOURCE_DIR;
 // Parameter values of one visibility, flattened.
 struct Values {
   std::set<std::string> ids;
-  std::set<std::string> strings;                 // string leaves
-  std::set<double> numbers;                      // |value| of numeric leaves
-  std::set<std::vector<double>> vectors;         // arrays of exactly 3 numbers
-  std::map<std::string, std::string> where;      // value text → "case id: params.key" (for messages)
+  std::set<std::string> strings;             // string leaves
+  std::set<double> numbers;                  // |value| of numeric leaves
+  std::set<std::vector<double>> vectors;     // arrays of exactly 3 numbers
+  std::map<std::string, std::string> where;  // value text → "case id: params.key" (for messages)
 };
 
 void collect(const toml::node& n, const std::string& path, Values& v) {
@@ -45,7 +45,8 @@ void collect(const toml::node& n, const std::string& path, Values& v) {
       for (const toml::node& e : *a) vec.push_back(e.value<double>().value());
       v.vectors.insert(vec);
     }
-    for (std::size_t i = 0; i < a->size(); ++i) collect(*a->get(i), path + "[" + std::to_string(i) + "]", v);
+    for (std::size_t i = 0; i < a->size(); ++i)
+      collect(*a->get(i), path + "[" + std::to_string(i) + "]", v);
   } else if (auto s = n.value_exact<std::string>()) {
     v.strings.insert(*s);
     v.where.emplace(*s, path);
@@ -68,7 +69,8 @@ CaseValues case_values() {
     for (const toml::node& n : *cases) {
       const toml::table& c = *n.as_table();
       const std::string id = c["id"].value_or(std::string());
-      Values& v = c["visibility"].value_or(std::string("public")) == "hidden" ? out.hidden : out.pub;
+      Values& v =
+          c["visibility"].value_or(std::string("public")) == "hidden" ? out.hidden : out.pub;
       v.ids.insert(id);
       if (const toml::node* p = c.get("params")) collect(*p, id + ": params", v);
     }
@@ -78,10 +80,10 @@ CaseValues case_values() {
 
 // What a code file must not contain, given the hidden and public values.
 struct Needles {
-  std::set<std::string> texts;              // hidden ids and distinctive hidden strings
-  std::set<double> numbers;                 // distinctive hidden numbers (as |value|)
-  std::set<long> seeds;                     // hidden random seeds
-  std::set<std::vector<double>> vectors;    // hidden 3-vectors no public case uses
+  std::set<std::string> texts;            // hidden ids and distinctive hidden strings
+  std::set<double> numbers;               // distinctive hidden numbers (as |value|)
+  std::set<long> seeds;                   // hidden random seeds
+  std::set<std::vector<double>> vectors;  // hidden 3-vectors no public case uses
 };
 
 // Integers below 100 (loop bounds, buffer sizes, bit shifts), numbers that a public case also uses
@@ -92,13 +94,15 @@ Needles needles(const CaseValues& cv) {
   for (const std::string& id : cv.hidden.ids) n.texts.insert(id);
   static const std::regex keyword("^[a-z_]+$");  // option names (mode = "drop") are generator code
   for (const std::string& s : cv.hidden.strings)
-    if (!cv.pub.strings.count(s) && s.size() >= 6 && !std::regex_match(s, keyword)) n.texts.insert(s);
+    if (!cv.pub.strings.count(s) && s.size() >= 6 && !std::regex_match(s, keyword))
+      n.texts.insert(s);
   for (double d : cv.hidden.numbers) {
     const bool small_integer = d == std::floor(d) && d < 100.0;
     if (!small_integer && !cv.pub.numbers.count(d)) n.numbers.insert(d);
   }
   for (const auto& v : cv.hidden.vectors) {
-    const bool grid = std::all_of(v.begin(), v.end(), [](double c) { return c == 0.0 || std::abs(c) == 1.0; });
+    const bool grid =
+        std::all_of(v.begin(), v.end(), [](double c) { return c == 0.0 || std::abs(c) == 1.0; });
     if (!grid && !cv.pub.vectors.count(v)) n.vectors.insert(v);
   }
   return n;
@@ -127,29 +131,39 @@ std::set<long> hidden_seeds() {
 
 const char* kNumber = R"((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)";
 
-bool same(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
+bool same(double a, double b) {
+  return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
+}
 
 // Every leak in one file's text: "what (line N)".
 std::vector<std::string> leaks_in(const std::string& text, const Needles& n) {
   std::vector<std::string> out;
-  auto line_of = [&](std::size_t pos) { return std::to_string(1 + std::count(text.begin(), text.begin() + pos, '\n')); };
+  auto line_of = [&](std::size_t pos) {
+    return std::to_string(1 + std::count(text.begin(), text.begin() + pos, '\n'));
+  };
   for (const std::string& t : n.texts) {
     const auto at = text.find(t);
-    if (at != std::string::npos) out.push_back("hidden text \"" + t + "\" (line " + line_of(at) + ")");
+    if (at != std::string::npos)
+      out.push_back("hidden text \"" + t + "\" (line " + line_of(at) + ")");
   }
   // Numeric literals: not inside identifiers, not the hex of a constant.
   static const std::regex literal(std::string(R"((^|[^\w.])()") + kNumber + R"()(?![\w.]))");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), literal); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), literal);
+       it != std::sregex_iterator(); ++it) {
     const double v = std::stod((*it)[2].str());
     for (double d : n.numbers)
-      if (same(v, d)) out.push_back("hidden number " + (*it)[2].str() + " (line " + line_of(it->position(2)) + ")");
+      if (same(v, d))
+        out.push_back("hidden number " + (*it)[2].str() + " (line " + line_of(it->position(2)) +
+                      ")");
   }
   // Three literals in a row: a hidden vector (a hole centre, a rotation axis, ...).
-  static const std::regex triple(std::string("(-?)\\s*(") + kNumber + ")\\s*,\\s*(-?)\\s*(" + kNumber +
-                                 ")\\s*,\\s*(-?)\\s*(" + kNumber + ")");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), triple); it != std::sregex_iterator(); ++it) {
+  static const std::regex triple(std::string("(-?)\\s*(") + kNumber + ")\\s*,\\s*(-?)\\s*(" +
+                                 kNumber + ")\\s*,\\s*(-?)\\s*(" + kNumber + ")");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), triple);
+       it != std::sregex_iterator(); ++it) {
     std::vector<double> v;
-    for (int k = 0; k < 3; ++k) v.push_back(((*it)[1 + 2 * k].length() ? -1.0 : 1.0) * std::stod((*it)[2 + 2 * k].str()));
+    for (int k = 0; k < 3; ++k)
+      v.push_back(((*it)[1 + 2 * k].length() ? -1.0 : 1.0) * std::stod((*it)[2 + 2 * k].str()));
     for (const auto& h : n.vectors)
       if (same(v[0], h[0]) && same(v[1], h[1]) && same(v[2], h[2]))
         out.push_back("hidden vector (" + it->str() + ") (line " + line_of(it->position()) + ")");
@@ -157,11 +171,14 @@ std::vector<std::string> leaks_in(const std::string& text, const Needles& n) {
   // Seeds: integer literals inside a Sequence construction.
   static const std::regex sequence(R"(Sequence\s+\w+\s*[({]([^;]*)[)}])");
   static const std::regex integer(R"((^|[^\w.])(\d+)(?![\w.]))");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), sequence); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), sequence);
+       it != std::sregex_iterator(); ++it) {
     const std::string args = (*it)[1].str();
-    for (auto jt = std::sregex_iterator(args.begin(), args.end(), integer); jt != std::sregex_iterator(); ++jt)
+    for (auto jt = std::sregex_iterator(args.begin(), args.end(), integer);
+         jt != std::sregex_iterator(); ++jt)
       if (n.seeds.count(std::stol((*jt)[2].str())))
-        out.push_back("hidden seed " + (*jt)[2].str() + " in \"" + it->str() + "\" (line " + line_of(it->position()) + ")");
+        out.push_back("hidden seed " + (*jt)[2].str() + " in \"" + it->str() + "\" (line " +
+                      line_of(it->position()) + ")");
   }
   return out;
 }
@@ -195,11 +212,14 @@ TEST(GraderCases, NoHiddenCaseIdOrParameterInTheRunnerCode) {
     const fs::path rel = fs::relative(e.path(), kSource);
     if (rel.string().rfind("grader/runner/hidden/", 0) == 0) continue;  // never released
     ++files;
-    for (const std::string& leak : leaks_in(read(e.path()), n)) report += "  " + rel.string() + ": " + leak + "\n";
+    for (const std::string& leak : leaks_in(read(e.path()), n))
+      report += "  " + rel.string() + ": " + leak + "\n";
   }
   EXPECT_GE(files, 5);
-  EXPECT_TRUE(report.empty()) << "the runner code (shipped to students) says what hidden tests feed their code;\n"
-                              << "move these into the hidden case's params in grader/cases/*.toml:\n" << report;
+  EXPECT_TRUE(report.empty())
+      << "the runner code (shipped to students) says what hidden tests feed their code;\n"
+      << "move these into the hidden case's params in grader/cases/*.toml:\n"
+      << report;
 }
 
 // The scan is not blind: the way hidden cases used to be registered in code is reported.
@@ -219,10 +239,13 @@ TEST(GraderCases, TheScanFindsAHiddenCaseWrittenBackIntoCode) {
   for (const std::string& f : found) all += f + "\n";
   for (const char* expected : {"a1.t4.spring_force.random", "hidden seed 11", "hidden seed 13",
                                "hidden vector (1.0, -2.0, 0.0)", "hidden number 1500"})
-    EXPECT_NE(all.find(expected), std::string::npos) << "not found: " << expected << "\nfound:\n" << all;
+    EXPECT_NE(all.find(expected), std::string::npos) << "not found: " << expected << "\nfound:\n"
+                                                     << all;
   // The tilted plane's preset is public now (a1.t6.collide_plane.incline): naming it is no leak.
   EXPECT_EQ(all.find("course-2021-tilted"), std::string::npos) << all;
   // Generator code that reads its parameters is clean.
   EXPECT_TRUE(leaks_in("Sequence r(static_cast<std::uint64_t>(params.integer(\"seed\")));\n"
-                       "const long steps = params.integer(\"steps\");", n).empty());
+                       "const long steps = params.integer(\"steps\");",
+                       n)
+                  .empty());
 }

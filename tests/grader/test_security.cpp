@@ -38,7 +38,8 @@ std::string read_text(const fs::path& p) {
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
+  for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size()))
+    s.replace(p, from.size(), to);
   return s;
 }
 
@@ -75,9 +76,11 @@ std::vector<std::string> hidden_needles() {
   std::set<std::string> needles;
   for (const auto& e : fs::directory_iterator(kSource / "grader" / "data" / "hidden"))
     for (const std::string& l : lines(e.path()))
-      if (!pub.count(l) && l.find("\"harness_digest\"") == std::string::npos && l.find("\"commit\"") == std::string::npos &&
-          l.find("\"flags\"") == std::string::npos && l.find("\"compiler\"") == std::string::npos &&
-          l.find("\"format_version\"") == std::string::npos && l.find("\"case_hash\"") == std::string::npos)
+      if (!pub.count(l) && l.find("\"harness_digest\"") == std::string::npos &&
+          l.find("\"commit\"") == std::string::npos && l.find("\"flags\"") == std::string::npos &&
+          l.find("\"compiler\"") == std::string::npos &&
+          l.find("\"format_version\"") == std::string::npos &&
+          l.find("\"case_hash\"") == std::string::npos)
         needles.insert(l);
   return {needles.begin(), needles.end()};
 }
@@ -106,10 +109,11 @@ enum class Where { TopOfForces, InContactPlane, Special };
 struct Route {
   const char* name;
   Where where;
-  const char* code;     // @HIDDEN@: the hidden file's absolute path
-  const char* expect;   // in the compile output, or in the output of test a1.t8.contact_plane.eps;
-                        // alternatives separated by | (bwrap hides a file, the user sandbox denies it)
-  bool runs = false;    // compiles, and `expect` is in that test's output
+  const char* code;  // @HIDDEN@: the hidden file's absolute path
+  const char*
+      expect;  // in the compile output, or in the output of test a1.t8.contact_plane.eps;
+               // alternatives separated by | (bwrap hides a file, the user sandbox denies it)
+  bool runs = false;  // compiles, and `expect` is in that test's output
   bool test_fails = true;
 };
 
@@ -189,7 +193,8 @@ const Route kRoutes[] = {
 };
 // clang-format on
 
-const char* const kTaskFiles[] = {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"};
+const char* const kTaskFiles[] = {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp",
+                                  "integrators.cpp"};
 
 fs::path make_submission(const fs::path& in, const Route& r) {
   const fs::path dir = in / r.name;
@@ -197,16 +202,21 @@ fs::path make_submission(const fs::path& in, const Route& r) {
   for (const char* f : kTaskFiles) fs::copy_file(kSource / "solutions" / f, dir / f);
   const std::string code = replace_all(r.code, "@HIDDEN@", kHidden.string());
   if (r.where == Where::TopOfForces) {
-    std::ofstream(dir / "forces.cpp", std::ios::binary) << code << read_text(kSource / "solutions" / "forces.cpp");
+    std::ofstream(dir / "forces.cpp", std::ios::binary)
+        << code << read_text(kSource / "solutions" / "forces.cpp");
   } else if (r.where == Where::InContactPlane) {
     std::string text = read_text(kSource / "solutions" / "contact.cpp");
-    const std::string sig = "bool contact_plane(const Plane& plane, const Vec3& x, const Vec3& v, Vec3& f) {\n";
+    const std::string sig =
+        "bool contact_plane(const Plane& plane, const Vec3& x, const Vec3& v, Vec3& f) {\n";
     const auto at = text.find(sig);
     EXPECT_NE(at, std::string::npos) << "solutions/contact.cpp changed: update the red-team suite";
     // Once per process: contact_plane also runs in every step of the scene cases.
-    text.insert(at + sig.size(), "static bool jelly_once = false;\nif (!jelly_once) {\njelly_once = true;\n" + code + "}\n");
+    text.insert(
+        at + sig.size(),
+        "static bool jelly_once = false;\nif (!jelly_once) {\njelly_once = true;\n" + code + "}\n");
     std::ofstream(dir / "contact.cpp", std::ios::binary)
-        << "#include <fcntl.h>\n#include <sys/syscall.h>\n#include <unistd.h>\n#include <cstdio>\n" << text;
+        << "#include <fcntl.h>\n#include <sys/syscall.h>\n#include <unistd.h>\n#include <cstdio>\n"
+        << text;
   } else {
     fs::remove(dir / "forces.cpp");
     const std::string n = r.name;
@@ -230,17 +240,20 @@ struct BatchRun {
   std::string console;
 };
 
-BatchRun run_batch(const std::string& tag, const std::vector<const Route*>& routes, const std::string& isolation) {
+BatchRun run_batch(const std::string& tag, const std::vector<const Route*>& routes,
+                   const std::string& isolation) {
   const fs::path root = kWork / tag, in = root / "in";
   fs::remove_all(root);
   fs::create_directories(in);
   for (const Route* r : routes) make_submission(in, *r);
   fs::create_directories(in / "zz_well_behaved");
-  for (const char* f : kTaskFiles) fs::copy_file(kSource / "solutions" / f, in / "zz_well_behaved" / f);
+  for (const char* f : kTaskFiles)
+    fs::copy_file(kSource / "solutions" / f, in / "zz_well_behaved" / f);
   BatchRun b;
   b.out = root / "out";
   b.console = run("batch " + in.string() + " --out " + b.out.string() +
-                  " --jobs 2 --visibility public --timeout 10 --compile-memory 512 --compile-cpu 30 --isolation " +
+                  " --jobs 2 --visibility public --timeout 10 --compile-memory 512 --compile-cpu "
+                  "30 --isolation " +
                   isolation);
   std::ofstream(root / "console.txt") << b.console;
   return b;
@@ -261,7 +274,8 @@ bool has_any(const std::string& text, const std::string& alternatives) {
 }
 
 // Each route failed as it should, the well-behaved submission got full marks, nothing leaked.
-void check_batch(const BatchRun& b, const std::vector<const Route*>& routes, const std::string& mechanism) {
+void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
+                 const std::string& mechanism) {
   const std::vector<std::string> needles = hidden_needles();
   ASSERT_GT(needles.size(), 100u) << "too few distinctive hidden lines to search for";
   EXPECT_EQ(leak_in(b.console, needles), "") << "hidden text in jelly-grade's output";
@@ -271,7 +285,8 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes, con
     const fs::path res = b.out / r->name / "results.json";
     ASSERT_TRUE(fs::exists(res)) << b.console;
     const Json j = Json::parse(read_text(res));
-    EXPECT_NE(j["output"].get<std::string>().find("Sandbox: " + mechanism), std::string::npos) << j["output"];
+    EXPECT_NE(j["output"].get<std::string>().find("Sandbox: " + mechanism), std::string::npos)
+        << j["output"];
     const std::string expect = replace_all(r->expect, "@HIDDEN@", kHidden.filename().string());
     const Json& compile = j["tests"][0];
     if (r->runs) {
@@ -313,24 +328,29 @@ std::vector<const Route*> named(std::initializer_list<const char*> names) {
 }  // namespace
 
 // Without isolation the search below does find the hidden text (so it can fail), the run says
-// loudly that hidden tests were not protected, and compiler messages still show no hidden line. It runs first on purpose: its object, which holds
-// the hidden file, is in the object cache when the sandboxed batches below compile the same text,
-// and must not be reused by them.
+// loudly that hidden tests were not protected, and compiler messages still show no hidden line. It
+// runs first on purpose: its object, which holds the hidden file, is in the object cache when the
+// sandboxed batches below compile the same text, and must not be reused by them.
 TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
   const auto routes = named({"asm_incbin", "computed_include", "asm_include"});
   const BatchRun b = run_batch("none", routes, "none");
   // Compiler messages are filtered even without a sandbox: the hidden file was read by the compiler
   // and the assembler here, yet no line of it reaches the messages.
   for (const char* name : {"computed_include", "asm_include"}) {
-    const std::string o = Json::parse(read_text(b.out / name / "results.json"))["tests"][0]["output"];
-    EXPECT_NE(o.find("[hidden: a message about a file that is not part of your submission]"), std::string::npos) << o;
+    const std::string o =
+        Json::parse(read_text(b.out / name / "results.json"))["tests"][0]["output"];
+    EXPECT_NE(o.find("[hidden: a message about a file that is not part of your submission]"),
+              std::string::npos)
+        << o;
     EXPECT_EQ(leaks_under(b.out / name, hidden_needles()), "") << name;
   }
-  EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos) << b.console;
+  EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos)
+      << b.console;
   const Json j = Json::parse(read_text(b.out / "asm_incbin" / "results.json"));
   EXPECT_NE(j["output"].get<std::string>().find("Sandbox: none"), std::string::npos);
   EXPECT_NE(j["output"].get<std::string>().find("NOT protected"), std::string::npos);
-  EXPECT_NE(leaks_under(b.out, hidden_needles()), "") << "the canary search found nothing even without isolation";
+  EXPECT_NE(leaks_under(b.out, hidden_needles()), "")
+      << "the canary search found nothing even without isolation";
 }
 
 // The default mechanism of this machine (bubblewrap where user namespaces work, as in CI).
@@ -347,20 +367,21 @@ TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
 // The fallback used where user namespaces are forbidden (Gradescope, Docker): an unprivileged user.
 TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
   if (geteuid() != 0) GTEST_SKIP() << "--isolation user needs root";
-  const auto routes = named({"computed_include", "asm_incbin", "static_constructor", "io_uring", "symlink",
-                             "template_bomb"});
+  const auto routes = named({"computed_include", "asm_incbin", "static_constructor", "io_uring",
+                             "symlink", "template_bomb"});
   const BatchRun b = run_batch("user", routes, "user");
   check_batch(b, routes, "user");
 }
-
 
 // A forced mechanism that cannot work stops the run with the reason, before anything is compiled:
 // never a silent fall back to less isolation.
 TEST(GraderSecurity, ForcedSandboxThatCannotWorkIsAGraderError) {
   setenv("JELLY_GRADE_BWRAP", "/bin/false", 1);  // a bubblewrap that cannot create a sandbox
-  const std::string out = run("grade " + (kSource / "assignments").string() + " --isolation bwrap --out " +
-                              (kWork / "forced").string());
+  const std::string out = run("grade " + (kSource / "assignments").string() +
+                              " --isolation bwrap --out " + (kWork / "forced").string());
   unsetenv("JELLY_GRADE_BWRAP");
-  EXPECT_NE(out.find("--isolation bwrap: /bin/false cannot create a sandbox here"), std::string::npos) << out;
+  EXPECT_NE(out.find("--isolation bwrap: /bin/false cannot create a sandbox here"),
+            std::string::npos)
+      << out;
   EXPECT_FALSE(fs::exists(kWork / "forced" / "results.json"));
 }

@@ -69,21 +69,23 @@ Fact value(std::function<double()> f) {
 // "≈ N": the observed order of convergence within 0.3 of the quoted one.
 Fact order(IntegratorKind kind) {
   return {false, [kind](double quoted, int) {
-            const double observed =
-                std::log2(testing::error_at_one_second(kind, 2.5e-3) / testing::error_at_one_second(kind, 1.25e-3));
-            return std::abs(observed - quoted) <= 0.3 ? std::string() : "the observed order is " + show(observed);
+            const double observed = std::log2(testing::error_at_one_second(kind, 2.5e-3) /
+                                              testing::error_at_one_second(kind, 1.25e-3));
+            return std::abs(observed - quoted) <= 0.3 ? std::string()
+                                                      : "the observed order is " + show(observed);
           }};
 }
 
 // The course scene with this integrator at the quoted step for 10 s: stable (or not).
 Fact stability(IntegratorKind kind, bool stable) {
-  return {true, [kind, stable](double h, int) {
-            Simulator sim(build_world(testing::course_2023(kind, h), linked_tasks()), {kind, h});
-            const bool ok = sim.run_until(10.0) == StepResult::Ok;
-            if (ok == stable) return std::string();
-            return std::string(to_string(kind)) + " at h = " + show(h) +
-                   (ok ? " ran 10 s without blowing up" : " blew up at t = " + show(sim.time()) + " s");
-          }};
+  return {
+      true, [kind, stable](double h, int) {
+        Simulator sim(build_world(testing::course_2023(kind, h), linked_tasks()), {kind, h});
+        const bool ok = sim.run_until(10.0) == StepResult::Ok;
+        if (ok == stable) return std::string();
+        return std::string(to_string(kind)) + " at h = " + show(h) +
+               (ok ? " ran 10 s without blowing up" : " blew up at t = " + show(sim.time()) + " s");
+      }};
 }
 
 // Centre of mass height of the course cube after t seconds (course scene, h = 0.001).
@@ -93,7 +95,8 @@ double com_y_after(IntegratorKind kind, double t) {
   return sim.state().x.row(1).mean();
 }
 
-std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::vector<Spring>&), int n) {
+std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::vector<Spring>&),
+                         int n) {
   CubeSpec spec = course_2023_scene().cube;
   spec.n = n;
   const CubeLattice cube(spec, 0);
@@ -102,7 +105,8 @@ std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::ve
   return springs.size();
 }
 
-// Shear springs of the course cube whose grid offset has three non-zero components (body diagonals).
+// Shear springs of the course cube whose grid offset has three non-zero components (body
+// diagonals).
 std::size_t body_diagonals(int n) {
   CubeSpec spec = course_2023_scene().cube;
   spec.n = n;
@@ -112,7 +116,8 @@ std::size_t body_diagonals(int n) {
   std::size_t count = 0;
   for (const Spring& s : springs) {
     const int a = s.a, b = s.b;
-    const bool di = a / (n * n) != b / (n * n), dj = (a / n) % n != (b / n) % n, dk = a % n != b % n;
+    const bool di = a / (n * n) != b / (n * n), dj = (a / n) % n != (b / n) % n,
+               dk = a % n != b % n;
     count += di && dj && dk;
   }
   return count;
@@ -128,7 +133,8 @@ Rubric rubric() {
   const toml::table t = toml::parse_file((kSource / "grader" / "rubric.toml").string());
   Rubric r;
   r.total = t["autograded_total"].value_or(0.0);
-  for (const toml::node& n : *t["task"].as_array()) r.raw += (*n.as_table())["points"].value_or(0.0);
+  for (const toml::node& n : *t["task"].as_array())
+    r.raw += (*n.as_table())["points"].value_or(0.0);
   for (const toml::node& n : *t["task"].as_array()) {
     const toml::table& task = *n.as_table();
     const double p = task["points"].value_or(0.0) * r.total / r.raw;
@@ -140,7 +146,9 @@ Rubric rubric() {
 
 // RK4's stability interval on the negative real axis: the largest x with |R(−x)| ≤ 1.
 double rk4_real_interval() {
-  auto r = [](double z) { return std::abs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24); };
+  auto r = [](double z) {
+    return std::abs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24);
+  };
   double lo = 2.0, hi = 3.0;  // |R(−2)| < 1 < |R(−3)|
   for (int i = 0; i < 60; ++i) (r(-(lo + hi) / 2) <= 1 ? lo : hi) = (lo + hi) / 2;
   return lo;
@@ -158,15 +166,20 @@ const Bowl& course_bowl() {
 std::map<std::string, Fact> facts() {
   using K = IntegratorKind;
   std::map<std::string, Fact> f;
-  const auto n10 = [](auto builder) { return [builder] { return double(spring_count(builder, 10)); }; };
+  const auto n10 = [](auto builder) {
+    return [builder] { return double(spring_count(builder, 10)); };
+  };
   f["springs.structural.n10"] = value(n10(&TaskTable::add_structural_springs));
-  f["springs.structural_both_ways.n10"] = value([] { return 2.0 * spring_count(&TaskTable::add_structural_springs, 10); });
+  f["springs.structural_both_ways.n10"] =
+      value([] { return 2.0 * spring_count(&TaskTable::add_structural_springs, 10); });
   f["springs.shear.n10"] = value(n10(&TaskTable::add_shear_springs));
-  f["springs.shear_face.n10"] = value([] { return double(spring_count(&TaskTable::add_shear_springs, 10) - body_diagonals(10)); });
+  f["springs.shear_face.n10"] = value(
+      [] { return double(spring_count(&TaskTable::add_shear_springs, 10) - body_diagonals(10)); });
   f["springs.shear_body.n10"] = value([] { return double(body_diagonals(10)); });
   f["springs.bending.n10"] = value(n10(&TaskTable::add_bending_springs));
   f["springs.all.n10"] = value([] {
-    return double(spring_count(&TaskTable::add_structural_springs, 10) + spring_count(&TaskTable::add_shear_springs, 10) +
+    return double(spring_count(&TaskTable::add_structural_springs, 10) +
+                  spring_count(&TaskTable::add_shear_springs, 10) +
                   spring_count(&TaskTable::add_bending_springs, 10));
   });
   f["course.n"] = value([] { return double(course_2023_scene().cube.n); });
@@ -179,12 +192,12 @@ std::map<std::string, Fact> facts() {
   f["course.floor.friction"] = value([] { return course_floor().surface.friction; });
   f["course.bowl.radius"] = value([] { return course_bowl().radius; });
   f["course.bowl.rim_height"] = value([] { return course_bowl().rim_height; });
-  f["freefall.seconds"] = value([] { return 0.5; });  // the time the com_y_after_0.5s facts use
+  f["freefall.seconds"] = value([] { return 0.5; });    // the time the com_y_after_0.5s facts use
   f["stability.seconds"] = value([] { return 10.0; });  // the run length of the stability facts
   for (const auto& [name, kind] : std::map<std::string, K>{{"explicit_euler", K::ExplicitEuler},
-                                                            {"implicit_euler", K::ImplicitEuler},
-                                                            {"midpoint", K::Midpoint},
-                                                            {"rk4", K::RK4}}) {
+                                                           {"implicit_euler", K::ImplicitEuler},
+                                                           {"midpoint", K::Midpoint},
+                                                           {"rk4", K::RK4}}) {
     const K k = kind;
     f[name + ".com_y_after_0.5s"] = value([k] { return com_y_after(k, 0.5); });
     f[name + ".order"] = order(k);
@@ -198,11 +211,14 @@ std::map<std::string, Fact> facts() {
     auto world = build_world(testing::course_2023(), linked_tasks());
     return 0.001 / estimate_stability(*world, world->state()).critical_step(K::ImplicitEuler);
   });
-  f["implicit_euler.blowup_t_at_0.001"] = {true, [](double quoted, int decimals) {
-    Simulator sim(build_world(testing::course_2023(K::ImplicitEuler), linked_tasks()), {K::ImplicitEuler, 0.001});
-    if (sim.run_until(10.0) == StepResult::Ok) return std::string("it ran 10 s without blowing up");
-    return value([&] { return sim.time(); }).check(quoted, decimals);
-  }};
+  f["implicit_euler.blowup_t_at_0.001"] = {
+      true, [](double quoted, int decimals) {
+        Simulator sim(build_world(testing::course_2023(K::ImplicitEuler), linked_tasks()),
+                      {K::ImplicitEuler, 0.001});
+        if (sim.run_until(10.0) == StepResult::Ok)
+          return std::string("it ran 10 s without blowing up");
+        return value([&] { return sim.time(); }).check(quoted, decimals);
+      }};
   f["rk4.real_interval"] = value([] { return -rk4_real_interval(); });
   f["points.autograded"] = value([] { return rubric().total; });
   f["points.report"] = value([] { return 100.0 - rubric().total; });
@@ -212,7 +228,8 @@ std::map<std::string, Fact> facts() {
     const std::string id = "A1.T" + std::to_string(t);
     f["points." + id] = value([id] { return rubric().task.at(id); });
   }
-  f["points.A1.T11+T12"] = value([] { return rubric().task.at("A1.T11") + rubric().task.at("A1.T12"); });
+  f["points.A1.T11+T12"] =
+      value([] { return rubric().task.at("A1.T11") + rubric().task.at("A1.T12"); });
   return f;
 }
 
@@ -247,7 +264,8 @@ std::vector<Tag> tags() {
     const std::vector<std::string> lines = lines_of(page);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string& l = lines[i];
-      for (auto it = std::sregex_iterator(l.begin(), l.end(), kTag); it != std::sregex_iterator(); ++it) {
+      for (auto it = std::sregex_iterator(l.begin(), l.end(), kTag); it != std::sregex_iterator();
+           ++it) {
         Tag t{page.filename().string(), (*it)[1].str(), "", static_cast<int>(i + 1)};
         std::smatch m;
         const std::string before = l.substr(0, static_cast<std::size_t>(it->position()));
@@ -290,7 +308,8 @@ TEST(HandoutFacts, EveryTaggedNumberIsWhatTheCodeComputes) {
     EXPECT_TRUE(why.empty()) << where << ": the text says " << t.number << ", but " << why;
   }
   for (const auto& [name, fact] : known)
-    EXPECT_TRUE(used.count(name)) << "fact " << name << " is quoted nowhere in docs/handout/: remove it or quote it";
+    EXPECT_TRUE(used.count(name)) << "fact " << name
+                                  << " is quoted nowhere in docs/handout/: remove it or quote it";
 }
 
 // A quantity a student would rely on: a number with a decimal point, a number of 10 or more, or a
@@ -298,11 +317,14 @@ TEST(HandoutFacts, EveryTaggedNumberIsWhatTheCodeComputes) {
 // 2×2×2). Such a number in a "Check yourself" section or in the points table must carry a tag.
 std::vector<std::string> untagged_quantities(const std::string& line) {
   std::string l = std::regex_replace(line, std::regex("`[^`]*`"), " ");
-  l = std::regex_replace(l, std::regex("(?:\xE2\x88\x92|-)?[0-9.]+(?:`|\\*\\*)?<!-- fact: [^>]*-->"), " ");
+  l = std::regex_replace(
+      l, std::regex("(?:\xE2\x88\x92|-)?[0-9.]+(?:`|\\*\\*)?<!-- fact: [^>]*-->"), " ");
   l = std::regex_replace(l, std::regex("\\]\\([^)]*\\)"), "]");  // link targets
   std::vector<std::string> out;
-  const std::regex number("(^|[^A-Za-z0-9_.\xC3\x97\\-])([0-9]+(?:\\.[0-9]+)?)(?![A-Za-z0-9_\xC3\x97])");
-  for (auto it = std::sregex_iterator(l.begin(), l.end(), number); it != std::sregex_iterator(); ++it) {
+  const std::regex number(
+      "(^|[^A-Za-z0-9_.\xC3\x97\\-])([0-9]+(?:\\.[0-9]+)?)(?![A-Za-z0-9_\xC3\x97])");
+  for (auto it = std::sregex_iterator(l.begin(), l.end(), number); it != std::sregex_iterator();
+       ++it) {
     const std::string n = (*it)[2].str();
     const std::string before = l.substr(0, static_cast<std::size_t>(it->position(2)));
     const bool approx = std::regex_search(before, std::regex("(\xE2\x89\x88|about) *$"));
@@ -317,7 +339,8 @@ TEST(HandoutFacts, CheckYourselfSectionsAndThePointsTableQuoteOnlyTaggedNumbers)
     bool in_check = false;
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string& l = lines[i];
-      if (l.rfind("## ", 0) == 0) in_check = l == "## Check yourself" || l == "## 3. Check yourself";
+      if (l.rfind("## ", 0) == 0)
+        in_check = l == "## Check yourself" || l == "## 3. Check yourself";
       const bool points_row = l.rfind("| [A1.T", 0) == 0 || l.rfind("| [Report]", 0) == 0;
       if (!in_check && !points_row) continue;
       for (const std::string& n : untagged_quantities(l))
@@ -328,11 +351,14 @@ TEST(HandoutFacts, CheckYourselfSectionsAndThePointsTableQuoteOnlyTaggedNumbers)
 }
 
 TEST(HandoutFacts, TheUntaggedNumberRuleFindsQuantitiesAndSparesNames) {
-  EXPECT_EQ(untagged_quantities("blows up at about h = 0.0025."), std::vector<std::string>{"0.0025"});
+  EXPECT_EQ(untagged_quantities("blows up at about h = 0.0025."),
+            std::vector<std::string>{"0.0025"});
   EXPECT_EQ(untagged_quantities("the order of convergence (≈ 4)."), std::vector<std::string>{"4"});
   EXPECT_EQ(untagged_quantities("12876 springs"), std::vector<std::string>{"12876"});
-  EXPECT_TRUE(untagged_quantities("y = 9.775<!-- fact: rk4.com_y_after_0.5s --> and `--dt 0.002`").empty());
-  EXPECT_TRUE(untagged_quantities("A1.T4, T1–T3, course-2023.toml, 2×2×2 and 4×4×4 cubes, kd = 0").empty());
+  EXPECT_TRUE(
+      untagged_quantities("y = 9.775<!-- fact: rk4.com_y_after_0.5s --> and `--dt 0.002`").empty());
+  EXPECT_TRUE(
+      untagged_quantities("A1.T4, T1–T3, course-2023.toml, 2×2×2 and 4×4×4 cubes, kd = 0").empty());
 }
 
 }  // namespace

@@ -29,13 +29,14 @@ const char* to_string(Expect e) {
 std::string Outcome::summary() const {
   char buf[512];
   if (stopped)
-    std::snprintf(buf, sizeof buf, "stopped at step %ld (t = %.4g s): %s", report->step, report->time,
-                  report->reason.c_str());
+    std::snprintf(buf, sizeof buf, "stopped at step %ld (t = %.4g s): %s", report->step,
+                  report->time, report->reason.c_str());
   else
     std::snprintf(buf, sizeof buf,
                   "stable for %.3g s (%ld steps): E_max - E0 = %.3g J (allowed %.3g J), deepest "
                   "%.3g m (bound %.3g m), v_peak %.3g m/s",
-                  time, steps, energy_max - energy_start, energy_margin, max_depth, depth_bound, v_peak);
+                  time, steps, energy_max - energy_start, energy_margin, max_depth, depth_bound,
+                  v_peak);
   return buf;
 }
 

@@ -18,23 +18,23 @@ const char* to_string(Expect e);
 
 /// What happened in one run.
 struct Outcome {
-  bool stopped = false;                  ///< the detector stopped the run
+  bool stopped = false;  ///< the detector stopped the run
   std::optional<InstabilityReport> report;
-  double time = 0.0;                     ///< simulated time reached [s]
+  double time = 0.0;  ///< simulated time reached [s]
   long steps = 0;
-  bool finite = true;                    ///< every state seen was finite
-  double energy_start = 0.0;             ///< [J]
-  double energy_max = 0.0;               ///< largest total energy seen [J]
-  double energy_margin = 0.0;            ///< the detector's allowance above the start [J]
-  double max_depth = 0.0;                ///< deepest particle below a terrain it is inside the extent of [m]
+  bool finite = true;          ///< every state seen was finite
+  double energy_start = 0.0;   ///< [J]
+  double energy_max = 0.0;     ///< largest total energy seen [J]
+  double energy_margin = 0.0;  ///< the detector's allowance above the start [J]
+  double max_depth = 0.0;      ///< deepest particle below a terrain it is inside the extent of [m]
   /// ε + 2 h v_peak + s [m]: one step's travel past the ε band (the velocity response acts at the
   /// start of the next step), plus one lattice spacing s for what a loaded particle sinks under
   /// the course's velocity-only response (contract §5's known limit: positions are never
   /// corrected). Deeper would mean a particle passed the layer above it: the lattice folded
   /// through the surface.
   double depth_bound = 0.0;
-  double v_peak = 0.0;                   ///< largest particle speed seen [m/s]
-  std::string summary() const;           ///< one line for logs and docs
+  double v_peak = 0.0;          ///< largest particle speed seen [m/s]
+  std::string summary() const;  ///< one line for logs and docs
 };
 
 /// Loads scenes/hard/<name>.toml (fails the test when it does not load).

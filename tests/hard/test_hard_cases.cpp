@@ -31,18 +31,20 @@ struct Case {
 const std::vector<Case> kCases = {{"n30", 0.04}};
 #else
 const std::vector<Case> kCases = {
-    {"stiff-springs", 0.6},  {"high-speed-impact", 0.3}, {"corner-first", 0.8},
-    {"n2", 0.6},             {"tiny-mass", 0.45},        {"huge-mass", 0.6},
-    {"restitution-0", 0.6},  {"restitution-1", 0.6},     {"friction-0", 0.7},
-    {"friction-1", 0.7},     {"hole-edge", 0.4},         {"bowl-rim", 0.4},
+    {"stiff-springs", 0.6}, {"high-speed-impact", 0.3},
+    {"corner-first", 0.8},  {"n2", 0.6},
+    {"tiny-mass", 0.45},    {"huge-mass", 0.6},
+    {"restitution-0", 0.6}, {"restitution-1", 0.6},
+    {"friction-0", 0.7},    {"friction-1", 0.7},
+    {"hole-edge", 0.4},     {"bowl-rim", 0.4},
     {"bowl-centre", 1.3},
 };
 #endif
 
 void log_line(const std::string& c, IntegratorKind k, const char* mode, double h, Expect e,
               const Outcome& o) {
-  std::printf("HARD|%s|%s|%s|%.4g|%s|%s|%s\n", c.c_str(), std::string(to_string(k)).c_str(), mode, h,
-              to_string(e), o.stopped ? "stopped" : "stable", o.summary().c_str());
+  std::printf("HARD|%s|%s|%s|%.4g|%s|%s|%s\n", c.c_str(), std::string(to_string(k)).c_str(), mode,
+              h, to_string(e), o.stopped ? "stopped" : "stable", o.summary().c_str());
 }
 
 /// The checks of a run that was not stopped.
@@ -50,8 +52,10 @@ void expect_stable_run(const Outcome& o, const std::string& what) {
   EXPECT_TRUE(o.finite) << what << ": a non-finite state went unreported";
   EXPECT_LE(o.energy_max, o.energy_start + o.energy_margin)
       << what << ": the total energy rose above its start (plus the detector's 1 % margin)";
-  EXPECT_LE(o.max_depth, o.depth_bound) << what << ": a particle ended deeper below a surface "
-                                           "than one step's travel past the collision band plus a lattice spacing";
+  EXPECT_LE(o.max_depth, o.depth_bound)
+      << what
+      << ": a particle ended deeper below a surface "
+         "than one step's travel past the collision band plus a lattice spacing";
 }
 
 /// The checks of a run the detector stopped: the report of contract §8.
@@ -82,8 +86,10 @@ void check(const Outcome& o, Expect expect, IntegratorKind kind, double h,
       if (o.stopped) expect_report(o, kind, h, e, what);
       break;
     case Expect::Either:  // between half the limit and 1.1× it: contact may tip it either way
-      if (o.stopped) expect_report(o, kind, h, e, what);
-      else expect_stable_run(o, what);
+      if (o.stopped)
+        expect_report(o, kind, h, e, what);
+      else
+        expect_stable_run(o, what);
       break;
   }
 }
@@ -144,7 +150,8 @@ class HardCaseBackwardEuler : public ::testing::TestWithParam<std::size_t> {};
 TEST_P(HardCaseBackwardEuler, StaysStableAtFiveMilliseconds) {
   const Case& c = kCases[GetParam()];
   const SceneSpec scene = load_hard_scene(c.name);
-  const Outcome o = run_case(scene, IntegratorKind::BackwardEuler, 0.005, std::max(c.horizon, 0.05));
+  const Outcome o =
+      run_case(scene, IntegratorKind::BackwardEuler, 0.005, std::max(c.horizon, 0.05));
   log_line(c.name, IntegratorKind::BackwardEuler, "h=0.005", 0.005, Expect::Stable, o);
   EXPECT_FALSE(o.stopped) << o.summary();
   if (!o.stopped) expect_stable_run(o, std::string(c.name) + " with backward Euler at 5 ms");
@@ -175,7 +182,8 @@ TEST_P(StepLimit, EstimateSeparatesStableFromUnstable) {
   const Outcome o = run_case(scene, kind, h, std::min(1500 * h, 4.0));  // the floor is 4.5 s away
   log_line("free-flight", kind, factor < 1.0 ? "0.9x-limit" : "1.1x-limit", h,
            factor < 1.0 ? Expect::Stable : Expect::Unstable, o);
-  const std::string what = std::string(to_string(kind)) + " at " + std::to_string(factor) + " × limit";
+  const std::string what =
+      std::string(to_string(kind)) + " at " + std::to_string(factor) + " × limit";
   if (factor < 1.0) {
     EXPECT_FALSE(o.stopped) << what << ": " << o.summary();
     if (!o.stopped) expect_stable_run(o, what);
@@ -188,9 +196,9 @@ TEST_P(StepLimit, EstimateSeparatesStableFromUnstable) {
 
 INSTANTIATE_TEST_SUITE_P(
     ExplicitIntegrators, StepLimit,
-    ::testing::Combine(::testing::Values(IntegratorKind::ExplicitEuler, IntegratorKind::ImplicitEuler,
-                                         IntegratorKind::Midpoint, IntegratorKind::RK4,
-                                         IntegratorKind::SymplecticEuler),
+    ::testing::Combine(::testing::Values(IntegratorKind::ExplicitEuler,
+                                         IntegratorKind::ImplicitEuler, IntegratorKind::Midpoint,
+                                         IntegratorKind::RK4, IntegratorKind::SymplecticEuler),
                        ::testing::Values(0.9, 1.1)),
     [](const ::testing::TestParamInfo<std::tuple<IntegratorKind, double>>& p) {
       return std::string(to_string(std::get<0>(p.param))) +

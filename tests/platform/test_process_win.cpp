@@ -35,10 +35,13 @@ int child_main(int argc, char** argv) {
   if (mode == "result") {  // the result channel: what fd 3 is on POSIX
     const char* h = std::getenv("JELLY_RESULT_HANDLE");
     if (!h) return 20;
-    const auto handle = reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(h, nullptr, 10)));
+    const auto handle =
+        reinterpret_cast<HANDLE>(static_cast<std::uintptr_t>(std::strtoull(h, nullptr, 10)));
     const char text[] = "{\"outputs\":{}}\n";
     DWORD written = 0;
-    return WriteFile(handle, text, sizeof text - 1, &written, nullptr) && written == sizeof text - 1 ? 0 : 21;
+    return WriteFile(handle, text, sizeof text - 1, &written, nullptr) && written == sizeof text - 1
+               ? 0
+               : 21;
   }
   if (mode == "stdin") {  // reads stdin (binary) to its end and prints its length and first bytes
     _setmode(_fileno(stdin), _O_BINARY);
@@ -70,8 +73,8 @@ using jelly::grade::run_child;
 
 TEST(ProcessWin, CapturesOutputExitCodeArgumentsAndWorkingDirectory) {
   Limits lim;
-  const std::vector<std::string> args = {g_self, "--child", "echo", "two words", "quote\"d", "back\\slash\\",
-                                         "", "tab\there"};
+  const std::vector<std::string> args = {g_self,     "--child",       "echo", "two words",
+                                         "quote\"d", "back\\slash\\", "",     "tab\there"};
   char temp[MAX_PATH];
   GetTempPathA(MAX_PATH, temp);
   const ChildResult r = run_child(args, lim, temp);

@@ -57,7 +57,8 @@ TEST(RenderMeshes, BowlCapEndsAtTheRimAndLiesOnTheSphere) {
   }
   EXPECT_NEAR(top, b.rim_height, 1e-5);
   // The 2023 bowl's rim is the hole's circle: the same radius.
-  EXPECT_NEAR(b.rim_radius(), std::get<Plane>(terrain_preset("course-2023-floor")->shape).hole_radius, 1e-12);
+  EXPECT_NEAR(b.rim_radius(),
+              std::get<Plane>(terrain_preset("course-2023-floor")->shape).hole_radius, 1e-12);
 }
 
 TEST(RenderMeshes, JellySurfaceCoversTheOuterFacesWithOutwardNormals) {
@@ -77,7 +78,8 @@ TEST(RenderMeshes, JellySurfaceCoversTheOuterFacesWithOutwardNormals) {
   }
   // Every triangle winds outwards.
   for (std::size_t t = 0; t < m.indices.size(); t += 3) {
-    const Vec3 a = m.positions[m.indices[t]].cast<double>(), b = m.positions[m.indices[t + 1]].cast<double>(),
+    const Vec3 a = m.positions[m.indices[t]].cast<double>(),
+               b = m.positions[m.indices[t + 1]].cast<double>(),
                c = m.positions[m.indices[t + 2]].cast<double>();
     EXPECT_GT((b - a).cross(c - a).dot((a + b + c) / 3.0 - spec.center), 0.0);
   }
@@ -120,7 +122,8 @@ TEST(RenderCamera, FramingKeepsTheJellyTheHoleAndTheBowlInView) {
         const double a = k * 3.14159265358979 / 8;
         points.push_back(p->hole_center + p->hole_radius * Vec3(std::cos(a), 0.0, std::sin(a)));
       }
-    if (const auto* b = std::get_if<Bowl>(&t.shape)) points.push_back(b->center - b->radius * Vec3::UnitY());
+    if (const auto* b = std::get_if<Bowl>(&t.shape))
+      points.push_back(b->center - b->radius * Vec3::UnitY());
   }
   for (const Vec3& pt : points) {
     const auto p = cam.project(pt, 1280, 720);

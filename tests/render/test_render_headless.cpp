@@ -52,17 +52,19 @@ PixelClass class_at(const Image& img, const OrbitCamera& cam, const Vec3& x) {
   const auto p = cam.project(x, img.width, img.height);
   if (!p) return PixelClass::Other;
   if (std::getenv("JELLY_RENDER_TEST_VERBOSE")) {
-    const int px = static_cast<int>(std::lround(p->x())), py = static_cast<int>(std::lround(p->y()));
+    const int px = static_cast<int>(std::lround(p->x())),
+              py = static_cast<int>(std::lround(p->y()));
     if (px >= 0 && py >= 0 && px < img.width && py < img.height) {
       const auto c = img.at(px, py);
-      std::printf("(%.2f, %.2f, %.2f) -> pixel (%d, %d) rgb %d %d %d: %s\n", x.x(), x.y(), x.z(), px, py, c[0],
-                  c[1], c[2], name(classify(c)));
+      std::printf("(%.2f, %.2f, %.2f) -> pixel (%d, %d) rgb %d %d %d: %s\n", x.x(), x.y(), x.z(),
+                  px, py, c[0], c[1], c[2], name(classify(c)));
     }
   }
   int votes[4] = {0, 0, 0, 0};
   for (int dy = -2; dy <= 2; ++dy)
     for (int dx = -2; dx <= 2; ++dx) {
-      const int px = static_cast<int>(std::lround(p->x())) + dx, py = static_cast<int>(std::lround(p->y())) + dy;
+      const int px = static_cast<int>(std::lround(p->x())) + dx,
+                py = static_cast<int>(std::lround(p->y())) + dy;
       if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
       ++votes[static_cast<int>(classify(img.at(px, py)))];
     }
@@ -148,18 +150,24 @@ TEST_F(HeadlessCourse, AtStartJellyFloorHoleAndBowlAreWhereThePhysicsPutsThem) {
   for (double side : {1.0, -1.0}) {
     const Vec3 out = p.hole_center + side * (p.hole_radius + margin) * toward;
     const Vec3 in = p.hole_center + side * (p.hole_radius - margin) * toward;
-    EXPECT_EQ(class_at(img, camera_, out), PixelClass::Floor) << "side " << side << ": " << name(class_at(img, camera_, out));
-    EXPECT_EQ(class_at(img, camera_, in), PixelClass::Bowl) << "side " << side << ": " << name(class_at(img, camera_, in));
+    EXPECT_EQ(class_at(img, camera_, out), PixelClass::Floor)
+        << "side " << side << ": " << name(class_at(img, camera_, out));
+    EXPECT_EQ(class_at(img, camera_, in), PixelClass::Bowl)
+        << "side " << side << ": " << name(class_at(img, camera_, in));
   }
   // The bowl's bottom, seen through the hole.
-  EXPECT_EQ(class_at(img, camera_, bowl().center - bowl().radius * Vec3::UnitY()), PixelClass::Bowl);
+  EXPECT_EQ(class_at(img, camera_, bowl().center - bowl().radius * Vec3::UnitY()),
+            PixelClass::Bowl);
   // The hole's edge across the view, left and right.
   for (double side : {1.0, -1.0}) {
-    EXPECT_EQ(class_at(img, camera_, p.hole_center + side * (p.hole_radius + margin) * across()), PixelClass::Floor);
-    EXPECT_EQ(class_at(img, camera_, p.hole_center + side * (p.hole_radius - margin) * across()), PixelClass::Bowl);
+    EXPECT_EQ(class_at(img, camera_, p.hole_center + side * (p.hole_radius + margin) * across()),
+              PixelClass::Floor);
+    EXPECT_EQ(class_at(img, camera_, p.hole_center + side * (p.hole_radius - margin) * across()),
+              PixelClass::Bowl);
   }
   // Floor farther out, 3 m beyond the hole to the side.
-  EXPECT_EQ(class_at(img, camera_, p.hole_center + (p.hole_radius + 3.0) * across()), PixelClass::Floor);
+  EXPECT_EQ(class_at(img, camera_, p.hole_center + (p.hole_radius + 3.0) * across()),
+            PixelClass::Floor);
 }
 
 TEST_F(HeadlessCourse, TheParametersArePrintedOnTheFrame) {
@@ -194,14 +202,16 @@ TEST_F(HeadlessCourse, AfterLandingTheJellyIsInTheBowl) {
   EXPECT_EQ(class_at(img, camera_, c), PixelClass::Jelly);
   // Where it started is empty now (sky or far floor, not jelly).
   EXPECT_NE(class_at(img, camera_, run_->setup().scene.cube.center), PixelClass::Jelly);
-  EXPECT_EQ(class_at(img, camera_, p.hole_center + (p.hole_radius + 3.0) * across()), PixelClass::Floor);
+  EXPECT_EQ(class_at(img, camera_, p.hole_center + (p.hole_radius + 3.0) * across()),
+            PixelClass::Floor);
 }
 
 TEST(RenderCommand, WritesNumberedFramesWithTheParametersPrinted) {
   const fs::path dir = kArtifacts / "command";
   fs::remove_all(dir);
-  std::vector<std::string> args = {"render", "course-2023", "--frames", dir.string(), "--width", "480",
-                                   "--height", "270", "--fps", "10", "--duration", "0.2", "--no-video"};
+  std::vector<std::string> args = {
+      "render", "course-2023", "--frames", dir.string(), "--width", "480",       "--height",
+      "270",    "--fps",       "10",       "--duration", "0.2",     "--no-video"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   ASSERT_EQ(render_command(static_cast<int>(argv.size()), argv.data()), 0);
@@ -212,9 +222,9 @@ TEST(RenderCommand, WritesNumberedFramesWithTheParametersPrinted) {
 
 TEST(RenderCommand, UsageErrorsReturnTwo) {
   std::vector<std::vector<std::string>> cases = {
-      {"render"},                                                   // no scene
-      {"render", "course-2023"},                                    // no --frames
-      {"render", "course-2023", "--frames", "/tmp/x", "--bogus"},   // unknown option
+      {"render"},                                                           // no scene
+      {"render", "course-2023"},                                            // no --frames
+      {"render", "course-2023", "--frames", "/tmp/x", "--bogus"},           // unknown option
       {"render", "course-2023", "--frames", "/tmp/x", "--compare", "rk4"},  // one integrator
       {"render", "course-2023", "--frames", "/tmp/x", "--width", "0"},
       {"render", "course-2023", "--frames", "/tmp/x", "--set", "no-equals-sign"},

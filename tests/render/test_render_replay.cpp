@@ -1,5 +1,6 @@
 // `jelly render --replay`: recorded positions drawn where they were recorded — not where the scene
-// puts the cube, and without simulating. (The CSV reader itself: tests/session/test_replay_csv.cpp.)
+// puts the cube, and without simulating. (The CSV reader itself:
+// tests/session/test_replay_csv.cpp.)
 #include <gtest/gtest.h>
 
 #include <array>
@@ -41,7 +42,9 @@ Image read_png(const fs::path& p) {
 }
 
 /// Jelly pixels are red (renderer.hpp colors::jelly), as in test_render_headless.cpp.
-bool jelly_pixel(const std::array<std::uint8_t, 4>& p) { return p[0] > 60 && p[0] > 2 * p[1] && p[0] > p[2] + 25; }
+bool jelly_pixel(const std::array<std::uint8_t, 4>& p) {
+  return p[0] > 60 && p[0] > 2 * p[1] && p[0] > p[2] + 25;
+}
 
 /// Jelly pixels in a 7×7 block around the projection of x.
 int jelly_votes(const Image& img, const OrbitCamera& cam, const Vec3& x) {
@@ -50,8 +53,10 @@ int jelly_votes(const Image& img, const OrbitCamera& cam, const Vec3& x) {
   int votes = 0;
   for (int dy = -3; dy <= 3; ++dy)
     for (int dx = -3; dx <= 3; ++dx) {
-      const int px = static_cast<int>(std::lround(p->x())) + dx, py = static_cast<int>(std::lround(p->y())) + dy;
-      if (px >= 0 && py >= 0 && px < img.width && py < img.height) votes += jelly_pixel(img.at(px, py));
+      const int px = static_cast<int>(std::lround(p->x())) + dx,
+                py = static_cast<int>(std::lround(p->y())) + dy;
+      if (px >= 0 && py >= 0 && px < img.width && py < img.height)
+        votes += jelly_pixel(img.at(px, py));
     }
   return votes;
 }
@@ -94,23 +99,25 @@ TEST(RenderReplay, DrawsTheRecordedPositionsNotTheScenesStart) {
     for (const Vec3& shift : {shift_a, shift_b}) {
       for (Eigen::Index i = 0; i < start.cols(); ++i) {
         const Vec3 x = start.col(i) + shift;
-        out << f << "," << 1.5 * (f + 1) << "," << i << "," << x.x() << "," << x.y() << "," << x.z() << "\n";
+        out << f << "," << 1.5 * (f + 1) << "," << i << "," << x.x() << "," << x.y() << "," << x.z()
+            << "\n";
       }
       ++f;
     }
   }
   const fs::path dir = kArtifacts / "frames";
   fs::remove_all(dir);
-  ASSERT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(), "--width",
-                        std::to_string(kW), "--height", std::to_string(kH), "--samples", "0", "--no-caption",
-                        "--label", "yours"}),
+  ASSERT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames",
+                        dir.string(), "--width", std::to_string(kW), "--height", std::to_string(kH),
+                        "--samples", "0", "--no-caption", "--label", "yours"}),
             0);
   const Image a = read_png(dir / "frame_00000.png"), b = read_png(dir / "frame_00001.png");
   ASSERT_EQ(a.width, kW);
   ASSERT_EQ(b.height, kH);
   EXPECT_FALSE(fs::exists(dir / "frame_00002.png"));
   EXPECT_GT(jelly_votes(a, camera, c0 + shift_a), 40);
-  EXPECT_EQ(jelly_votes(a, camera, c0), 0) << "the cube is drawn where the scene starts it, not where recorded";
+  EXPECT_EQ(jelly_votes(a, camera, c0), 0)
+      << "the cube is drawn where the scene starts it, not where recorded";
   EXPECT_GT(jelly_votes(b, camera, c0 + shift_b), 40);
   EXPECT_EQ(jelly_votes(b, camera, c0 + shift_a), 0);
 }
@@ -121,13 +128,15 @@ TEST(RenderReplay, InputErrorsReturnTwoAndNameTheProblem) {
   std::ofstream(csv) << "frame,time,particle,x,y,z\n0,0,0,0,0,0\n0,0,1,0,0,0\n0,0,2,0,0,0\n";
   const fs::path dir = kArtifacts / "unused";
   // Particle count against the scene's cube (1000).
-  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
-                        "--width", "64", "--height", "48"}),
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames",
+                        dir.string(), "--width", "64", "--height", "48"}),
             2);
   // Missing file, and options that mean simulating.
-  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", "/no/such.csv", "--frames", dir.string()}), 2);
-  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
-                        "--compare", "rk4,midpoint"}),
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", "/no/such.csv", "--frames",
+                        dir.string()}),
+            2);
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames",
+                        dir.string(), "--compare", "rk4,midpoint"}),
             2);
   EXPECT_FALSE(fs::exists(dir / "frame_00000.png"));
 }
@@ -149,22 +158,25 @@ TEST(RenderReplay, BadCameraIsAnInputErrorInBothModes) {
   const fs::path dir = kArtifacts / "bad-camera";
   fs::remove_all(dir);
   for (const char* camera : {"30,20", "30,20,-1", "a,b,c"}) {
-    EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
-                          "--width", "64", "--height", "48", "--camera", camera}),
+    EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames",
+                          dir.string(), "--width", "64", "--height", "48", "--camera", camera}),
               2)
         << camera;
-    EXPECT_EQ(run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration", "0",
-                          "--width", "64", "--height", "48", "--no-video", "--camera", camera}),
-              2)
+    EXPECT_EQ(
+        run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration", "0",
+                    "--width", "64", "--height", "48", "--no-video", "--camera", camera}),
+        2)
         << camera;
   }
   EXPECT_FALSE(fs::exists(dir / "frame_00000.png"));
   // A good value goes through in both modes.
-  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames", dir.string(),
-                        "--width", "64", "--height", "48", "--samples", "0", "--camera", "30,20,25"}),
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--replay", csv.string(), "--frames",
+                        dir.string(), "--width", "64", "--height", "48", "--samples", "0",
+                        "--camera", "30,20,25"}),
             0);
-  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration", "0", "--width",
-                        "64", "--height", "48", "--samples", "0", "--no-video", "--camera", "30,20,25"}),
+  EXPECT_EQ(run_render({"render", "builtin:course-2023", "--frames", dir.string(), "--duration",
+                        "0", "--width", "64", "--height", "48", "--samples", "0", "--no-video",
+                        "--camera", "30,20,25"}),
             0);
 }
 

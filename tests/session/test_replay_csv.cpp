@@ -44,19 +44,23 @@ TEST(ReplayCsv, ErrorsNameTheLineAndWhatWasExpected) {
       {"frame,time,particle,x,y\n", "t.csv:1: the header has no column 'z'"},
       {"frame,time,particle,x,y,z\n", "no frames"},
       {"frame,time,particle,x,y,z\n0,0,0,1,2\n", "t.csv:2: expected 6 values"},
-      {"frame,time,particle,x,y,z\n0,0,0,1,two,3\n", "t.csv:2: column 'y': expected a number, got 'two'"},
+      {"frame,time,particle,x,y,z\n0,0,0,1,two,3\n",
+       "t.csv:2: column 'y': expected a number, got 'two'"},
       {"frame,time,particle,x,y,z\n0,0,1,1,2,3\n", "t.csv:2: frame 0: expected particle 0, got 1"},
       {"frame,time,particle,x,y,z\n0,0,0,1,2,3\n0,0,1,1,2,3\n1,1,0,1,2,3\n",
        "frame 1 has 1 particles, the first frame has 2"},
-      {"frame,time,particle,x,y,z\n0,0,0,1,2,3\n1,1,0,1,2,3\n0,0,0,1,2,3\n", "t.csv:4: frame 0 appears again"},
+      {"frame,time,particle,x,y,z\n0,0,0,1,2,3\n1,1,0,1,2,3\n0,0,0,1,2,3\n",
+       "t.csv:4: frame 0 appears again"},
       {"frame,time,particle,x,y,z\n0,0,0,nan,2,3\n", "t.csv:2: particle 0: position is not finite"},
   };
   for (const Case& c : cases) {
     const ReplayResult r = parse_replay(c.text, "t.csv");
     EXPECT_FALSE(r) << c.text;
-    EXPECT_NE(r.error.find(c.expected), std::string::npos) << "got: " << r.error << "\nexpected: " << c.expected;
+    EXPECT_NE(r.error.find(c.expected), std::string::npos)
+        << "got: " << r.error << "\nexpected: " << c.expected;
   }
-  EXPECT_NE(load_replay("/no/such/replay.csv").error.find("/no/such/replay.csv: cannot open"), std::string::npos);
+  EXPECT_NE(load_replay("/no/such/replay.csv").error.find("/no/such/replay.csv: cannot open"),
+            std::string::npos);
 }
 
 }  // namespace

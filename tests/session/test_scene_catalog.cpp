@@ -27,7 +27,8 @@ class SceneCatalog : public ::testing::Test {
     write(dir_ / "sub" / "b.toml", "beta");
   }
   static void write(const fs::path& p, const std::string& name) {
-    std::ofstream(p) << "[scene]\nname = \"" << name << "\"\n[body]\ntype = \"particles\"\nmass = 1.0\n"
+    std::ofstream(p) << "[scene]\nname = \"" << name
+                     << "\"\n[body]\ntype = \"particles\"\nmass = 1.0\n"
                      << "positions = [[0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]\n";
   }
   static std::string name_of(const SceneResult& r) {
@@ -83,7 +84,8 @@ TEST_F(SceneCatalog, AFileWithErrorsGivesTheLoadersMessageNotNoSuchScene) {
   for (const std::string& arg : {std::string("bad"), (dir_ / "bad.toml").string()}) {
     const SceneResult r = resolve_scene(arg, dir_);
     ASSERT_FALSE(r);
-    EXPECT_NE(r.error->text().find((dir_ / "bad.toml").string() + ":2"), std::string::npos) << r.error->text();
+    EXPECT_NE(r.error->text().find((dir_ / "bad.toml").string() + ":2"), std::string::npos)
+        << r.error->text();
   }
   // A folder given as the scene says so.
   const SceneResult folder = resolve_scene((dir_ / "sub").string(), dir_);

@@ -13,7 +13,8 @@ namespace {
 
 TEST(ApplyOverrides, SetsEachKeyAndAcceptsCommasInValues) {
   SceneSpec s = course_2023_scene();
-  ASSERT_FALSE(apply_overrides(s, " springs.structural.ks = 5000 ;body.center=-5,12,0\nsprings.shear.kd=7; "));
+  ASSERT_FALSE(apply_overrides(
+      s, " springs.structural.ks = 5000 ;body.center=-5,12,0\nsprings.shear.kd=7; "));
   EXPECT_EQ(s.structural.ks, 5000.0);
   EXPECT_EQ(s.shear.kd, 7.0);
   EXPECT_EQ(s.cube.center, Vec3(-5.0, 12.0, 0.0));

@@ -29,9 +29,12 @@ inline std::vector<std::map<std::string, std::string>> read_csv(const std::files
     std::vector<std::string> out(1);
     bool quoted = false;
     for (char c : s) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) out.emplace_back();
-      else out.back() += c;
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        out.emplace_back();
+      else
+        out.back() += c;
     }
     return out;
   };
@@ -47,7 +50,8 @@ inline std::vector<std::map<std::string, std::string>> read_csv(const std::files
 
 /// An empty folder build/artifacts/study/NAME for one test's outputs.
 inline std::filesystem::path artifacts(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(JELLY_BINARY_DIR) / "artifacts" / "study" / name;
+  const std::filesystem::path dir =
+      std::filesystem::path(JELLY_BINARY_DIR) / "artifacts" / "study" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

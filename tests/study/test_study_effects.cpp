@@ -43,12 +43,13 @@ Rows effects(const std::string& name, const std::string& args) {
 
 TEST(StudyEffects, FreeFallHasNoImpactAndKeepsItsVolume) {
   // No terrain: nothing touches, so every impact measure is nan; the cube falls as one piece.
-  const Rows rows = effects("free-fall", scene("free-fall.toml") +
-                                             " --set body.n=4 --duration 0.5 --integrators rk4,symplectic_euler");
+  const Rows rows =
+      effects("free-fall", scene("free-fall.toml") +
+                               " --set body.n=4 --duration 0.5 --integrators rk4,symplectic_euler");
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) {
-    for (const char* column : {"contact_time", "impact_speed", "turn_time", "peak_speed_after_impact",
-                               "com_apex", "bounce_height", "rest_time"})
+    for (const char* column : {"contact_time", "impact_speed", "turn_time",
+                               "peak_speed_after_impact", "com_apex", "bounce_height", "rest_time"})
       EXPECT_EQ(row.at(column), "nan") << column;
     EXPECT_NEAR(d(row, "rest_volume"), 64.0, 1e-12);  // edge 4 m
     EXPECT_LT(std::abs(d(row, "cave_in_max")), 1e-12);
@@ -62,9 +63,10 @@ TEST(StudyEffects, FreeFallHasNoImpactAndKeepsItsVolume) {
 }
 
 TEST(StudyEffects, RestVolumeIsTheCubesVolumeInAnyOrientation) {
-  const Rows rows = effects("volume", scene("free-fall.toml") +
-                                          " --set body.n=5 --set gravity.enabled=false --set body.rotation_degrees=37"
-                                          " --duration 0.6 --param body.edge --values 1,2.5");
+  const Rows rows = effects(
+      "volume", scene("free-fall.toml") +
+                    " --set body.n=5 --set gravity.enabled=false --set body.rotation_degrees=37"
+                    " --duration 0.6 --param body.edge --values 1,2.5");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_NEAR(d(rows[0], "rest_volume"), 1.0, 1e-13);
   EXPECT_NEAR(d(rows[1], "rest_volume"), 2.5 * 2.5 * 2.5, 1e-12);
@@ -80,8 +82,9 @@ TEST(StudyEffects, DropOnAPlaneTouchesWhenTheFallSaysAndNeverRisesAboveItsStart)
   // Centre at y = 9, edge 4, plane y = -1, ε = 0.01: the lowest face reaches y = -0.99 after a
   // fall of 7.99 m, at t = sqrt(2 · 7.99 / 9.8) = 1.2770 s, at 12.51 m/s (symplectic Euler is one
   // step off the exact fall).
-  const Rows rows = effects("drop", scene("course-2021-plane.toml") +
-                                        " --set body.n=4 --duration 3 --param terrain.*.restitution --values 0,1");
+  const Rows rows = effects(
+      "drop", scene("course-2021-plane.toml") +
+                  " --set body.n=4 --duration 3 --param terrain.*.restitution --values 0,1");
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) {
     EXPECT_NEAR(d(row, "contact_time"), std::sqrt(2 * 7.99 / 9.8), 2e-3);
@@ -98,8 +101,9 @@ TEST(StudyEffects, DropOnAPlaneTouchesWhenTheFallSaysAndNeverRisesAboveItsStart)
 
 TEST(StudyEffects, StifferSpringsCaveInLess) {
   // docs/parameters.md, claim b i, on a small cube: every spring type's ks at once.
-  const Rows rows = effects("stiff", scene("course-2021-plane.toml") +
-                                         " --set body.n=4 --duration 2 --param springs.*.ks --values 500,2000,8000");
+  const Rows rows = effects(
+      "stiff", scene("course-2021-plane.toml") +
+                   " --set body.n=4 --duration 2 --param springs.*.ks --values 500,2000,8000");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].at("key"), "springs.*.ks");
   EXPECT_GT(d(rows[0], "cave_in_max"), d(rows[1], "cave_in_max"));
@@ -108,12 +112,14 @@ TEST(StudyEffects, StifferSpringsCaveInLess) {
 
 TEST(StudyEffects, WritesEveryOutputAndIsDeterministicButForTheTimings) {
   const fs::path dir = artifacts("effects-outputs");
-  const std::string args = "study effects " + scene("course-2021-plane.toml") +
-                           " --set body.n=3 --duration 1.5 --param body.center.y --values 5,9 --integrators "
-                           "explicit_euler,midpoint --out ";
+  const std::string args =
+      "study effects " + scene("course-2021-plane.toml") +
+      " --set body.n=3 --duration 1.5 --param body.center.y --values 5,9 --integrators "
+      "explicit_euler,midpoint --out ";
   const Result a = jelly(args + (dir / "a").string());
   ASSERT_EQ(a.code, 0) << a.output;
-  EXPECT_NE(a.output.find("[4/4] body.center.y=9 midpoint h=0.001: stable"), std::string::npos) << a.output;
+  EXPECT_NE(a.output.find("[4/4] body.center.y=9 midpoint h=0.001: stable"), std::string::npos)
+      << a.output;
   const Result b = jelly(args + (dir / "b").string() + " --quiet");
   ASSERT_EQ(b.code, 0) << b.output;
   EXPECT_EQ(b.output, "") << "--quiet prints nothing";
@@ -140,9 +146,10 @@ TEST(StudyEffects, WritesEveryOutputAndIsDeterministicButForTheTimings) {
 
 TEST(StudyEffects, TheDetectorStopsARunAndMarksIt) {
   // Explicit Euler at 1 ms with very strong dampers is far outside its stable region.
-  const Rows rows = effects("unstable", scene("course-2021-plane.toml") +
-                                            " --set body.n=4 --duration 1 --integrators explicit_euler "
-                                            "--param springs.*.kd --values 60,3000");
+  const Rows rows =
+      effects("unstable", scene("course-2021-plane.toml") +
+                              " --set body.n=4 --duration 1 --integrators explicit_euler "
+                              "--param springs.*.kd --values 60,3000");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].at("stable"), "true");
   EXPECT_EQ(rows[1].at("stable"), "false");
@@ -154,11 +161,15 @@ TEST(StudyEffects, RefusesBadInputAndWritesNothing) {
   const fs::path dir = artifacts("effects-bad");
   const std::string out = " --out " + (dir / "x").string();
   const std::string plane = scene("course-2021-plane.toml");
-  struct Case { std::string args, says; };
+  struct Case {
+    std::string args, says;
+  };
   const Case cases[] = {
-      {plane + " --param springs.structral.ks --values 1,2", "did you mean \"springs.structural.ks\"?"},
+      {plane + " --param springs.structral.ks --values 1,2",
+       "did you mean \"springs.structural.ks\"?"},
       {plane + " --param springs.*.ks --values 100,-1", "springs.structural.ks"},
-      {plane + " --param springs.*.kz --values 1", "springs.*.kz: matches no parameter of this scene"},
+      {plane + " --param springs.*.kz --values 1",
+       "springs.*.kz: matches no parameter of this scene"},
       {plane + " --param body.center --values 0,9,0", "separate vector values with ';'"},
       {plane + " --param body.n --values 3,x", "body.n"},
       {plane + " --param body.n", "needs --values"},
@@ -177,7 +188,8 @@ TEST(StudyEffects, RefusesBadInputAndWritesNothing) {
   }
   const Result help = jelly("study effects --help");
   EXPECT_EQ(help.code, 0);
-  EXPECT_NE(help.output.find("cave-in      largest 1 - V(t)/V(0)"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("cave-in      largest 1 - V(t)/V(0)"), std::string::npos)
+      << help.output;
 }
 
 }  // namespace
@@ -226,8 +238,10 @@ TEST(StudyEffects, TheStiffnessNumbersOfDocsParametersStillHold) {
   const Rows doc = markdown_table_after(read(fs::path(JELLY_SOURCE_DIR) / "docs" / "parameters.md"),
                                         "<!-- sweep ks -->");
   ASSERT_FALSE(doc.empty()) << "docs/parameters.md lost its ks table";
-  const Rows rows = effects("doc-ks", scene("course-2021-plane.toml") +
-                                          " --duration 2 --integrators symplectic_euler --param springs.*.ks --values 500,8000");
+  const Rows rows = effects(
+      "doc-ks",
+      scene("course-2021-plane.toml") +
+          " --duration 2 --integrators symplectic_euler --param springs.*.ks --values 500,8000");
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) {
     const auto it = std::find_if(doc.begin(), doc.end(), [&](const auto& d) {
@@ -236,8 +250,9 @@ TEST(StudyEffects, TheStiffnessNumbersOfDocsParametersStillHold) {
     ASSERT_NE(it, doc.end()) << "no symplectic_euler row for ks " << row.at("value");
     char measured[32];
     std::snprintf(measured, sizeof measured, "%.1f %%", 100.0 * d(row, "cave_in_max"));
-    EXPECT_EQ(it->at("cave-in max"), measured) << "ks " << row.at("value") << ": rerun tools/parameter-sweeps ks "
-                                               << "and update docs/parameters.md";
+    EXPECT_EQ(it->at("cave-in max"), measured)
+        << "ks " << row.at("value") << ": rerun tools/parameter-sweeps ks "
+        << "and update docs/parameters.md";
   }
   EXPECT_GT(d(rows[0], "cave_in_max"), 2.0 * d(rows[1], "cave_in_max")) << "stiffer caves in less";
 }
@@ -261,7 +276,8 @@ TEST(LectureDemos, EveryParameterTheInstructorGuideSetsExists) {
   const std::map<std::string, std::string> vars = {
       {"$S", "springs.structural"}, {"$H", "springs.shear"}, {"$B", "springs.bending"}};
   for (const auto& [name, value] : vars)
-    for (std::size_t at; (at = block.find(name)) != std::string::npos;) block.replace(at, name.size(), value);
+    for (std::size_t at; (at = block.find(name)) != std::string::npos;)
+      block.replace(at, name.size(), value);
   for (std::size_t at; (at = block.find("\\\n")) != std::string::npos;) block.replace(at, 2, " ");
   std::istringstream lines(block);
   int commands = 0, assignments = 0;

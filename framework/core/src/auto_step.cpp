@@ -19,7 +19,8 @@ std::string seconds(double h) {
 
 std::string AutoStep::message() const {
   char buf[160];
-  std::snprintf(buf, sizeof buf, "auto step: h = %.6g s (%d substep%s per %.6g s frame): ", chosen_h,
+  std::snprintf(buf, sizeof buf,
+                "auto step: h = %.6g s (%d substep%s per %.6g s frame): ", chosen_h,
                 substeps_per_frame, substeps_per_frame == 1 ? "" : "s", frame_dt);
   return buf + reason;
 }
@@ -41,16 +42,19 @@ AutoStep choose_step(const StabilityEstimate& estimate, IntegratorKind kind, dou
     a.stable_step_exists = false;
     a.reason = "no step size keeps " + name +
                " stable here (undamped springs sit on the imaginary axis, outside its stability "
-               "region); kept the scene's step " + seconds(max_step) + " (or a little less, to fit whole substeps into a frame)" +
+               "region); kept the scene's step " +
+               seconds(max_step) + " (or a little less, to fit whole substeps into a frame)" +
                " - add damping or choose rk4, symplectic_euler or backward_euler";
   } else if (a.recommended_step < max_step) {
     target = a.recommended_step;
     a.reason = "the estimate's limit for " + name + " is " + seconds(a.critical_step) +
-               " (omega_max " + [&] {
+               " (omega_max " +
+               [&] {
                  char b[32];
                  std::snprintf(b, sizeof b, "%.4g", estimate.omega_max);
                  return std::string(b);
-               }() + " rad/s); half of it, " + seconds(a.recommended_step) +
+               }() +
+               " rad/s); half of it, " + seconds(a.recommended_step) +
                ", is below the scene's step " + seconds(max_step);
   } else {
     a.reason = std::isinf(a.critical_step)
@@ -70,8 +74,8 @@ AutoStep choose_step(const StabilityEstimate& estimate, IntegratorKind kind, dou
   return a;
 }
 
-AutoStep choose_step(JacobianSystem& system, const State& at, IntegratorKind kind,
-                     double frame_dt, double max_step) {
+AutoStep choose_step(JacobianSystem& system, const State& at, IntegratorKind kind, double frame_dt,
+                     double max_step) {
   return choose_step(estimate_stability(system, at), kind, frame_dt, max_step);
 }
 

@@ -54,7 +54,7 @@ void add_spring_jacobians(const SpringGroup& group, const State& s,
     if (l < group.degenerate_length) continue;  // no direction: contributes nothing
     const Vec3 u = d / l;
     const Eigen::Matrix3d uu = u * u.transpose();
-    const double geometric = std::max(0.0, 1.0 - sp.rest_length / l);  // the clamp of §6
+    const double geometric = std::max(0.0, 1.0 - sp.rest_length / l);           // the clamp of §6
     const Eigen::Matrix3d kx = -group.ks * (geometric * (identity - uu) + uu);  // ∂f_a/∂x_a
     const Eigen::Matrix3d kv = -group.kd * uu;                                  // ∂f_a/∂v_a
     const int p = pair_of_spring[k];

@@ -19,7 +19,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// A valid range: [min, max] with each side inclusive or not; `bounded` false means any finite value.
+/// A valid range: [min, max] with each side inclusive or not; `bounded` false means any finite
+/// value.
 struct Range {
   bool bounded = false;
   double min = -kInf;
@@ -40,8 +41,8 @@ using Setter = void (*)(SceneSpec&, const Ctx&, const Value&);
 /// default-constructed scene structs (see with_defaults).
 enum class Default { Yes, None };
 
-Decl make(std::string_view pattern, Scope scope, ValueKind kind, std::string_view unit,
-          Default def, Range range, std::string_view description, Getter get, Setter set,
+Decl make(std::string_view pattern, Scope scope, ValueKind kind, std::string_view unit, Default def,
+          Range range, std::string_view description, Getter get, Setter set,
           std::vector<std::string_view> choices = {}, bool nonzero = false) {
   Decl d;
   d.pattern = pattern;
@@ -71,7 +72,9 @@ SurfaceProperties& surface(SceneSpec& s, const Ctx& c) {
                     terrain(s, c).shape);
 }
 Plane& plane(SceneSpec& s, const Ctx& c) { return std::get<Plane>(terrain(s, c).shape); }
-const Plane& plane(const SceneSpec& s, const Ctx& c) { return std::get<Plane>(terrain(s, c).shape); }
+const Plane& plane(const SceneSpec& s, const Ctx& c) {
+  return std::get<Plane>(terrain(s, c).shape);
+}
 Bowl& bowl(SceneSpec& s, const Ctx& c) { return std::get<Bowl>(terrain(s, c).shape); }
 const Bowl& bowl(const SceneSpec& s, const Ctx& c) { return std::get<Bowl>(terrain(s, c).shape); }
 Sphere& sphere(SceneSpec& s, const Ctx& c) { return std::get<Sphere>(terrain(s, c).shape); }
@@ -106,7 +109,8 @@ Vec3Array matrix(const std::vector<Vec3>& v) {
 
 // The scene whose values are the defaults: default-constructed structs (no gravity, as a scene
 // without a [gravity] table), with gravity's default acceleration for the rows that need gravity
-// and one terrain of the row's shape, so that every row reads its default from what the structs say.
+// and one terrain of the row's shape, so that every row reads its default from what the structs
+// say.
 SceneSpec defaults_scene(Scope scope) {
   SceneSpec s;
   if (scope == Scope::GravityOn) s.gravity = default_gravity();
@@ -138,269 +142,324 @@ std::vector<std::string_view> integrator_names() {
 const std::vector<Decl>& global_decls() {
   static const std::vector<Decl> table = with_defaults({
       // [scene]
-      make("scene.name", Scope::Always, ValueKind::Text, "", Default::None, kAny,
-           "Name shown by the viewer and written into results",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.name; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.name = text(v); }),
-      make("scene.description", Scope::Always, ValueKind::Text, "", Default::None, kAny,
-           "What the scene shows, one or two sentences",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.description; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.description = text(v); }),
+      make(
+          "scene.name", Scope::Always, ValueKind::Text, "", Default::None, kAny,
+          "Name shown by the viewer and written into results",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.name; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.name = text(v); }),
+      make(
+          "scene.description", Scope::Always, ValueKind::Text, "", Default::None, kAny,
+          "What the scene shows, one or two sentences",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.description; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.description = text(v); }),
       // [simulation]
-      make("simulation.integrator", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
-           "Time integrator (explicit_euler, implicit_euler, midpoint, rk4 are student tasks)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return std::string(to_string(s.integrator)); },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.integrator = *integrator_from_string(text(v));
-           },
-           integrator_names()),
-      make("simulation.dt", Scope::Always, ValueKind::Real, "s", Default::Yes, kPositive,
-           "Fixed time step h",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.dt; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.dt = real(v); }),
-      make("simulation.duration", Scope::Always, ValueKind::Real, "s", Default::Yes, kPositive,
-           "Simulated time a run covers",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.duration; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.duration = real(v); }),
-      make("simulation.auto_dt", Scope::Always, ValueKind::Bool, "", Default::Yes, kAny,
-           "Choose the step automatically: the largest h <= dt that the stability estimate allows "
-           "for the integrator (half its limit), with whole substeps per 1/60 s frame",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.auto_dt; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.auto_dt = flag(v); }),
+      make(
+          "simulation.integrator", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
+          "Time integrator (explicit_euler, implicit_euler, midpoint, rk4 are student tasks)",
+          [](const SceneSpec& s, const Ctx&) -> Value {
+            return std::string(to_string(s.integrator));
+          },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.integrator = *integrator_from_string(text(v));
+          },
+          integrator_names()),
+      make(
+          "simulation.dt", Scope::Always, ValueKind::Real, "s", Default::Yes, kPositive,
+          "Fixed time step h", [](const SceneSpec& s, const Ctx&) -> Value { return s.dt; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.dt = real(v); }),
+      make(
+          "simulation.duration", Scope::Always, ValueKind::Real, "s", Default::Yes, kPositive,
+          "Simulated time a run covers",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.duration; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.duration = real(v); }),
+      make(
+          "simulation.auto_dt", Scope::Always, ValueKind::Bool, "", Default::Yes, kAny,
+          "Choose the step automatically: the largest h <= dt that the stability estimate allows "
+          "for the integrator (half its limit), with whole substeps per 1/60 s frame",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.auto_dt; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.auto_dt = flag(v); }),
       // [gravity]
-      make("gravity.enabled", Scope::Always, ValueKind::Bool, "", Default::Yes, kAny,
-           "Whether the scene has gravity (a [gravity] table); true adds it with the default "
-           "acceleration",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.gravity.has_value(); },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             if (!flag(v)) {
-               s.gravity.reset();
-             } else if (!s.gravity) {
-               s.gravity = default_gravity();
-             }
-           }),
-      make("gravity.acceleration", Scope::GravityOn, ValueKind::Vector3, "m/s^2", Default::Yes, kAny,
-           "Constant gravitational acceleration g (y is up)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return *s.gravity; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.gravity = vec(v); }),
+      make(
+          "gravity.enabled", Scope::Always, ValueKind::Bool, "", Default::Yes, kAny,
+          "Whether the scene has gravity (a [gravity] table); true adds it with the default "
+          "acceleration",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.gravity.has_value(); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            if (!flag(v)) {
+              s.gravity.reset();
+            } else if (!s.gravity) {
+              s.gravity = default_gravity();
+            }
+          }),
+      make(
+          "gravity.acceleration", Scope::GravityOn, ValueKind::Vector3, "m/s^2", Default::Yes, kAny,
+          "Constant gravitational acceleration g (y is up)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return *s.gravity; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.gravity = vec(v); }),
       // [body]
-      make("body.type", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
-           "The body: a jelly cube, or particles given one by one",
-           [](const SceneSpec& s, const Ctx&) -> Value {
-             return std::string(s.body_kind == BodyKind::Cube ? "cube" : "particles");
-           },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.body_kind = text(v) == "cube" ? BodyKind::Cube : BodyKind::Particles;
-           },
-           {"cube", "particles"}),
-      make("body.n", Scope::Cube, ValueKind::Integer, "", Default::Yes, kCubeN,
-           "Particles per cube edge (n³ particles)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return static_cast<long long>(s.cube.n); },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.cube.n = static_cast<int>(std::get<long long>(v));
-           }),
-      make("body.edge", Scope::Cube, ValueKind::Real, "m", Default::Yes, kPositive, "Cube edge length L",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.edge; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.edge = real(v); }),
-      make("body.mass", Scope::Cube, ValueKind::Real, "kg", Default::Yes, kPositive,
-           "Mass of every particle",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.mass; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.mass = real(v); }),
-      make("body.center", Scope::Cube, ValueKind::Vector3, "m", Default::Yes, kAny,
-           "Initial centre c0; the grid is centred exactly on it",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.center; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.center = vec(v); }),
-      make("body.velocity", Scope::Cube, ValueKind::Vector3, "m/s", Default::Yes, kAny,
-           "Initial velocity of every particle (not rotated)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.velocity; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.velocity = vec(v); }),
-      make("body.rotation_axis", Scope::Cube, ValueKind::Vector3, "", Default::Yes, kAny,
-           "Axis of the initial rotation about c0 (normalised when used)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_axis; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_axis = vec(v); }, {},
-           /*nonzero=*/true),
-      make("body.rotation_degrees", Scope::Cube, ValueKind::Real, "deg", Default::Yes, kAny,
-           "Initial rotation angle about rotation_axis, right-hand rule",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_degrees; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_degrees = real(v); }),
-      make("body.mass", Scope::Particles, ValueKind::Real, "kg", Default::Yes, kPositive,
-           "Mass of every particle",
-           [](const SceneSpec& s, const Ctx&) -> Value { return s.particles.mass; },
-           [](SceneSpec& s, const Ctx&, const Value& v) { s.particles.mass = real(v); }),
-      make("body.positions", Scope::Particles, ValueKind::Vec3List, "m", Default::None, kAny,
-           "Initial positions, at least one; text form \"x,y,z; x,y,z\"",
-           [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.positions); },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.particles.positions = matrix(std::get<std::vector<Vec3>>(v));
-             // A different count makes the old velocities meaningless: start at rest.
-             if (s.particles.velocities.cols() != s.particles.positions.cols())
-               s.particles.velocities = Vec3Array::Zero(3, s.particles.positions.cols());
-           }),
-      make("body.velocities", Scope::Particles, ValueKind::Vec3List, "m/s", Default::None, kAny,
-           "Initial velocities, one per position (optional: zero)",
-           [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.velocities); },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
-           }),
-      make("body.springs", Scope::Particles, ValueKind::IndexPairList, "", Default::None, kAny,
-           "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
-           [](const SceneSpec& s, const Ctx&) -> Value {
-             std::vector<IndexPair> out;
-             for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
-             return out;
-           },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             // A spring that is unchanged (same pair at the same place in the list) keeps its
-             // rest length; a new one rests at the distance between the current positions.
-             const Vec3Array& x = s.particles.positions;
-             const std::vector<Spring>& old = s.particles.springs;
-             std::vector<Spring> springs;
-             for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
-               Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
-                         std::numeric_limits<double>::quiet_NaN()};
-               const std::size_t k = springs.size();
-               if (k < old.size() && old[k].a == sp.a && old[k].b == sp.b)
-                 sp.rest_length = old[k].rest_length;
-               else if (p[0] >= 0 && p[1] >= 0 && p[0] < x.cols() && p[1] < x.cols())
-                 sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
-               springs.push_back(sp);
-             }
-             s.particles.springs = std::move(springs);
-           }),
-      make("body.rest_lengths", Scope::Particles, ValueKind::RealList, "m", Default::None, kPositive,
-           "Rest length of each spring, one per spring (optional: the initial distance)",
-           [](const SceneSpec& s, const Ctx&) -> Value {
-             std::vector<double> out;
-             for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
-             return out;
-           },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             const auto& r = std::get<std::vector<double>>(v);
-             for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
-               s.particles.springs[i].rest_length = r[i];
-           }),
-      make("body.spring_type", Scope::Particles, ValueKind::Choice, "", Default::Yes, kAny,
-           "Whose coefficients the springs use; that [springs.<type>] table must be present",
-           [](const SceneSpec& s, const Ctx&) -> Value {
-             return std::string(to_string(s.particles.spring_type));
-           },
-           [](SceneSpec& s, const Ctx&, const Value& v) {
-             s.particles.spring_type = *spring_type_from_string(text(v));
-           },
-           {"structural", "shear", "shear_body", "bending"}),
+      make(
+          "body.type", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
+          "The body: a jelly cube, or particles given one by one",
+          [](const SceneSpec& s, const Ctx&) -> Value {
+            return std::string(s.body_kind == BodyKind::Cube ? "cube" : "particles");
+          },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.body_kind = text(v) == "cube" ? BodyKind::Cube : BodyKind::Particles;
+          },
+          {"cube", "particles"}),
+      make(
+          "body.n", Scope::Cube, ValueKind::Integer, "", Default::Yes, kCubeN,
+          "Particles per cube edge (n³ particles)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return static_cast<long long>(s.cube.n); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.cube.n = static_cast<int>(std::get<long long>(v));
+          }),
+      make(
+          "body.edge", Scope::Cube, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Cube edge length L", [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.edge; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.edge = real(v); }),
+      make(
+          "body.mass", Scope::Cube, ValueKind::Real, "kg", Default::Yes, kPositive,
+          "Mass of every particle",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.mass; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.mass = real(v); }),
+      make(
+          "body.center", Scope::Cube, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "Initial centre c0; the grid is centred exactly on it",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.center; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.center = vec(v); }),
+      make(
+          "body.velocity", Scope::Cube, ValueKind::Vector3, "m/s", Default::Yes, kAny,
+          "Initial velocity of every particle (not rotated)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.velocity; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.velocity = vec(v); }),
+      make(
+          "body.rotation_axis", Scope::Cube, ValueKind::Vector3, "", Default::Yes, kAny,
+          "Axis of the initial rotation about c0 (normalised when used)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_axis; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_axis = vec(v); }, {},
+          /*nonzero=*/true),
+      make(
+          "body.rotation_degrees", Scope::Cube, ValueKind::Real, "deg", Default::Yes, kAny,
+          "Initial rotation angle about rotation_axis, right-hand rule",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_degrees; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_degrees = real(v); }),
+      make(
+          "body.mass", Scope::Particles, ValueKind::Real, "kg", Default::Yes, kPositive,
+          "Mass of every particle",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.particles.mass; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.particles.mass = real(v); }),
+      make(
+          "body.positions", Scope::Particles, ValueKind::Vec3List, "m", Default::None, kAny,
+          "Initial positions, at least one; text form \"x,y,z; x,y,z\"",
+          [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.positions); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.particles.positions = matrix(std::get<std::vector<Vec3>>(v));
+            // A different count makes the old velocities meaningless: start at rest.
+            if (s.particles.velocities.cols() != s.particles.positions.cols())
+              s.particles.velocities = Vec3Array::Zero(3, s.particles.positions.cols());
+          }),
+      make(
+          "body.velocities", Scope::Particles, ValueKind::Vec3List, "m/s", Default::None, kAny,
+          "Initial velocities, one per position (optional: zero)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.velocities); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
+          }),
+      make(
+          "body.springs", Scope::Particles, ValueKind::IndexPairList, "", Default::None, kAny,
+          "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
+          [](const SceneSpec& s, const Ctx&) -> Value {
+            std::vector<IndexPair> out;
+            for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
+            return out;
+          },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            // A spring that is unchanged (same pair at the same place in the list) keeps its
+            // rest length; a new one rests at the distance between the current positions.
+            const Vec3Array& x = s.particles.positions;
+            const std::vector<Spring>& old = s.particles.springs;
+            std::vector<Spring> springs;
+            for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
+              Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
+                        std::numeric_limits<double>::quiet_NaN()};
+              const std::size_t k = springs.size();
+              if (k < old.size() && old[k].a == sp.a && old[k].b == sp.b)
+                sp.rest_length = old[k].rest_length;
+              else if (p[0] >= 0 && p[1] >= 0 && p[0] < x.cols() && p[1] < x.cols())
+                sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
+              springs.push_back(sp);
+            }
+            s.particles.springs = std::move(springs);
+          }),
+      make(
+          "body.rest_lengths", Scope::Particles, ValueKind::RealList, "m", Default::None, kPositive,
+          "Rest length of each spring, one per spring (optional: the initial distance)",
+          [](const SceneSpec& s, const Ctx&) -> Value {
+            std::vector<double> out;
+            for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
+            return out;
+          },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            const auto& r = std::get<std::vector<double>>(v);
+            for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
+              s.particles.springs[i].rest_length = r[i];
+          }),
+      make(
+          "body.spring_type", Scope::Particles, ValueKind::Choice, "", Default::Yes, kAny,
+          "Whose coefficients the springs use; that [springs.<type>] table must be present",
+          [](const SceneSpec& s, const Ctx&) -> Value {
+            return std::string(to_string(s.particles.spring_type));
+          },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.particles.spring_type = *spring_type_from_string(text(v));
+          },
+          {"structural", "shear", "shear_body", "bending"}),
   });
   return table;
 }
 
 const std::vector<Decl>& spring_decls() {
   static const std::vector<Decl> table = with_defaults({
-      make("springs.*.enabled", Scope::SpringAny, ValueKind::Bool, "", Default::Yes, kAny,
-           "Whether springs of this type are built (the table is present); true adds them with "
-           "the default coefficients",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).enabled; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) {
-             SpringSettings& st = spring_settings(s, c.spring);
-             if (flag(v) == st.enabled) return;
-             st = SpringSettings{};  // on: defaults; off: back to the normal form of an absent table
-             st.enabled = flag(v);
-           }),
-      make("springs.*.ks", Scope::SpringOn, ValueKind::Real, "N/m", Default::Yes, kNonNegative,
-           "Stiffness of every spring of this type",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).ks; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { spring_settings(s, c.spring).ks = real(v); }),
-      make("springs.*.kd", Scope::SpringOn, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
-           "Damping along every spring of this type",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).kd; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { spring_settings(s, c.spring).kd = real(v); }),
+      make(
+          "springs.*.enabled", Scope::SpringAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "Whether springs of this type are built (the table is present); true adds them with "
+          "the default coefficients",
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return spring_settings(s, c.spring).enabled;
+          },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            SpringSettings& st = spring_settings(s, c.spring);
+            if (flag(v) == st.enabled) return;
+            st = SpringSettings{};  // on: defaults; off: back to the normal form of an absent table
+            st.enabled = flag(v);
+          }),
+      make(
+          "springs.*.ks", Scope::SpringOn, ValueKind::Real, "N/m", Default::Yes, kNonNegative,
+          "Stiffness of every spring of this type",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).ks; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            spring_settings(s, c.spring).ks = real(v);
+          }),
+      make(
+          "springs.*.kd", Scope::SpringOn, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
+          "Damping along every spring of this type",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).kd; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            spring_settings(s, c.spring).kd = real(v);
+          }),
   });
   return table;
 }
 
 const std::vector<Decl>& terrain_decls() {
   static const std::vector<Decl> table = with_defaults({
-      make("terrain.*.type", Scope::TerrainAny, ValueKind::Choice, "", Default::None, kAny,
-           "Shape: plane, bowl (inside of a sphere below a rim) or sphere (obstacle); changing it "
-           "keeps the surface and takes the new shape's default geometry",
-           [](const SceneSpec& s, const Ctx& c) -> Value {
-             return std::string(terrain_type_name(terrain(s, c)));
-           },
-           [](SceneSpec& s, const Ctx& c, const Value& v) {
-             Terrain& t = terrain(s, c);
-             if (terrain_type_name(t) == text(v)) return;
-             Terrain fresh = default_terrain(t.name, text(v));
-             const SurfaceProperties keep = t.surface();
-             fresh.collision = t.collision;
-             fresh.contact = t.contact;
-             fresh.project = t.project;
-             t = std::move(fresh);
-             surface(s, c) = keep;
-           },
-           {"plane", "bowl", "sphere"}),
+      make(
+          "terrain.*.type", Scope::TerrainAny, ValueKind::Choice, "", Default::None, kAny,
+          "Shape: plane, bowl (inside of a sphere below a rim) or sphere (obstacle); changing it "
+          "keeps the surface and takes the new shape's default geometry",
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return std::string(terrain_type_name(terrain(s, c)));
+          },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            Terrain& t = terrain(s, c);
+            if (terrain_type_name(t) == text(v)) return;
+            Terrain fresh = default_terrain(t.name, text(v));
+            const SurfaceProperties keep = t.surface();
+            fresh.collision = t.collision;
+            fresh.contact = t.contact;
+            fresh.project = t.project;
+            t = std::move(fresh);
+            surface(s, c) = keep;
+          },
+          {"plane", "bowl", "sphere"}),
       // Plane geometry
-      make("terrain.*.point", Scope::Plane, ValueKind::Vector3, "m", Default::Yes, kAny,
-           "A point p on the plane",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).point; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).point = vec(v); }),
-      make("terrain.*.normal", Scope::Plane, ValueKind::Vector3, "", Default::Yes, kAny,
-           "Plane normal N (normalised by the loader)",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).normal; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).normal = normalised(vec(v)); },
-           {}, /*nonzero=*/true),
-      make("terrain.*.hole_center", Scope::PlaneHole, ValueKind::Vector3, "m", Default::None, kAny,
-           "Centre h of a circular hole, on the plane (give with hole_radius, or neither)",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).hole_center; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).hole_center = vec(v); }),
-      make("terrain.*.hole_radius", Scope::PlaneHole, ValueKind::Real, "m", Default::None, kPositive,
-           "Radius r_h of the hole, measured in the plane (give with hole_center, or neither)",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).hole_radius; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).hole_radius = real(v); }),
+      make(
+          "terrain.*.point", Scope::Plane, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "A point p on the plane",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).point; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).point = vec(v); }),
+      make(
+          "terrain.*.normal", Scope::Plane, ValueKind::Vector3, "", Default::Yes, kAny,
+          "Plane normal N (normalised by the loader)",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).normal; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            plane(s, c).normal = normalised(vec(v));
+          },
+          {}, /*nonzero=*/true),
+      make(
+          "terrain.*.hole_center", Scope::PlaneHole, ValueKind::Vector3, "m", Default::None, kAny,
+          "Centre h of a circular hole, on the plane (give with hole_radius, or neither)",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).hole_center; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).hole_center = vec(v); }),
+      make(
+          "terrain.*.hole_radius", Scope::PlaneHole, ValueKind::Real, "m", Default::None, kPositive,
+          "Radius r_h of the hole, measured in the plane (give with hole_center, or neither)",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return plane(s, c).hole_radius; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { plane(s, c).hole_radius = real(v); }),
       // Bowl geometry
-      make("terrain.*.center", Scope::Bowl, ValueKind::Vector3, "m", Default::Yes, kAny,
-           "Centre c of the bowl's sphere",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).center; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).center = vec(v); }),
-      make("terrain.*.radius", Scope::Bowl, ValueKind::Real, "m", Default::Yes, kPositive,
-           "Radius R of the bowl's sphere",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).radius; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).radius = real(v); }),
-      make("terrain.*.rim_height", Scope::Bowl, ValueKind::Real, "m", Default::Yes, kAny,
-           "Height y of the rim plane; needs center.y - radius < rim_height <= center.y",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).rim_height; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).rim_height = real(v); }),
+      make(
+          "terrain.*.center", Scope::Bowl, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "Centre c of the bowl's sphere",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).center; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).center = vec(v); }),
+      make(
+          "terrain.*.radius", Scope::Bowl, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Radius R of the bowl's sphere",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).radius; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).radius = real(v); }),
+      make(
+          "terrain.*.rim_height", Scope::Bowl, ValueKind::Real, "m", Default::Yes, kAny,
+          "Height y of the rim plane; needs center.y - radius < rim_height <= center.y",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return bowl(s, c).rim_height; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { bowl(s, c).rim_height = real(v); }),
       // Sphere geometry
-      make("terrain.*.center", Scope::Sphere, ValueKind::Vector3, "m", Default::Yes, kAny,
-           "Centre of the sphere obstacle",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return sphere(s, c).center; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { sphere(s, c).center = vec(v); }),
-      make("terrain.*.radius", Scope::Sphere, ValueKind::Real, "m", Default::Yes, kPositive,
-           "Radius of the sphere obstacle",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return sphere(s, c).radius; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { sphere(s, c).radius = real(v); }),
+      make(
+          "terrain.*.center", Scope::Sphere, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "Centre of the sphere obstacle",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere(s, c).center; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere(s, c).center = vec(v); }),
+      make(
+          "terrain.*.radius", Scope::Sphere, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Radius of the sphere obstacle",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere(s, c).radius; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere(s, c).radius = real(v); }),
       // Surface, every terrain
-      make("terrain.*.epsilon", Scope::TerrainAny, ValueKind::Real, "m", Default::Yes, kPositive,
-           "Collision tolerance ε",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).surface().epsilon; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).epsilon = real(v); }),
-      make("terrain.*.restitution", Scope::TerrainAny, ValueKind::Real, "", Default::Yes, kUnitInterval,
-           "Coefficient of restitution k_r: the share of normal velocity kept, reversed",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).surface().restitution; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).restitution = real(v); }),
-      make("terrain.*.friction", Scope::TerrainAny, ValueKind::Real, "s/m", Default::Yes, kNonNegative,
-           "Friction coefficient k_f: friction = -k_f (-N·f) v_T",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).surface().friction; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).friction = real(v); }),
-      make("terrain.*.collision", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
-           "Apply the collision velocity response at the start of each step",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).collision; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).collision = flag(v); }),
-      make("terrain.*.contact", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
-           "Add the contact and friction forces in every evaluation",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).contact; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).contact = flag(v); }),
-      make("terrain.*.project", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
-           "After the response, move particles behind the surface onto it (not in the course)",
-           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).project; },
-           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).project = flag(v); }),
+      make(
+          "terrain.*.epsilon", Scope::TerrainAny, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Collision tolerance ε",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).surface().epsilon; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).epsilon = real(v); }),
+      make(
+          "terrain.*.restitution", Scope::TerrainAny, ValueKind::Real, "", Default::Yes,
+          kUnitInterval,
+          "Coefficient of restitution k_r: the share of normal velocity kept, reversed",
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return terrain(s, c).surface().restitution;
+          },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).restitution = real(v); }),
+      make(
+          "terrain.*.friction", Scope::TerrainAny, ValueKind::Real, "s/m", Default::Yes,
+          kNonNegative, "Friction coefficient k_f: friction = -k_f (-N·f) v_T",
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return terrain(s, c).surface().friction;
+          },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).friction = real(v); }),
+      make(
+          "terrain.*.collision", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "Apply the collision velocity response at the start of each step",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).collision; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).collision = flag(v); }),
+      make(
+          "terrain.*.contact", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "Add the contact and friction forces in every evaluation",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).contact; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).contact = flag(v); }),
+      make(
+          "terrain.*.project", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "After the response, move particles behind the surface onto it (not in the course)",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).project; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).project = flag(v); }),
   });
   return table;
 }

@@ -1,8 +1,9 @@
 // Internal to jelly::core: the parameter declaration table behind params.hpp and the scene loader.
 //
 // Every scene parameter is declared once in param_rows.cpp (key pattern, value kind, unit, default,
-// range, description, and how to read and write it in a SceneSpec). The scene loader, set_parameter,
-// get_parameter, scene_parameters, to_toml and docs/scenes.md all go through these declarations.
+// range, description, and how to read and write it in a SceneSpec). The scene loader,
+// set_parameter, get_parameter, scene_parameters, to_toml and docs/scenes.md all go through these
+// declarations.
 #pragma once
 
 #include <array>
@@ -18,8 +19,19 @@
 namespace jelly::params_detail {
 
 /// What a value looks like. Finer than the public ParamType: the particle body's lists show up
-/// publicly as Text in the form "x,y,z; x,y,z" (Vec3List), "a,b; a,b" (IndexPairList), "r, r" (RealList).
-enum class ValueKind { Real, Integer, Bool, Vector3, Choice, Text, Vec3List, IndexPairList, RealList };
+/// publicly as Text in the form "x,y,z; x,y,z" (Vec3List), "a,b; a,b" (IndexPairList), "r, r"
+/// (RealList).
+enum class ValueKind {
+  Real,
+  Integer,
+  Bool,
+  Vector3,
+  Choice,
+  Text,
+  Vec3List,
+  IndexPairList,
+  RealList
+};
 
 using IndexPair = std::array<long long, 2>;
 /// A typed value: double (Real), long long (Integer), bool, Vec3, string (Choice, Text), or a list.
@@ -52,16 +64,16 @@ struct Decl {
   std::string_view pattern;  ///< "simulation.dt", "springs.*.ks", "terrain.*.radius"
   Scope scope = Scope::Always;
   ValueKind kind = ValueKind::Real;
-  std::string_view unit;          ///< "m", "s", "N/m", "" for dimensionless
-  bool has_default = false;       ///< whether the parameter has a default
-  std::string default_text;       ///< the default in set_parameter's text form (read from the
-                                  ///< default-constructed structs); "" when there is none
-  bool bounded = false;           ///< whether min/max apply (Real, Integer, RealList elements)
+  std::string_view unit;     ///< "m", "s", "N/m", "" for dimensionless
+  bool has_default = false;  ///< whether the parameter has a default
+  std::string default_text;  ///< the default in set_parameter's text form (read from the
+                             ///< default-constructed structs); "" when there is none
+  bool bounded = false;      ///< whether min/max apply (Real, Integer, RealList elements)
   double min = 0.0;
   double max = 0.0;
   bool min_inclusive = true;
   bool max_inclusive = true;
-  bool nonzero = false;  ///< Vector3 that must have non-zero length
+  bool nonzero = false;                   ///< Vector3 that must have non-zero length
   std::vector<std::string_view> choices;  ///< Choice values
   std::string_view description;
   Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
@@ -75,7 +87,8 @@ struct Bound {
   std::string key;
 };
 
-/// Declarations in table order: scene, simulation, gravity, body (global), per spring type, per terrain.
+/// Declarations in table order: scene, simulation, gravity, body (global), per spring type, per
+/// terrain.
 const std::vector<Decl>& global_decls();
 const std::vector<Decl>& spring_decls();
 const std::vector<Decl>& terrain_decls();
@@ -97,9 +110,11 @@ std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, co
 /// Whether a declaration applies to the scene in context ctx.
 bool applies(const Decl& d, const SceneSpec& s, const Ctx& ctx);
 
-/// Resolves a full key ("springs.shear.ks") against a scene. nullopt when no applicable declaration.
+/// Resolves a full key ("springs.shear.ks") against a scene. nullopt when no applicable
+/// declaration.
 std::optional<Bound> resolve(const SceneSpec& s, std::string_view key);
-/// Resolves ignoring scope: finds which declaration a key would be, for "not used by this kind" hints.
+/// Resolves ignoring scope: finds which declaration a key would be, for "not used by this kind"
+/// hints.
 std::optional<Bound> resolve_any(const SceneSpec& s, std::string_view key);
 
 /// Checks a value against a declaration's range; returns the message ("must be an integer ≥ 2,
@@ -122,7 +137,8 @@ struct CrossError {
 /// Checks the scene as a whole; the first problem or nullopt.
 std::optional<CrossError> check_scene(const SceneSpec& s);
 
-/// Terrain names must be usable inside dotted keys: letters, digits, '_' and '-', at most this many.
+/// Terrain names must be usable inside dotted keys: letters, digits, '_' and '-', at most this
+/// many.
 inline constexpr std::size_t kMaxTerrainName = 64;
 /// Why `name` cannot name a terrain ("must use letters, ..."), or nullopt when it can.
 std::optional<std::string> check_terrain_name(std::string_view name);

@@ -78,7 +78,8 @@ std::vector<std::string_view> split(std::string_view t, char sep) {
 
 std::string_view strip_brackets(std::string_view t) {
   t = trim(t);
-  if (t.size() >= 2 && ((t.front() == '[' && t.back() == ']') || (t.front() == '(' && t.back() == ')')))
+  if (t.size() >= 2 &&
+      ((t.front() == '[' && t.back() == ']') || (t.front() == '(' && t.back() == ')')))
     t = trim(t.substr(1, t.size() - 2));
   return t;
 }
@@ -101,11 +102,21 @@ bool valid_utf8(std::string_view s) {
     const auto c = static_cast<unsigned char>(s[i]);
     std::size_t len = 0;
     unsigned cp = 0;
-    if (c < 0x80) { ++i; continue; }
-    if ((c & 0xE0) == 0xC0) { len = 2; cp = c & 0x1Fu; }
-    else if ((c & 0xF0) == 0xE0) { len = 3; cp = c & 0x0Fu; }
-    else if ((c & 0xF8) == 0xF0) { len = 4; cp = c & 0x07u; }
-    else return false;
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
+    if ((c & 0xE0) == 0xC0) {
+      len = 2;
+      cp = c & 0x1Fu;
+    } else if ((c & 0xF0) == 0xE0) {
+      len = 3;
+      cp = c & 0x0Fu;
+    } else if ((c & 0xF8) == 0xF0) {
+      len = 4;
+      cp = c & 0x07u;
+    } else
+      return false;
     if (i + len > s.size()) return false;
     for (std::size_t k = 1; k < len; ++k) {
       const auto cc = static_cast<unsigned char>(s[i + k]);
@@ -230,7 +241,8 @@ std::string format_text(ValueKind kind, const Value& v) {
     }
     case ValueKind::RealList: {
       std::string s;
-      for (double r : std::get<std::vector<double>>(v)) s += (s.empty() ? "" : ",") + format_double(r);
+      for (double r : std::get<std::vector<double>>(v))
+        s += (s.empty() ? "" : ",") + format_double(r);
       return s;
     }
   }

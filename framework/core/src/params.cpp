@@ -53,7 +53,8 @@ std::vector<ParamInfo> scene_parameters(const SceneSpec& scene) {
   for (SpringType t : kSpringTypes) {
     const Ctx ctx{t, 0};
     for (const Decl& d : spring_decls())
-      if (applies(d, scene, ctx)) out.push_back(info_of(Bound{&d, ctx, expand(d.pattern, to_string(t))}));
+      if (applies(d, scene, ctx))
+        out.push_back(info_of(Bound{&d, ctx, expand(d.pattern, to_string(t))}));
   }
   for (std::size_t i = 0; i < scene.terrains.size(); ++i) {
     const Ctx ctx{SpringType::Structural, i};
@@ -85,7 +86,8 @@ std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
   try {
     const auto b = resolve(scene, key);
     if (!b) {
-      if (const auto any = resolve_any(scene, key)) return fail(k, inapplicable_reason(*any, scene));
+      if (const auto any = resolve_any(scene, key))
+        return fail(k, inapplicable_reason(*any, scene));
       std::vector<std::string> keys;
       for (const ParamInfo& p : scene_parameters(scene)) keys.push_back(p.key);
       std::string msg = "not a parameter of this scene";
@@ -101,7 +103,8 @@ std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
     SceneSpec changed = scene;
     b->decl->set(changed, b->ctx, v);
     if (auto cross = check_scene(changed))
-      return fail(cross->key, cross->message + " (after setting " + k + "=" + std::string(value) + ")");
+      return fail(cross->key,
+                  cross->message + " (after setting " + k + "=" + std::string(value) + ")");
     scene = std::move(changed);
     return std::nullopt;
   } catch (const std::exception& e) {
@@ -113,9 +116,10 @@ std::optional<SceneError> set_assignment(SceneSpec& scene, std::string_view assi
   const std::string_view item = trim(assignment);
   const std::size_t eq = item.find('=');
   if (eq == std::string_view::npos || trim(item.substr(0, eq)).empty())
-    return SceneError{"--set", "", 0, 0,
-                      "expected key=value (e.g. springs.shear.ks=5000; keys: `jelly params SCENE`), got '" +
-                          std::string(item) + "'"};
+    return SceneError{
+        "--set", "", 0, 0,
+        "expected key=value (e.g. springs.shear.ks=5000; keys: `jelly params SCENE`), got '" +
+            std::string(item) + "'"};
   return set_parameter(scene, trim(item.substr(0, eq)), trim(item.substr(eq + 1)));
 }
 

@@ -1,8 +1,8 @@
 #include "jelly/recorder.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cstring>
-#include <cerrno>
 #include <stdexcept>
 
 #include "jelly/fnv1a.hpp"
@@ -30,8 +30,8 @@ FrameSummary summarize(const World& w, const State& s, double t) {
 CsvWriter::CsvWriter(const std::filesystem::path& path, const std::string& header) {
   file_ = std::fopen(path.string().c_str(), "wb");
   if (!file_) {
-    throw std::runtime_error("cannot open " + path.string() + " for writing: " +
-                             std::strerror(errno));
+    throw std::runtime_error("cannot open " + path.string() +
+                             " for writing: " + std::strerror(errno));
   }
   buffer_ = header;
   buffer_ += '\n';

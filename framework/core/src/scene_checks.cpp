@@ -92,7 +92,6 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
   return std::nullopt;
 }
 
-
 namespace {
 
 // The messages of checks made in two places (a key's value as it is set, and the scene as a whole).
@@ -157,7 +156,8 @@ std::optional<CrossError> check_scene(const SceneSpec& s) {
   if (s.body_kind == BodyKind::Particles) {
     const ParticleBodySpec& p = s.particles;
     const Eigen::Index n = p.positions.cols();
-    if (n < 1) return CrossError{"body.positions", "a particles body needs at least one position, got none"};
+    if (n < 1)
+      return CrossError{"body.positions", "a particles body needs at least one position, got none"};
     if (p.velocities.cols() != n)
       return CrossError{"body.velocities", velocity_count_message(n, p.velocities.cols())};
     for (std::size_t i = 0; i < p.springs.size(); ++i) {
@@ -201,6 +201,5 @@ std::optional<CrossError> check_scene(const SceneSpec& s) {
   }
   return std::nullopt;
 }
-
 
 }  // namespace jelly::params_detail

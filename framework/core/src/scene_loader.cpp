@@ -5,12 +5,12 @@
 // and range-checked by its declaration. The first error (in file order) is returned with the
 // file, the dotted key, and the line and column toml++ reports. Nothing here throws, exits or
 // writes a file.
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "jelly/scene.hpp"
 #include "param_table.hpp"
@@ -42,8 +42,10 @@ Pos pos_of_key(const toml::key& k, const toml::node& value) {
 std::string describe(const toml::node& n) {
   if (auto v = n.as_string()) return "a string (" + in_quotes(v->get()) + ")";
   if (auto v = n.as_integer()) return "an integer (" + std::to_string(v->get()) + ")";
-  if (auto v = n.as_floating_point()) return "a floating-point number (" + format_double(v->get()) + ")";
-  if (auto v = n.as_boolean()) return std::string("a boolean (") + (v->get() ? "true" : "false") + ")";
+  if (auto v = n.as_floating_point())
+    return "a floating-point number (" + format_double(v->get()) + ")";
+  if (auto v = n.as_boolean())
+    return std::string("a boolean (") + (v->get() ? "true" : "false") + ")";
   if (auto v = n.as_array()) return "an array of " + std::to_string(v->size()) + " elements";
   if (n.is_table()) return "a table";
   return "a date or time";
@@ -167,7 +169,8 @@ class Loader {
     try {
       root = toml::parse(text, source_);
     } catch (const toml::parse_error& e) {
-      const Pos p{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)};
+      const Pos p{static_cast<int>(e.source().begin.line),
+                  static_cast<int>(e.source().begin.column)};
       result.error = SceneError{source_, "", p.line, p.column,
                                 "malformed TOML: " + std::string(e.description())};
       return result;
@@ -198,8 +201,9 @@ class Loader {
     const auto order = [](const SceneError& e) {
       return std::make_pair(e.line > 0 ? e.line : std::numeric_limits<int>::max(), e.column);
     };
-    return *std::min_element(errors_.begin(), errors_.end(),
-                             [&](const SceneError& a, const SceneError& b) { return order(a) < order(b); });
+    return *std::min_element(
+        errors_.begin(), errors_.end(),
+        [&](const SceneError& a, const SceneError& b) { return order(a) < order(b); });
   }
   /// Where a key (or, failing that, its enclosing table) was written.
   Pos position_for(std::string key) const {
@@ -226,7 +230,8 @@ class Loader {
   }
 
   // ----- values -----
-  /// Converts a TOML node by the declaration's kind; reports and returns nullopt when it does not fit.
+  /// Converts a TOML node by the declaration's kind; reports and returns nullopt when it does not
+  /// fit.
   std::optional<Value> convert(const Decl& d, const std::string& key, const toml::node& n) {
     const auto wrong = [&](const toml::node& at, const std::string& prefix = "") {
       error(key, pos_of(at), prefix + "must be " + toml_expected(d) + ", got " + describe(at));
@@ -266,7 +271,8 @@ class Loader {
         std::vector<IndexPair> out;
         for (std::size_t i = 0; i < a->size(); ++i) {
           const toml::array* pair = a->get(i)->as_array();
-          if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() || !pair->get(1)->is_integer())
+          if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() ||
+              !pair->get(1)->is_integer())
             return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
           out.push_back({pair->get(0)->as_integer()->get(), pair->get(1)->as_integer()->get()});
         }
@@ -356,7 +362,8 @@ class Loader {
 
   // ----- sections -----
   void read_root(const toml::table& root) {
-    const std::vector<std::string> sections = {"scene", "simulation", "gravity", "body", "springs", "terrain"};
+    const std::vector<std::string> sections = {"scene", "simulation", "gravity",
+                                               "body",  "springs",    "terrain"};
     for (auto&& [k, node] : root) {
       const std::string name(k.str());
       if (std::find(sections.begin(), sections.end(), name) == sections.end())
@@ -393,7 +400,8 @@ class Loader {
     find_decl("gravity.enabled")->set(spec_, Ctx{}, Value{true});
     apply_table(t, "gravity", "in [gravity]", {"acceleration", "enabled"}, {"enabled"});
     if (const toml::node* en = t.get("enabled")) {
-      if (auto v = read("gravity.enabled", *en)) find_decl("gravity.enabled")->set(spec_, Ctx{}, *v);
+      if (auto v = read("gravity.enabled", *en))
+        find_decl("gravity.enabled")->set(spec_, Ctx{}, *v);
     }
   }
 
@@ -420,13 +428,15 @@ class Loader {
       }
       const toml::table* st = node.as_table();
       if (!st) {
-        error(prefix, pos_of(node), "must be a table [" + prefix + "] with ks and kd, got " + describe(node));
+        error(prefix, pos_of(node),
+              "must be a table [" + prefix + "] with ks and kd, got " + describe(node));
         continue;
       }
       const Ctx ctx{*type, 0};
       const Decl& enabled = *find_decl("springs.*.enabled");
       enabled.set(spec_, ctx, Value{true});
-      apply_table(*st, prefix, "in [" + prefix + "]", local_keys(spring_decls(), "", ctx), {"enabled"});
+      apply_table(*st, prefix, "in [" + prefix + "]", local_keys(spring_decls(), "", ctx),
+                  {"enabled"});
       if (const toml::node* en = st->get("enabled")) {
         if (auto v = read(prefix + ".enabled", *en)) enabled.set(spec_, ctx, *v);
       }
@@ -496,8 +506,9 @@ class Loader {
       }
     } else {
       if (!type) {
-        error(label, entry_pos, "a terrain needs either preset = \"<name>\" or type = \"plane\", "
-                                "\"bowl\" or \"sphere\" (with a name)");
+        error(label, entry_pos,
+              "a terrain needs either preset = \"<name>\" or type = \"plane\", "
+              "\"bowl\" or \"sphere\" (with a name)");
         return;
       }
       if (!name) {
@@ -601,14 +612,16 @@ std::string toml_value(ValueKind kind, const Value& v) {
     case ValueKind::Vec3List: {
       const auto& list = std::get<std::vector<Vec3>>(v);
       std::string s = "[";
-      for (std::size_t i = 0; i < list.size(); ++i) s += (i ? ",\n  " : "\n  ") + toml_vec3(list[i]);
+      for (std::size_t i = 0; i < list.size(); ++i)
+        s += (i ? ",\n  " : "\n  ") + toml_vec3(list[i]);
       return s + (list.empty() ? "]" : ",\n]");
     }
     case ValueKind::IndexPairList: {
       std::string s = "[";
       const auto& list = std::get<std::vector<IndexPair>>(v);
       for (std::size_t i = 0; i < list.size(); ++i)
-        s += (i ? ", [" : "[") + std::to_string(list[i][0]) + ", " + std::to_string(list[i][1]) + "]";
+        s += (i ? ", [" : "[") + std::to_string(list[i][0]) + ", " + std::to_string(list[i][1]) +
+             "]";
       return s + "]";
     }
     case ValueKind::RealList: {

@@ -48,7 +48,8 @@ std::optional<Terrain> terrain_preset(std::string_view name) {
     b.surface.friction = 0.2;
     return Terrain{"bowl", b};
   }
-  if (name == "course-2021-plane") return plane_terrain("plane", {0.0, -1.0, 0.0}, {0.0, 1.0, 0.0}, 0.3);
+  if (name == "course-2021-plane")
+    return plane_terrain("plane", {0.0, -1.0, 0.0}, {0.0, 1.0, 0.0}, 0.3);
   if (name == "course-2021-tilted")
     return plane_terrain("tilted", {0.0, -1.0, 0.0}, {1.0, 1.0, 0.0}, 0.3);
   if (name == "course-2021-sphere") {
@@ -70,14 +71,15 @@ std::optional<Terrain> terrain_preset(std::string_view name) {
 }
 
 std::vector<std::string_view> terrain_preset_names() {
-  return {"course-2023-floor", "course-2023-bowl",   "course-2021-plane",
+  return {"course-2023-floor",  "course-2023-bowl", "course-2021-plane",
           "course-2021-sphere", "course-2021-bowl", "course-2021-tilted"};
 }
 
 SceneSpec course_2023_scene() {
   SceneSpec s;
   s.name = "course-2023";
-  s.description = "A jelly cube falls onto a floor with a hole and tips into the bowl below (course 2023).";
+  s.description =
+      "A jelly cube falls onto a floor with a hole and tips into the bowl below (course 2023).";
   s.integrator = IntegratorKind::SymplecticEuler;
   s.dt = 0.001;
   s.duration = 10.0;

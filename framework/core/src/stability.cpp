@@ -34,7 +34,10 @@ double power_iteration(const ForceJacobians& jac, bool stiffness, const Eigen::V
   used = 0;
   for (int it = 0; it < max_iterations; ++it) {
     for (Eigen::Index i = 0; i < n; ++i) t.col(i) = y.col(i) * inv_sqrt_m[i];
-    if (stiffness) jac.multiply_dfdx(t, out); else jac.multiply_dfdv(t, out);
+    if (stiffness)
+      jac.multiply_dfdx(t, out);
+    else
+      jac.multiply_dfdv(t, out);
     for (Eigen::Index i = 0; i < n; ++i) out.col(i) *= -inv_sqrt_m[i];  // J = −∂f
     const double rayleigh = (y.array() * out.array()).sum();
     const double norm = out.norm();
@@ -116,7 +119,8 @@ double StabilityEstimate::critical_step(IntegratorKind kind) const {
   }
   std::vector<double> omegas;
   for (int k = 1; k <= 400; ++k) omegas.push_back(omega_max * k / 400.0);
-  for (int k = 0; k < 100; ++k) omegas.push_back(omega_max * portable::exp10(-4.0 + 4.0 * k / 100.0));
+  for (int k = 0; k < 100; ++k)
+    omegas.push_back(omega_max * portable::exp10(-4.0 + 4.0 * k / 100.0));
   double lo = 1e-9 / omega_max;
   if (!stable_at(kind, lo, omegas, tau)) return 0.0;
   double hi = 100.0 * std::max(1.0 / omega_max, tau);
@@ -155,11 +159,12 @@ std::string InstabilityReport::message() const {
   char buf[1024];
   const std::string stable =
       recommended_step > 0.0 && std::isfinite(recommended_step)
-          ? "a step of about " + [&] {
-              char b[64];
-              std::snprintf(b, sizeof b, "%.3g s", recommended_step);
-              return std::string(b);
-            }()
+          ? "a step of about " +
+                [&] {
+                  char b[64];
+                  std::snprintf(b, sizeof b, "%.3g s", recommended_step);
+                  return std::string(b);
+                }()
           : std::string(recommended_step == 0.0
                             ? "no step size (this integrator cannot damp an undamped spring; add "
                               "damping or use rk4, symplectic_euler or backward_euler)"

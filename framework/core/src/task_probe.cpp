@@ -39,8 +39,8 @@ TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
   Workspace w;
   w.resize(1);
   fn(system, s, 0.01, w);
-  const bool changed = !(s.x.array() == before.x.array()).all() ||
-                       !(s.v.array() == before.v.array()).all();
+  const bool changed =
+      !(s.x.array() == before.x.array()).all() || !(s.v.array() == before.v.array()).all();
   st.implemented = changed;
   st.evidence = changed ? "a falling particle moved in one step"
                         : "one step under gravity left the state unchanged";
@@ -100,7 +100,8 @@ std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
     if (t.spring_force) {
       const Vec3 f = t.spring_force(Vec3::Zero(), Vec3(2.0, 0.0, 0.0), 10.0, 1.0, 1e-9);
       st.implemented = !f.isZero(0.0);
-      st.evidence = st.implemented ? "a stretched spring pulls" : "a stretched spring gave zero force";
+      st.evidence =
+          st.implemented ? "a stretched spring pulls" : "a stretched spring gave zero force";
     }
     out.push_back(st);
   }
@@ -110,8 +111,8 @@ std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
       const Vec3 f = t.damper_force(Vec3::Zero(), Vec3(1.0, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0),
                                     Vec3(1.0, 0.0, 0.0), 5.0, 1e-9);
       st.implemented = !f.isZero(0.0);
-      st.evidence = st.implemented ? "separating ends are damped"
-                                   : "separating ends gave zero damping force";
+      st.evidence =
+          st.implemented ? "separating ends are damped" : "separating ends gave zero damping force";
     }
     out.push_back(st);
   }
@@ -128,8 +129,8 @@ std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
   out.push_back(probe_contact("A1.T9", "bowl contact", t.contact_bowl, bowl,
                               {"resting in the bowl", "pressed into the bowl"}));
   out.push_back(probe_integrator("A1.T10", "explicit Euler", t.explicit_euler_step));
-  out.push_back(probe_integrator("A1.T11", "implicit Euler (predictor-corrector)",
-                                 t.implicit_euler_step));
+  out.push_back(
+      probe_integrator("A1.T11", "implicit Euler (predictor-corrector)", t.implicit_euler_step));
   out.push_back(probe_integrator("A1.T12", "midpoint", t.midpoint_step));
   out.push_back(probe_integrator("A1.T13", "RK4", t.rk4_step));
   return out;

@@ -7,8 +7,7 @@
 namespace jelly {
 
 const SurfaceProperties& Terrain::surface() const {
-  return std::visit([](const auto& s) -> const SurfaceProperties& { return s.surface; },
-                    shape);
+  return std::visit([](const auto& s) -> const SurfaceProperties& { return s.surface; }, shape);
 }
 
 namespace {

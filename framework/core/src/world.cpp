@@ -167,17 +167,19 @@ void World::build_cube_springs(int cube, SpringType type, double ks, double kd) 
       if (type == SpringType::ShearBody) {
         // Keep the body diagonals here and take them out of the cube's face-shear group.
         auto& springs = group.springs;
-        springs.erase(std::remove_if(springs.begin(), springs.end(),
-                                     [&](const Spring& s) { return !is_body_diagonal(lattice, s); }),
-                      springs.end());
+        springs.erase(
+            std::remove_if(springs.begin(), springs.end(),
+                           [&](const Spring& s) { return !is_body_diagonal(lattice, s); }),
+            springs.end());
         for (SpringGroup& g : groups_) {
           if (g.type != SpringType::Shear || g.springs.empty()) continue;
           const int a = g.springs.front().a;
           if (a < lattice.first_index() || a >= lattice.first_index() + lattice.particle_count())
             continue;
-          g.springs.erase(std::remove_if(g.springs.begin(), g.springs.end(),
-                                         [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
-                          g.springs.end());
+          g.springs.erase(
+              std::remove_if(g.springs.begin(), g.springs.end(),
+                             [&](const Spring& s) { return is_body_diagonal(lattice, s); }),
+              g.springs.end());
           if (spring_pass_) spring_pass_->springs_changed();
         }
       }

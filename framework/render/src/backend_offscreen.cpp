@@ -25,7 +25,9 @@ using GetProcAddress = void* (*)(const char*);
 
 // OSMesaGetProcAddress of the opened library, for Gl::load (which takes a plain function).
 GetProcAddress g_osmesa_get_proc = nullptr;
-void* osmesa_proc(const char* name) { return g_osmesa_get_proc ? g_osmesa_get_proc(name) : nullptr; }
+void* osmesa_proc(const char* name) {
+  return g_osmesa_get_proc ? g_osmesa_get_proc(name) : nullptr;
+}
 
 class OffscreenBackend : public Backend {
  public:
@@ -47,22 +49,32 @@ class OffscreenBackend : public Backend {
     if (!library_)
       return "cannot open libOSMesa (install the Debian package libosmesa6): " +
              std::string(dlerror());
-    auto create = reinterpret_cast<CreateContextAttribs>(dlsym(library_, "OSMesaCreateContextAttribs"));
+    auto create =
+        reinterpret_cast<CreateContextAttribs>(dlsym(library_, "OSMesaCreateContextAttribs"));
     auto make_current = reinterpret_cast<MakeCurrent>(dlsym(library_, "OSMesaMakeCurrent"));
     destroy_ = reinterpret_cast<DestroyContext>(dlsym(library_, "OSMesaDestroyContext"));
     g_osmesa_get_proc = reinterpret_cast<GetProcAddress>(dlsym(library_, "OSMesaGetProcAddress"));
     if (!create || !make_current || !destroy_ || !g_osmesa_get_proc)
       return "libOSMesa lacks OSMesaCreateContextAttribs (needs Mesa ≥ 12)";
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              24,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              3,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              3,
+                              0};
     context_ = create(attributes, nullptr);
     if (!context_) return "OSMesa could not create an OpenGL 3.3 core context";
     width_ = o.width;
     height_ = o.height;
     buffer_.assign(static_cast<std::size_t>(width_) * height_ * 4, 0);
     if (!make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_))
-      return "OSMesaMakeCurrent failed for " + std::to_string(width_) + "×" + std::to_string(height_);
+      return "OSMesaMakeCurrent failed for " + std::to_string(width_) + "×" +
+             std::to_string(height_);
     const std::string missing = gl_.load(&osmesa_proc);
     if (!missing.empty()) return "OSMesa lacks GL functions: " + missing;
     return {};

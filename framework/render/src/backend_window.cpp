@@ -51,9 +51,9 @@ BackendResult create_window_backend(const BackendOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   std::unique_ptr<WindowBackend> b(new WindowBackend());
-  b->window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
-  if (!b->window_)
-    return {nullptr, "window backend: no OpenGL 3.3 core window: " + glfw_error()};
+  b->window_ =
+      glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+  if (!b->window_) return {nullptr, "window backend: no OpenGL 3.3 core window: " + glfw_error()};
   glfwMakeContextCurrent(b->window_);
   glfwSwapInterval(options.vsync ? 1 : 0);
   const std::string missing = b->gl_.load(&glfw_proc);

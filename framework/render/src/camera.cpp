@@ -26,11 +26,14 @@ void OrbitCamera::orbit(double dx, double dy) {
   pitch_degrees = std::clamp(pitch_degrees + 0.3 * dy, -85.0, 85.0);
 }
 
-void OrbitCamera::zoom(double steps) { distance = std::clamp(distance * std::pow(0.9, steps), 0.5, 1e4); }
+void OrbitCamera::zoom(double steps) {
+  distance = std::clamp(distance * std::pow(0.9, steps), 0.5, 1e4);
+}
 
 Vec3 OrbitCamera::eye() const {
   const double y = rad(yaw_degrees), p = rad(pitch_degrees);
-  return target + distance * Vec3(std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y));
+  return target +
+         distance * Vec3(std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y));
 }
 
 Eigen::Matrix4f OrbitCamera::view() const {

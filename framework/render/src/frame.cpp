@@ -35,7 +35,9 @@ std::string wrap_text(const std::string& text, int max_width, float scale) {
 
 float text_scale(int h) { return std::clamp(static_cast<float>(h) / 360.0f, 1.0f, 2.0f); }
 
-SceneDrawable* drawable_of(const session::SimulationRun& run) { return dynamic_cast<SceneDrawable*>(run.attachment()); }
+SceneDrawable* drawable_of(const session::SimulationRun& run) {
+  return dynamic_cast<SceneDrawable*>(run.attachment());
+}
 
 void ensure_drawables(Renderer& renderer, const std::vector<session::SimulationRun*>& runs) {
   for (session::SimulationRun* r : runs)
@@ -61,8 +63,8 @@ std::vector<Viewport> frame_viewports(int count, int width, int height, int left
   return vps;
 }
 
-void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs, const OrbitCamera& camera,
-                const FrameOptions& o, int width, int height) {
+void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs,
+                const OrbitCamera& camera, const FrameOptions& o, int width, int height) {
   ensure_drawables(renderer, runs);
   renderer.begin_frame(width, height);
   const float s = text_scale(height);
@@ -78,7 +80,8 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
       const float room = static_cast<float>(vp.width - 3 * pad);
       return std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));
     };
-    const auto put = [&](const std::string& raw, const Eigen::Vector4f& color, float shrink = 1.0f) {
+    const auto put = [&](const std::string& raw, const Eigen::Vector4f& color,
+                         float shrink = 1.0f) {
       const std::string text = wrap_text(raw, vp.width - 3 * pad, s * shrink);
       const float ts = std::min(s * shrink, fit(text));
       renderer.draw_text(text, vp.x + pad, y, ts, color);
@@ -94,8 +97,8 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
       std::snprintf(buf, sizeof buf,
                     "UNSTABLE: %s stopped at step %ld (t = %.3f s, h = %g s): %s\n"
                     "stable step estimate: h <= %.3g s (recommended %.3g s)",
-                    std::string(display_name(r->integrator)).c_str(), r->step, r->time, r->step_size,
-                    r->reason.c_str(), r->critical_step, r->recommended_step);
+                    std::string(display_name(r->integrator)).c_str(), r->step, r->time,
+                    r->step_size, r->reason.c_str(), r->critical_step, r->recommended_step);
       put(buf, {1.0f, 0.42f, 0.38f, 1.0f}, runs.size() > 1 ? 0.75f : 1.0f);
     }
     if (i > 0) renderer.draw_rect(vp.x - 1, vp.y, 2, vp.height, {0.05f, 0.05f, 0.07f, 1.0f});
@@ -106,7 +109,8 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
     const std::string text = session::caption(runs.front()->setup(), t, runs.size() == 1);
     // Shrink the caption to fit the width left of the panel.
     const int room = width - o.left_margin - 3 * pad;
-    const float cs = std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));
+    const float cs =
+        std::min(s, s * room / std::max(1.0f, float(Renderer::text_size(text, s).x())));
     const Eigen::Vector2i size = Renderer::text_size(text, cs);
     renderer.draw_text(text, o.left_margin + pad, height - size.y() - pad / 2, cs,
                        {0.92f, 0.94f, 1.0f, 1.0f});

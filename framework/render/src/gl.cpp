@@ -4,8 +4,8 @@ namespace jelly::render {
 
 std::string Gl::load(void* (*get_proc)(const char*)) {
   std::string missing;
-#define JELLY_GL_LOAD(name, type)                                       \
-  name = reinterpret_cast<type>(get_proc("gl" #name));                  \
+#define JELLY_GL_LOAD(name, type)                      \
+  name = reinterpret_cast<type>(get_proc("gl" #name)); \
   if (!name) missing += (missing.empty() ? "gl" : ", gl") + std::string(#name);
   JELLY_GL_FUNCTIONS(JELLY_GL_LOAD)
 #undef JELLY_GL_LOAD

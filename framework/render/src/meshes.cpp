@@ -90,7 +90,8 @@ Mesh bowl_mesh(const Bowl& b) {
   const auto at = [&](int ring, int k) {
     return static_cast<std::uint32_t>(1 + (ring - 1) * kCircleSegments + (k % kCircleSegments));
   };
-  for (int k = 0; k < kCircleSegments; ++k) m.indices.insert(m.indices.end(), {0, at(1, k + 1), at(1, k)});
+  for (int k = 0; k < kCircleSegments; ++k)
+    m.indices.insert(m.indices.end(), {0, at(1, k + 1), at(1, k)});
   for (int ring = 1; ring < kRings; ++ring)
     for (int k = 0; k < kCircleSegments; ++k)
       add_quad(m, at(ring, k), at(ring, k + 1), at(ring + 1, k + 1), at(ring + 1, k));
@@ -121,7 +122,8 @@ Mesh sphere_mesh(const Sphere& s) {
 JellySurface::JellySurface(const CubeLattice& lat) {
   const int n = lat.n();
   Vec3 centre = Vec3::Zero();
-  for (Eigen::Index i = 0; i < lat.initial_positions().cols(); ++i) centre += lat.initial_positions().col(i);
+  for (Eigen::Index i = 0; i < lat.initial_positions().cols(); ++i)
+    centre += lat.initial_positions().col(i);
   centre /= static_cast<double>(lat.particle_count());
   for (int axis = 0; axis < 3; ++axis)
     for (int side : {0, n - 1}) {
@@ -144,8 +146,10 @@ JellySurface::JellySurface(const CubeLattice& lat) {
       for (int a = 0; a + 1 < n; ++a)
         for (int b = 0; b + 1 < n; ++b) {
           const std::uint32_t v00 = base + a * n + b, v10 = v00 + n, v11 = v10 + 1, v01 = v00 + 1;
-          if (flip) add_quad(mesh_, v00, v01, v11, v10);
-          else add_quad(mesh_, v00, v10, v11, v01);
+          if (flip)
+            add_quad(mesh_, v00, v01, v11, v10);
+          else
+            add_quad(mesh_, v00, v10, v11, v01);
         }
     }
   mesh_.positions.resize(particle_of_vertex_.size());
@@ -188,7 +192,8 @@ Bounds scene_bounds(const World& world) {
   // Cubes where they were built (so the framing does not depend on when it is computed); other
   // particles where they are now.
   for (const CubeLattice& c : world.cubes())
-    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) grow(c.initial_positions().col(i));
+    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i)
+      grow(c.initial_positions().col(i));
   if (world.cubes().empty())
     for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
   for (const Terrain& t : world.terrains()) {

@@ -102,17 +102,21 @@ struct GpuMesh {
   void upload_vertices(const Gl& gl, const std::vector<Eigen::Vector3f>& p,
                        const std::vector<Eigen::Vector3f>* n, GLenum usage) {
     gl.BindBuffer(GL_ARRAY_BUFFER, positions);
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.size() * sizeof(Eigen::Vector3f)), p.data(), usage);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.size() * sizeof(Eigen::Vector3f)),
+                  p.data(), usage);
     if (n && normals) {
       gl.BindBuffer(GL_ARRAY_BUFFER, normals);
-      gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n->size() * sizeof(Eigen::Vector3f)), n->data(), usage);
+      gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n->size() * sizeof(Eigen::Vector3f)),
+                    n->data(), usage);
     }
     vertex_count = static_cast<GLsizei>(p.size());
   }
   void upload_indices(const Gl& gl, const std::vector<std::uint32_t>& idx) {
     gl.BindVertexArray(vao);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(), GL_STATIC_DRAW);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                  static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(),
+                  GL_STATIC_DRAW);
     gl.BindVertexArray(0);
     index_count = static_cast<GLsizei>(idx.size());
   }
@@ -195,9 +199,12 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
   d->bounds_ = scene_bounds(world);
   const double half = plane_half_extent(d->bounds_);
   for (const Terrain& t : world.terrains()) {
-    if (const auto* p = std::get_if<Plane>(&t.shape)) d->terrain_meshes_.push_back(plane_mesh(*p, d->bounds_.center(), half));
-    else if (const auto* b = std::get_if<Bowl>(&t.shape)) d->terrain_meshes_.push_back(bowl_mesh(*b));
-    else d->terrain_meshes_.push_back(sphere_mesh(std::get<Sphere>(t.shape)));
+    if (const auto* p = std::get_if<Plane>(&t.shape))
+      d->terrain_meshes_.push_back(plane_mesh(*p, d->bounds_.center(), half));
+    else if (const auto* b = std::get_if<Bowl>(&t.shape))
+      d->terrain_meshes_.push_back(bowl_mesh(*b));
+    else
+      d->terrain_meshes_.push_back(sphere_mesh(std::get<Sphere>(t.shape)));
   }
   for (const CubeLattice& c : world.cubes()) d->surfaces_.emplace_back(c);
   if (!gl_) return d;
@@ -231,7 +238,8 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
     g.BindVertexArray(0);
     std::vector<std::uint32_t> idx;
     idx.reserve(group.springs.size() * 2);
-    for (const Spring& s : group.springs) idx.insert(idx.end(), {std::uint32_t(s.a), std::uint32_t(s.b)});
+    for (const Spring& s : group.springs)
+      idx.insert(idx.end(), {std::uint32_t(s.a), std::uint32_t(s.b)});
     gm.upload_indices(g, idx);
     d->gpu_->spring_lines.push_back(gm);
     d->gpu_->spring_types.push_back(group.type);
@@ -287,8 +295,10 @@ void Renderer::begin_frame(int width, int height) {
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   g.Disable(GL_DEPTH_TEST);
   g.UseProgram(programs_->sky);
-  g.Uniform3f(g.GetUniformLocation(programs_->sky, "u_top"), colors::kSkyTop.x(), colors::kSkyTop.y(), colors::kSkyTop.z());
-  g.Uniform3f(g.GetUniformLocation(programs_->sky, "u_horizon"), colors::kSkyHorizon.x(), colors::kSkyHorizon.y(), colors::kSkyHorizon.z());
+  g.Uniform3f(g.GetUniformLocation(programs_->sky, "u_top"), colors::kSkyTop.x(),
+              colors::kSkyTop.y(), colors::kSkyTop.z());
+  g.Uniform3f(g.GetUniformLocation(programs_->sky, "u_horizon"), colors::kSkyHorizon.x(),
+              colors::kSkyHorizon.y(), colors::kSkyHorizon.z());
   g.BindVertexArray(programs_->empty_vao);
   g.DrawArrays(GL_TRIANGLES, 0, 3);
   g.BindVertexArray(0);
@@ -383,7 +393,8 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
   }
 
   // Particles and springs share one position buffer.
-  const bool any_springs = std::any_of(opt.springs.begin(), opt.springs.end(), [](bool b) { return b; });
+  const bool any_springs =
+      std::any_of(opt.springs.begin(), opt.springs.end(), [](bool b) { return b; });
   if (opt.particles || any_springs) {
     gpu.scratch.resize(static_cast<std::size_t>(x.cols()));
     for (Eigen::Index i = 0; i < x.cols(); ++i) gpu.scratch[i] = x.col(i).cast<float>();
@@ -428,7 +439,8 @@ Eigen::Vector2i Renderer::text_size(std::string_view text, float scale) {
           static_cast<int>(std::ceil(stb_easy_font_height(s.data()) * scale))};
 }
 
-void Renderer::draw_overlay_triangles(const std::vector<float>& xy, const std::vector<std::uint8_t>& rgba) {
+void Renderer::draw_overlay_triangles(const std::vector<float>& xy,
+                                      const std::vector<std::uint8_t>& rgba) {
   if (!gl_ || xy.empty()) return;
   const Gl& g = *gl_;
   g.Disable(GL_DEPTH_TEST);
@@ -439,7 +451,8 @@ void Renderer::draw_overlay_triangles(const std::vector<float>& xy, const std::v
               static_cast<float>(frame_h_));
   g.BindVertexArray(programs_->overlay_vao);
   g.BindBuffer(GL_ARRAY_BUFFER, programs_->overlay_xy);
-  g.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xy.size() * sizeof(float)), xy.data(), GL_STREAM_DRAW);
+  g.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xy.size() * sizeof(float)), xy.data(),
+               GL_STREAM_DRAW);
   g.BindBuffer(GL_ARRAY_BUFFER, programs_->overlay_rgba);
   g.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(rgba.size()), rgba.data(), GL_STREAM_DRAW);
   g.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(xy.size() / 2));
@@ -448,25 +461,28 @@ void Renderer::draw_overlay_triangles(const std::vector<float>& xy, const std::v
 }
 
 namespace {
-void push_rect(std::vector<float>& xy, std::vector<std::uint8_t>& rgba, float x0, float y0, float x1,
-               float y1, const std::uint8_t c[4]) {
+void push_rect(std::vector<float>& xy, std::vector<std::uint8_t>& rgba, float x0, float y0,
+               float x1, float y1, const std::uint8_t c[4]) {
   const float v[12] = {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1};
   xy.insert(xy.end(), v, v + 12);
   for (int i = 0; i < 6; ++i) rgba.insert(rgba.end(), c, c + 4);
 }
-std::uint8_t to_byte(float f) { return static_cast<std::uint8_t>(std::clamp(f, 0.0f, 1.0f) * 255.0f + 0.5f); }
+std::uint8_t to_byte(float f) {
+  return static_cast<std::uint8_t>(std::clamp(f, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
 }  // namespace
 
 void Renderer::draw_rect(int x, int y, int w, int h, const Eigen::Vector4f& color) {
   std::vector<float> xy;
   std::vector<std::uint8_t> rgba;
-  const std::uint8_t c[4] = {to_byte(color[0]), to_byte(color[1]), to_byte(color[2]), to_byte(color[3])};
+  const std::uint8_t c[4] = {to_byte(color[0]), to_byte(color[1]), to_byte(color[2]),
+                             to_byte(color[3])};
   push_rect(xy, rgba, float(x), float(y), float(x + w), float(y + h), c);
   draw_overlay_triangles(xy, rgba);
 }
 
-void Renderer::draw_text(std::string_view text, int x, int y, float scale, const Eigen::Vector4f& color,
-                         bool panel) {
+void Renderer::draw_text(std::string_view text, int x, int y, float scale,
+                         const Eigen::Vector4f& color, bool panel) {
   if (!gl_ || text.empty()) return;
   std::string s(text);
   std::vector<float> xy;
@@ -479,8 +495,10 @@ void Renderer::draw_text(std::string_view text, int x, int y, float scale, const
               float(y + size.y() - 3 * scale + pad), bg);
   }
   std::vector<char> quads(s.size() * 300 + 1024);  // stb_easy_font: ≤ ~270 bytes per glyph
-  const int count = stb_easy_font_print(0.0f, 0.0f, s.data(), nullptr, quads.data(), static_cast<int>(quads.size()));
-  const std::uint8_t c[4] = {to_byte(color[0]), to_byte(color[1]), to_byte(color[2]), to_byte(color[3])};
+  const int count = stb_easy_font_print(0.0f, 0.0f, s.data(), nullptr, quads.data(),
+                                        static_cast<int>(quads.size()));
+  const std::uint8_t c[4] = {to_byte(color[0]), to_byte(color[1]), to_byte(color[2]),
+                             to_byte(color[3])};
   for (int q = 0; q < count; ++q) {
     const float* v = reinterpret_cast<const float*>(quads.data() + q * 64);  // 4 × (x, y, z, rgba)
     const float x0 = x + v[0] * scale, y0 = y + v[1] * scale;
@@ -496,7 +514,8 @@ void Renderer::end_frame() {
   if (fbo_) {
     g.BindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     g.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    g.BlitFramebuffer(0, 0, frame_w_, frame_h_, 0, 0, frame_w_, frame_h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    g.BlitFramebuffer(0, 0, frame_w_, frame_h_, 0, 0, frame_w_, frame_h_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
   }
   g.BindFramebuffer(GL_FRAMEBUFFER, 0);
   g.UseProgram(0);

@@ -18,7 +18,8 @@ std::string step_text(double h) {
 std::string caption(const RunSetup& s, double time, bool with_integrator) {
   const SceneSpec& sc = s.scene;
   std::string out = sc.name.empty() ? std::string("scene") : sc.name;
-  if (with_integrator) out += "   " + std::string(display_name(s.integrator)) + "   h = " + step_text(s.dt);
+  if (with_integrator)
+    out += "   " + std::string(display_name(s.integrator)) + "   h = " + step_text(s.dt);
   out += "   t = " + fmt("%.3f s", time);
   if (sc.body_kind == BodyKind::Cube) {
     out += "\ncube: n = " + std::to_string(sc.cube.n) + ", L = " + fmt("%.3g m", sc.cube.edge) +
@@ -28,7 +29,8 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
            ", m = " + fmt("%.3g kg", sc.particles.mass) + "\n";
   }
   const auto springs = [&](const char* name, const SpringSettings& ss) {
-    if (ss.enabled) out += std::string(name) + " ks " + fmt("%g", ss.ks) + " kd " + fmt("%g", ss.kd) + "   ";
+    if (ss.enabled)
+      out += std::string(name) + " ks " + fmt("%g", ss.ks) + " kd " + fmt("%g", ss.kd) + "   ";
   };
   springs("structural", sc.structural);
   springs("shear", sc.shear);
@@ -38,8 +40,8 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
     out += "\n";
     for (const Terrain& t : sc.terrains) {
       const SurfaceProperties& p = t.surface();
-      out += t.name + ": eps " + fmt("%g", p.epsilon) + " kr " + fmt("%g", p.restitution) +
-             " kf " + fmt("%g", p.friction) + "   ";
+      out += t.name + ": eps " + fmt("%g", p.epsilon) + " kr " + fmt("%g", p.restitution) + " kf " +
+             fmt("%g", p.friction) + "   ";
     }
   }
   if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
@@ -48,8 +50,9 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
 
 std::string run_label(const SimulationRun& run) {
   const int evals = evaluations_per_step(run.setup().integrator);
-  std::string out = std::string(display_name(run.setup().integrator)) + "  (" + std::to_string(evals) +
-                    (evals == 1 ? " eval/step)" : " evals/step)") + "\nh = " + step_text(run.step());
+  std::string out = std::string(display_name(run.setup().integrator)) + "  (" +
+                    std::to_string(evals) + (evals == 1 ? " eval/step)" : " evals/step)") +
+                    "\nh = " + step_text(run.step());
   if (run.ms_per_step() > 0.0) out += "  " + fmt("%.3f ms/step", run.ms_per_step());
   if (!run.setup().overrides.empty()) out += "\n" + run.setup().overrides;
   return out;

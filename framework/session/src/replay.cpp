@@ -57,11 +57,13 @@ ReplayResult parse_replay(std::string_view text, std::string_view source_name) {
         if (cells[c] == names[k]) col[k] = static_cast<int>(c);
     for (int k = 0; k < 6; ++k)
       if (col[k] < 0)
-        return fail(line_no, std::string("the header has no column '") + names[k] +
-                                 "' (expected frame,time,particle,x,y,z as `jelly run --out` writes)");
+        return fail(line_no,
+                    std::string("the header has no column '") + names[k] +
+                        "' (expected frame,time,particle,x,y,z as `jelly run --out` writes)");
     break;
   }
-  if (width == 0) return fail(line_no, "empty file (expected a header frame,time,particle,x,y,z and rows)");
+  if (width == 0)
+    return fail(line_no, "empty file (expected a header frame,time,particle,x,y,z and rows)");
 
   Replay replay;
   std::vector<Vec3> current;
@@ -79,7 +81,8 @@ ReplayResult parse_replay(std::string_view text, std::string_view source_name) {
     f.frame = frame;
     f.time = time;
     f.x.resize(3, static_cast<Eigen::Index>(current.size()));
-    for (std::size_t i = 0; i < current.size(); ++i) f.x.col(static_cast<Eigen::Index>(i)) = current[i];
+    for (std::size_t i = 0; i < current.size(); ++i)
+      f.x.col(static_cast<Eigen::Index>(i)) = current[i];
     replay.frames.push_back(std::move(f));
     current.clear();
     open = false;
@@ -104,14 +107,16 @@ ReplayResult parse_replay(std::string_view text, std::string_view source_name) {
       if (!close_frame(line_no)) return result;
       for (const ReplayFrame& seen : replay.frames)
         if (seen.frame == f)
-          return fail(line_no, "frame " + std::to_string(f) + " appears again (a frame's rows must be consecutive)");
+          return fail(line_no, "frame " + std::to_string(f) +
+                                   " appears again (a frame's rows must be consecutive)");
       frame = f;
       time = v[1];
       open = true;
     }
     if (p != static_cast<long>(current.size()))
-      return fail(line_no, "frame " + std::to_string(f) + ": expected particle " + std::to_string(current.size()) +
-                               ", got " + std::to_string(p) + " (particles in order 0, 1, 2, ...)");
+      return fail(line_no, "frame " + std::to_string(f) + ": expected particle " +
+                               std::to_string(current.size()) + ", got " + std::to_string(p) +
+                               " (particles in order 0, 1, 2, ...)");
     if (!std::isfinite(v[3]) || !std::isfinite(v[4]) || !std::isfinite(v[5]))
       return fail(line_no, "particle " + std::to_string(p) + ": position is not finite");
     current.emplace_back(v[3], v[4], v[5]);

@@ -27,15 +27,17 @@ std::vector<SceneEntry> list_scenes(const fs::path& dir) {
   std::vector<SceneEntry> out;
   std::error_code ec;
   if (fs::is_directory(dir, ec)) {
-    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
-         it.increment(ec)) {
+    for (auto it = fs::recursive_directory_iterator(dir, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
       if (!it->is_regular_file() || it->path().extension() != ".toml") continue;
       std::string name = fs::relative(it->path(), dir).replace_extension().generic_string();
       out.push_back({name, it->path()});
     }
   }
-  std::sort(out.begin(), out.end(), [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
-  const bool has_course = std::any_of(out.begin(), out.end(), [](const SceneEntry& e) { return e.name == "course-2023"; });
+  std::sort(out.begin(), out.end(),
+            [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
+  const bool has_course = std::any_of(out.begin(), out.end(),
+                                      [](const SceneEntry& e) { return e.name == "course-2023"; });
   if (!has_course) out.insert(out.begin(), SceneEntry{"builtin:course-2023", {}});
   return out;
 }
@@ -66,8 +68,8 @@ SceneResult resolve_scene(std::string_view what, const fs::path& dir) {
   SceneResult r;
   r.error = SceneError{s, "", 0, 0,
                        "no such scene: not a file, and not a name in " + dir.string() + " (tried " +
-                           (has_suffix ? as_named.string() : in_dir.string()) + "); known scenes: " + known +
-                           " (or a path to a .toml scene file)"};
+                           (has_suffix ? as_named.string() : in_dir.string()) +
+                           "); known scenes: " + known + " (or a path to a .toml scene file)"};
   return r;
 }
 

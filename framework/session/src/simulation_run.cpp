@@ -6,7 +6,10 @@
 
 namespace jelly::session {
 
-SimulationRun::SimulationRun(RunSetup setup, TaskTable tasks) : setup_(std::move(setup)), tasks_(tasks) { reset(); }
+SimulationRun::SimulationRun(RunSetup setup, TaskTable tasks)
+    : setup_(std::move(setup)), tasks_(tasks) {
+  reset();
+}
 
 void SimulationRun::reset(RunSetup setup) {
   setup_ = std::move(setup);
@@ -73,7 +76,8 @@ long SimulationRun::advance_to(double t_target, double budget_ms) {
     const StepResult result = sim_->step();
     const double d = ms_since(t0);
     ++steps;
-    if (result == StepResult::Unstable) break;  // that step also ran the stability estimate: not timed
+    if (result == StepResult::Unstable)
+      break;  // that step also ran the stability estimate: not timed
     step_ms += d;
     ++timed;
     if (steps % kSampleEvery == 0 && sim_->time() + 0.5 * h <= t_target)
@@ -95,7 +99,8 @@ void SimulationRun::step_once() {
   if (!sim_ || sim_->instability()) return;
   const auto start = std::chrono::steady_clock::now();
   sim_->step();
-  record(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  record(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
 }  // namespace jelly::session

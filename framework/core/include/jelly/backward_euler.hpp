@@ -13,8 +13,8 @@ namespace jelly {
 class BackwardEulerSolver {
  public:
   struct Options {
-    double tolerance = 1e-10;  ///< relative residual |r| / |b|
-    int max_iterations = 2000; ///< cap; hitting it is counted and reported, not fatal
+    double tolerance = 1e-10;   ///< relative residual |r| / |b|
+    int max_iterations = 2000;  ///< cap; hitting it is counted and reported, not fatal
   };
   BackwardEulerSolver() = default;
   explicit BackwardEulerSolver(Options options) : options_(options) {}

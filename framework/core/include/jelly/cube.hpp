@@ -7,13 +7,13 @@ namespace jelly {
 
 /// How to build a cube: the scene's `body` parameters.
 struct CubeSpec {
-  int n = 10;                       ///< particles per edge (≥ 2)
-  double edge = 4.0;                ///< edge length L [m]
-  double mass = 1.0;                ///< mass of every particle [kg]
-  Vec3 center{0.0, 9.0, 0.0};       ///< initial centre c0 [m]; the grid is centred exactly on it
+  int n = 10;                         ///< particles per edge (≥ 2)
+  double edge = 4.0;                  ///< edge length L [m]
+  double mass = 1.0;                  ///< mass of every particle [kg]
+  Vec3 center{0.0, 9.0, 0.0};         ///< initial centre c0 [m]; the grid is centred exactly on it
   Vec3 rotation_axis{1.0, 0.0, 1.0};  ///< initial rotation axis (normalised when used)
-  double rotation_degrees = 0.0;    ///< right-hand rule, about rotation_axis through c0 [deg]
-  Vec3 velocity{0.0, 0.0, 0.0};     ///< initial velocity of every particle, not rotated [m/s]
+  double rotation_degrees = 0.0;      ///< right-hand rule, about rotation_axis through c0 [deg]
+  Vec3 velocity{0.0, 0.0, 0.0};       ///< initial velocity of every particle, not rotated [m/s]
 };
 
 /// The particle grid of one cube as the spring builder sees it: grid coordinates (i, j, k), the

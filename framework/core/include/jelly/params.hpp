@@ -15,17 +15,17 @@ enum class ParamType { Real, Integer, Bool, Vector3, Choice, Text };
 /// One declared parameter: the loader validates against it, `--set` parses with it, the viewer
 /// draws a widget from it, and `jelly params` prints it.
 struct ParamInfo {
-  std::string key;          ///< dotted name as in the file: "springs.shear.ks", "terrain.floor.epsilon"
+  std::string key;  ///< dotted name as in the file: "springs.shear.ks", "terrain.floor.epsilon"
   ParamType type = ParamType::Real;
-  std::string unit;         ///< "N/m", "m", "s", "" for dimensionless
-  std::string default_text; ///< the default, as text
-  double min = 0.0;         ///< lower bound (Real, Integer; per component for Vector3 when bounded)
-  double max = 0.0;         ///< upper bound
+  std::string unit;          ///< "N/m", "m", "s", "" for dimensionless
+  std::string default_text;  ///< the default, as text
+  double min = 0.0;  ///< lower bound (Real, Integer; per component for Vector3 when bounded)
+  double max = 0.0;  ///< upper bound
   bool min_inclusive = true;
   bool max_inclusive = true;
-  bool bounded = false;     ///< whether min/max apply
+  bool bounded = false;              ///< whether min/max apply
   std::vector<std::string> choices;  ///< allowed values for Choice
-  std::string description;  ///< one line for help texts and tooltips
+  std::string description;           ///< one line for help texts and tooltips
 };
 
 /// Every parameter of `scene`: the global ones, plus terrain.<name>.* for each of its terrains and

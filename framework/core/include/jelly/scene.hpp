@@ -27,7 +27,8 @@ struct SceneResult {
 
 /// Reads, parses and validates a scene file. Never throws, never exits, writes nothing.
 SceneResult load_scene(const std::filesystem::path& path);
-/// Parses and validates scene text; `source_name` names it in errors (used by tests and the fuzzer).
+/// Parses and validates scene text; `source_name` names it in errors (used by tests and the
+/// fuzzer).
 SceneResult parse_scene(std::string_view text, std::string_view source_name);
 
 /// Writes a scene back as TOML that load_scene reads to the same SceneSpec.

@@ -25,9 +25,9 @@ struct SpringSettings {
 
 /// A body given particle by particle (the two-particle spring, particle clouds).
 struct ParticleBodySpec {
-  Vec3Array positions;   ///< 3×N [m]
-  Vec3Array velocities;  ///< 3×N [m/s] (zero when the scene gives none)
-  double mass = 1.0;     ///< every particle [kg]
+  Vec3Array positions;          ///< 3×N [m]
+  Vec3Array velocities;         ///< 3×N [m/s] (zero when the scene gives none)
+  double mass = 1.0;            ///< every particle [kg]
   std::vector<Spring> springs;  ///< explicit springs (rest length given or from positions)
   SpringType spring_type = SpringType::Structural;  ///< whose coefficients they use
 };
@@ -41,15 +41,15 @@ struct SceneSpec {
   std::string source;       ///< the file it came from ("" when built in code)
 
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;  ///< simulation.integrator
-  double dt = 0.001;        ///< simulation.dt [s]
-  double duration = 10.0;   ///< simulation.duration [s]
-  bool auto_dt = false;     ///< simulation.auto_dt: derive a stable step ≤ dt (jelly/auto_step.hpp)
+  double dt = 0.001;                                          ///< simulation.dt [s]
+  double duration = 10.0;                                     ///< simulation.duration [s]
+  bool auto_dt = false;  ///< simulation.auto_dt: derive a stable step ≤ dt (jelly/auto_step.hpp)
 
   std::optional<Vec3> gravity;  ///< gravity.acceleration; nullopt: no gravity term at all
 
   BodyKind body_kind = BodyKind::Cube;
-  CubeSpec cube;                ///< when body_kind == Cube
-  ParticleBodySpec particles;   ///< when body_kind == Particles
+  CubeSpec cube;               ///< when body_kind == Cube
+  ParticleBodySpec particles;  ///< when body_kind == Particles
 
   SpringSettings structural;  ///< springs.structural
   SpringSettings shear;       ///< springs.shear (face and body diagonals)
@@ -59,7 +59,8 @@ struct SceneSpec {
   std::vector<Terrain> terrains;  ///< in scene order
 };
 
-/// A scene input error: the file, the key (dotted path) and line where known, and what was expected.
+/// A scene input error: the file, the key (dotted path) and line where known, and what was
+/// expected.
 struct SceneError {
   std::string file;     ///< path as given, or "<string>"/"--set"
   std::string key;      ///< e.g. "body.n", "terrain.floor.normal"; empty for syntax errors

@@ -40,7 +40,7 @@ class Simulator {
     Options(IntegratorKind kind = IntegratorKind::ExplicitEuler, double step = 0.001)
         : integrator(kind), dt(step) {}
     IntegratorKind integrator = IntegratorKind::ExplicitEuler;
-    double dt = 0.001;            ///< fixed step h [s]
+    double dt = 0.001;  ///< fixed step h [s]
     bool detect_instability = true;
     StabilityMonitor::Config monitor;
   };

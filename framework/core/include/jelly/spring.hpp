@@ -30,9 +30,10 @@ struct Spring {
 /// All springs of one type in one body, with the coefficients they share.
 struct SpringGroup {
   SpringType type = SpringType::Structural;
-  double ks = 0.0;                 ///< stiffness [N/m]
-  double kd = 0.0;                 ///< damping along the spring [N·s/m]
-  double degenerate_length = 0.0;  ///< [m] below this current length a spring has no direction: zero force
+  double ks = 0.0;  ///< stiffness [N/m]
+  double kd = 0.0;  ///< damping along the spring [N·s/m]
+  double degenerate_length =
+      0.0;  ///< [m] below this current length a spring has no direction: zero force
   std::vector<Spring> springs;
 };
 

@@ -34,12 +34,12 @@ StabilityEstimate estimate_stability(JacobianSystem& system, const State& at);
 /// What the detector reports when it stops a run (contract §8).
 struct InstabilityReport {
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
-  double step_size = 0.0;       ///< h of the run [s]
-  long step = 0;                ///< the step at which it was detected
-  double time = 0.0;            ///< simulated time then [s]
-  std::string reason;           ///< "non-finite state", "energy above its start", ...
-  double energy_start = 0.0;    ///< [J]
-  double energy_now = 0.0;      ///< [J] (NaN when the state is not finite)
+  double step_size = 0.0;         ///< h of the run [s]
+  long step = 0;                  ///< the step at which it was detected
+  double time = 0.0;              ///< simulated time then [s]
+  std::string reason;             ///< "non-finite state", "energy above its start", ...
+  double energy_start = 0.0;      ///< [J]
+  double energy_now = 0.0;        ///< [J] (NaN when the state is not finite)
   double recommended_step = 0.0;  ///< the estimate's stable step for this integrator [s]
   double critical_step = 0.0;     ///< the estimate's limit before the safety factor [s]
 

@@ -15,8 +15,8 @@ namespace jelly {
 
 /// The probe's verdict on one task.
 struct TaskStatus {
-  std::string id;     ///< "A1.T1" … "A1.T13"
-  std::string name;   ///< "structural springs", "RK4", ...
+  std::string id;    ///< "A1.T1" … "A1.T13"
+  std::string name;  ///< "structural springs", "RK4", ...
   bool implemented = false;
   std::string evidence;  ///< what the probe saw, e.g. "no springs for a 3×3×3 lattice"
 };

@@ -22,11 +22,11 @@ struct SurfaceProperties {
 
 /// A plane through `point` with unit normal `normal`, optionally with a circular hole.
 struct Plane {
-  Vec3 point{0.0, 0.0, 0.0};   ///< any point p on the plane [m]
-  Vec3 normal{0.0, 1.0, 0.0};  ///< unit normal N (the loader normalises what the scene gives)
-  bool has_hole = false;       ///< whether the plane has a hole
+  Vec3 point{0.0, 0.0, 0.0};        ///< any point p on the plane [m]
+  Vec3 normal{0.0, 1.0, 0.0};       ///< unit normal N (the loader normalises what the scene gives)
+  bool has_hole = false;            ///< whether the plane has a hole
   Vec3 hole_center{0.0, 0.0, 0.0};  ///< hole centre h, a point on the plane [m]
-  double hole_radius = 0.0;    ///< hole radius r_h, measured in the plane [m]
+  double hole_radius = 0.0;         ///< hole radius r_h, measured in the plane [m]
   SurfaceProperties surface;
 };
 
@@ -34,7 +34,7 @@ struct Plane {
 struct Bowl {
   Vec3 center{0.0, 0.0, 0.0};  ///< sphere centre c [m]
   double radius = 1.0;         ///< sphere radius R [m]
-  double rim_height = 0.0;     ///< y of the rim plane [m]; needs center.y − R < rim_height ≤ center.y
+  double rim_height = 0.0;  ///< y of the rim plane [m]; needs center.y − R < rim_height ≤ center.y
   SurfaceProperties surface;
 
   /// Radius of the rim circle, sqrt(R² − (c_y − y_rim)²) [m]: the largest horizontal distance from
@@ -55,8 +55,8 @@ struct Sphere {
 
 /// One terrain of a scene: its geometry and which effects it takes part in (contract §7).
 struct Terrain {
-  std::string name;                          ///< unique within the scene, e.g. "floor", "bowl"
-  std::variant<Plane, Bowl, Sphere> shape;   ///< geometry and surface properties
+  std::string name;                         ///< unique within the scene, e.g. "floor", "bowl"
+  std::variant<Plane, Bowl, Sphere> shape;  ///< geometry and surface properties
   bool collision = true;  ///< apply the velocity response of §4 at the start of each step
   bool contact = true;    ///< add the contact and friction forces of §5 in each evaluation
   bool project = false;   ///< after the response, move particles with φ < 0 onto the surface

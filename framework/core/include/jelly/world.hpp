@@ -20,16 +20,17 @@ namespace jelly {
 /// simulated (contract §7); the viewer shows them. 64-bit on every platform (`long` is 32 bits
 /// on Windows, and springs_evaluated passes 2³¹ within minutes of a running viewer).
 struct EffectCounters {
-  std::int64_t acceleration_evaluations = 0;  ///< calls of World::acceleration
-  std::int64_t gravity_applications = 0;      ///< evaluations that added gravity
+  std::int64_t acceleration_evaluations = 0;               ///< calls of World::acceleration
+  std::int64_t gravity_applications = 0;                   ///< evaluations that added gravity
   std::array<std::int64_t, 4> spring_group_evaluations{};  ///< per SpringType, group passes
-  std::int64_t springs_evaluated = 0;  ///< springs summed over all passes
-  std::int64_t collision_passes = 0;  ///< calls of apply_collisions that had any terrain
+  std::int64_t springs_evaluated = 0;                      ///< springs summed over all passes
+  std::int64_t collision_passes = 0;            ///< calls of apply_collisions that had any terrain
   std::vector<std::int64_t> collision_queries;  ///< per terrain: particles tested for collision
-  std::vector<std::int64_t> contact_queries;  ///< per terrain: particles tested for contact
-  std::vector<std::int64_t> collisions;  ///< per terrain: responses applied
-  std::vector<std::int64_t> contacts;  ///< per terrain: contact forces applied
-  std::vector<std::int64_t> broadphase_skips;  ///< per terrain: passes skipped whole by the bounding box
+  std::vector<std::int64_t> contact_queries;    ///< per terrain: particles tested for contact
+  std::vector<std::int64_t> collisions;         ///< per terrain: responses applied
+  std::vector<std::int64_t> contacts;           ///< per terrain: contact forces applied
+  std::vector<std::int64_t>
+      broadphase_skips;  ///< per terrain: passes skipped whole by the bounding box
 };
 
 /// Energy of a state (contract §8) [J].

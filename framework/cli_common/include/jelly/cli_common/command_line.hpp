@@ -27,7 +27,9 @@ class Command : public CLI::App {
   /// `program` starts every error line ("jelly run"); `help` is printed for -h/--help;
   /// `after_error` follows an error line (a usage text, or "(see jelly run --help)\n").
   Command(std::string program, std::string help, std::string after_error)
-      : CLI::App("", program), program_(std::move(program)), help_(std::move(help)),
+      : CLI::App("", program),
+        program_(std::move(program)),
+        help_(std::move(help)),
         after_error_(std::move(after_error)) {
     set_help_flag("-h,--help");
     // CLI11's default on Windows reads "/x" as the option x: a path such as /home/a/scene.toml
@@ -38,7 +40,8 @@ class Command : public CLI::App {
   }
 
   /// An option taking one value per occurrence, every occurrence kept in order (--set K=V ...).
-  CLI::Option* repeated(const std::string& name, std::vector<std::string>& into, const std::string& value_name) {
+  CLI::Option* repeated(const std::string& name, std::vector<std::string>& into,
+                        const std::string& value_name) {
     return add_option(name, into)
         ->type_name(value_name)
         ->allow_extra_args(false)
@@ -62,7 +65,8 @@ class Command : public CLI::App {
     }
     if (!remaining().empty()) {
       const std::string extra = remaining().front();
-      if (extra.size() > 1 && extra[0] == '-') return error("unknown option " + extra.substr(0, extra.find('=')));
+      if (extra.size() > 1 && extra[0] == '-')
+        return error("unknown option " + extra.substr(0, extra.find('=')));
       return error("unexpected argument '" + extra + "'");
     }
     return std::nullopt;
@@ -84,7 +88,8 @@ class Command : public CLI::App {
         what.compare(what.size() - tail.size(), tail.size(), tail) != 0)
       return what;
     const std::size_t from = colon + 13;
-    return what.substr(0, colon) + " needs a value (" + what.substr(from, what.size() - tail.size() - from) + ")";
+    return what.substr(0, colon) + " needs a value (" +
+           what.substr(from, what.size() - tail.size() - from) + ")";
   }
 
   std::string program_, help_, after_error_;
@@ -109,12 +114,15 @@ inline std::optional<double> number(const std::string& text) {
 
 /// A whole number from `lo` to `hi` (no upper bound when hi is LONG_MAX).
 inline CLI::Validator whole_number(long lo, long hi = LONG_MAX) {
-  const std::string range = hi == LONG_MAX ? "≥ " + std::to_string(lo)
-                                           : "from " + std::to_string(lo) + " to " + std::to_string(hi);
+  const std::string range = hi == LONG_MAX
+                                ? "≥ " + std::to_string(lo)
+                                : "from " + std::to_string(lo) + " to " + std::to_string(hi);
   return CLI::Validator(
       [lo, hi, range](std::string& text) {
         const auto v = detail::whole(text);
-        return v && *v >= lo && *v <= hi ? std::string() : "expected a whole number " + range + ", got '" + text + "'";
+        return v && *v >= lo && *v <= hi
+                   ? std::string()
+                   : "expected a whole number " + range + ", got '" + text + "'";
       },
       "");
 }
@@ -126,7 +134,8 @@ inline CLI::Validator positive_number(bool zero_ok = false) {
         const auto v = detail::number(text);
         return v && (zero_ok ? *v >= 0.0 : *v > 0.0)
                    ? std::string()
-                   : std::string("expected a number ") + (zero_ok ? "≥ 0" : "> 0") + ", got '" + text + "'";
+                   : std::string("expected a number ") + (zero_ok ? "≥ 0" : "> 0") + ", got '" +
+                         text + "'";
       },
       "");
 }
@@ -138,7 +147,8 @@ inline CLI::Validator number_at_least(double lo) {
         const auto v = detail::number(text);
         char bound[32];
         std::snprintf(bound, sizeof bound, "%g", lo);
-        return v && *v >= lo ? std::string() : std::string("expected a number ≥ ") + bound + ", got '" + text + "'";
+        return v && *v >= lo ? std::string()
+                             : std::string("expected a number ≥ ") + bound + ", got '" + text + "'";
       },
       "");
 }

@@ -15,7 +15,8 @@ enum ExitCode : int {
   kExitUnstable = 3,
 };
 
-/// `jelly`'s name for kExitFailure: "an unexpected failure" (a bug, or a file that could not be written).
+/// `jelly`'s name for kExitFailure: "an unexpected failure" (a bug, or a file that could not be
+/// written).
 inline constexpr ExitCode kExitInternal = kExitFailure;
 
 }  // namespace jelly::cli

@@ -21,7 +21,7 @@ struct BackendOptions {
   int width = 1280;           ///< framebuffer size [px]
   int height = 720;
   std::string title = "Jelly Lab";
-  bool vsync = true;          ///< window only: swap interval 1
+  bool vsync = true;  ///< window only: swap interval 1
 };
 
 class Backend {

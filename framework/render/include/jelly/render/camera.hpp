@@ -20,7 +20,7 @@ struct Bounds {
 /// A camera orbiting a target point: yaw about +y, pitch above the horizon, distance.
 class OrbitCamera {
  public:
-  Vec3 target{0.0, 0.0, 0.0};  ///< [m]
+  Vec3 target{0.0, 0.0, 0.0};   ///< [m]
   double yaw_degrees = 30.0;    ///< 0: looking along −z; positive: the camera swings to +x
   double pitch_degrees = 28.0;  ///< above the horizon, clamped to [−85, 85]
   double distance = 30.0;       ///< [m] from the target

@@ -13,8 +13,8 @@ namespace jelly::render {
 
 struct FrameOptions {
   DrawOptions draw;
-  bool caption = true;   ///< print the parameters (bottom-left)
-  bool labels = true;    ///< label each viewport with its integrator and cost (comparison mode)
+  bool caption = true;  ///< print the parameters (bottom-left)
+  bool labels = true;   ///< label each viewport with its integrator and cost (comparison mode)
   std::vector<std::string> hints;  ///< lines shown at the top (e.g. "A1.T4 not implemented yet")
   /// Space kept free at the left edge [px] (the app's side panel).
   int left_margin = 0;
@@ -33,8 +33,8 @@ SceneDrawable* drawable_of(const session::SimulationRun& run);
 
 /// Draws `runs` side by side into a width×height frame (begin_frame … end_frame included).
 /// The camera is shared so comparison viewports show the same view.
-void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs, const OrbitCamera& camera,
-                const FrameOptions& options, int width, int height);
+void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs,
+                const OrbitCamera& camera, const FrameOptions& options, int width, int height);
 
 /// Two to four viewports side by side (1×n; 2×2 for four) filling a w×h frame.
 std::vector<Viewport> comparison_layout(int count, int width, int height);

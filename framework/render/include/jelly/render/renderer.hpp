@@ -20,11 +20,11 @@ namespace jelly::render {
 
 /// What to draw of a world.
 struct DrawOptions {
-  bool surface = true;                 ///< the jelly's outer faces, shaded
-  bool particles = false;              ///< every particle as a dot
-  std::array<bool, 4> springs{};       ///< per SpringType (structural, shear, shear_body, bending)
-  bool grid = true;                    ///< grid lines on planes (1 m, stronger every 5 m)
-  float point_size = 5.0f;             ///< [px] at 720 p, scaled with the viewport height
+  bool surface = true;            ///< the jelly's outer faces, shaded
+  bool particles = false;         ///< every particle as a dot
+  std::array<bool, 4> springs{};  ///< per SpringType (structural, shear, shear_body, bending)
+  bool grid = true;               ///< grid lines on planes (1 m, stronger every 5 m)
+  float point_size = 5.0f;        ///< [px] at 720 p, scaled with the viewport height
 };
 
 /// A rectangle of the frame in pixels, origin at the top-left.
@@ -67,7 +67,7 @@ class SceneDrawable : public session::RunAttachment {
   struct Gpu;
   SceneDrawable() = default;
   Bounds bounds_;
-  std::vector<Mesh> terrain_meshes_;   // one per terrain, in World::terrains() order
+  std::vector<Mesh> terrain_meshes_;    // one per terrain, in World::terrains() order
   std::vector<JellySurface> surfaces_;  // one per cube
   std::unique_ptr<Gpu> gpu_;
 };

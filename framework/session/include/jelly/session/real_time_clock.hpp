@@ -8,9 +8,9 @@ namespace jelly::session {
 /// death) and reported: "can't keep up: running at 0.37× real time".
 class RealTimeClock {
  public:
-  double factor = 1.0;         ///< real-time factor, 0.1–4
-  double budget_ms = 40.0;     ///< wall time per frame the simulation may take [ms]
-  double max_frame_s = 0.1;    ///< longer frames (window dragged, debugger) count as this [s]
+  double factor = 1.0;       ///< real-time factor, 0.1–4
+  double budget_ms = 40.0;   ///< wall time per frame the simulation may take [ms]
+  double max_frame_s = 0.1;  ///< longer frames (window dragged, debugger) count as this [s]
 
   static constexpr double kMinFactor = 0.1;
   static constexpr double kMaxFactor = 4.0;

@@ -12,8 +12,8 @@
 namespace jelly::session {
 
 struct SceneEntry {
-  std::string name;             ///< path relative to the scenes folder without .toml, e.g. "hard/stiff"
-  std::filesystem::path path;   ///< empty for the built-in scene
+  std::string name;  ///< path relative to the scenes folder without .toml, e.g. "hard/stiff"
+  std::filesystem::path path;  ///< empty for the built-in scene
 };
 
 /// The scenes folder: $JELLY_SCENES, else the source tree's scenes/ (compiled in), else ./scenes.

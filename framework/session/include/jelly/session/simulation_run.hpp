@@ -24,7 +24,9 @@ struct RunSetup {
   /// Parameters this run changes from the shared scene ("key=value; …", shown in its label).
   std::string overrides;
   /// From the scene's own simulation settings.
-  static RunSetup from_scene(const SceneSpec& scene) { return {scene, scene.integrator, scene.dt, {}}; }
+  static RunSetup from_scene(const SceneSpec& scene) {
+    return {scene, scene.integrator, scene.dt, {}};
+  }
 };
 
 /// One sample of a run's history (plots).
