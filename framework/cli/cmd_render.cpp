@@ -157,6 +157,20 @@ bool on_path(const std::string& program) {
   return false;
 }
 
+/// Reads the finished frame back, shows it, and writes it as DIR/frame_NNNNN.png (the numbering
+/// ffmpeg reads). False, after saying why on stderr, when the file cannot be written.
+bool save_frame(Backend& be, const fs::path& dir, std::size_t k) {
+  const Image img = be.read_pixels();
+  be.present();
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05zu.png", k);
+  if (const std::string err = write_png(dir / name, img); !err.empty()) {
+    std::cerr << "jelly render: " << err << "\n";
+    return false;
+  }
+  return true;
+}
+
 /// --replay: the scene's world (terrains, cube topology) drawn at each recorded frame's positions,
 /// one PNG per frame (frame_00000.png, ... in file order). Nothing is simulated and no task code
 /// runs but the spring builders the scene's world is built with.
@@ -218,14 +232,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
                          {0.92f, 0.94f, 1.0f, 1.0f});
     }
     renderer.end_frame();
-    const Image img = be.read_pixels();
-    be.present();
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05zu.png", k);
-    if (const std::string err = write_png(a.frames / name, img); !err.empty()) {
-      std::cerr << "jelly render: " << err << "\n";
-      return 1;
-    }
+    if (!save_frame(be, a.frames, k)) return 1;
   }
   std::cout << "wrote " << replay.frames.size() << " replayed frames to " << a.frames.string()
             << "\n";
@@ -350,14 +357,7 @@ int render_command(int argc, char** argv) {
     const double t = k / a.fps;
     for (SimulationRun* r : run_ptrs) r->advance_to(t);
     draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
-    const Image img = be.read_pixels();
-    be.present();
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", k);
-    if (const std::string err = write_png(a.frames / name, img); !err.empty()) {
-      std::cerr << "jelly render: " << err << "\n";
-      return 1;
-    }
+    if (!save_frame(be, a.frames, static_cast<std::size_t>(k))) return 1;
   }
   for (SimulationRun* r : run_ptrs)
     if (const auto& inst = r->simulator()->instability()) {

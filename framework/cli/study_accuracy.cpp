@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -15,6 +14,7 @@
 #include "jelly/auto_step.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_table.hpp"
+#include "study_files.hpp"
 
 namespace jelly::cli::study {
 
@@ -34,13 +34,6 @@ long steps_per(double interval, double h, const char* what) {
     throw std::invalid_argument(buf);
   }
   return r;
-}
-
-std::string loadavg() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  if (!(in >> a >> b >> c)) return "unknown";
-  return a + " " + b + " " + c;
 }
 
 /// What one run produces besides its row: the samples (reference runs only).

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -49,13 +48,6 @@ std::vector<std::string> expand(const SceneSpec& scene, const std::string& patte
   for (const ParamInfo& p : scene_parameters(scene))
     if (matches(pattern, p.key) && (!type || p.type == *type)) keys.push_back(p.key);
   return keys;
-}
-
-std::string loadavg() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  if (!(in >> a >> b >> c)) return "unknown";
-  return a + " " + b + " " + c;
 }
 
 /// Sets `key` (one declared key, or a vector key + ".x"/".y"/".z") to `value`; the error text or

@@ -71,4 +71,11 @@ bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   return true;
 }
 
+std::string loadavg() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  if (!(in >> a >> b >> c)) return "unknown";
+  return a + " " + b + " " + c;
+}
+
 }  // namespace jelly::cli::study

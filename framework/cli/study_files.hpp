@@ -1,5 +1,6 @@
 // What the `jelly study` commands share to write their results: number formatting for CSV and
-// Markdown, whole-file writes, and running gnuplot on a script in the output folder.
+// Markdown, whole-file writes, the machine load beside timings, and running gnuplot on a script in
+// the output folder.
 #pragma once
 
 #include <filesystem>
@@ -19,5 +20,9 @@ void write_file(const std::filesystem::path& p, const std::string& text);
 /// or says that it failed or is missing (the script is kept so the plot can be made later).
 bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& svg,
                  const std::filesystem::path& png, std::string& note);
+
+/// The machine's load averages (/proc/loadavg: 1, 5 and 15 min), recorded beside wall times so a
+/// reader can tell a loaded run; "unknown" where there is no such file (not Linux).
+std::string loadavg();
 
 }  // namespace jelly::cli::study
