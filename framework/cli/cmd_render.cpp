@@ -157,6 +157,18 @@ bool on_path(const std::string& program) {
   return false;
 }
 
+/// Creates the frames folder (and its parents); false, after saying why on stderr, when it cannot.
+bool make_folder(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) {
+    std::cerr << "jelly render: " << dir.string() << ": cannot create folder: " << ec.message()
+              << "\n";
+    return false;
+  }
+  return true;
+}
+
 /// Reads the finished frame back, shows it, and writes it as DIR/frame_NNNNN.png (the numbering
 /// ffmpeg reads). False, after saying why on stderr, when the file cannot be written.
 bool save_frame(Backend& be, const fs::path& dir, std::size_t k) {
@@ -194,13 +206,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
               << " particles per frame, but scene '" << scene.name << "' has " << n << "\n";
     return 2;
   }
-  std::error_code ec;
-  fs::create_directories(a.frames, ec);
-  if (ec) {
-    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message()
-              << "\n";
-    return 1;
-  }
+  if (!make_folder(a.frames)) return 1;
   // Framed on the scene at its start, so every frame of every replay of a scene has one view.
   std::unique_ptr<SceneDrawable> drawable = renderer.make_drawable(*world);
   OrbitCamera camera;
@@ -345,13 +351,7 @@ int render_command(int argc, char** argv) {
 
   const double duration = a.duration >= 0.0 ? a.duration : scene.duration;
   const int frames = static_cast<int>(std::floor(duration * a.fps + 1e-9)) + 1;
-  std::error_code ec;
-  fs::create_directories(a.frames, ec);
-  if (ec) {
-    std::cerr << "jelly render: " << a.frames.string() << ": cannot create folder: " << ec.message()
-              << "\n";
-    return 1;
-  }
+  if (!make_folder(a.frames)) return 1;
   int status = 0;
   for (int k = 0; k < frames; ++k) {
     const double t = k / a.fps;
