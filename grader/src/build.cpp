@@ -10,12 +10,14 @@
 #include <fstream>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "cases.hpp"
 #include "files.hpp"
 #include "process.hpp"
+#include "symbols.hpp"
 
 namespace jelly::grade {
 
@@ -178,6 +180,10 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
     if (p == "<command-line>" || p == "<built-in>") return true;
     const fs::path abs = (fs::path(p).is_absolute() ? fs::path(p) : cwd / p).lexically_normal();
     const std::string a = abs.string();
+    // The compiler's own temporary files (the assembly of the submission, "/tmp/ccAbC123.s"):
+    // directly in /tmp and named cc..., never any other file there (a checkout under /tmp is not
+    // the submission's).
+    if (abs.parent_path() == "/tmp" && abs.filename().string().rfind("cc", 0) == 0) return true;
     for (const fs::path& dir : allowed) {
       const std::string d = dir.lexically_normal().string();
       if (a.size() > d.size() && a.compare(0, d.size(), d) == 0 &&
@@ -206,20 +212,78 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
   return out;
 }
 
+namespace {
+
+// The nm next to the compiler (the same binutils as the linker), else the system's; "" if none.
+std::string find_nm(const GradeConfig& config) {
+  std::error_code ec;
+  const fs::path real = fs::canonical(config.compiler, ec);
+  std::vector<fs::path> candidates;
+  if (!ec) candidates.push_back(real.parent_path() / "nm");
+  candidates.push_back(fs::path(config.compiler).parent_path() / "nm");
+  candidates.push_back("/usr/bin/nm");
+  candidates.push_back("/bin/nm");
+  for (const fs::path& c : candidates)
+    if (fs::is_regular_file(c, ec) && access(c.c_str(), X_OK) == 0) return c.string();
+  return "";
+}
+
+std::string nm_text(const std::string& nm, const std::vector<std::string>& files, bool dynamic) {
+  std::vector<std::string> argv = {nm, "-P", "-A", "-g", "--defined-only"};
+  if (dynamic) argv.push_back("-D");
+  argv.insert(argv.end(), files.begin(), files.end());
+  Limits lim;
+  lim.timeout_s = 60.0;
+  lim.memory_bytes = 0;
+  lim.limit_files = false;
+  lim.result_pipe = false;
+  lim.keep_output = 64 << 20;
+  return run_child(argv, lim, {}).out;
+}
+
+// The symbols the framework's link inputs define (trusted files: nm runs outside the sandbox),
+// read once per process.
+const FrameworkSymbols& framework_symbols(const GradeConfig& config, const std::string& nm) {
+  static std::mutex mutex;
+  static std::map<std::string, FrameworkSymbols> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::vector<std::string> statics, shared;
+  std::string key;
+  for (const std::string& f : config.link_objects) statics.push_back(f), key += f + "\n";
+  for (const std::string& f : config.link_libraries) {
+    (f.find(".so") != std::string::npos ? shared : statics).push_back(f);
+    key += f + "\n";
+  }
+  const auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  FrameworkSymbols fw;
+  std::string text = nm_text(nm, statics, false);
+  if (!shared.empty()) text += nm_text(nm, shared, true);
+  for (const auto& [file, syms] : parse_nm(text))
+    for (const DefinedSymbol& s : syms) (s.weak() ? fw.weak : fw.strong).insert(s.name);
+  return cache[key] = fw;
+}
+
+}  // namespace
+
 BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
                              const fs::path& work_dir, int jobs, const Isolation& iso,
                              const BuildLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
   BuildResult r;
-  const fs::path src = work_dir / "src", obj = work_dir / "obj";
+  const fs::path src = work_dir / "src", stubs = work_dir / "stubs", obj = work_dir / "obj";
   fs::create_directories(src);
+  fs::create_directories(stubs);
   fs::create_directories(obj);
   fs::create_directories(config.cache_dir());
+  const std::vector<std::string>& files = task_files();
 
-  // 1. Take exactly the five task files.
-  std::map<std::string, std::string> shown;  // task file → name shown in messages
-  std::string policy_errors;
-  for (const std::string& name : task_files()) {
+  // 1. Take exactly the five task files, and the stubs (assignments/) that stand in for a file
+  //    that cannot be used.
+  std::map<std::string, std::string> shown;     // task file → name shown in messages
+  std::map<std::string, std::string> messages;  // task file → why it cannot be used, or warnings
+  std::set<std::string> broken;                 // task files replaced by their stub
+  for (const std::string& name : files) {
     std::vector<fs::path> hits =
         fs::is_directory(submission) ? find_named(submission, name) : std::vector<fs::path>{};
     fs::path from;
@@ -243,18 +307,17 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     const std::string text = r.used[name] == "stub"
                                  ? read_file(from)
                                  : read_submitted(from, shown[name], limits.source_bytes, refused);
-    policy_errors += refused;
-    policy_errors += include_policy(shown[name], text);
+    const std::string policy = refused + include_policy(shown[name], text);
+    if (!policy.empty()) {
+      messages[name] = policy;
+      broken.insert(name);
+    }
     std::ofstream(src / name, std::ios::binary) << text;
+    std::ofstream(stubs / name, std::ios::binary) << read_file(config.assignments_dir() / name);
   }
   give_to_sandbox(iso, work_dir);
-  if (!policy_errors.empty()) {
-    r.errors = policy_errors;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return r;
-  }
 
-  // 2. Compile (cached by content and flags), in parallel.
+  // 2. Compile (cached by content and flags), in parallel: the submission's files and the stubs.
   std::string flags_key = config.compiler + "\n" + config.compiler_id;
   std::vector<std::string> base = {config.compiler};
   for (const std::string& f : config.compile_flags) base.push_back(f);
@@ -291,66 +354,106 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       return " (a template or constexpr computation that never ends?)";
     return "";
   };
-  SandboxView compile_view;
-  compile_view.writable = {work_dir};
-  compile_view.cwd = src;
-  std::vector<fs::path> allowed = {src, "/usr/include", "/usr/lib/gcc", "/tmp"};
+  std::vector<fs::path> allowed = {src, "/usr/include", "/usr/lib/gcc"};
+  std::vector<fs::path> include_views;
   for (const std::string& i : config.include_dirs) {
-    compile_view.read_only.push_back(i);
+    include_views.push_back(i);
     allowed.push_back(i);
   }
+  auto student_obj = [&](const std::string& name) { return obj / (name + ".o"); };
+  auto stub_obj = [&](const std::string& name) { return obj / ("stub-" + name + ".o"); };
 
   std::mutex mutex;
-  std::vector<std::string> queue = task_files();
-  std::map<std::string, std::string> messages;
-  bool failed = false;
+  struct Job {
+    std::string name;
+    bool stub;
+  };
+  std::vector<Job> queue;
+  for (const std::string& name : files) {
+    if (!broken.count(name)) queue.push_back({name, false});
+    queue.push_back({name, true});
+  }
+  std::set<std::string> stub_failed;
+  auto compile = [&](const Job& job) {
+    const fs::path dir = job.stub ? stubs : src;
+    const std::string text = read_file(dir / job.name);
+    const fs::path cached =
+        config.cache_dir() / (fnv_hex(flags_key + "\n" + job.name + "\n" + text) + ".o");
+    const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
+    std::error_code ec;
+    if (fs::exists(cached)) {
+      fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
+      if (!ec) return;
+    }
+    std::vector<std::string> argv = base;
+    argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
+    SandboxView view;
+    view.writable = {work_dir};
+    view.read_only = include_views;
+    view.cwd = dir;
+    const ChildResult c = run_isolated(iso, argv, view, tool_limits());
+    const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
+    if (job.stub) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!ok) stub_failed.insert(job.name);
+      return;
+    }
+    std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
+    const std::string hit = limit_hit("compiling " + job.name, c, c.err + c.out, limits);
+    if (!hit.empty()) msg = job.name + ": error: " + hit + hint(hit) + "\n" + msg;
+    if (!c.started)
+      msg += job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!ok) {
+      broken.insert(job.name);
+      messages[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
+    } else {
+      if (!msg.empty()) messages[job.name] = msg;  // warnings
+      const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + job.name;
+      fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
+      if (!ec) fs::rename(tmp, cached, ec);
+    }
+  };
   auto worker = [&]() {
     for (;;) {
-      std::string name;
+      Job job;
       {
         std::lock_guard<std::mutex> lock(mutex);
         if (queue.empty()) return;
-        name = queue.front();
+        job = queue.front();
         queue.erase(queue.begin());
       }
-      const std::string text = read_file(src / name);
-      const fs::path cached =
-          config.cache_dir() / (fnv_hex(flags_key + "\n" + name + "\n" + text) + ".o");
-      const fs::path out = obj / (name + ".o");
-      std::error_code ec;
-      if (fs::exists(cached)) {
-        fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
-        if (!ec) continue;
-      }
-      std::vector<std::string> argv = base;
-      argv.insert(argv.end(), {"-c", name, "-o", (obj / (name + ".o")).string()});
-      Limits lim = tool_limits();
-      const ChildResult c = run_isolated(iso, argv, compile_view, lim);
-      std::lock_guard<std::mutex> lock(mutex);
-      std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
-      const std::string hit = limit_hit("compiling " + name, c, c.err + c.out, limits);
-      if (!hit.empty()) msg = name + ": error: " + hit + hint(hit) + "\n" + msg;
-      if (!c.started)
-        msg += name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
-      if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
-        failed = true;
-        messages[name] = msg;
-      } else {
-        if (!msg.empty()) messages[name] = msg;  // warnings
-        const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + name;
-        fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
-        if (!ec) fs::rename(tmp, cached, ec);
+      try {
+        compile(job);
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (job.stub) {
+          stub_failed.insert(job.name);
+        } else {
+          broken.insert(job.name);
+          messages[job.name] +=
+              job.name + ": error: the grader could not compile it: " + std::string(e.what()) +
+              "\n";
+        }
       }
     }
   };
   std::vector<std::thread> threads;
   for (int i = 0; i < std::max(1, jobs); ++i) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
+  if (!stub_failed.empty()) {
+    std::string names;
+    for (const std::string& n : stub_failed) names += " " + n;
+    throw std::runtime_error("the stubs in " + config.assignments_dir().string() +
+                             " do not compile (" + names.substr(1) +
+                             "): the grader cannot stand them in for a broken file");
+  }
 
   auto tidy = [&](std::string text) {
     // Paths as the student knows them: relative to their submission, framework paths relative
     // to the framework.
     text = replace_all(text, src.string() + "/", "");
+    text = replace_all(text, obj.string() + "/", "");
     text = replace_all(text, config.source_dir.string() + "/", "");
     std::string out;
     std::istringstream in(text);
@@ -365,39 +468,153 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     }
     return out;
   };
-  if (failed) {
-    for (const std::string& name : task_files())
-      if (messages.count(name)) r.errors += tidy(messages[name]);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return r;
+
+  // 3. The symbols each compiled file defines: only its task functions and its own helpers, never
+  //    one of the grader's (nm, in the sandbox: the objects are the submission's).
+  const std::string nm = find_nm(config);
+  if (nm.empty()) {
+    r.notes.push_back(
+        "the grader found no nm: the symbols of the submission were not checked "
+        "(the framework still comes first on the link line)");
+  } else {
+    std::vector<std::string> argv = {nm, "-p", "-P", "-A", "-g", "--defined-only"};
+    for (const std::string& name : files) {
+      if (!broken.count(name)) argv.push_back(student_obj(name).filename().string());
+      argv.push_back(stub_obj(name).filename().string());
+    }
+    SandboxView view;
+    view.writable = {work_dir};
+    view.cwd = obj;
+    Limits lim = tool_limits();
+    lim.keep_output = 16 << 20;
+    const ChildResult c = run_isolated(iso, argv, view, lim);
+    const auto defined = parse_nm(c.out);
+    std::map<std::string, std::set<std::string>> own;
+    std::map<std::string, std::string> task_of_symbol;
+    for (const std::string& name : files)
+      if (defined.count(stub_obj(name).filename().string()))
+        for (const DefinedSymbol& s : defined.at(stub_obj(name).filename().string()))
+          if (!s.weak()) own[name].insert(s.name), task_of_symbol[s.name] = name;
+    const FrameworkSymbols& fw = framework_symbols(config, nm);
+    for (const std::string& name : files) {
+      if (broken.count(name)) continue;
+      const std::string file = student_obj(name).filename().string();
+      if (c.exit_code != 0 || !defined.count(file)) {
+        broken.insert(name);
+        messages[name] = name + ": error: the grader could not list the symbols of " + name +
+                         " (nm failed); its tasks were not run\n";
+        continue;
+      }
+      std::map<std::string, std::string> others = task_of_symbol;
+      for (const std::string& mine : own[name]) others.erase(mine);
+      std::string why;
+      std::vector<std::string> demangled;  // nm -C, in the same (symbol table) order
+      const std::vector<DefinedSymbol>& syms = defined.at(file);
+      for (std::size_t k = 0; k < syms.size(); ++k) {
+        const std::string reason = refused_symbol(name, syms[k], own[name], others, fw);
+        if (reason.empty()) continue;
+        if (demangled.empty()) {
+          const ChildResult d = run_isolated(
+              iso, {nm, "-p", "-C", "-P", "-g", "--defined-only", file}, view, tool_limits());
+          std::istringstream in(d.out);
+          for (std::string l; std::getline(in, l);) demangled.push_back(l);
+        }
+        // "NAME TYPE VALUE [SIZE]" with spaces in NAME: drop the hexadecimal fields, then the type.
+        std::string cxx = k < demangled.size() ? demangled[k] : "";
+        for (int field = 0; field < 2; ++field) {
+          const auto sp = cxx.rfind(' ');
+          if (sp == std::string::npos ||
+              cxx.find_first_not_of("0123456789abcdef", sp + 1) != std::string::npos)
+            break;
+          cxx.resize(sp);
+        }
+        const std::string type_field = std::string(" ") + syms[k].type;
+        if (cxx.size() > type_field.size() &&
+            cxx.compare(cxx.size() - type_field.size(), type_field.size(), type_field) == 0)
+          cxx.resize(cxx.size() - type_field.size());
+        else
+          cxx.clear();
+        const std::string shown_symbol =
+            cxx.empty() || cxx == syms[k].name ? syms[k].name : cxx + " (" + syms[k].name + ")";
+        why += shown[name] + ": error: defines the external symbol " + shown_symbol + ", which " +
+               reason + ".\n";
+        if (why.size() > 4000) break;
+      }
+      if (!why.empty()) {
+        broken.insert(name);
+        messages[name] = why +
+                         "  A graded file may define only its own task functions and helpers; put "
+                         "helpers in an anonymous namespace or make them static.\n";
+      }
+    }
   }
 
-  // 3. Link with the prebuilt runner main, task table, harness and core.
-  std::vector<std::string> argv = {config.compiler};
-  for (const std::string& name : task_files()) argv.push_back((obj / (name + ".o")).string());
-  for (const std::string& o : config.link_objects) argv.push_back(o);
-  for (const std::string& l : config.link_libraries) argv.push_back(l);
-  for (const std::string& f : config.link_flags) argv.push_back(f);
-  r.runner = work_dir / "runner";
-  argv.insert(argv.end(), {"-o", r.runner.string()});
-  Limits lim = tool_limits();
-  SandboxView link_view;
-  link_view.writable = {work_dir};
-  link_view.cwd = work_dir;
-  for (const std::string& o : config.link_objects) link_view.read_only.push_back(o);
-  for (const std::string& l : config.link_libraries) link_view.read_only.push_back(l);
-  const ChildResult c = run_isolated(iso, argv, link_view, lim);
-  if (c.exit_code != 0 || c.signal != 0 || c.timed_out || !c.started) {
+  // 4. Link: the framework first (so that its definitions are the ones kept), the submission's
+  //    usable files, the stubs in place of the broken ones, the libraries again for what the
+  //    submission's code needs of them.
+  auto link = [&](const std::map<std::string, bool>& use_student, const fs::path& runner,
+                  std::string& errors) {
+    std::vector<std::string> argv = {config.compiler};
+    for (const std::string& o : config.link_objects) argv.push_back(o);
+    for (const std::string& l : config.link_libraries) argv.push_back(l);
+    for (const std::string& name : files)
+      argv.push_back((use_student.at(name) ? student_obj(name) : stub_obj(name)).string());
+    for (const std::string& l : config.link_libraries) argv.push_back(l);
+    for (const std::string& f : config.link_flags) argv.push_back(f);
+    argv.insert(argv.end(), {"-o", runner.string()});
+    SandboxView view;
+    view.writable = {work_dir};
+    view.cwd = work_dir;
+    for (const std::string& o : config.link_objects) view.read_only.push_back(o);
+    for (const std::string& l : config.link_libraries) view.read_only.push_back(l);
+    const ChildResult c = run_isolated(iso, argv, view, tool_limits());
+    if (c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started) return true;
     const std::string hit = limit_hit("linking", c, c.err + c.out, limits);
-    r.errors = tidy(
-        replace_all(filter_diagnostics(c.err + c.out, work_dir, allowed), obj.string() + "/", ""));
-    if (!hit.empty()) r.errors = "error: " + hit + "\n" + r.errors;
+    errors = tidy(filter_diagnostics(c.err + c.out, work_dir, allowed));
+    errors = replace_all(errors, "stub-", "the stub of ");
+    if (!hit.empty()) errors = "error: " + hit + "\n" + errors;
     if (!c.started)
-      r.errors += "error: the grader could not start the linker: " + c.start_error + "\n";
-    if (r.errors.empty()) r.errors = "linking failed\n";
+      errors += "error: the grader could not start the linker: " + c.start_error + "\n";
+    if (errors.empty()) errors = "linking failed\n";
+    return false;
+  };
+  std::map<std::string, bool> all;
+  for (const std::string& name : files) all[name] = !broken.count(name);
+  std::string link_errors;
+  const fs::path combined = work_dir / "runner";
+  if (link(all, combined, link_errors)) {
+    r.runner = combined;
+    for (const std::string& name : files)
+      if (!broken.count(name)) r.runners[name] = combined;
   } else {
-    r.ok = true;
+    // The files do not link together (one calls a helper another file defines, or a helper that is
+    // nowhere): each usable file is linked alone with the stubs, and graded with that runner.
+    r.link_errors = link_errors;
+    for (const std::string& name : files) {
+      if (broken.count(name)) continue;
+      std::map<std::string, bool> alone;
+      for (const std::string& other : files) alone[other] = other == name;
+      std::string errors;
+      const fs::path runner = work_dir / ("runner-" + name.substr(0, name.find('.')));
+      if (link(alone, runner, errors)) {
+        r.runners[name] = runner;
+      } else {
+        broken.insert(name);
+        messages[name] = name + ": error: " + name +
+                         " does not link with the framework and the other files' stubs:\n" + errors;
+      }
+    }
   }
+  for (const std::string& name : files) {
+    if (!messages.count(name)) continue;
+    if (broken.count(name))
+      r.failed_files[name] = tidy(messages[name]);
+    else
+      r.warnings += tidy(messages[name]);
+  }
+  for (const std::string& name : files)
+    if (r.failed_files.count(name)) r.errors += r.failed_files[name];
+  r.ok = !r.runners.empty();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

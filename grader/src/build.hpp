@@ -13,10 +13,20 @@
 
 namespace jelly::grade {
 
+/// A task file that does not compile (or defines a symbol it may not, or does not link) costs only
+/// its own tasks: the runner is linked with that file's stub (assignments/) in its place.
 struct BuildResult {
-  bool ok = false;
-  std::filesystem::path runner;    ///< the per-submission runner (when ok)
-  std::string errors;              ///< compiler/linker messages, paths relative to the submission
+  bool ok = false;  ///< at least one runner was built (some tasks can be graded)
+  std::filesystem::path
+      runner;  ///< all five files (or their stubs) linked together, when they link
+  std::map<std::string, std::filesystem::path>
+      runners;  ///< usable task file → the runner its tasks run with (`runner`, or when the files
+                ///< do not link together, one linked with that file alone and the other stubs)
+  std::map<std::string, std::string>
+      failed_files;  ///< task file → why it was replaced by its stub (compiler, symbols, linker)
+  std::string errors;       ///< every failed file's messages, paths relative to the submission
+  std::string warnings;     ///< the compiler's warnings about the files that compiled
+  std::string link_errors;  ///< why the files did not link together (then `runner` is empty)
   std::vector<std::string> notes;  ///< e.g. "forces.cpp not found: graded as the stub"
   std::map<std::string, std::string>
       used;  ///< task file → where it came from (relative path or "stub")

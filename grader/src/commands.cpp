@@ -15,8 +15,10 @@
 
 #include <toml++/toml.h>
 
+#include "csv.hpp"
 #include "files.hpp"
 #include "report.hpp"
+#include "text_safety.hpp"
 
 namespace jelly::grade {
 
@@ -161,7 +163,10 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_directory()) subs.push_back(e.path());
   std::sort(subs.begin(), subs.end());
-  fs::create_directories(out);
+  // Class files at the top of --out, each student's files under students/<folder>/: no folder
+  // name can collide with a class file.
+  const fs::path students = fs::path(out) / "students";
+  fs::create_directories(students);
   const int workers =
       jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<GradeReport> reports(subs.size());
@@ -176,16 +181,18 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       if (i >= subs.size()) return;
       const std::string name = subs[i].filename().string();
       try {
-        reports[i] = grade_submission(config, book, subs[i], fs::path(out) / name / "work", per);
-        write_reports(reports[i], book, fs::path(out) / name, {"gradescope", "markdown"},
+        reports[i] = grade_submission(config, book, subs[i], students / name / "work", per);
+        write_reports(reports[i], book, students / name, {"gradescope", "markdown"},
                       frames ? &config : nullptr);
-        fs::remove_all(fs::path(out) / name / "work");
+        fs::remove_all(students / name / "work");
       } catch (const std::exception& e) {
         errors[i] = e.what();
+      } catch (...) {
+        errors[i] = "unknown error";
       }
       std::lock_guard<std::mutex> lock(mutex);
       ++done;
-      std::cerr << "\r[" << done << "/" << subs.size() << "] " << name << ": "
+      std::cerr << "\r[" << done << "/" << subs.size() << "] " << safe_text(name) << ": "
                 << (errors[i].empty() ? pts(reports[i].score) + " / " + pts(reports[i].max_score)
                                       : "grader error")
                 << "            " << std::flush;
@@ -195,27 +202,29 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   for (int i = 0; i < workers; ++i) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
   std::cerr << "\n";
-  std::ofstream csv(fs::path(out) / "scores.csv");
-  csv << "student,score,max_score,compiled";
-  for (const TaskSpec& t : book.rubric.tasks) csv << "," << t.id;
-  csv << ",error\n";
+  std::vector<std::string> header = {"student", "score", "max_score", "compiled"};
+  for (const TaskSpec& t : book.rubric.tasks) header.push_back(csv_field(t.id));
+  header.push_back("error");
+  std::string csv = csv_row(header);
   int status = 0;
   for (std::size_t i = 0; i < subs.size(); ++i) {
-    csv << subs[i].filename().string();
+    std::vector<std::string> row = {csv_field(safe_text(subs[i].filename().string()))};
     if (!errors[i].empty()) {
-      csv << ",,,";
-      for (std::size_t k = 0; k < book.rubric.tasks.size(); ++k) csv << ",";
-      csv << ",\"" << errors[i] << "\"\n";
+      for (std::size_t k = 0; k < 3 + book.rubric.tasks.size(); ++k) row.push_back("");
+      row.push_back(csv_field(safe_text(errors[i])));
       status = 1;
-      continue;
+    } else {
+      row.push_back(pts(reports[i].score));
+      row.push_back(pts(reports[i].max_score));
+      row.push_back(reports[i].compiled ? "1" : "0");
+      for (const TaskResult& t : reports[i].tasks) row.push_back(pts(t.score));
+      row.push_back("");
     }
-    csv << "," << pts(reports[i].score) << "," << pts(reports[i].max_score) << ","
-        << (reports[i].compiled ? 1 : 0);
-    for (const TaskResult& t : reports[i].tasks) csv << "," << pts(t.score);
-    csv << ",\n";
+    csv += csv_row(row);
   }
+  write_file_atomically(fs::path(out) / "scores.csv", csv);
   std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out
-            << " (scores.csv)\n";
+            << " (scores.csv; each student's reports in students/)\n";
   return status;
 }
 
@@ -416,6 +425,8 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
             grade_submission(config, book, list[i].dir, root / list[i].name / "work", per);
       } catch (const std::exception& e) {
         list[i].error = e.what();
+      } catch (...) {
+        list[i].error = "unknown error";
       }
       std::lock_guard<std::mutex> lock(mutex);
       std::cerr << "  graded " << list[i].name << ": " << pts(list[i].report.score) << "\n";

@@ -42,9 +42,12 @@ std::string file_digest(const fs::path& p) { return fnv_hex(read_file(p)); }
 
 std::vector<double> numbers(const Json& outputs, const char* key) {
   std::vector<double> v;
-  if (!outputs.is_object() || !outputs.contains(key)) return v;
-  const Json& value = outputs.at(key).at("value");
-  for (const Json& e : value) v.push_back(e.is_number() ? e.get<double>() : NAN);
+  // The student's outputs come from the result channel: any shape (a forged result).
+  if (!outputs.is_object() || !outputs.contains(key) || !outputs.at(key).is_object() ||
+      !outputs.at(key).contains("value") || !outputs.at(key).at("value").is_array())
+    return v;
+  for (const Json& e : outputs.at(key).at("value"))
+    v.push_back(e.is_number() ? e.get<double>() : NAN);
   return v;
 }
 

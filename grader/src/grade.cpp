@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "text_safety.hpp"
+
 namespace jelly::grade {
 
 namespace {
@@ -129,6 +131,119 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   }
   failures.push_back(msg);
   return false;
+}
+
+}  // namespace
+
+std::string task_file_of(const TaskSpec& task) {
+  for (const std::string& name : task_files())
+    if (task.functions.find("(" + name + ")") != std::string::npos) return name;
+  return "";
+}
+
+namespace {
+
+// Everything a report shows that the submission controls, as valid UTF-8 without terminal
+// controls: what its tests printed, its messages (exceptions, details, forged results), the
+// compiler's messages about its code, its file and folder names.
+void make_safe(GradeReport& rep) {
+  rep.submission = safe_text(rep.submission);
+  for (std::string& n : rep.notes) n = safe_text(n);
+  rep.build.errors = safe_text(rep.build.errors);
+  rep.build.warnings = safe_text(rep.build.warnings);
+  rep.build.link_errors = safe_text(rep.build.link_errors);
+  for (FileFailure& f : rep.failed_files) f.message = safe_text(f.message);
+  for (CaseResult& c : rep.cases) {
+    for (std::string& f : c.failures) f = safe_text(f);
+    c.printed = safe_text(c.printed);
+  }
+}
+
+// Runs case `r` with `runner` and judges it against `ref`. Throws on a result it cannot digest;
+// the caller makes that the test's failure.
+void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const CaseBook& book,
+                   const fs::path& work_dir, const GradeOptions& options) {
+  const TaskSpec* task = book.rubric.find(r.spec->task);
+  const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
+  const Json input = ref.contains("input") ? ref.at("input") : Json::object();
+  const double timeout =
+      r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
+  const ChildResult c = run_case(runner, *r.spec, &input, work_dir, timeout, options.memory_bytes,
+                                 false, &options.isolation);
+  r.seconds = c.seconds;
+  r.reference = ref.at("outputs");
+  // Cut on a character boundary; made safe to show by make_safe.
+  r.printed = safe_excerpt(c.out, 2000);
+  if (!c.err.empty()) r.printed += (r.printed.empty() ? "" : "\n") + safe_excerpt(c.err, 2000);
+  Json result;
+  bool parsed = false;
+  if (!c.result.empty()) {
+    try {
+      result = Json::parse(c.result);
+      parsed = result.is_object();
+    } catch (const std::exception&) {
+    }
+  }
+  const bool malformed = !c.result.empty() && !parsed;
+  std::string problem;
+  if (!c.started)
+    problem = "the grader could not start your program: " + c.start_error;
+  else if (parsed && result.contains("forbidden_syscall") &&
+           result["forbidden_syscall"].is_number_integer()) {
+    const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
+    problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " + name +
+              ")" + in_task +
+              "; reading or writing files, starting programs and networking are not allowed "
+              "while grading";
+  } else if (c.timed_out) {
+    problem =
+        "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" + in_task;
+  } else if (c.output_flood) {
+    problem = "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
+  }
+#ifdef SIGXCPU
+  else if (c.signal == SIGXCPU) {
+    problem = "used more than its CPU time limit (an infinite loop?)" + in_task;
+  }
+#endif
+  else if (c.signal != 0) {
+    problem = "crashed with " + describe_signal(c.signal) + in_task;
+  } else if (malformed) {
+    problem =
+        "the test's result could not be read (something wrote to the grader's result "
+        "channel, file descriptor 3?)" +
+        in_task;
+  } else if (!parsed && c.exit_code == 0) {
+    problem = "your code ended the program before the test finished (exit() called?)" + in_task;
+  } else if (!parsed) {
+    problem = "the program ended with exit code " + std::to_string(c.exit_code) +
+              " before the test finished (exit() called, or out of memory?)" + in_task;
+  } else if (result.contains("error")) {
+    std::string e =
+        result["error"].is_string() ? result["error"].get<std::string>() : result["error"].dump();
+    if (e.find("bad_alloc") != std::string::npos) e += " (more than the memory limit of 1 GiB?)";
+    problem = e + in_task;
+  } else if (!result.contains("outputs") || !result["outputs"].is_object()) {
+    problem =
+        "the test's result has no outputs (something wrote to the grader's result channel, "
+        "file descriptor 3?)" +
+        in_task;
+  }
+  if (!problem.empty()) {
+    r.status = "failed";
+    r.failures.push_back(problem);
+    return;
+  }
+  r.outputs = result.at("outputs");
+  bool ok = true;
+  for (const auto& [name, refout] : r.reference.items()) {
+    const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
+    ok = judge(name, mine.is_object() ? mine : Json(), refout, r.spec->rule_for(name),
+               book.tolerances, r.failures) &&
+         ok;
+  }
+  r.status = ok ? "passed" : "failed";
+  r.score = ok ? r.max_score : 0.0;
 }
 
 }  // namespace
@@ -250,7 +365,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
     rep.prebuilt_runner = true;
   }
   for (const std::string& n : rep.build.notes) rep.notes.push_back(n);
-  rep.compiled = rep.build.ok;
+  rep.compiled = rep.build.ok && rep.build.failed_files.empty() && !rep.build.runner.empty();
 
   // Points: a task's points are shared by its selected cases in proportion to their weights.
   const double scale = book.rubric.scale();
@@ -272,93 +387,88 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
       if (c->status != "skipped") c->max_score = t.max_score * c->spec->weight / wsum;
   }
 
-  if (!rep.compiled) {
-    for (CaseResult& r : rep.cases)
-      if (r.status != "skipped") {
-        r.status = "failed";
-        r.failures.push_back("not run: your code did not compile (see the compiler errors)");
-      }
-  } else {
-    // The runner must know every case.
+  // A file that could not be used costs its own tasks only: the runner has its stub in its place.
+  for (const std::string& file : task_files()) {
+    const auto it = rep.build.failed_files.find(file);
+    if (it == rep.build.failed_files.end()) continue;
+    FileFailure f;
+    f.file = file;
+    f.message = it->second;
+    f.what = f.message.find("defines the external symbol") != std::string::npos
+                 ? "was refused (it defines a symbol it may not)"
+             : f.message.find("does not link") != std::string::npos ? "did not link"
+                                                                    : "did not compile";
+    for (const TaskResult& t : rep.tasks)
+      if (task_file_of(*t.spec) == file) f.tasks.push_back(t.spec->id), f.points += t.max_score;
+    std::string tasks;
+    for (const std::string& t : f.tasks) tasks += (tasks.empty() ? "" : ", ") + t;
+    char points[32];
+    std::snprintf(points, sizeof points, "%.2f", f.points);
+    rep.notes.push_back(
+        file + " " + f.what + ": its tasks (" + tasks + ", " + points + " points) score 0" +
+        (rep.build.ok
+             ? "; the other files' tasks were graded with the stub of " + file + " in its place"
+             : ""));
+    rep.failed_files.push_back(f);
+  }
+  if (rep.build.ok && rep.build.runner.empty())
+    rep.notes.push_back(
+        "your files do not link together (see below): each file's tasks were graded with that "
+        "file alone and the other files' stubs; the course scene, which needs all of them, was "
+        "not run");
+  auto not_run = [&](CaseResult& r, const std::string& why, const std::string& message) {
+    r.status = "failed";
+    r.not_run = true;
+    r.failures.push_back(why);
+    if (!message.empty()) r.failures.push_back(message);
+  };
+  {
     const auto start = std::chrono::steady_clock::now();
     std::atomic<std::size_t> next{0};
-    std::mutex mutex;
     auto worker = [&]() {
       for (;;) {
         const std::size_t i = next++;
         if (i >= rep.cases.size()) return;
         CaseResult& r = rep.cases[i];
         if (r.status == "skipped") continue;
-        const Json& ref = *refs[i];
         const TaskSpec* task = book.rubric.find(r.spec->task);
-        const std::string in_task =
-            task && !task->functions.empty() ? " in " + task->functions : "";
-        const Json input = ref.contains("input") ? ref.at("input") : Json::object();
-        const double timeout = r.spec->timeout_s > 0
-                                   ? std::max(r.spec->timeout_s, options.timeout_s)
-                                   : options.timeout_s;
-        const ChildResult c = run_case(rep.build.runner, *r.spec, &input, work_dir, timeout,
-                                       options.memory_bytes, false, &options.isolation);
-        r.seconds = c.seconds;
-        r.reference = ref.at("outputs");
-        r.printed = c.out.substr(0, 2000);
-        if (!c.err.empty()) r.printed += (r.printed.empty() ? "" : "\n") + c.err.substr(0, 2000);
-        Json result;
-        bool parsed = false;
-        if (!c.result.empty()) {
-          try {
-            result = Json::parse(c.result);
-            parsed = true;
-          } catch (const std::exception&) {
-          }
-        }
-        std::string problem;
-        if (!c.started)
-          problem = "the grader could not start your program: " + c.start_error;
-        else if (parsed && result.contains("forbidden_syscall")) {
-          const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
-          problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " +
-                    name + ")" + in_task +
-                    "; reading or writing files, starting programs and networking are not allowed "
-                    "while grading";
-        } else if (c.timed_out) {
-          problem = "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" +
-                    in_task;
-        } else if (c.output_flood) {
-          problem = "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
-        }
-#ifdef SIGXCPU
-        else if (c.signal == SIGXCPU) {
-          problem = "used more than its CPU time limit (an infinite loop?)" + in_task;
-        }
-#endif
-        else if (c.signal != 0) {
-          problem = "crashed with " + describe_signal(c.signal) + in_task;
-        } else if (!parsed && c.exit_code == 0) {
-          problem =
-              "your code ended the program before the test finished (exit() called?)" + in_task;
-        } else if (!parsed) {
-          problem = "the program ended with exit code " + std::to_string(c.exit_code) +
-                    " before the test finished (exit() called, or out of memory?)" + in_task;
-        } else if (result.contains("error")) {
-          std::string e = result["error"].get<std::string>();
-          if (e.find("bad_alloc") != std::string::npos)
-            e += " (more than the memory limit of 1 GiB?)";
-          problem = e + in_task;
-        }
-        if (!problem.empty()) {
-          r.status = "failed";
-          r.failures.push_back(problem);
+        const std::string file = task ? task_file_of(*task) : "";
+        if (!file.empty() && rep.build.failed_files.count(file)) {
+          const std::string& msg = rep.build.failed_files.at(file);
+          not_run(r,
+                  "not run: " + file + " " +
+                      (msg.find("defines the external symbol") != std::string::npos ? "was refused"
+                       : msg.find("does not link") != std::string::npos             ? "did not link"
+                                                                        : "did not compile") +
+                      ", so its tasks score 0",
+                  "the message about " + file + ":\n" + cut_utf8(msg, 3000));
           continue;
         }
-        r.outputs = result.at("outputs");
-        bool ok = true;
-        for (const auto& [name, refout] : r.reference.items()) {
-          const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
-          ok = judge(name, mine, refout, r.spec->rule_for(name), book.tolerances, r.failures) && ok;
+        const fs::path runner = !file.empty() && rep.build.runners.count(file)
+                                    ? rep.build.runners.at(file)
+                                    : rep.build.runner;
+        if (runner.empty()) {
+          not_run(r,
+                  rep.build.ok ? "not run: it needs all of your files, and they do not link "
+                                 "together"
+                               : "not run: your code did not compile (see the compiler errors)",
+                  cut_utf8(rep.build.ok ? rep.build.link_errors : std::string(), 3000));
+          continue;
         }
-        r.status = ok ? "passed" : "failed";
-        r.score = ok ? r.max_score : 0.0;
+        try {
+          run_and_judge(r, *refs[i], runner, book, work_dir, options);
+        } catch (const std::exception& e) {
+          r.status = "failed";
+          r.score = 0.0;
+          r.outputs = Json();
+          r.failures.push_back(std::string("the grader could not digest this test's result (") +
+                               e.what() + "); the test fails");
+        } catch (...) {
+          r.status = "failed";
+          r.score = 0.0;
+          r.outputs = Json();
+          r.failures.push_back("the grader could not digest this test's result; the test fails");
+        }
       }
     };
     std::vector<std::thread> threads;
@@ -377,6 +487,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   for (TaskResult& t : rep.tasks) t.score = tidy(t.score), t.max_score = tidy(t.max_score);
   rep.score = tidy(rep.score);
   rep.max_score = tidy(rep.max_score);
+  make_safe(rep);
   return rep;
 }
 

@@ -16,9 +16,10 @@ struct CaseResult {
   double max_score = 0.0;  ///< scaled points
   double score = 0.0;
   std::vector<std::string> failures;  ///< what failed and why, in the student's terms
-  std::string printed;                ///< an excerpt of what the student's code printed
-  Json outputs;                       ///< the student's outputs (for plots)
-  Json reference;                     ///< the reference outputs
+  bool not_run = false;  ///< its file could not be used (FileFailure): failures say why
+  std::string printed;   ///< an excerpt of what the student's code printed
+  Json outputs;          ///< the student's outputs (for plots)
+  Json reference;        ///< the reference outputs
   double seconds = 0.0;
 };
 
@@ -45,10 +46,25 @@ struct GradeOptions {
 /// terms.
 Isolation own_machine_isolation();
 
+/// A task file replaced by its stub (it did not compile, defined a symbol it may not, or did not
+/// link): what it cost.
+struct FileFailure {
+  std::string file;                ///< "forces.cpp"
+  std::string what;                ///< "did not compile", "was refused", "did not link"
+  std::string message;             ///< the compiler's (or the grader's) message
+  std::vector<std::string> tasks;  ///< its tasks ("A1.T4")
+  double points = 0.0;             ///< their scaled points, all lost
+};
+
+/// The task file a task's functions live in ("forces.cpp"), from the rubric's `functions`
+/// ("spring_force (forces.cpp)"); "" for a task of several files (the course scene).
+std::string task_file_of(const TaskSpec& task);
+
 struct GradeReport {
   std::string submission;  ///< folder as given
-  bool compiled = false;
-  bool prebuilt_runner = false;  ///< --runner: built by CMake, not compiled by the grader
+  bool compiled = false;   ///< all five files compiled and linked (see failed_files otherwise)
+  std::vector<FileFailure> failed_files;  ///< files replaced by their stubs, in task-file order
+  bool prebuilt_runner = false;           ///< --runner: built by CMake, not compiled by the grader
   BuildResult build;
   std::vector<CaseResult> cases;  ///< in case-book order
   std::vector<TaskResult> tasks;  ///< in rubric order

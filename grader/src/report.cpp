@@ -7,6 +7,7 @@
 
 #include "files.hpp"
 #include "plot.hpp"
+#include "text_safety.hpp"
 
 namespace jelly::grade {
 
@@ -29,27 +30,47 @@ std::string case_output(const CaseResult& c) {
   for (std::size_t i = 0; i < c.failures.size() && i < 6; ++i) o += "- " + c.failures[i] + "\n";
   if (c.failures.size() > 6) o += "- … and " + std::to_string(c.failures.size() - 6) + " more\n";
   if (!c.printed.empty())
-    o += "\nYour code printed (first lines):\n" + c.printed.substr(0, 1500) + "\n";
+    o += "\nYour code printed (first lines):\n" + cut_utf8(c.printed, 1500) + "\n";
   return o;
 }
 
-std::string xml_escape(const std::string& s) {
+// "forces.cpp did not compile: its tasks A1.T4, A1.T5 (20.00 points) score 0; ..."
+std::string file_failure_headline(const GradeReport& r, const FileFailure& f) {
+  std::string tasks;
+  for (const std::string& t : f.tasks) tasks += (tasks.empty() ? "" : ", ") + t;
+  return f.file + " " + f.what + ": its tasks " + tasks + " (" + pts(f.points) +
+         " points) score 0" +
+         (r.build.ok ? "; the other files' tasks were graded with the stub of " + f.file +
+                           " in its place, and keep their points"
+                     : "");
+}
+
+// What the compile step says, for every format: each unusable file with its cost and message.
+std::string compile_summary(const GradeReport& r) {
+  if (r.compiled) return "Your code compiled.\n";
   std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
-          o += '?';
-        else
-          o += c;
-    }
-  }
+  for (const FileFailure& f : r.failed_files)
+    o += file_failure_headline(r, f) + ".\n" + f.message + "\n";
+  if (r.build.ok && r.build.runner.empty())
+    o += "Your files do not link together; each file was graded alone with the other files' "
+         "stubs:\n" +
+         r.build.link_errors;
+  if (o.empty()) o = "Your code did not compile:\n" + r.build.errors;
   return o;
 }
+
+// Tests whose output is shown in the reports: the failed ones first, at most `n`.
+std::vector<const CaseResult*> printed_cases(const GradeReport& r, std::size_t n) {
+  std::vector<const CaseResult*> out;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const CaseResult& c : r.cases)
+      if (!c.printed.empty() && (c.status == "failed") == (pass == 0) && out.size() < n)
+        out.push_back(&c);
+  return out;
+}
+
+// XML and HTML text and attributes (the report's text is valid UTF-8 already: make_safe).
+std::string xml_escape(const std::string& s) { return html_escape(s); }
 
 const TaskSpec* task_of(const GradeReport& r, const CaseResult& c) {
   for (const TaskResult& t : r.tasks)
@@ -77,6 +98,12 @@ std::string base64(const std::string& in) {
   return out;
 }
 
+// Every text in the report is valid UTF-8 (make_safe); should one not be, it is replaced, never a
+// grader error.
+std::string dump_json(const Json& j) {
+  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
 }  // namespace
 
 std::string terminal_summary(const GradeReport& r, bool verbose) {
@@ -88,9 +115,7 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
   o << "  sandbox: " << r.isolation << (plain ? "" : " — ")
     << (plain ? "" : r.isolation_description) << "\n";
   for (const std::string& n : r.notes) o << "  note: " << n << "\n";
-  if (!r.compiled) {
-    o << "\nYour code did not compile. The compiler said:\n" << r.build.errors << "\n";
-  }
+  if (!r.compiled) o << "\n" << compile_summary(r);
   o << "\n";
   for (const TaskResult& t : r.tasks) {
     std::size_t run = 0, passed = 0;
@@ -108,7 +133,7 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
                   passed, run);
     o << line;
     for (const CaseResult* c : t.cases) {
-      if (c->status == "failed" && r.compiled) {
+      if (c->status == "failed" && !c->not_run) {
         o << "           ✗ " << c->spec->title << " [" << c->spec->id << "]\n";
         for (std::size_t i = 0; i < c->failures.size() && (verbose || i < 2); ++i)
           o << "               " << c->failures[i] << "\n";
@@ -124,7 +149,7 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
     }
   }
   o << "\nTotal: " << pts(r.score) << " / " << pts(r.max_score);
-  if (r.compiled) {
+  if (r.build.ok) {
     char t[64];
     if (r.prebuilt_runner)
       std::snprintf(t, sizeof t, "   (tests ran in %.1f s; built by CMake)", r.grading_seconds);
@@ -152,8 +177,7 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   Json compile;
   compile["name"] = "Compilation of your five task files";
   compile["status"] = r.compiled ? "passed" : "failed";
-  compile["output"] = r.compiled ? std::string("Your code compiled.\n")
-                                 : "Your code did not compile:\n" + r.build.errors;
+  compile["output"] = compile_summary(r);
   compile["visibility"] = "visible";
   tests.push_back(compile);
   for (const CaseResult& c : r.cases) {
@@ -175,13 +199,13 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
 
 Json prairielearn_results(const GradeReport& r) {
   Json j;
-  j["gradable"] = r.compiled;
+  j["gradable"] = r.build.ok;
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
-  j["message"] = r.compiled ? "Graded " + pts(r.score) + " / " + pts(r.max_score)
+  j["message"] = r.build.ok ? "Graded " + pts(r.score) + " / " + pts(r.max_score)
                             : std::string("Your code did not compile.");
   std::string out = "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
-  if (!r.compiled) out += r.build.errors;
+  if (!r.compiled) out += compile_summary(r);
   j["output"] = out;
   j["isolation"] = r.isolation;
   Json tests = Json::array();
@@ -214,7 +238,7 @@ std::string junit_xml(const GradeReport& r) {
   o << "  <testsuite name=\"compile\" tests=\"1\" failures=\"" << (r.compiled ? 0 : 1) << "\">\n"
     << "    <testcase classname=\"compile\" name=\"compilation\">";
   if (!r.compiled)
-    o << "<failure message=\"did not compile\">" << xml_escape(r.build.errors) << "</failure>";
+    o << "<failure message=\"did not compile\">" << xml_escape(compile_summary(r)) << "</failure>";
   o << "</testcase>\n  </testsuite>\n";
   for (const TaskResult& t : r.tasks) {
     std::size_t n = 0, failed = 0;
@@ -242,9 +266,11 @@ std::string junit_xml(const GradeReport& r) {
 std::string com_plot_svg(const GradeReport& r) {
   for (const CaseResult& c : r.cases) {
     if (c.spec->id != "a1.course.scene" || c.reference.is_null()) continue;
+    // The student's outputs come from the result channel: any shape (a forged result).
     auto vec = [](const Json& out, const char* key) {
       std::vector<double> v;
-      if (out.is_object() && out.contains(key))
+      if (out.is_object() && out.contains(key) && out[key].is_object() &&
+          out[key].contains("value") && out[key]["value"].is_array())
         for (const Json& e : out[key]["value"]) v.push_back(e.is_number() ? e.get<double>() : NAN);
       return v;
     };
@@ -260,11 +286,22 @@ std::string com_plot_svg(const GradeReport& r) {
 
 std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   std::ostringstream o;
-  o << "# Jelly Lab grading report\n\nSubmission: `" << r.submission << "` — **" << pts(r.score)
-    << " / " << pts(r.max_score) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation
-    << "` — " << r.isolation_description << "\n\n";
-  for (const std::string& n : r.notes) o << "> " << n << "\n\n";
-  if (!r.compiled) o << "## Your code did not compile\n\n```\n" << r.build.errors << "```\n\n";
+  o << "# Jelly Lab grading report\n\nSubmission: " << markdown_inline(r.submission) << " — **"
+    << pts(r.score) << " / " << pts(r.max_score) << "** (" << r.visibility
+    << " tests)\n\nSandbox: `" << r.isolation << "` — " << markdown_inline(r.isolation_description)
+    << "\n\n";
+  for (const std::string& n : r.notes) o << "> " << markdown_inline(n) << "\n\n";
+  if (!r.compiled) {
+    for (const FileFailure& f : r.failed_files)
+      o << "## " << markdown_inline(f.file + " " + f.what) << "\n\n"
+        << markdown_inline(file_failure_headline(r, f)) << ".\n\n"
+        << markdown_code_block(f.message) << "\n";
+    if (r.build.ok && r.build.runner.empty())
+      o << "## Your files do not link together\n\n"
+        << markdown_code_block(r.build.link_errors) << "\n";
+    if (r.failed_files.empty() && !r.build.ok)
+      o << "## Your code did not compile\n\n" << markdown_code_block(r.build.errors) << "\n";
+  }
   o << "| Task | Points | Tests passed |\n|---|---|---|\n";
   for (const TaskResult& t : r.tasks) {
     std::size_t n = 0, p = 0;
@@ -277,10 +314,22 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   o << "\n## Failed tests\n\n";
   for (const CaseResult& c : r.cases)
     if (c.status == "failed") {
-      o << "### " << c.spec->id << " — " << c.spec->title << "\n\n";
-      for (const std::string& f : c.failures) o << "- " << f << "\n";
+      o << "### " << c.spec->id << " — " << markdown_inline(c.spec->title) << "\n\n";
+      for (const std::string& f : c.failures) {
+        if (f.find('\n') == std::string::npos)
+          o << "- " << markdown_inline(f) << "\n";
+        else
+          o << "\n" << markdown_code_block(f) << "\n";
+      }
       o << "\n";
     }
+  const std::vector<const CaseResult*> printed = printed_cases(r, 5);
+  if (!printed.empty()) {
+    o << "## What your code printed\n\n";
+    for (const CaseResult* c : printed)
+      o << "### " << c->spec->id << " (" << c->status << ")\n\n"
+        << markdown_code_block(cut_utf8(c->printed, 1500)) << "\n";
+  }
   if (!com_plot_svg(r).empty())
     o << "## Course scene\n\n![centre-of-mass height, yours against the "
          "reference](com-height.svg)\n\n";
@@ -317,8 +366,17 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
     << " / " << pts(r.max_score) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation)
     << "</code> — " << xml_escape(r.isolation_description) << "</p>\n";
   for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
-  if (!r.compiled)
-    o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
+  if (!r.compiled) {
+    for (const FileFailure& f : r.failed_files)
+      o << "<h2>" << xml_escape(f.file + " " + f.what) << "</h2><p>"
+        << xml_escape(file_failure_headline(r, f)) << ".</p><pre>" << xml_escape(f.message)
+        << "</pre>\n";
+    if (r.build.ok && r.build.runner.empty())
+      o << "<h2>Your files do not link together</h2><pre>" << xml_escape(r.build.link_errors)
+        << "</pre>\n";
+    if (r.failed_files.empty() && !r.build.ok)
+      o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
+  }
   o << "<table><tr><th>Task</th><th>Points</th><th>Test</th><th>Result</th></tr>\n";
   for (const TaskResult& t : r.tasks)
     for (const CaseResult* c : t.cases) {
@@ -326,10 +384,19 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
       o << "<tr><td>" << xml_escape(t.spec->id + " " + t.spec->title) << "</td><td>"
         << pts(c->score) << " / " << pts(c->max_score) << "</td><td>" << xml_escape(c->spec->title)
         << "</td><td class=\"" << (c->status == "passed" ? "pass\">passed" : "fail\">failed");
-      for (const std::string& f : c->failures) o << "<br>" << xml_escape(f);
+      for (const std::string& f : c->failures)
+        o << (f.find('\n') == std::string::npos ? "<br>" + xml_escape(f)
+                                                : "<pre>" + xml_escape(f) + "</pre>");
       o << "</td></tr>\n";
     }
   o << "</table>\n";
+  const std::vector<const CaseResult*> printed = printed_cases(r, 5);
+  if (!printed.empty()) {
+    o << "<h2>What your code printed</h2>\n";
+    for (const CaseResult* c : printed)
+      o << "<h3>" << xml_escape(c->spec->id) << " (" << c->status << ")</h3><pre>"
+        << xml_escape(cut_utf8(c->printed, 1500)) << "</pre>\n";
+  }
   const std::string svg = com_plot_svg(r);
   if (!svg.empty()) o << "<h2>Course scene</h2>\n" << svg;
   if (frames && frames->shown) {
@@ -365,8 +432,15 @@ void write_reports(const GradeReport& r, const CaseBook& book, const std::filesy
                    const std::set<std::string>& formats, const GradeConfig* config) {
   std::filesystem::create_directories(out);
   CourseFrames frames;
-  if (config && (formats.count("markdown") || formats.count("html")))
-    frames = render_course_frames(*config, r, out, out / ".frames-work");
+  if (config && (formats.count("markdown") || formats.count("html"))) {
+    try {
+      frames = render_course_frames(*config, r, out, out / ".frames-work");
+    } catch (const std::exception& e) {
+      frames = CourseFrames();
+      frames.shown = true;
+      frames.unavailable = std::string("the frames could not be made: ") + e.what();
+    }
+  }
   std::error_code ec;
   std::filesystem::remove_all(out / ".frames-work", ec);
   auto write = [&](const std::string& name, const std::string& text) {
@@ -374,10 +448,8 @@ void write_reports(const GradeReport& r, const CaseBook& book, const std::filesy
     f << text;
     if (!f) throw std::runtime_error("cannot write " + (out / name).string());
   };
-  if (formats.count("gradescope"))
-    write("results.json", gradescope_results(r, book).dump(2) + "\n");
-  if (formats.count("prairielearn"))
-    write("prairielearn.json", prairielearn_results(r).dump(2) + "\n");
+  if (formats.count("gradescope")) write("results.json", dump_json(gradescope_results(r, book)));
+  if (formats.count("prairielearn")) write("prairielearn.json", dump_json(prairielearn_results(r)));
   if (formats.count("junit")) write("junit.xml", junit_xml(r));
   if (formats.count("markdown")) {
     write("report.md", markdown_report(r, config ? &frames : nullptr));
