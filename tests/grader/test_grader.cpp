@@ -76,6 +76,30 @@ const Json* find_test(const Json& results, const std::string& id) {
   return nullptr;
 }
 
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Whether `s` is valid UTF-8 (well-formed sequences only).
+bool utf8_ok(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80             ? 1
+                          : (c & 0xE0) == 0xC0 ? 2
+                          : (c & 0xF0) == 0xE0 ? 3
+                          : (c & 0xF8) == 0xF0 ? 4
+                                               : 0;
+    if (n == 0 || i + n > s.size() || (n == 2 && c < 0xC2)) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    i += n;
+  }
+  return true;
+}
+
 // Task score from the Gradescope tests (tag 0 is the task id).
 double task_score(const Json& results, const std::string& task) {
   double s = 0;
@@ -241,34 +265,156 @@ INSTANTIATE_TEST_SUITE_P(
         Hostile{"write_outside", "a1.t2.shear.n3", "tried to open a file", "A1.T1 A1.T2 A1.T3 "}),
     [](const ::testing::TestParamInfo<Hostile>& i) { return std::string(i.param.name); });
 
-TEST(Grader, SubmissionThatDoesNotCompileGetsTheErrorsAndZero) {
+// Task scores of the reference, for "every other task keeps its points".
+const Json& reference_results() {
+  static const Json r = grade(submission("reference-for-costs"), "reference-for-costs");
+  return r;
+}
+
+const char* const kAllTasks[] = {"A1.T1", "A1.T2", "A1.T3",  "A1.T4",  "A1.T5",  "A1.T6", "A1.T7",
+                                 "A1.T8", "A1.T9", "A1.T10", "A1.T11", "A1.T12", "A1.T13"};
+
+TEST(Grader, SubmissionThatDoesNotCompileGetsTheErrorsAndLosesOnlyThatFilesTasks) {
   const Json r =
       grade(submission("no_compile", kSource / "grader" / "tests" / "hostile" / "no_compile"),
             "no_compile");
-  EXPECT_EQ(r["score"].get<double>(), 0.0);
   const Json& compile = r["tests"][0];
   EXPECT_EQ(compile["status"], "failed");
   const std::string o = compile["output"];
   EXPECT_NE(o.find("nested/src/integrators.cpp:"), std::string::npos)
       << o;  // path as in the submission
   EXPECT_NE(o.find("error"), std::string::npos) << o;
+  EXPECT_NE(o.find("integrators.cpp did not compile: its tasks A1.T10, A1.T11, A1.T12, A1.T13"),
+            std::string::npos)
+      << o;
+  for (const char* task : kAllTasks) {
+    const bool mine = std::string(task) >= "A1.T10" && std::string(task).size() == 6;
+    EXPECT_NEAR(task_score(r, task), mine ? 0.0 : task_score(reference_results(), task), 1e-6)
+        << task;
+  }
+}
+
+// One missing ';' in forces.cpp: its tasks score 0 with the compiler's message, every other task
+// keeps full points (graded with the stub of forces.cpp in its place), and every report names the
+// file and what it cost.
+TEST(Grader, MissingSemicolonInForcesCostsOnlyTheForcesTasks) {
+  const fs::path dir = submission("missing_semicolon");
+  const fs::path forces = dir / "nested" / "src" / "forces.cpp";
+  std::string text;
+  {
+    std::ifstream in(forces, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    text = s.str();
+  }
+  const auto semi = text.find(";\n", text.find("return "));
+  ASSERT_NE(semi, std::string::npos);
+  text.erase(semi, 1);
+  std::ofstream(forces, std::ios::binary) << text;
+  const Json r = grade(dir, "missing_semicolon");
+  const fs::path out = kWork / "out" / "missing_semicolon";
+  double forces_max = 0;
+  for (const Json& t : r["tests"])
+    if (t.contains("tags") && (t["tags"][0] == "A1.T4" || t["tags"][0] == "A1.T5")) {
+      forces_max += t["max_score"].get<double>();
+      EXPECT_EQ(t["status"], "failed");
+      const std::string o = t["output"];
+      EXPECT_NE(o.find("not run: forces.cpp did not compile"), std::string::npos) << o;
+      EXPECT_NE(o.find("nested/src/forces.cpp:"), std::string::npos)
+          << "the compiler's message: " << o;
+    }
+  EXPECT_NEAR(forces_max, 20.0, 1e-4);  // shares rounded to 1e-6 each
+  for (const char* task : kAllTasks) {
+    const bool mine = std::string(task) == "A1.T4" || std::string(task) == "A1.T5";
+    EXPECT_NEAR(task_score(r, task), mine ? 0.0 : task_score(reference_results(), task), 1e-6)
+        << task;
+  }
+  EXPECT_NEAR(r["score"].get<double>(), 60.0, 1e-6);
+  const std::string headline = "forces.cpp did not compile: its tasks A1.T4, A1.T5 (20.00 points)";
+  EXPECT_NE(r["tests"][0]["output"].get<std::string>().find(headline), std::string::npos)
+      << r["tests"][0]["output"];
+  EXPECT_NE(r["tests"][0]["output"].get<std::string>().find("expected"), std::string::npos);
+  const std::string md = read_text(out / "report.md"), html = read_text(out / "report.html");
+  EXPECT_NE(md.find("## forces.cpp did not compile"), std::string::npos) << md.substr(0, 2000);
+  EXPECT_NE(md.find("A1.T4, A1.T5 (20.00 points)"), std::string::npos) << md.substr(0, 2000);
+  EXPECT_NE(html.find("<h2>forces.cpp did not compile</h2>"), std::string::npos);
+  EXPECT_NE(html.find(headline), std::string::npos);
+  const Cmd term = run("grade " + dir.string() + " --out " + (out / "again").string() +
+                       " --format terminal --no-frames");
+  EXPECT_NE(term.out.find(headline), std::string::npos) << term.out;
+  EXPECT_NE(term.out.find("Total: 60.00 / 80.00"), std::string::npos) << term.out;
+}
+
+// A correct submission that prints 100 KB of mixed-script UTF-8 (Chinese, arrows, degree signs,
+// emoji), invalid bytes, NUL, terminal escapes and markup: full marks, and the reports show the
+// text as valid UTF-8, escaped for their format.
+TEST(Grader, PrintingAnyBytesKeepsFullMarksAndTheReportsShowTheTextSafely) {
+  const fs::path dir = submission("utf8_printer");
+  const fs::path springs = dir / "nested" / "src" / "springs.cpp";
+  std::string text = read_text(springs);
+  const std::string sig =
+      "void add_structural_springs(const CubeLattice& cube, std::vector<Spring>& out) {\n";
+  const auto at = text.find(sig);
+  ASSERT_NE(at, std::string::npos) << "solutions/springs.cpp changed: update this test";
+  text.insert(at + sig.size(),
+              "  static bool printed = false;\n"
+              "  if (!printed) {\n"
+              "    printed = true;\n"
+              "    std::fputs(\"jelly-utf8 \\xff\\xfe bad \\xe6\\xb8 cut \\x1b[2J\\x1b[31m "
+              "<script>alert(1)</script> "
+              "**not bold** NUL[\", stdout);\n"
+              "    std::fputc(0, stdout);\n"
+              "    std::fputs(\"]\\n\", stdout);\n"
+              "    for (int k = 0; k < 3000; ++k)  // about 100 KB\n"
+              "      std::fputs(\"\\xe6\\xb8\\xa9\\xe5\\xba\\xa6 \\xe2\\x86\\x92 20 \\xc2\\xb0\" "
+              "\"C \\xf0\\x9f\\x8c\\xa1 "
+              "\\xe5\\xbc\\xb9\\xe7\\xb0\\xa7 \\xe2\\x86\\x90\\n\", stdout);\n"
+              "  }\n");
+  text = "#include <cstdio>\n" + text;
+  std::ofstream(springs, std::ios::binary) << text;
+  const Json r = grade(dir, "utf8_printer");
+  double max = 0;
+  for (const Json& t : r["tests"])
+    if (t.contains("max_score")) max += t["max_score"].get<double>();
+  EXPECT_NEAR(r["score"].get<double>(), max, 1e-6);
+  EXPECT_NEAR(r["score"].get<double>(), 80.0, 1e-6);
+  const fs::path out = kWork / "out" / "utf8_printer";
+  const std::string line =
+      "\xe6\xb8\xa9\xe5\xba\xa6 \xe2\x86\x92 20 \xc2\xb0"
+      "C \xf0\x9f\x8c\xa1";
+  const std::string results = read_text(out / "results.json"), md = read_text(out / "report.md"),
+                    html = read_text(out / "report.html");
+  for (const std::string* f : {&results, &md, &html}) {
+    EXPECT_TRUE(utf8_ok(*f));
+    EXPECT_EQ(f->find('\x1b'), std::string::npos);
+    EXPECT_EQ(f->find('\0'), std::string::npos);
+    EXPECT_EQ(f->find("\xe6\xb8 cut"), std::string::npos) << "an invalid byte left as it was";
+  }
+  const Json* t = find_test(r, "a1.t1.structural.n3");
+  ASSERT_NE(t, nullptr);
+  const std::string o = (*t)["output"];
+  EXPECT_NE(o.find("jelly-utf8 \xef\xbf\xbd\xef\xbf\xbd bad \xef\xbf\xbd cut \xe2\x90\x9b[2J"),
+            std::string::npos)
+      << o;
+  EXPECT_NE(o.find("NUL[\xe2\x90\x80]"), std::string::npos) << o;
+  EXPECT_NE(o.find(line), std::string::npos) << o;
+  EXPECT_NE(md.find(line), std::string::npos);
+  EXPECT_NE(md.find("jelly-utf8"), std::string::npos);
+  EXPECT_NE(html.find(line), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_EQ(html.find("<script>"), std::string::npos) << "markup of the student in the page";
 }
 
 TEST(Grader, IncludingTheHiddenDataIsRefusedBeforeCompiling) {
   const Json r = grade(
       submission("include_hidden", kSource / "grader" / "tests" / "hostile" / "include_hidden"),
       "include_hidden");
-  EXPECT_EQ(r["score"].get<double>(), 0.0);
+  // Refused before compiling: forces.cpp's tasks only (its stub stands in for it).
+  EXPECT_EQ(task_score(r, "A1.T4") + task_score(r, "A1.T5"), 0.0);
+  EXPECT_NEAR(task_score(r, "A1.T1"), task_score(reference_results(), "A1.T1"), 1e-6);
   const std::string o = r["tests"][0]["output"];
   EXPECT_NE(o.find("is not allowed in a graded file"), std::string::npos) << o;
   EXPECT_EQ(o.find("format_version"), std::string::npos) << "hidden data leaked: " << o;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -361,7 +507,7 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   EXPECT_EQ(header.rfind("student,score,max_score,compiled,A1.T1", 0), 0u) << header;
   EXPECT_EQ(alice.rfind("alice,80.00,80.00,1", 0), 0u) << alice;
   EXPECT_EQ(bob.rfind("bob,0.00,80.00,1", 0), 0u) << bob;
-  EXPECT_TRUE(fs::exists(dir / "out" / "alice" / "results.json"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "students" / "alice" / "results.json"));
 }
 
 TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {

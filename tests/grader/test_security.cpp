@@ -104,7 +104,7 @@ std::string leaks_under(const fs::path& dir, const std::vector<std::string>& nee
 
 // Where a route's code goes: at the top of forces.cpp (compile time) or at the start of
 // contact_plane in contact.cpp (run time, in the public test a1.t8.contact_plane.eps).
-enum class Where { TopOfForces, InContactPlane, Special };
+enum class Where { TopOfForces, InContactPlane, Special, WellBehaved };
 
 struct Route {
   const char* name;
@@ -135,7 +135,7 @@ const Route kRoutes[] = {
   // Assembler and linker: no preprocessor at all.
   {"asm_incbin", Where::TopOfForces,
    "#include <cstdio>\n#include <cstring>\n"
-   "asm(\".section .rodata\\n.global jelly_leak\\njelly_leak: .incbin \\\"@HIDDEN@\\\"\\n.byte 0\\n.text\\n\");\n"
+   "asm(\".section .rodata\\njelly_leak: .incbin \\\"@HIDDEN@\\\"\\n.byte 0\\n.text\\n\");\n"
    "extern \"C\" const char jelly_leak[];\n"
    "static int jelly_print = [] { const char* o = std::strstr(jelly_leak, \"outputs\"); std::fputs(o ? o : jelly_leak, stdout); return 0; }();\n",
    "@HIDDEN@"},
@@ -186,6 +186,44 @@ const Route kRoutes[] = {
   {"process_vm_readv", Where::InContactPlane, "{ syscall(__NR_process_vm_readv, 1, nullptr, 0, nullptr, 0, 0); }\n",
    "inspect another process", true, true},
   {"socket", Where::InContactPlane, "{ syscall(__NR_socket, 2, 1, 0); }\n", "use the network", true, true},
+  // What a test prints and returns: any bytes (invalid UTF-8, NUL, terminal escapes, markup) end
+  // as a graded test shown safely; a malformed or forged result on the result channel (fd 3) is
+  // that test's failure, never a grader crash.
+  {"printed_bytes", Where::InContactPlane,
+   "{ static const char b[] = \"jelly bytes: \\xff\\xfe\\xc3( \\xe2\\x82 NUL[\\0] \\x1b[31mred\\x1b[0m \\x1b]0;title\\x07 \\x9b"
+   " \\xe2\\x80\\xae <script>alert('x')</script> <img src=x onerror=alert(1)> ```` | **bold** [link](javascript:x) \\xf0\\x9f\\x98\\x80 end\\n\";"
+   " std::fwrite(b, 1, sizeof b - 1, stdout); std::fwrite(b, 1, sizeof b - 1, stderr); for (int k = 0; k < 3000; ++k) std::fputs(\"\\xe2\\x86\\x92\\xc2\\xb0\", stdout); std::fputs(\"\\xe2\\x86\", stdout); }\n",
+   "jelly bytes:", true, false},
+  {"result_garbage", Where::InContactPlane,
+   "{ static const char g[] = \"\\xff\\x00{not json\"; write(3, g, sizeof g - 1); }\n",
+   "the test's result could not be read", true, true},
+  {"result_forged", Where::InContactPlane,
+   "{ static const char g[] = \"{\\\"forbidden_syscall\\\": \\\"openat\\\", \\\"outputs\\\": [1, 2]}\\n\";"
+   " write(3, g, sizeof g - 1); _exit(0); }\n",
+   "the test's result has no outputs", true, true},
+  {"result_wrong_types", Where::InContactPlane,
+   "{ static const char g[] = \"{\\\"outputs\\\": {\\\"force\\\": 5, \\\"com_y\\\": {\\\"value\\\": {\\\"a\\\": 1}}, \\\"frame_times\\\": 7}}\\n\";"
+   " write(3, g, sizeof g - 1); _exit(0); }\n",
+   "your code produced no value", true, true},
+  // A file that does not compile costs only its own tasks (checked for every route that stops
+  // forces.cpp: the other files' tasks keep full marks).
+  {"missing_semicolon", Where::Special, "", "expected ';'|expected ‘;’"},
+  // Link time: a submission may not replace the grader's code (framework, runner, harness, the C
+  // and C++ libraries); a non-static helper of its own is fine.
+  {"redefine_sandbox", Where::TopOfForces,
+   "namespace jelly::grade { bool install_sandbox(int) { return true; } }\n",
+   "jelly::grade::install_sandbox(int)|defined by the grader's own code"},
+  {"redefine_libc", Where::TopOfForces,
+   "extern \"C\" int seccomp_load(void*) { return 0; }\n",
+   "seccomp_load, which is not a C++ function"},
+  {"redefine_task_table", Where::TopOfForces,
+   "#include \"jelly/task_table.hpp\"\nnamespace jelly { TaskTable linked_tasks() { return {}; } }\n",
+   "jelly::linked_tasks()"},
+  {"nonstatic_helper", Where::WellBehaved, "", ""},
+  // Folder names that would break or forge a CSV file, or collide with the batch's own files.
+  {"scores.csv", Where::WellBehaved, "", ""},
+  {"=HYPERLINK(\"http:,x\")", Where::WellBehaved, "", ""},
+  {"a,b \"quoted\"\nrow,99.00", Where::WellBehaved, "", ""},
   // Files that are not files.
   {"symlink", Where::Special, "", "is a symbolic link"},
   {"hardlink", Where::Special, "", "is a hard link"},
@@ -217,9 +255,31 @@ fs::path make_submission(const fs::path& in, const Route& r) {
     std::ofstream(dir / "contact.cpp", std::ios::binary)
         << "#include <fcntl.h>\n#include <sys/syscall.h>\n#include <unistd.h>\n#include <cstdio>\n"
         << text;
+  } else if (r.where == Where::WellBehaved) {
+    if (std::string(r.name) == "nonstatic_helper") {
+      // An honest helper with external linkage, used by the task function: allowed.
+      std::string text = read_text(kSource / "solutions" / "forces.cpp");
+      const std::string ns = "namespace jelly::tasks {\n";
+      const auto at = text.find(ns);
+      EXPECT_NE(at, std::string::npos) << "solutions/forces.cpp changed: update the red-team suite";
+      text.insert(at + ns.size(),
+                  "double jelly_helper_twice(double x);\n"
+                  "double jelly_helper_twice(double x) { return 2.0 * x; }\n");
+      std::ofstream(dir / "forces.cpp", std::ios::binary) << text;
+    }
   } else {
     fs::remove(dir / "forces.cpp");
     const std::string n = r.name;
+    if (n == "missing_semicolon") {
+      // One missing ';' in the body of a task function.
+      std::string text = read_text(kSource / "solutions" / "forces.cpp");
+      const auto ret = text.find("return ");
+      const auto semi = text.find(";\n", ret);
+      EXPECT_NE(ret, std::string::npos)
+          << "solutions/forces.cpp changed: update the red-team suite";
+      text.erase(semi, 1);
+      std::ofstream(dir / "forces.cpp", std::ios::binary) << text;
+    }
     if (n == "symlink") fs::create_symlink(kHidden, dir / "forces.cpp");
     if (n == "fifo") {
       EXPECT_EQ(mkfifo((dir / "forces.cpp").c_str(), 0644), 0);
@@ -273,23 +333,118 @@ bool has_any(const std::string& text, const std::string& alternatives) {
   return false;
 }
 
-// Each route failed as it should, the well-behaved submission got full marks, nothing leaked.
+// Whether `s` is valid UTF-8 (well-formed sequences only).
+bool valid_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned c = static_cast<unsigned char>(s[i]);
+    std::size_t n = c < 0x80             ? 1
+                    : (c & 0xE0) == 0xC0 ? 2
+                    : (c & 0xF0) == 0xE0 ? 3
+                    : (c & 0xF8) == 0xF0 ? 4
+                                         : 0;
+    if (n == 0 || i + n > s.size() || (n == 2 && c < 0xC2)) return false;
+    unsigned cp = n == 1 ? c : c & (0x7F >> n);
+    for (std::size_t k = 1; k < n; ++k) {
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+      cp = (cp << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
+    }
+    if ((n == 3 && cp < 0x800) || (n == 4 && (cp < 0x10000 || cp > 0x10FFFF)) ||
+        (cp >= 0xD800 && cp <= 0xDFFF))
+      return false;
+    i += n;
+  }
+  return true;
+}
+
+// RFC 4180 records (quoted fields may hold commas, quotes and line breaks).
+std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string field;
+  bool quoted = false, was_quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"')
+        field += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        field += c;
+    } else if (c == '"' && field.empty() && !was_quoted) {
+      quoted = was_quoted = true;
+    } else if (c == ',') {
+      rows.back().push_back(field), field.clear(), was_quoted = false;
+    } else if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') {
+    } else if (c == '\n') {
+      rows.back().push_back(field), field.clear(), was_quoted = false;
+      rows.emplace_back();
+    } else {
+      field += c;
+    }
+  }
+  if (rows.back().empty()) rows.pop_back();
+  return rows;
+}
+
+double task_score(const Json& results, const std::string& task) {
+  double sum = 0;
+  for (const Json& t : results["tests"])
+    if (t.contains("tags") && t["tags"][0] == task) sum += t["score"].get<double>();
+  return sum;
+}
+
+// Each route failed as it should, the well-behaved submissions got full marks, nothing leaked,
+// every output is valid UTF-8 without terminal controls, and scores.csv has one correct row per
+// submission whatever its folder's name.
 void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
                  const std::string& mechanism) {
   const std::vector<std::string> needles = hidden_needles();
   ASSERT_GT(needles.size(), 100u) << "too few distinctive hidden lines to search for";
   EXPECT_EQ(leak_in(b.console, needles), "") << "hidden text in jelly-grade's output";
   EXPECT_EQ(leaks_under(b.out, needles), "");
+  for (const auto& e : fs::recursive_directory_iterator(b.out)) {
+    if (!e.is_regular_file() || e.path().extension() == ".png" || e.path().extension() == ".svg")
+      continue;
+    const std::string text = read_text(e.path());
+    EXPECT_TRUE(valid_utf8(text)) << e.path();
+    EXPECT_EQ(text.find('\x1b'), std::string::npos) << "a terminal escape in " << e.path();
+    EXPECT_EQ(text.find('\0'), std::string::npos) << "a NUL byte in " << e.path();
+  }
+  EXPECT_TRUE(valid_utf8(b.console));
+  EXPECT_EQ(b.console.find("\x1b["), std::string::npos) << "a terminal escape on the console";
+  const Json good = Json::parse(read_text(b.out / "students" / "zz_well_behaved" / "results.json"));
+  double max = 0;
+  for (const Json& t : good["tests"])
+    if (t.contains("max_score")) max += t["max_score"].get<double>();
+  EXPECT_GT(max, 0.0);
+  EXPECT_NEAR(good["score"].get<double>(), max, 1e-3) << good.dump(1).substr(0, 4000);
+  const auto csv = parse_csv(read_text(b.out / "scores.csv"));
+  ASSERT_FALSE(csv.empty());
+  EXPECT_EQ(csv.size(), routes.size() + 2) << read_text(b.out / "scores.csv");
+  std::map<std::string, std::vector<std::string>> rows;
+  for (std::size_t i = 1; i < csv.size(); ++i) {
+    EXPECT_EQ(csv[i].size(), csv[0].size()) << "row " << i << " of scores.csv";
+    if (!csv[i].empty()) rows[csv[i][0]] = csv[i];
+  }
   for (const Route* r : routes) {
     SCOPED_TRACE(r->name);
-    const fs::path res = b.out / r->name / "results.json";
+    const fs::path res = b.out / "students" / r->name / "results.json";
     ASSERT_TRUE(fs::exists(res)) << b.console;
     const Json j = Json::parse(read_text(res));
     EXPECT_NE(j["output"].get<std::string>().find("Sandbox: " + mechanism), std::string::npos)
         << j["output"];
+    // Its row: the folder name as it is (a spreadsheet formula marked as text), its score.
+    std::string name = r->name;
+    if (name[0] == '=') name = "'" + name;
+    ASSERT_TRUE(rows.count(name)) << "no row for " << name << " in\n"
+                                  << read_text(b.out / "scores.csv");
+    EXPECT_NEAR(std::stod(rows[name][1]), j["score"].get<double>(), 0.006);
     const std::string expect = replace_all(r->expect, "@HIDDEN@", kHidden.filename().string());
     const Json& compile = j["tests"][0];
-    if (r->runs) {
+    if (r->where == Where::WellBehaved) {
+      EXPECT_EQ(compile["status"], "passed") << compile["output"];
+      EXPECT_NEAR(j["score"].get<double>(), max, 1e-3) << j.dump(1).substr(0, 4000);
+    } else if (r->runs) {
       ASSERT_EQ(compile["status"], "passed") << compile["output"];
       const Json* t = find_test(j, "a1.t8.contact_plane.eps");
       ASSERT_NE(t, nullptr);
@@ -301,14 +456,27 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
       EXPECT_TRUE(has_any(o, expect)) << o.substr(0, 3000);
       EXPECT_EQ(o.find("the hidden file is visible"), std::string::npos) << o.substr(0, 3000);
       EXPECT_LT(o.size(), 300000u);
+      // Every route here stops forces.cpp only: it costs forces' tasks, the others keep their
+      // points (graded with the stub of forces.cpp in its place), and the report says so.
+      EXPECT_NE(o.find("forces.cpp "), std::string::npos) << o.substr(0, 3000);
+      EXPECT_NE(o.find("A1.T4, A1.T5"), std::string::npos) << o.substr(0, 3000);
+      EXPECT_EQ(task_score(j, "A1.T4") + task_score(j, "A1.T5"), 0.0);
+      for (const char* task : {"A1.T1", "A1.T2", "A1.T3", "A1.T6", "A1.T7", "A1.T8", "A1.T9",
+                               "A1.T10", "A1.T11", "A1.T12", "A1.T13"})
+        EXPECT_NEAR(task_score(j, task), task_score(good, task), 1e-6) << task;
     }
   }
-  const Json good = Json::parse(read_text(b.out / "zz_well_behaved" / "results.json"));
-  double max = 0;
-  for (const Json& t : good["tests"])
-    if (t.contains("max_score")) max += t["max_score"].get<double>();
-  EXPECT_GT(max, 0.0);
-  EXPECT_NEAR(good["score"].get<double>(), max, 1e-3) << good.dump(1).substr(0, 4000);
+  // What the bytes route printed reached the report, made safe.
+  for (const Route* r : routes)
+    if (std::string(r->name) == "printed_bytes") {
+      const std::string md = read_text(b.out / "students" / r->name / "report.md");
+      EXPECT_NE(md.find("jelly bytes: \xEF\xBF\xBD"), std::string::npos) << md.substr(0, 3000);
+      EXPECT_NE(md.find("\xE2\x90\x9B[31mred"), std::string::npos) << "ESC shown as ␛";
+      EXPECT_NE(md.find("\xF0\x9F\x98\x80"), std::string::npos) << "the emoji kept";
+      const std::string o =
+          Json::parse(read_text(b.out / "students" / r->name / "results.json")).dump();
+      EXPECT_NE(o.find("jelly bytes"), std::string::npos);
+    }
 }
 
 std::vector<const Route*> all_routes() {
@@ -338,15 +506,15 @@ TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
   // and the assembler here, yet no line of it reaches the messages.
   for (const char* name : {"computed_include", "asm_include"}) {
     const std::string o =
-        Json::parse(read_text(b.out / name / "results.json"))["tests"][0]["output"];
+        Json::parse(read_text(b.out / "students" / name / "results.json"))["tests"][0]["output"];
     EXPECT_NE(o.find("[hidden: a message about a file that is not part of your submission]"),
               std::string::npos)
         << o;
-    EXPECT_EQ(leaks_under(b.out / name, hidden_needles()), "") << name;
+    EXPECT_EQ(leaks_under(b.out / "students" / name, hidden_needles()), "") << name;
   }
   EXPECT_NE(b.console.find("WARNING: hidden tests are NOT protected"), std::string::npos)
       << b.console;
-  const Json j = Json::parse(read_text(b.out / "asm_incbin" / "results.json"));
+  const Json j = Json::parse(read_text(b.out / "students" / "asm_incbin" / "results.json"));
   EXPECT_NE(j["output"].get<std::string>().find("Sandbox: none"), std::string::npos);
   EXPECT_NE(j["output"].get<std::string>().find("NOT protected"), std::string::npos);
   EXPECT_NE(leaks_under(b.out, hidden_needles()), "")
@@ -357,7 +525,7 @@ TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
 TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
   const auto routes = all_routes();
   const BatchRun b = run_batch("auto", routes, "auto");
-  const fs::path good = b.out / "zz_well_behaved" / "results.json";
+  const fs::path good = b.out / "students" / "zz_well_behaved" / "results.json";
   ASSERT_TRUE(fs::exists(good)) << b.console;
   const std::string mechanism = Json::parse(read_text(good))["extra_data"]["isolation"];
   if (mechanism == "none") GTEST_SKIP() << "no isolation available on this machine:\n" << b.console;
