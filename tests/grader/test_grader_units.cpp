@@ -1,0 +1,110 @@
+// Unit tests of the grader's small pure modules: what a report may show of a student's bytes
+// (text_safety), the class file's fields (csv), and which symbols a task file may define (symbols).
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "csv.hpp"
+#include "symbols.hpp"
+#include "text_safety.hpp"
+
+namespace g = jelly::grade;
+
+TEST(GraderText, InvalidUtf8BecomesOneReplacementPerMaximalSubpart) {
+  const std::string fffd = "\xEF\xBF\xBD";
+  EXPECT_EQ(g::valid_utf8("ok \xC2\xB0 \xF0\x9F\x98\x80"), "ok \xC2\xB0 \xF0\x9F\x98\x80");
+  EXPECT_EQ(g::valid_utf8("\xFF\xFE"), fffd + fffd);
+  EXPECT_EQ(g::valid_utf8("a\xE6\xB8z"), "a" + fffd + "z");      // a truncated character: one
+  EXPECT_EQ(g::valid_utf8("\xC0\xAF"), fffd + fffd);             // overlong
+  EXPECT_EQ(g::valid_utf8("\xED\xA0\x80"), fffd + fffd + fffd);  // a UTF-16 surrogate
+  EXPECT_EQ(g::valid_utf8("\xF4\x90\x80\x80"), fffd + fffd + fffd + fffd);  // above U+10FFFF
+  EXPECT_EQ(g::valid_utf8("\xE2\x86"), fffd);                               // cut at the end
+}
+
+TEST(GraderText, ControlsBecomeVisibleAndNewlinesStay) {
+  EXPECT_EQ(g::safe_text(std::string("a\0b", 3)),
+            "a\xE2\x90\x80"
+            "b");
+  EXPECT_EQ(g::safe_text("\x1b[31mred"), "\xE2\x90\x9B[31mred");
+  EXPECT_EQ(g::safe_text("l1\r\nl2\tx\r"), "l1\nl2\tx\xE2\x90\x8D");
+  EXPECT_EQ(g::safe_text("\xC2\x9B"
+                         "2J"),
+            "\xEF\xBF\xBD"
+            "2J");  // the one-character CSI
+  EXPECT_EQ(g::safe_text("a\xE2\x80\xAE"
+                         "b"),
+            "a\xEF\xBF\xBD"
+            "b");  // right-to-left override
+  EXPECT_EQ(g::safe_text("\x7f"), "\xE2\x90\xA1");
+}
+
+TEST(GraderText, CutsNeverSplitACharacter) {
+  const std::string s = "ab\xE6\xB8\xA9\xF0\x9F\x98\x80";  // a b 温 😀
+  EXPECT_EQ(g::cut_utf8(s, 2), "ab");
+  EXPECT_EQ(g::cut_utf8(s, 3), "ab");
+  EXPECT_EQ(g::cut_utf8(s, 4), "ab");
+  EXPECT_EQ(g::cut_utf8(s, 5), "ab\xE6\xB8\xA9");
+  EXPECT_EQ(g::cut_utf8(s, 8), "ab\xE6\xB8\xA9");
+  EXPECT_EQ(g::cut_utf8(s, 9), s);
+  EXPECT_EQ(g::safe_excerpt(s, 4), "ab\xE2\x80\xA6");
+}
+
+TEST(GraderText, HtmlAndMarkdownEscapes) {
+  EXPECT_EQ(g::html_escape("<script>a&'\"</script>"),
+            "&lt;script&gt;a&amp;&#39;&quot;&lt;/script&gt;");
+  EXPECT_EQ(g::markdown_inline("**x** [l](u) <b> a|b\nc"),
+            "\\*\\*x\\*\\* \\[l\\](u) &lt;b> a\\|b c");
+  EXPECT_EQ(g::markdown_inline("- item"), "\\- item");
+  EXPECT_EQ(g::markdown_code_block("a ``` b"), "````text\na ``` b\n````\n");
+  EXPECT_EQ(g::markdown_code_block("x\n"), "```text\nx\n```\n");
+}
+
+TEST(GraderCsv, FieldsAreQuotedAndFormulasMarkedAsText) {
+  EXPECT_EQ(g::csv_field("alice"), "alice");
+  EXPECT_EQ(g::csv_field("a,b"), "\"a,b\"");
+  EXPECT_EQ(g::csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(g::csv_field("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(g::csv_field(" padded"), "\" padded\"");
+  EXPECT_EQ(g::csv_field("=HYPERLINK(\"x\")"), "\"'=HYPERLINK(\"\"x\"\")\"");
+  EXPECT_EQ(g::csv_field("+1"), "'+1");
+  EXPECT_EQ(g::csv_field("-1.5", false), "-1.5");  // a number stays a number
+  EXPECT_EQ(g::csv_row({"a", "", "b"}), "a,,b\r\n");
+}
+
+TEST(GraderSymbols, NmOutputIsReadPerFileAndArchive) {
+  const auto m = g::parse_nm(
+      "f.o: _Z3fooi T 0 3\nlib.a[x.o]: bar W 10 2\nlib.a[y.o]: baz D 0 8\n"
+      "garbage line\n");
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m.at("f.o").at(0).name, "_Z3fooi");
+  EXPECT_EQ(m.at("lib.a").size(), 2u);
+  EXPECT_TRUE(m.at("lib.a").at(0).weak());
+  EXPECT_FALSE(m.at("lib.a").at(1).weak());
+}
+
+TEST(GraderSymbols, OnlyOwnTasksHelpersAndHeaderCopiesAreAllowed) {
+  g::FrameworkSymbols fw;
+  fw.strong = {"_ZN5jelly5grade15install_sandboxEi", "seccomp_load"};
+  fw.weak = {"_ZN5jelly4lerpEddd"};
+  const std::set<std::string> own = {"_ZN5jelly5tasks12spring_forceEv"};
+  const std::map<std::string, std::string> others = {
+      {"_ZN5jelly5tasks8rk4_stepEv", "integrators.cpp"}};
+  auto why = [&](const std::string& name, char type) {
+    return g::refused_symbol("forces.cpp", {name, type}, own, others, fw);
+  };
+  EXPECT_EQ(why("_ZN5jelly5tasks12spring_forceEv", 'T'), "");
+  EXPECT_EQ(why("_ZN5jelly5tasks6helperEd", 'T'), "");  // a non-static helper of its own
+  EXPECT_EQ(why("_ZN5jelly4lerpEddd", 'W'), "");        // the framework's inline copy
+  EXPECT_EQ(why("_ZNSt6vectorIdSaIdEE17_M_realloc_insertEv", 'W'), "");  // a template instance
+  EXPECT_EQ(why("DW.ref.__gxx_personality_v0", 'V'), "");
+  EXPECT_NE(why("_ZN5jelly5grade15install_sandboxEi", 'T').find("grader's own code"),
+            std::string::npos);
+  EXPECT_NE(why("_ZN5jelly5grade15install_sandboxEi", 'W').find("grader's own code"),
+            std::string::npos);
+  EXPECT_NE(why("_ZN5jelly4lerpEddd", 'T').find("grader's own code"), std::string::npos);
+  EXPECT_NE(why("_ZN5jelly5tasks8rk4_stepEv", 'T').find("integrators.cpp"), std::string::npos);
+  EXPECT_NE(why("malloc", 'T').find("not a C++ function"), std::string::npos);
+  EXPECT_NE(why("seccomp_load", 'T').find("grader's own code"), std::string::npos);
+  EXPECT_NE(why("_ZSt9terminatev", 'T').find("standard library"), std::string::npos);
+  EXPECT_NE(why("_Znwm", 'T').find("standard library"), std::string::npos);
+}
