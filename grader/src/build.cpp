@@ -282,7 +282,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   //    that cannot be used.
   std::map<std::string, std::string> shown;     // task file → name shown in messages
   std::map<std::string, std::string> messages;  // task file → why it cannot be used, or warnings
-  std::set<std::string> broken;                 // task files replaced by their stub
+  std::map<std::string, std::string> broken;    // task files replaced by their stub → why
   for (const std::string& name : files) {
     std::vector<fs::path> hits =
         fs::is_directory(submission) ? find_named(submission, name) : std::vector<fs::path>{};
@@ -310,7 +310,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     const std::string policy = refused + include_policy(shown[name], text);
     if (!policy.empty()) {
       messages[name] = policy;
-      broken.insert(name);
+      broken[name] = "was refused";
     }
     std::ofstream(src / name, std::ios::binary) << text;
     std::ofstream(stubs / name, std::ios::binary) << read_file(config.assignments_dir() / name);
@@ -405,7 +405,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       msg += job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
     std::lock_guard<std::mutex> lock(mutex);
     if (!ok) {
-      broken.insert(job.name);
+      broken[job.name] = "did not compile";
       messages[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
     } else {
       if (!msg.empty()) messages[job.name] = msg;  // warnings
@@ -430,7 +430,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         if (job.stub) {
           stub_failed.insert(job.name);
         } else {
-          broken.insert(job.name);
+          broken[job.name] = "did not compile";
           messages[job.name] +=
               job.name + ": error: the grader could not compile it: " + std::string(e.what()) +
               "\n";
@@ -500,7 +500,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       if (broken.count(name)) continue;
       const std::string file = student_obj(name).filename().string();
       if (c.exit_code != 0 || !defined.count(file)) {
-        broken.insert(name);
+        broken[name] = "could not be checked";
         messages[name] = name + ": error: the grader could not list the symbols of " + name +
                          " (nm failed); its tasks were not run\n";
         continue;
@@ -541,7 +541,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         if (why.size() > 4000) break;
       }
       if (!why.empty()) {
-        broken.insert(name);
+        broken[name] = "was refused (it defines a symbol it may not)";
         messages[name] = why +
                          "  A graded file may define only its own task functions and helpers; put "
                          "helpers in an anonymous namespace or make them static.\n";
@@ -599,7 +599,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       if (link(alone, runner, errors)) {
         r.runners[name] = runner;
       } else {
-        broken.insert(name);
+        broken[name] = "did not link";
         messages[name] = name + ": error: " + name +
                          " does not link with the framework and the other files' stubs:\n" + errors;
       }
@@ -608,7 +608,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& name : files) {
     if (!messages.count(name)) continue;
     if (broken.count(name))
-      r.failed_files[name] = tidy(messages[name]);
+      r.failed_files[name] = tidy(messages[name]), r.failed_what[name] = broken[name];
     else
       r.warnings += tidy(messages[name]);
   }

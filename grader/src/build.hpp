@@ -24,6 +24,8 @@ struct BuildResult {
                 ///< do not link together, one linked with that file alone and the other stubs)
   std::map<std::string, std::string>
       failed_files;  ///< task file → why it was replaced by its stub (compiler, symbols, linker)
+  std::map<std::string, std::string>
+      failed_what;          ///< task file → "did not compile", "was refused", "did not link", ...
   std::string errors;       ///< every failed file's messages, paths relative to the submission
   std::string warnings;     ///< the compiler's warnings about the files that compiled
   std::string link_errors;  ///< why the files did not link together (then `runner` is empty)
@@ -48,7 +50,10 @@ struct BuildLimits {
 
 /// Builds into `work_dir` (created) inside the sandbox `iso`. `jobs` compiler processes at once.
 /// Objects are cached by content in config.cache_dir(), so an unchanged file is never compiled
-/// twice. Task files that are symbolic or hard links, FIFOs or devices are refused.
+/// twice. Task files that are symbolic or hard links, FIFOs or devices are refused, as are objects
+/// that define symbols they may not (symbols.hpp); a refused or broken file is replaced by its
+/// stub from assignments/, so that only its own tasks are lost. Throws std::runtime_error when the
+/// stubs themselves do not compile (a grader error).
 BuildResult build_submission(const GradeConfig& config, const std::filesystem::path& submission,
                              const std::filesystem::path& work_dir, int jobs, const Isolation& iso,
                              const BuildLimits& limits = {});

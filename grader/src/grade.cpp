@@ -394,10 +394,8 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
     FileFailure f;
     f.file = file;
     f.message = it->second;
-    f.what = f.message.find("defines the external symbol") != std::string::npos
-                 ? "was refused (it defines a symbol it may not)"
-             : f.message.find("does not link") != std::string::npos ? "did not link"
-                                                                    : "did not compile";
+    f.what = rep.build.failed_what.count(file) ? rep.build.failed_what.at(file)
+                                               : std::string("did not compile");
     for (const TaskResult& t : rep.tasks)
       if (task_file_of(*t.spec) == file) f.tasks.push_back(t.spec->id), f.points += t.max_score;
     std::string tasks;
@@ -435,13 +433,13 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
         const std::string file = task ? task_file_of(*task) : "";
         if (!file.empty() && rep.build.failed_files.count(file)) {
           const std::string& msg = rep.build.failed_files.at(file);
-          not_run(r,
-                  "not run: " + file + " " +
-                      (msg.find("defines the external symbol") != std::string::npos ? "was refused"
-                       : msg.find("does not link") != std::string::npos             ? "did not link"
-                                                                        : "did not compile") +
-                      ", so its tasks score 0",
-                  "the message about " + file + ":\n" + cut_utf8(msg, 3000));
+          const std::string what = rep.build.failed_what.count(file)
+                                       ? rep.build.failed_what.at(file)
+                                       : std::string("did not compile");
+          not_run(
+              r,
+              "not run: " + file + " " + what.substr(0, what.find(" (")) + ", so its tasks score 0",
+              "the message about " + file + ":\n" + cut_utf8(msg, 3000));
           continue;
         }
         const fs::path runner = !file.empty() && rep.build.runners.count(file)

@@ -215,7 +215,10 @@ const Route kRoutes[] = {
    "jelly::grade::install_sandbox(int)|defined by the grader's own code"},
   {"redefine_libc", Where::TopOfForces,
    "extern \"C\" int seccomp_load(void*) { return 0; }\n",
-   "seccomp_load, which is not a C++ function"},
+   "defines the external symbol seccomp_load, which"},
+  {"extern_c_function", Where::TopOfForces,
+   "extern \"C\" long jelly_c_helper(long x) { return x; }\n",
+   "jelly_c_helper, which is not a C++ function"},
   {"redefine_task_table", Where::TopOfForces,
    "#include \"jelly/task_table.hpp\"\nnamespace jelly { TaskTable linked_tasks() { return {}; } }\n",
    "jelly::linked_tasks()"},
@@ -536,7 +539,8 @@ TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
 TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
   if (geteuid() != 0) GTEST_SKIP() << "--isolation user needs root";
   const auto routes = named({"computed_include", "asm_incbin", "static_constructor", "io_uring",
-                             "symlink", "template_bomb"});
+                             "symlink", "template_bomb", "printed_bytes", "result_forged",
+                             "missing_semicolon", "redefine_sandbox", "scores.csv"});
   const BatchRun b = run_batch("user", routes, "user");
   check_batch(b, routes, "user");
 }
