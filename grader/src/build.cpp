@@ -600,8 +600,10 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         r.runners[name] = runner;
       } else {
         broken[name] = "did not link";
-        messages[name] = name + ": error: " + name +
-                         " does not link with the framework and the other files' stubs:\n" + errors;
+        messages[name] = name +
+                         ": error: does not link with the framework and the other files' stubs "
+                         "(does it use a function of another file that could not be used?):\n" +
+                         errors;
       }
     }
   }

@@ -345,6 +345,54 @@ TEST(Grader, MissingSemicolonInForcesCostsOnlyTheForcesTasks) {
   EXPECT_NE(term.out.find("Total: 60.00 / 80.00"), std::string::npos) << term.out;
 }
 
+// forces.cpp uses a non-static helper that springs.cpp defines, and springs.cpp does not compile:
+// the five files cannot link together, so each usable file is linked alone with the other stubs;
+// forces.cpp then lacks the helper (its tasks 0, with the linker's message), the other files keep
+// their points, and the course scene (which needs all of them) is not run.
+TEST(Grader, FilesThatDoNotLinkTogetherAreEachGradedWithTheOtherStubs) {
+  const fs::path dir = submission("shared_helper");
+  const fs::path src = dir / "nested" / "src";
+  const std::string ns = "namespace jelly::tasks {\n";
+  std::string springs = read_text(src / "springs.cpp"), forces = read_text(src / "forces.cpp");
+  ASSERT_NE(springs.find(ns), std::string::npos);
+  ASSERT_NE(forces.find(ns), std::string::npos);
+  springs.insert(springs.find(ns) + ns.size(),
+                 "double jelly_shared_scale();\ndouble jelly_shared_scale() { return 1.0; }\n"
+                 "int jelly_broken = ;\n");
+  forces.insert(forces.find(ns) + ns.size(), "double jelly_shared_scale();\n");
+  const std::string ret = "return (-ks * (length - rest_length)) * u;";
+  ASSERT_NE(forces.find(ret), std::string::npos)
+      << "solutions/forces.cpp changed: update this test";
+  forces.replace(forces.find(ret), ret.size(),
+                 "return (-ks * jelly_shared_scale() * (length - rest_length)) * u;");
+  std::ofstream(src / "springs.cpp", std::ios::binary) << springs;
+  std::ofstream(src / "forces.cpp", std::ios::binary) << forces;
+  const Json r = grade(dir, "shared_helper");
+  for (const char* task : kAllTasks) {
+    const std::string t = task;
+    const bool lost = t == "A1.T1" || t == "A1.T2" || t == "A1.T3" || t == "A1.T4" || t == "A1.T5";
+    EXPECT_NEAR(task_score(r, task), lost ? 0.0 : task_score(reference_results(), task), 1e-6)
+        << task;
+  }
+  const std::string o = r["tests"][0]["output"];
+  EXPECT_NE(o.find("springs.cpp did not compile: its tasks A1.T1, A1.T2, A1.T3"), std::string::npos)
+      << o;
+  EXPECT_NE(o.find("forces.cpp did not link: its tasks A1.T4, A1.T5"), std::string::npos) << o;
+  EXPECT_NE(o.find("undefined reference to `jelly::tasks::jelly_shared_scale()'"),
+            std::string::npos)
+      << o;
+  const Json* t4 = find_test(r, "a1.t4.spring_force.values");
+  ASSERT_NE(t4, nullptr);
+  EXPECT_NE((*t4)["output"].get<std::string>().find("not run: forces.cpp did not link"),
+            std::string::npos)
+      << (*t4)["output"];
+  const Json* course = find_test(r, "a1.course.scene");
+  ASSERT_NE(course, nullptr);
+  EXPECT_NE((*course)["output"].get<std::string>().find("they do not link together"),
+            std::string::npos)
+      << (*course)["output"];
+}
+
 // A correct submission that prints 100 KB of mixed-script UTF-8 (Chinese, arrows, degree signs,
 // emoji), invalid bytes, NUL, terminal escapes and markup: full marks, and the reports show the
 // text as valid UTF-8, escaped for their format.
