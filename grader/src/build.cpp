@@ -18,6 +18,7 @@
 #include "files.hpp"
 #include "process.hpp"
 #include "symbols.hpp"
+#include "text_safety.hpp"
 
 namespace jelly::grade {
 
@@ -373,7 +374,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     if (!broken.count(name)) queue.push_back({name, false});
     queue.push_back({name, true});
   }
-  std::set<std::string> stub_failed;
+  std::map<std::string, std::string> stub_failed;  // stub → what the compiler (or system) said
   auto compile = [&](const Job& job) {
     const fs::path dir = job.stub ? stubs : src;
     const std::string text = read_file(dir / job.name);
@@ -395,7 +396,12 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
     if (job.stub) {
       std::lock_guard<std::mutex> lock(mutex);
-      if (!ok) stub_failed.insert(job.name);
+      if (!ok) {
+        const std::string hit = limit_hit("compiling the stub " + job.name, c, c.err, limits);
+        stub_failed[job.name] = !c.started ? "the compiler could not be started: " + c.start_error
+                                : !hit.empty() ? hit
+                                               : cut_utf8(c.err + c.out, 600);
+      }
       return;
     }
     std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
@@ -428,7 +434,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex);
         if (job.stub) {
-          stub_failed.insert(job.name);
+          stub_failed[job.name] = e.what();
         } else {
           broken[job.name] = "did not compile";
           messages[job.name] +=
@@ -442,11 +448,13 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (int i = 0; i < std::max(1, jobs); ++i) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
   if (!stub_failed.empty()) {
-    std::string names;
-    for (const std::string& n : stub_failed) names += " " + n;
-    throw std::runtime_error("the stubs in " + config.assignments_dir().string() +
-                             " do not compile (" + names.substr(1) +
-                             "): the grader cannot stand them in for a broken file");
+    // Not the student's fault: the grader cannot stand a stub in for a broken file (assignments/
+    // changed, or the machine could not run the compiler: processes or memory exhausted).
+    std::string why;
+    for (const auto& [name, message] : stub_failed) why += "\n  " + name + ": " + message;
+    throw std::runtime_error(
+        "the stubs in " + config.assignments_dir().string() +
+        " could not be compiled, so no stub can stand in for a broken file:" + why);
   }
 
   auto tidy = [&](std::string text) {

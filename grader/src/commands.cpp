@@ -190,6 +190,10 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       } catch (...) {
         errors[i] = "unknown error";
       }
+      if (!errors[i].empty()) {  // no half-made work folder (objects, a runner) among the reports
+        std::error_code ec;
+        fs::remove_all(students / name / "work", ec);
+      }
       std::lock_guard<std::mutex> lock(mutex);
       ++done;
       std::cerr << "\r[" << done << "/" << subs.size() << "] " << safe_text(name) << ": "
