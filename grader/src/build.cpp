@@ -150,6 +150,12 @@ std::string seconds(double s) {
 std::string limit_hit(const std::string& what, const ChildResult& c, const std::string& text,
                       const BuildLimits& lim) {
   auto has = [&](const char* s) { return text.find(s) != std::string::npos; };
+  if (c.process_cap)
+    return what + " started more than " + std::to_string(kRunProcesses) +
+           " processes or threads and was stopped";
+  if (c.memory_cap)
+    return what + " used more than " + human_bytes(lim.memory_bytes) +
+           " of memory (all its processes together) and was stopped";
   if (c.timed_out)
     return what + " took longer than " + seconds(lim.timeout_s) + " s and was stopped";
   if (c.output_flood)
@@ -208,7 +214,7 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
 
 BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
                              const fs::path& work_dir, int jobs, const Isolation& iso,
-                             const BuildLimits& limits) {
+                             const BuildLimits& limits, int gid) {
   const auto start = std::chrono::steady_clock::now();
   BuildResult r;
   const fs::path src = work_dir / "src", obj = work_dir / "obj";
@@ -247,7 +253,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     policy_errors += include_policy(shown[name], text);
     std::ofstream(src / name, std::ios::binary) << text;
   }
-  give_to_sandbox(iso, work_dir);
+  give_to_sandbox(iso, work_dir, gid);
   if (!policy_errors.empty()) {
     r.errors = policy_errors;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -294,6 +300,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   SandboxView compile_view;
   compile_view.writable = {work_dir};
   compile_view.cwd = src;
+  compile_view.gid = gid;
   std::vector<fs::path> allowed = {src, "/usr/include", "/usr/lib/gcc", "/tmp"};
   for (const std::string& i : config.include_dirs) {
     compile_view.read_only.push_back(i);
@@ -384,6 +391,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   SandboxView link_view;
   link_view.writable = {work_dir};
   link_view.cwd = work_dir;
+  link_view.gid = gid;
   for (const std::string& o : config.link_objects) link_view.read_only.push_back(o);
   for (const std::string& l : config.link_libraries) link_view.read_only.push_back(l);
   const ChildResult c = run_isolated(iso, argv, link_view, lim);
@@ -398,6 +406,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   } else {
     r.ok = true;
   }
+  seal_for_sandbox(iso, work_dir, gid);  // no test may change the runner or leave files for another
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
