@@ -325,6 +325,7 @@ void ensure_user(const std::string& name, int& uid, int& gid) {
 // One lane: what one run at a time uses (a sandbox user in user mode, its cgroups).
 struct Lane {
   int index = 0;
+  int user_index = -1;  // jelly-sandbox-N (kind User)
   int uid = -1, gid = -1;
   fs::path memory, pids, unified;  // this lane's cgroups (empty: none)
   bool v2_memory = false, v2_pids = false;
@@ -393,11 +394,6 @@ struct Lane {
       if (!unified.empty()) write_small(unified / "cgroup.kill", "1");
       if (!mine.empty()) kill_user(uid);  // one pass over every process: no fork escapes it
       for (int p : now) {
-        if (std::getenv("JELLY_GRADE_DEBUG_LEFTOVERS")) {
-          std::string cmd = read_small("/proc/" + std::to_string(p) + "/cmdline");
-          std::replace(cmd.begin(), cmd.end(), '\0', ' ');
-          std::cerr << "leftover " << p << " in lane " << index << ": " << cmd << "\n";
-        }
         kill(p, SIGKILL);
         seen.insert(p);
       }
@@ -606,6 +602,7 @@ class SandboxPool {
       std::error_code ec;
       fs::remove_all(scratch_, ec);
     }
+    for (const auto& [n, fd] : claimed_) ::close(fd);
   }
 
   // User mode: the private scratch folder (root's, others may only enter it) and the closed tree.
@@ -642,9 +639,15 @@ class SandboxPool {
       }
     auto lane = std::make_unique<Lane>();
     lane->index = static_cast<int>(lanes_.size());
-    if (kind_ == IsolationKind::User)
-      ensure_user(std::string(kSandboxUser) + "-" + std::to_string(lane->index), lane->uid,
-                  lane->gid);
+    if (kind_ == IsolationKind::User) {
+      int n = 0;
+      while (std::any_of(lanes_.begin(), lanes_.end(),
+                         [&](const std::unique_ptr<Lane>& l) { return l->user_index == n; }) ||
+             !claim_user(n))
+        ++n;
+      lane->user_index = n;
+      ensure_user(std::string(kSandboxUser) + "-" + std::to_string(n), lane->uid, lane->gid);
+    }
     const std::string name = "lane-" + std::to_string(lane->index);
     auto sub = [&](const fs::path& base) {
       if (base.empty()) return fs::path();
@@ -671,8 +674,11 @@ class SandboxPool {
     std::lock_guard<std::mutex> lock(mutex_);
     for (std::size_t i = 0;; ++i) {
       if (i == group_busy_.size()) {
+        int n = group_users_.empty() ? 0 : group_users_.back() + 1;
+        while (!claim_user(n)) ++n;
         int uid = -1, gid = -1;
-        ensure_user(std::string(kSandboxUser) + "-" + std::to_string(i), uid, gid);
+        ensure_user(std::string(kSandboxUser) + "-" + std::to_string(n), uid, gid);
+        group_users_.push_back(n);
         groups_.push_back(gid);
         group_busy_.push_back(false);
       }
@@ -689,8 +695,41 @@ class SandboxPool {
   }
 
  private:
+  // Sandbox user N serves one jelly-grade process at a time (a lock file per user, held until the
+  // end): two gradings on one machine never share a user, so neither kills the other's processes
+  // nor reads the other's files. A process may use its users both for lanes and for groups.
+  bool claim_user(int n) {
+    if (claimed_.count(n)) return true;
+    if (n > 4096) throw std::runtime_error("--isolation user: no free sandbox user");
+    const fs::path dir = lock_dir();
+    const int fd = open((dir / ("user-" + std::to_string(n) + ".lock")).c_str(),
+                        O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (fd < 0) throw std::runtime_error("cannot open a lock file in " + dir.string());
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd);
+      return false;
+    }
+    claimed_[n] = fd;
+    return true;
+  }
+  static fs::path lock_dir() {
+    for (const char* base : {"/run", "/var/lib"}) {
+      if (access(base, W_OK) != 0) continue;
+      const fs::path d = fs::path(base) / "jelly-grade";
+      mkdir(d.c_str(), 0700);
+      struct stat st {};
+      if (lstat(d.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == 0 &&
+          !(st.st_mode & (S_IWGRP | S_IWOTH)))
+        return d;
+    }
+    throw std::runtime_error(
+        "--isolation user: no root-only folder for the sandbox users' locks (/run/jelly-grade)");
+  }
+
   IsolationKind kind_;
   Cgroups cg_;
+  std::map<int, int> claimed_;  // user number -> its lock file
+  std::vector<int> group_users_;
   fs::path scratch_;
   TreeModes tree_;
   std::mutex mutex_;
@@ -825,7 +864,9 @@ std::vector<std::string> isolate(const Isolation& iso, const Lane* lane, const f
     limits.env.push_back("HOME=" + tmp.string());
     // Counted per user: a user per lane, its processes killed after every run, so this is a cap
     // per run too (and the only one where there is no pids cgroup).
-    if (limits.max_processes == 0) limits.max_processes = kRunProcesses;
+    // With a pids cgroup that is the cap (and says so); this is then only a backstop.
+    if (limits.max_processes == 0)
+      limits.max_processes = pids_cgroup ? 4 * kRunProcesses : kRunProcesses;
     return argv;
   }
   if (iso.kind != IsolationKind::Bwrap) return argv;
