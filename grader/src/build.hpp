@@ -37,9 +37,9 @@ struct BuildLimits {
 };
 
 /// Builds into `work_dir` (created) inside the sandbox `iso`. `jobs` compiler processes at once.
-/// `gid`: the submission's group (Workspace::gid(), kind User); the folder is read-only to it after.
-/// Objects are cached by content in config.cache_dir(), so an unchanged file is never compiled
-/// twice. Task files that are symbolic or hard links, FIFOs or devices are refused.
+/// `gid`: the submission's group (Workspace::gid(), kind User); the folder is read-only to it
+/// after. Objects are cached by content in config.cache_dir(), so an unchanged file is never
+/// compiled twice. Task files that are symbolic or hard links, FIFOs or devices are refused.
 BuildResult build_submission(const GradeConfig& config, const std::filesystem::path& submission,
                              const std::filesystem::path& work_dir, int jobs, const Isolation& iso,
                              const BuildLimits& limits = {}, int gid = -1);

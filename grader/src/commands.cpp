@@ -54,10 +54,10 @@ std::string sandbox_setup_lines(const std::string& source) {
   const std::string user = std::string(kSandboxUser) + "-$i";
   return std::string("for i in $(seq 0 $(( $(nproc) - 1 ))); do id -u ") + user +
          " >/dev/null 2>&1 || useradd --system --no-create-home --user-group --shell " +
-         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + source +
-         "/grader/data " + source +
-         "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source + "/grader/cases\n" +
-         "if [ -d " + source + "/build/grader/object-cache ]; then chmod 0700 " + source +
+         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + source + "/grader/data " +
+         source + "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source +
+         "/grader/cases\n" + "if [ -d " + source +
+         "/build/grader/object-cache ]; then chmod 0700 " + source +
          "/build/grader/object-cache; fi\n";
 }
 
@@ -343,7 +343,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "# Again at every run: an image made by an older setup.sh, or files restored with other "
          "modes.\n"
       << sandbox_setup_lines("/autograder/source")
-      <<          "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
+      << "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
          "/autograder/results "
          "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
   fs::permissions(stage / "setup.sh",

@@ -132,7 +132,8 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
 }
 
 std::string mib(std::size_t bytes) {
-  if (bytes >= (1ULL << 30) && bytes % (1ULL << 30) == 0) return std::to_string(bytes >> 30) + " GiB";
+  if (bytes >= (1ULL << 30) && bytes % (1ULL << 30) == 0)
+    return std::to_string(bytes >> 30) + " GiB";
   return std::to_string(bytes >> 20) + " MiB";
 }
 

@@ -73,8 +73,8 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
 /// (iso given), it runs in its own empty folder with the submission's group `gid` (kind User).
 ChildResult run_case(const std::filesystem::path& runner, const CaseSpec& spec, const Json* input,
                      const std::filesystem::path& work_dir, double timeout_s,
-                     std::size_t memory_bytes, bool prepare = false,
-                     const Isolation* iso = nullptr, int gid = -1);
+                     std::size_t memory_bytes, bool prepare = false, const Isolation* iso = nullptr,
+                     int gid = -1);
 
 /// Name of a system call number (for "your code tried to open a file").
 std::string syscall_name(int nr);

@@ -15,8 +15,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -388,7 +388,10 @@ struct Lane {
       std::set<int> now;
       for (const fs::path& d : dirs())
         for (int p : procs_of(d)) now.insert(p);
-      const std::vector<int> mine = uid >= 0 ? processes_of_user(uid) : std::vector<int>{};
+      // Every process of a run is in its cgroups (it cannot leave them); without cgroups, every
+      // process of its sandbox user is looked for.
+      const std::vector<int> mine =
+          uid >= 0 && (dirs().empty() || round > 0) ? processes_of_user(uid) : std::vector<int>{};
       now.insert(mine.begin(), mine.end());
       if (now.empty()) break;
       if (!unified.empty()) write_small(unified / "cgroup.kill", "1");
@@ -491,8 +494,8 @@ class TreeModes {
     if (!out) throw std::runtime_error("cannot write " + file_.string());
     for (const auto& [p, m] : changes)
       if (chmod(p.c_str(), m) != 0 && errno != ENOENT)
-        throw std::runtime_error("cannot close " + p.string() + " to other users: " +
-                                 std::strerror(errno));
+        throw std::runtime_error("cannot close " + p.string() +
+                                 " to other users: " + std::strerror(errno));
     flock(fd_, LOCK_SH);
   }
 
@@ -535,10 +538,9 @@ class TreeModes {
     }
     roots.erase(std::remove_if(roots.begin(), roots.end(),
                                [&](const fs::path& r) {
-                                 return std::any_of(roots.begin(), roots.end(),
-                                                    [&](const fs::path& x) {
-                                                      return x != r && under(r, x);
-                                                    });
+                                 return std::any_of(
+                                     roots.begin(), roots.end(),
+                                     [&](const fs::path& x) { return x != r && under(r, x); });
                                }),
                 roots.end());
     auto allow = [&](const std::string& p) {
@@ -763,9 +765,10 @@ std::string describe_caps(const Cgroups& cg, IsolationKind kind, bool prlimit) {
     procs = "no process cap (no pids cgroup)";
   std::string kill = !cg.unified.empty() || !cg.pids.empty() || !cg.memory.empty()
                          ? "leftover processes found by cgroup"
-                     : kind == IsolationKind::User  ? "leftover processes found by user"
-                     : kind == IsolationKind::Bwrap ? "leftover processes end with the pid namespace"
-                                                    : "leftover processes not tracked";
+                     : kind == IsolationKind::User ? "leftover processes found by user"
+                     : kind == IsolationKind::Bwrap
+                         ? "leftover processes end with the pid namespace"
+                         : "leftover processes not tracked";
   return "per compile and per test: " + mem + ", " + procs + "; " + kill;
 }
 

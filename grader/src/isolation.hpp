@@ -83,7 +83,10 @@ class Workspace {
 
 /// Picks the mechanism: `mode` is auto, bwrap, user or none. auto tries bwrap (a real probe), then
 /// user (when root), then none. A forced mechanism that cannot work is a std::runtime_error saying
-/// why. For "user", makes the secrets root-only (chmod 0700) first.
+/// why. Makes the run's cgroups where it can (every mode). For "user", closes the checkout and the
+/// build tree to other users except what a submission is compiled and linked with (deny by
+/// default; the modes are restored when the last copy of the Isolation goes) and makes a private
+/// scratch folder.
 Isolation choose_isolation(const GradeConfig& config, const std::string& mode);
 
 /// Runs `argv` isolated, in a lane of its own (a sandbox user in user mode; a cgroup where one can

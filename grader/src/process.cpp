@@ -213,9 +213,9 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     std::vector<pollfd> fds;
     for (const Stream& s : streams) fds.push_back({s.fd, POLLIN, 0});
     if (pidfd >= 0 && !exited) fds.push_back({pidfd, POLLIN, 0});
-    double left_s = exited ? std::chrono::duration<double>(drain_until - now).count()
-                   : killed ? 1.0
-                            : std::chrono::duration<double>(deadline - now).count();
+    double left_s = exited   ? std::chrono::duration<double>(drain_until - now).count()
+                    : killed ? 1.0
+                             : std::chrono::duration<double>(deadline - now).count();
     if (pidfd < 0 && !exited) left_s = std::min(left_s, 0.05);  // no pidfd: look every 50 ms
     const int wait_ms = static_cast<int>(std::max(0.0, left_s) * 1000.0) + 1;
     const int n = poll(fds.data(), fds.size(), wait_ms);

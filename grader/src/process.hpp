@@ -44,12 +44,12 @@ struct ChildResult {
   bool output_flood = false;  ///< killed for printing more than kill_output
   std::string out, err;       ///< the first keep_output bytes of each stream
   std::size_t out_bytes = 0, err_bytes = 0;
-  std::string result;    ///< everything written to fd 3
-  double seconds = 0.0;  ///< wall time
+  std::string result;       ///< everything written to fd 3
+  double seconds = 0.0;     ///< wall time
   bool pipes_held = false;  ///< a pipe was still open `drain_s` after the child ended (abandoned)
   // Filled by the sandbox (isolation.cpp) from the run's cgroup or sandbox user:
-  bool memory_cap = false;    ///< the run's processes together hit its memory cap (OOM kill)
-  bool process_cap = false;   ///< a fork or thread was refused at the run's process cap
+  bool memory_cap = false;     ///< the run's processes together hit its memory cap (OOM kill)
+  bool process_cap = false;    ///< a fork or thread was refused at the run's process cap
   int leftover_processes = 0;  ///< processes still running when the child had ended (killed)
   int leftover_files = 0;      ///< files it left in the shared temporary folders (removed)
 };

@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -400,13 +400,16 @@ namespace {
 
 // The request of this test, read from fd 0 without moving its offset (before the runner does).
 const char* const kReadRequest =
-    "#include <dirent.h>\n#include <errno.h>\n#include <fcntl.h>\n#include <poll.h>\n#include <signal.h>\n"
+    "#include <dirent.h>\n#include <errno.h>\n#include <fcntl.h>\n#include <poll.h>\n#include "
+    "<signal.h>\n"
     "#include <sys/stat.h>\n#include <sys/wait.h>\n#include <unistd.h>\n#include <cstdio>\n"
     "#include <cstdlib>\n#include <cstring>\n#include <string>\n"
     "static std::string jelly_request() { std::string s; char b[4096]; off_t o = 0; long n;"
-    " while ((n = pread(0, b, sizeof b, o)) > 0) { s.append(b, static_cast<std::size_t>(n)); o += n; }"
+    " while ((n = pread(0, b, sizeof b, o)) > 0) { s.append(b, static_cast<std::size_t>(n)); o += "
+    "n; }"
     " return s; }\n"
-    "static bool jelly_target() { return jelly_request().find(\"\\\"a1.t8.contact_plane.eps\\\"\") !="
+    "static bool jelly_target() { return jelly_request().find(\"\\\"a1.t8.contact_plane.eps\\\"\") "
+    "!="
     " std::string::npos; }\n";
 
 struct OsRoute {
@@ -614,7 +617,8 @@ void hostile_neighbours(const std::string& isolation) {
   // ...and a stale one, as an older grader left it.
   const fs::path stale = c.build / "grader" / "gradescope-zip" / "source" / "grader" / "data";
   fs::create_directories(stale);
-  fs::copy(c.src / "grader" / "data" / "hidden", stale / "hidden", fs::copy_options::recursive);
+  fs::copy(c.src / "grader" / "data" / "hidden", stale / "hidden",
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
   const fs::path in = c.root / "in", out = c.root / "out";
   fs::create_directories(in);
   std::string paths;
@@ -622,7 +626,8 @@ void hostile_neighbours(const std::string& isolation) {
        {c.build / "framework" / "tasks" / "libjelly_tasks_solutions.a",
         c.build / "grader" / "jelly-grade-student-runner",
         c.build / "grader" / "jelly-grade-reference-runner", c.src / "docs" / "mutation-table.md",
-        c.src / "grader" / "mutants" / fs::directory_iterator(c.src / "grader" / "mutants")->path().filename(),
+        c.src / "grader" / "mutants" /
+            fs::directory_iterator(c.src / "grader" / "mutants")->path().filename(),
         stale / "hidden" / kHidden.filename(), fs::path(zip),
         c.src / "grader" / "data" / "hidden" / kHidden.filename(),
         c.src / "grader" / "cases" / "forces.toml", c.src / "solutions" / "forces.cpp",
@@ -652,11 +657,11 @@ void hostile_neighbours(const std::string& isolation) {
     fs::create_directories(in / good);
     for (const char* f : kTaskFiles) fs::copy_file(c.src / "solutions" / f, in / good / f);
   }
-  const std::string console = run("batch " + in.string() + " --out " + out.string() +
-                                  " --config " + c.config.string() +
-                                  " --jobs 2 --visibility all --timeout 10 --no-frames "
-                                  "--isolation " +
-                                  isolation);
+  const std::string console =
+      run("batch " + in.string() + " --out " + out.string() + " --config " + c.config.string() +
+          " --jobs 2 --visibility all --timeout 10 --no-frames "
+          "--isolation " +
+          isolation);
   std::ofstream(c.root / "console.txt") << console;
   SCOPED_TRACE("console: " + (c.root / "console.txt").string());
 
@@ -677,9 +682,8 @@ void hostile_neighbours(const std::string& isolation) {
     const Json* t = find_test(j, "a1.t8.contact_plane.eps");
     return t ? *t : Json();
   };
-  const std::string description =
-      Json::parse(read_text(out / "zz_well_behaved" / "results.json"))["extra_data"]
-                 ["isolation_description"];
+  const std::string description = Json::parse(
+      read_text(out / "zz_well_behaved" / "results.json"))["extra_data"]["isolation_description"];
   SCOPED_TRACE(description);
   // The reference's binaries cannot be run: the stubs score 0.
   {
@@ -802,12 +806,10 @@ TEST(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
          " if (fork() == 0) { sleep(60); _exit(0); } _exit(0); } return 0; }();\n"
       << read_text(c.src / "solutions" / "forces.cpp");
   const auto start = std::chrono::steady_clock::now();
-  const std::string console =
-      run("grade " + (in / "holder").string() + " --out " + (c.root / "out").string() +
-          " --config " + c.config.string() +
-          " --visibility public --format gradescope --isolation none");
-  const double s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string console = run("grade " + (in / "holder").string() + " --out " +
+                                  (c.root / "out").string() + " --config " + c.config.string() +
+                                  " --visibility public --format gradescope --isolation none");
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(s, 45.0) << "a leftover holding the pipes stalled jelly-grade\n" << console;
   EXPECT_TRUE(fs::exists(c.root / "out" / "results.json")) << console;
   // Where jelly-grade can make a cgroup (root here), the holder was found and stopped as well.
