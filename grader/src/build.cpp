@@ -153,6 +153,12 @@ std::string seconds(double s) {
 std::string limit_hit(const std::string& what, const ChildResult& c, const std::string& text,
                       const BuildLimits& lim) {
   auto has = [&](const char* s) { return text.find(s) != std::string::npos; };
+  if (c.process_cap)
+    return what + " started more than " + std::to_string(kRunProcesses) +
+           " processes or threads and was stopped";
+  if (c.memory_cap)
+    return what + " used more than " + human_bytes(lim.memory_bytes) +
+           " of memory (all its processes together) and was stopped";
   if (c.timed_out)
     return what + " took longer than " + seconds(lim.timeout_s) + " s and was stopped";
   if (c.output_flood)
@@ -182,9 +188,18 @@ std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
     const fs::path abs = (fs::path(p).is_absolute() ? fs::path(p) : cwd / p).lexically_normal();
     const std::string a = abs.string();
     // The compiler's own temporary files (the assembly of the submission, "/tmp/ccAbC123.s"):
-    // directly in /tmp and named cc..., never any other file there (a checkout under /tmp is not
-    // the submission's).
-    if (abs.parent_path() == "/tmp" && abs.filename().string().rfind("cc", 0) == 0) return true;
+    // named cc..., directly in /tmp (bwrap's private /tmp, or no sandbox) or directly in a run's
+    // private TMPDIR (user mode: SCRATCH/jelly-grade-XXXXXX/run-N, isolation.cpp), never any other
+    // file there (a checkout under /tmp is not the submission's).
+    if (abs.filename().string().rfind("cc", 0) == 0) {
+      const fs::path dir = abs.parent_path();
+      if (dir == "/tmp") return true;
+      const std::string run = dir.filename().string();
+      if (run.rfind("run-", 0) == 0 && run.size() > 4 &&
+          run.find_first_not_of("0123456789", 4) == std::string::npos &&
+          dir.parent_path().filename().string().rfind("jelly-grade-", 0) == 0)
+        return true;
+    }
     for (const fs::path& dir : allowed) {
       const std::string d = dir.lexically_normal().string();
       if (a.size() > d.size() && a.compare(0, d.size(), d) == 0 &&
@@ -269,7 +284,7 @@ const FrameworkSymbols& framework_symbols(const GradeConfig& config, const std::
 
 BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
                              const fs::path& work_dir, int jobs, const Isolation& iso,
-                             const BuildLimits& limits) {
+                             const BuildLimits& limits, int gid) {
   const auto start = std::chrono::steady_clock::now();
   BuildResult r;
   const fs::path src = work_dir / "src", stubs = work_dir / "stubs", obj = work_dir / "obj";
@@ -316,7 +331,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     std::ofstream(src / name, std::ios::binary) << text;
     std::ofstream(stubs / name, std::ios::binary) << read_file(config.assignments_dir() / name);
   }
-  give_to_sandbox(iso, work_dir);
+  give_to_sandbox(iso, work_dir, gid);
 
   // 2. Compile (cached by content and flags), in parallel: the submission's files and the stubs.
   std::string flags_key = config.compiler + "\n" + config.compiler_id;
@@ -392,6 +407,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     view.writable = {work_dir};
     view.read_only = include_views;
     view.cwd = dir;
+    view.gid = gid;
     const ChildResult c = run_isolated(iso, argv, view, tool_limits());
     const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
     if (job.stub) {
@@ -497,6 +513,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     SandboxView view;
     view.writable = {work_dir};
     view.cwd = obj;
+    view.gid = gid;
     Limits lim = tool_limits();
     lim.keep_output = 16 << 20;
     const ChildResult c = run_isolated(iso, argv, view, lim);
@@ -577,6 +594,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     SandboxView view;
     view.writable = {work_dir};
     view.cwd = work_dir;
+    view.gid = gid;
     for (const std::string& o : config.link_objects) view.read_only.push_back(o);
     for (const std::string& l : config.link_libraries) view.read_only.push_back(l);
     const ChildResult c = run_isolated(iso, argv, view, tool_limits());
@@ -629,6 +647,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& name : files)
     if (r.failed_files.count(name)) r.errors += r.failed_files[name];
   r.ok = !r.runners.empty();
+  seal_for_sandbox(iso, work_dir, gid);  // no test may change the runner or leave files for another
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

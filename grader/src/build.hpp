@@ -49,14 +49,15 @@ struct BuildLimits {
 };
 
 /// Builds into `work_dir` (created) inside the sandbox `iso`. `jobs` compiler processes at once.
-/// Objects are cached by content in config.cache_dir(), so an unchanged file is never compiled
-/// twice. Task files that are symbolic or hard links, FIFOs or devices are refused, as are objects
-/// that define symbols they may not (symbols.hpp); a refused or broken file is replaced by its
-/// stub from assignments/, so that only its own tasks are lost. Throws std::runtime_error when the
-/// stubs themselves do not compile (a grader error).
+/// `gid`: the submission's group (Workspace::gid(), kind User); the folder is read-only to it
+/// after. Objects are cached by content in config.cache_dir(), so an unchanged file is never
+/// compiled twice. Task files that are symbolic or hard links, FIFOs or devices are refused, as are
+/// objects that define symbols they may not (symbols.hpp); a refused or broken file is replaced by
+/// its stub from assignments/, so that only its own tasks are lost. Throws std::runtime_error when
+/// the stubs themselves do not compile (a grader error).
 BuildResult build_submission(const GradeConfig& config, const std::filesystem::path& submission,
                              const std::filesystem::path& work_dir, int jobs, const Isolation& iso,
-                             const BuildLimits& limits = {});
+                             const BuildLimits& limits = {}, int gid = -1);
 
 /// Compiler messages with every diagnostic located in a file outside `allowed` (folders) reduced
 /// to its location: no text of any other file reaches a student. Paths in the messages are

@@ -8,7 +8,7 @@
 namespace jelly::grade {
 
 BuildResult build_submission(const GradeConfig&, const fs::path& submission, const fs::path&, int,
-                             const Isolation&, const BuildLimits&) {
+                             const Isolation&, const BuildLimits&, int) {
   throw std::runtime_error(
       "on Windows jelly-grade does not compile " + submission.string() +
       " itself: build and run the self-check with `cmake --build --preset student --target "

@@ -51,11 +51,15 @@ std::string pts(double v) {
 }  // namespace
 
 std::string sandbox_setup_lines(const std::string& source) {
-  return std::string("id -u ") + kSandboxUser +
-         " >/dev/null 2>&1 || useradd --system --no-create-home --shell " + "/usr/sbin/nologin " +
-         kSandboxUser + "\n" + "chown root:root " + source + "/grader/data " + source +
-         "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source + "/grader/cases\n" +
-         "if [ -d " + source + "/build/grader/object-cache ]; then chmod 0700 " + source +
+  // One sandbox user per core: each concurrent compile or test runs as a user of its own, so that
+  // killing what one run left behind never touches another (isolation.hpp).
+  const std::string user = std::string(kSandboxUser) + "-$i";
+  return std::string("for i in $(seq 0 $(( $(nproc) - 1 ))); do id -u ") + user +
+         " >/dev/null 2>&1 || useradd --system --no-create-home --user-group --shell " +
+         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + source + "/grader/data " +
+         source + "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source +
+         "/grader/cases\n" + "if [ -d " + source +
+         "/build/grader/object-cache ]; then chmod 0700 " + source +
          "/build/grader/object-cache; fi\n";
 }
 
@@ -167,6 +171,28 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   // name can collide with a class file.
   const fs::path students = fs::path(out) / "students";
   fs::create_directories(students);
+  // User mode: while the batch runs, no sandbox user can read any submission or any report (the
+  // work folders are private to each submission already: Workspace).
+  struct CloseToOthers {
+    std::vector<std::pair<fs::path, fs::perms>> saved;
+    void close(const fs::path& p) {
+      std::error_code ec;
+      const fs::perms was = fs::status(p, ec).permissions();
+      if (ec) return;
+      fs::permissions(p, fs::perms::others_all, fs::perm_options::remove, ec);
+      if (!ec) saved.emplace_back(p, was);
+    }
+    ~CloseToOthers() {
+      for (const auto& [p, was] : saved) {
+        std::error_code ec;
+        fs::permissions(p, was, fs::perm_options::replace, ec);
+      }
+    }
+  } closed;
+  if (options.isolation.kind == IsolationKind::User) {
+    closed.close(dir);
+    closed.close(out);
+  }
   const int workers =
       jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<GradeReport> reports(subs.size());
@@ -263,6 +289,15 @@ bool bundle_headers(const fs::path& stage, const std::string& name, const fs::pa
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
   fs::remove_all(stage);
+  // The staging folder holds the hidden data and cases: it goes as soon as the zip is written (or
+  // failed), whatever happens.
+  struct RemoveStage {
+    fs::path dir;
+    ~RemoveStage() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } remove_stage{stage};
   fs::create_directories(stage / "source");
   // The framework as a student release has it, plus the grader's hidden data; never solutions/.
   for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
@@ -321,10 +356,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "# Again at every run: an image made by an older setup.sh, or files restored with other "
          "modes.\n"
       << sandbox_setup_lines("/autograder/source")
-      << "# The unprivileged user must be able to reach its work folder under "
-         "/autograder/results.\n"
-         "chmod o+x /autograder /autograder/results\n"
-         "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
+      << "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
          "/autograder/results "
          "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
   fs::permissions(stage / "setup.sh",

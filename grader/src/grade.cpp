@@ -133,6 +133,37 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   return false;
 }
 
+std::string mib(std::size_t bytes) {
+  if (bytes >= (1ULL << 30) && bytes % (1ULL << 30) == 0)
+    return std::to_string(bytes >> 30) + " GiB";
+  return std::to_string(bytes >> 20) + " MiB";
+}
+
+// The caps of a test and what it left behind (isolation.hpp), in the student's terms.
+std::vector<std::string> sandbox_problems(const ChildResult& c, std::size_t memory_bytes,
+                                          const std::string& in_task) {
+  std::vector<std::string> p;
+  if (c.process_cap)
+    p.push_back("your code tried to start more than " + std::to_string(kRunProcesses) +
+                " processes or threads (the limit of one test; fork in a loop?)" + in_task);
+  if (c.memory_cap)
+    p.push_back("your code used more than " + mib(memory_bytes) +
+                " of memory with all its processes together and was stopped" + in_task);
+  if (c.leftover_processes > 0)
+    p.push_back("your code left " + std::to_string(c.leftover_processes) +
+                " process(es) running after the test ended (fork, setsid?); they were stopped" +
+                in_task);
+  if (c.leftover_files > 0)
+    p.push_back("your code left " + std::to_string(c.leftover_files) +
+                " file(s) in /tmp, /var/tmp or /dev/shm; they were removed (a test may not "
+                "write files)" +
+                in_task);
+  if (c.pipes_held)
+    p.push_back("a process of your code kept the test's output open after the test ended" +
+                in_task);
+  return p;
+}
+
 }  // namespace
 
 std::string task_file_of(const TaskSpec& task) {
@@ -162,14 +193,14 @@ void make_safe(GradeReport& rep) {
 // Runs case `r` with `runner` and judges it against `ref`. Throws on a result it cannot digest;
 // the caller makes that the test's failure.
 void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const CaseBook& book,
-                   const fs::path& work_dir, const GradeOptions& options) {
+                   const fs::path& work_dir, const GradeOptions& options, int gid) {
   const TaskSpec* task = book.rubric.find(r.spec->task);
   const std::string in_task = task && !task->functions.empty() ? " in " + task->functions : "";
   const Json input = ref.contains("input") ? ref.at("input") : Json::object();
   const double timeout =
       r.spec->timeout_s > 0 ? std::max(r.spec->timeout_s, options.timeout_s) : options.timeout_s;
   const ChildResult c = run_case(runner, *r.spec, &input, work_dir, timeout, options.memory_bytes,
-                                 false, &options.isolation);
+                                 false, &options.isolation, gid);
   r.seconds = c.seconds;
   r.reference = ref.at("outputs");
   // Cut on a character boundary; made safe to show by make_safe.
@@ -229,9 +260,12 @@ void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const
         "file descriptor 3?)" +
         in_task;
   }
-  if (!problem.empty()) {
+  // What the run did to the machine fails the test whatever its outputs.
+  const std::vector<std::string> caps = sandbox_problems(c, options.memory_bytes, in_task);
+  if (!problem.empty() || !caps.empty()) {
     r.status = "failed";
-    r.failures.push_back(problem);
+    r.failures = caps;
+    if (!problem.empty()) r.failures.push_back(problem);
     return;
   }
   r.outputs = result.at("outputs");
@@ -267,7 +301,7 @@ std::string syscall_name(int nr) {
 
 ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* input,
                      const fs::path& work_dir, double timeout_s, std::size_t memory_bytes,
-                     bool prepare, const Isolation* iso) {
+                     bool prepare, const Isolation* iso, int gid) {
   Json request = Json::object();
   request["case"] = spec.id;
   request["generator"] = spec.generator;
@@ -280,23 +314,28 @@ ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* i
   lim.memory_bytes = memory_bytes;
   lim.max_open_files = 64;
   lim.stdin_data = request.dump();
-  if (!iso || iso->kind == IsolationKind::None) return run_child(argv, lim, work_dir);
+  if (!iso) return run_child(argv, lim, work_dir);  // the trusted reference
   SandboxView view;
   view.read_only = {runner};
-  view.cwd = iso->kind == IsolationKind::Bwrap ? fs::path("/tmp") : work_dir;
+  // bwrap: its private /tmp; user: a private empty folder of the run (no test finds a file another
+  // test left); none: the work folder.
+  if (iso->kind == IsolationKind::None) view.cwd = work_dir;
+  view.gid = gid;
   return run_isolated(*iso, argv, view, lim);
 }
 
 GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
-                             const fs::path& submission, const fs::path& work_dir,
+                             const fs::path& submission, const fs::path& requested_work_dir,
                              const GradeOptions& options) {
+  // User mode: a private folder of the sandbox that no other submission's runs can read.
+  const Workspace workspace(options.isolation, requested_work_dir);
+  const fs::path& work_dir = workspace.dir();
   GradeReport rep;
   rep.submission = submission.string();
   rep.visibility = options.include_hidden ? "all" : "public";
   rep.isolation = options.isolation.name;
   rep.isolation_description = options.isolation.description;
   rep.isolation_warning = options.isolation.warning;
-  fs::create_directories(work_dir);
   const int jobs = options.jobs > 0
                        ? options.jobs
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -353,7 +392,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   if (!rep.isolation_warning.empty()) rep.notes.push_back("WARNING: " + rep.isolation_warning);
   if (options.runner.empty()) {
     rep.build = build_submission(config, submission, work_dir / "build", jobs, options.isolation,
-                                 options.build_limits);
+                                 options.build_limits, workspace.gid());
   } else {
     // The self-check: CMake built the runner from the student's tasks (jelly-grade-student-runner).
     if (!fs::is_regular_file(options.runner))
@@ -422,11 +461,20 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   };
   {
     const auto start = std::chrono::steady_clock::now();
+    // Outside bwrap, runs at the same time share the machine (abstract sockets, the process list):
+    // no hidden test runs while a public one does, so none can hand a hidden test's parameters
+    // to a public test's output. bwrap gives every run its own namespaces.
+    std::vector<std::size_t> phases[2];
+    const bool separate = options.isolation.kind != IsolationKind::Bwrap;
+    for (std::size_t i = 0; i < rep.cases.size(); ++i)
+      phases[separate && rep.cases[i].spec->hidden ? 1 : 0].push_back(i);
+    const std::vector<std::size_t>* phase = &phases[0];
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
       for (;;) {
-        const std::size_t i = next++;
-        if (i >= rep.cases.size()) return;
+        const std::size_t k = next++;
+        if (k >= phase->size()) return;
+        const std::size_t i = (*phase)[k];
         CaseResult& r = rep.cases[i];
         if (r.status == "skipped") continue;
         const TaskSpec* task = book.rubric.find(r.spec->task);
@@ -454,7 +502,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
           continue;
         }
         try {
-          run_and_judge(r, *refs[i], runner, book, work_dir, options);
+          run_and_judge(r, *refs[i], runner, book, work_dir, options, workspace.gid());
         } catch (const std::exception& e) {
           r.status = "failed";
           r.score = 0.0;
@@ -469,9 +517,13 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
         }
       }
     };
-    std::vector<std::thread> threads;
-    for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
-    for (std::thread& t : threads) t.join();
+    for (const std::vector<std::size_t>& p : phases) {
+      phase = &p;
+      next = 0;
+      std::vector<std::thread> threads;
+      for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
+      for (std::thread& t : threads) t.join();
+    }
     rep.grading_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }

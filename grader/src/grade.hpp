@@ -85,11 +85,12 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
 
 /// Runs one case (its generator and params, plus the prepared input) with a runner binary in the
 /// sandbox (also used by generate-reference, with the trusted reference runner and no isolation).
-/// The request reaches the runner on its stdin, never as a file another case could read.
+/// The request reaches the runner on its stdin, never as a file another case could read. Isolated
+/// (iso given), it runs in its own empty folder with the submission's group `gid` (kind User).
 ChildResult run_case(const std::filesystem::path& runner, const CaseSpec& spec, const Json* input,
                      const std::filesystem::path& work_dir, double timeout_s,
-                     std::size_t memory_bytes, bool prepare = false,
-                     const Isolation* iso = nullptr);
+                     std::size_t memory_bytes, bool prepare = false, const Isolation* iso = nullptr,
+                     int gid = -1);
 
 /// Name of a system call number (for "your code tried to open a file").
 std::string syscall_name(int nr);

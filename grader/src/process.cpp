@@ -12,6 +12,7 @@
 #include <sys/syscall.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -108,6 +109,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   for (const std::string& e : limits.env) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
   const std::string dir = cwd.string();
+  std::vector<const char*> cgroups;
+  for (const std::string& c : limits.cgroup_procs) cgroups.push_back(c.c_str());
   const rlim_t cpu = static_cast<rlim_t>(limits.cpu_s > 0 ? limits.cpu_s : limits.timeout_s + 1.0);
 
   const auto start = std::chrono::steady_clock::now();
@@ -119,6 +122,11 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   }
   if (pid == 0) {
     setpgid(0, 0);
+    for (const char* procs : cgroups) {
+      const int fd = open(procs, O_WRONLY | O_CLOEXEC);
+      if (fd < 0 || write(fd, "0", 1) != 1) _exit(124);
+      close(fd);
+    }
     const int input = in_fd >= 0 ? in_fd : open("/dev/null", O_RDONLY);
     if (input >= 0) dup2(input, 0);
     dup2(out_pipe[1], 1);
@@ -166,28 +174,53 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
                                  {err_pipe[0], &r.err, &r.err_bytes, false}};
   std::size_t result_bytes = 0;
   if (limits.result_pipe) streams.push_back({res_pipe[0], &r.result, &result_bytes, true});
+  // The child's end is watched as well as its pipes: a process it left behind (setsid, double
+  // fork) may hold a copy of them, and must neither keep us reading nor outlive the run.
+  int pidfd = -1;
+#if defined(__linux__) && defined(SYS_pidfd_open)
+  pidfd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
+#endif
   const auto deadline = start + std::chrono::duration<double>(limits.timeout_s);
-  bool killed = false;
+  bool killed = false, exited = false;
+  int status = 0;
+  std::chrono::steady_clock::time_point drain_until{};
   char buf[65536];
-  while (!streams.empty()) {
-    std::vector<pollfd> fds;
-    for (const Stream& s : streams) fds.push_back({s.fd, POLLIN, 0});
+  while (!streams.empty() || !exited) {
     const auto now = std::chrono::steady_clock::now();
-    int wait_ms = 1000;
-    if (!killed) {
-      const double left = std::chrono::duration<double>(deadline - now).count();
-      if (left <= 0.0) {
-        r.timed_out = true;
-        kill(-pid, SIGKILL);
-        kill(pid, SIGKILL);
-        killed = true;
-      } else {
-        wait_ms = static_cast<int>(left * 1000.0) + 1;
+    if (!killed && now >= deadline) {
+      r.timed_out = true;
+      kill(-pid, SIGKILL);
+      kill(pid, SIGKILL);
+      killed = true;
+    }
+    if (!exited) {
+      pid_t w;
+      while ((w = waitpid(pid, &status, WNOHANG)) < 0 && errno == EINTR) {
+      }
+      if (w == pid || (w < 0 && errno == ECHILD)) {
+        exited = true;
+        if (limits.end_leftovers) limits.end_leftovers();
+        drain_until = std::chrono::steady_clock::now() +
+                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                          std::chrono::duration<double>(limits.drain_s));
       }
     }
+    if (exited && streams.empty()) break;
+    if (exited && std::chrono::steady_clock::now() >= drain_until) {
+      r.pipes_held = true;  // someone kept a copy: what was read is all there is
+      break;
+    }
+    std::vector<pollfd> fds;
+    for (const Stream& s : streams) fds.push_back({s.fd, POLLIN, 0});
+    if (pidfd >= 0 && !exited) fds.push_back({pidfd, POLLIN, 0});
+    double left_s = exited   ? std::chrono::duration<double>(drain_until - now).count()
+                    : killed ? 1.0
+                             : std::chrono::duration<double>(deadline - now).count();
+    if (pidfd < 0 && !exited) left_s = std::min(left_s, 0.05);  // no pidfd: look every 50 ms
+    const int wait_ms = static_cast<int>(std::max(0.0, left_s) * 1000.0) + 1;
     const int n = poll(fds.data(), fds.size(), wait_ms);
     if (n < 0 && errno != EINTR) break;
-    for (std::size_t i = fds.size(); i-- > 0;) {
+    for (std::size_t i = streams.size(); i-- > 0;) {
       if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t got = read(fds[i].fd, buf, sizeof buf);
       Stream& s = streams[i];
@@ -208,9 +241,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
       }
     }
   }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  for (const Stream& s : streams) close(s.fd);
+  if (pidfd >= 0) close(pidfd);
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,14 @@ struct Limits {
   std::vector<std::string> env;           ///< the child's whole environment (empty: inherit ours)
   std::string stdin_data;                 ///< what the child reads on fd 0 (empty: /dev/null); an
                                           ///< anonymous in-memory file only this child has
+  /// The child joins these cgroups (their cgroup.procs files) before it drops privileges and
+  /// execs; one it cannot join ends it (exit status 124) rather than letting it run uncapped.
+  std::vector<std::string> cgroup_procs;
+  /// Called (in the calling thread) once the child has exited or been killed: ends every other
+  /// process it left behind (isolation.cpp: its cgroup, its sandbox user). Its output is then read
+  /// for at most `drain_s` more seconds: a process that kept a copy of a pipe cannot stall us.
+  std::function<void()> end_leftovers;
+  double drain_s = 0.5;
 };
 
 struct ChildResult {
@@ -35,8 +44,14 @@ struct ChildResult {
   bool output_flood = false;  ///< killed for printing more than kill_output
   std::string out, err;       ///< the first keep_output bytes of each stream
   std::size_t out_bytes = 0, err_bytes = 0;
-  std::string result;    ///< everything written to fd 3
-  double seconds = 0.0;  ///< wall time
+  std::string result;       ///< everything written to fd 3
+  double seconds = 0.0;     ///< wall time
+  bool pipes_held = false;  ///< a pipe was still open `drain_s` after the child ended (abandoned)
+  // Filled by the sandbox (isolation.cpp) from the run's cgroup or sandbox user:
+  bool memory_cap = false;     ///< the run's processes together hit its memory cap (OOM kill)
+  bool process_cap = false;    ///< a fork or thread was refused at the run's process cap
+  int leftover_processes = 0;  ///< processes still running when the child had ended (killed)
+  int leftover_files = 0;      ///< files it left in the shared temporary folders (removed)
 };
 
 /// Runs argv[0] with the arguments, stdin from /dev/null (or limits.stdin_data), in its own process

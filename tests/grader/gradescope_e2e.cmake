@@ -6,7 +6,7 @@
 # (.incbin) and at run time (a static constructor, before the seccomp filter), graded with the
 # unprivileged-user sandbox (Gradescope's image most likely has no user namespaces; needs root)
 # and with bubblewrap (where it works): it must score its failures and leak no hidden text.
-# apt-get and useradd are the steps not exercised (the "user" sandbox falls back to nobody).
+# apt-get is the step not exercised (the "user" sandbox makes its users jelly-sandbox-N with useradd).
 #   cmake -DGRADE=jelly-grade -DSOURCE=<repo> -DWORK=<dir> -P gradescope_e2e.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/autograder")

@@ -9,9 +9,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -556,4 +559,437 @@ TEST(GraderSecurity, ForcedSandboxThatCannotWorkIsAGraderError) {
             std::string::npos)
       << out;
   EXPECT_FALSE(fs::exists(kWork / "forced" / "results.json"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The operating-system side (issue 18, items 3-5): what a submission can do to the machine and to
+// the submissions graded beside it, in bubblewrap and in the user-drop mode. Each batch runs on a
+// copy of the tree under /tmp (as a fresh clone would be), configured with JELLY_TASKS=solutions,
+// so that the build tree holds binaries linked with the reference (jelly-grade-student-runner), a
+// Gradescope zip and a stale staging folder of one. Every hostile submission is graded in ONE batch
+// with two well-behaved ones, which must get full marks.
+namespace {
+
+// The request of this test, read from fd 0 without moving its offset (before the runner does).
+const char* const kReadRequest =
+    "#include <dirent.h>\n#include <errno.h>\n#include <fcntl.h>\n#include <poll.h>\n#include "
+    "<signal.h>\n"
+    "#include <sys/stat.h>\n#include <sys/wait.h>\n#include <unistd.h>\n#include <cstdio>\n"
+    "#include <cstdlib>\n#include <cstring>\n#include <string>\n"
+    "static std::string jelly_request() { std::string s; char b[4096]; off_t o = 0; long n;"
+    " while ((n = pread(0, b, sizeof b, o)) > 0) { s.append(b, static_cast<std::size_t>(n)); o += "
+    "n; }"
+    " return s; }\n"
+    "static bool jelly_target() { return jelly_request().find(\"\\\"a1.t8.contact_plane.eps\\\"\") "
+    "!="
+    " std::string::npos; }\n";
+
+struct OsRoute {
+  const char* name;
+  bool stubs;        // on the stubs (assignments/): a forged result would be the only points
+  const char* code;  // a static constructor at the top of forces.cpp: it runs before the runner
+                     // reads its request and installs its seccomp filter
+};
+
+// clang-format off
+const OsRoute kOsRoutes[] = {
+  // Runs a binary of the build tree linked with the reference and hands in its result as its own.
+  {"os_reference_binary", true,
+   "static int jelly_forge = [] {\n"
+   "  const char* bins[] = {\"@BUILD@/grader/jelly-grade-reference-runner\", \"@BUILD@/grader/jelly-grade-student-runner\", nullptr};\n"
+   "  for (int i = 0; bins[i]; ++i) {\n"
+   "    if (access(bins[i], X_OK) != 0) { std::fprintf(stderr, \"jelly-forge: cannot run %s: %s\\n\", std::strrchr(bins[i], '/') + 1, std::strerror(errno)); continue; }\n"
+   "    const pid_t p = fork();\n"
+   "    if (p == 0) { execl(bins[i], bins[i], \"--request\", \"-\", \"--result-fd\", \"3\", (char*)nullptr); _exit(127); }\n"
+   "    int st = 0; waitpid(p, &st, 0);\n"
+   "    if (WIFEXITED(st) && WEXITSTATUS(st) == 0) _exit(0);\n"
+   "    std::fprintf(stderr, \"jelly-forge: %s failed (status %d)\\n\", std::strrchr(bins[i], '/') + 1, st);\n"
+   "  }\n  return 0; }();\n"},
+  // Reads what derives from the reference or the hidden data, and the neighbours' files.
+  {"os_read_secrets", false,
+   "static int jelly_peek = [] {\n"
+   "  if (!jelly_target()) return 0;\n"
+   "  const char* paths[] = {@PATHS@ nullptr};\n"
+   "  int denied = 0;\n"
+   "  auto peek = [&](const char* p) { const int fd = open(p, O_RDONLY); if (fd < 0) { ++denied; return; } struct stat st{}; char b[64]; const long n = read(fd, b, sizeof b);"
+   " if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) std::printf(\"jelly-OPENED %s (%ld bytes)\\n\", p, n); close(fd); };\n"
+   "  for (int i = 0; paths[i]; ++i) peek(paths[i]);\n"
+   "  // Other submissions' files named on the command lines of their compilers and runners (this\n"
+   "  // batch's: gradings of other trees on the machine are not this batch's to protect).\n"
+   "  char self[4096] = {}; if (readlink(\"/proc/self/exe\", self, sizeof self - 1) < 0) self[0] = 0;\n"
+   "  std::string own = self; own = own.substr(0, own.rfind(\"/build/runner\") + 1);  // this submission's own folder\n"
+   "  if (DIR* d = opendir(\"/proc\")) { while (dirent* e = readdir(d)) { char f[300]; std::snprintf(f, sizeof f, \"/proc/%s/cmdline\", e->d_name);"
+   " const int fd = open(f, O_RDONLY); if (fd < 0) continue; char c[8192]; const long n = read(fd, c, sizeof c - 1); close(fd); if (n <= 0) continue; c[n] = 0;"
+   " for (char* a = c; a < c + n; a += std::strlen(a) + 1) { const std::string s(a); if (s.size() > 4 && s[0] == '/' && (s.find(\".cpp\") != std::string::npos || s.find(\"/runner\") != std::string::npos) && s.rfind(own, 0) != 0 && (s.rfind(\"@ROOT@\", 0) == 0 || s.find(\"/jelly-grade-\") != std::string::npos)) peek(a); } } closedir(d); }\n"
+   "  std::printf(\"jelly-peek: %d denied\\n\", denied);\n"
+   "  return 0; }();\n"},
+  // Leaves a process behind (setsid + double fork) that kills every process it may and holds the
+  // pipes.
+  {"os_daemon", false,
+   "static int jelly_daemon = [] {\n"
+   "  if (!jelly_target()) return 0;\n"
+   "  if (fork() == 0) { setsid(); if (fork() == 0) { for (int i = 0; i < 30000; ++i) { kill(-1, SIGKILL); usleep(1000); } _exit(0); } _exit(0); }\n"
+   "  usleep(300000);\n  return 0; }();\n"},
+  // Every test leaves its request (a hidden test's parameters) in the shared folders and prints
+  // what earlier tests left there.
+  {"os_tmp_channel", false,
+   "static int jelly_channel = [] {\n"
+   "  const std::string req = jelly_request();\n"
+   "  const char* env = std::getenv(\"TMPDIR\");\n"
+   "  const char* dirs[] = {\"/tmp\", \"/var/tmp\", \"/dev/shm\", env ? env : \"/tmp\", \".\"};\n"
+   "  const std::string mine = \"jelly-channel-\" + std::to_string(getpid());\n"
+   "  for (const char* d : dirs) { DIR* dd = opendir(d); if (!dd) continue; while (dirent* e = readdir(dd)) {"
+   " if (std::strncmp(e->d_name, \"jelly-channel-\", 14) != 0 || mine == e->d_name) continue; std::string f = std::string(d) + \"/\" + e->d_name;"
+   " if (FILE* i = std::fopen(f.c_str(), \"r\")) { char b[400] = {}; std::fread(b, 1, sizeof b - 1, i); std::fclose(i); std::printf(\"jelly-channel-found: %s\\n\", b); } } closedir(dd); }\n"
+   "  for (const char* d : dirs) if (FILE* o = std::fopen((std::string(d) + \"/\" + mine).c_str(), \"w\")) { std::fputs(req.c_str(), o); std::fclose(o); }\n"
+   "  return 0; }();\n"},
+  // Fills /tmp with symbolic links.
+  {"os_symlink_flood", false,
+   "static int jelly_flood = [] {\n"
+   "  if (!jelly_target()) return 0;\n"
+   "  for (int i = 0; i < 20000; ++i) { const std::string n = \"/tmp/jelly-flood-\" + std::to_string(getpid()) + \"-\" + std::to_string(i); if (symlink(\"/etc/passwd\", n.c_str()) != 0) break; }\n"
+   "  return 0; }();\n"},
+  // Four processes of 700 MiB each (each under the 1 GiB per-process limit; in pieces, as one block
+  // of 700 MiB may not fit beside the runner's own mappings).
+  {"os_fork_memory", false,
+   "static int jelly_memory = [] {\n"
+   "  if (!jelly_target()) return 0;\n"
+   "  int ready[2]; if (pipe(ready) != 0) return 0;\n"
+   "  for (int i = 0; i < 4; ++i) if (fork() == 0) { close(ready[0]); for (int k = 0; k < 10; ++k) { char* p = static_cast<char*>(std::malloc(70u << 20)); if (!p) break; std::memset(p, 1, 70u << 20); }"
+   " if (write(ready[1], \"x\", 1) != 1) _exit(1); pause(); _exit(0); }\n"
+   "  close(ready[1]);\n"
+   "  // Until all four hold their memory (or 8 s: the ones stopped at the cap never say so).\n"
+   "  char b[4]; int got = 0; for (int waited = 0; got < 4 && waited < 80; ++waited) { pollfd p{ready[0], POLLIN, 0};"
+   " if (poll(&p, 1, 100) > 0) { const long n = read(ready[0], b, sizeof b); if (n <= 0) break; got += static_cast<int>(n); } }\n"
+   "  std::printf(\"jelly-memory: %d of 4 hold 700 MiB\\n\", got);\n  return 0; }();\n"},
+  // 600 processes.
+  {"os_fork_many", false,
+   "static int jelly_many = [] {\n"
+   "  if (!jelly_target()) return 0;\n"
+   "  int n = 0;\n  for (; n < 600; ++n) { const pid_t p = fork(); if (p == 0) { pause(); _exit(0); } if (p < 0) break; }\n"
+   "  std::printf(\"jelly-forked %d\\n\", n);\n  return 0; }();\n"},
+};
+// clang-format on
+
+int sh(const std::string& command) {
+  const int s = std::system(command.c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+// A copy of the tree as a clone under /tmp would have it: the sources the grader reads and the
+// build tree's grader and framework (with the binaries and libraries linked with solutions/), and
+// grade-config.json pointing there.
+struct Clone {
+  fs::path root, src, build, config;
+};
+
+Clone make_clone(const std::string& tag) {
+  Clone c;
+  char templ[] = "/tmp/jelly-sec-XXXXXX";
+  const char* made = mkdtemp(templ);
+  EXPECT_NE(made, nullptr);
+  c.root = fs::path(made ? made : "/tmp/jelly-sec-failed") / tag;
+  c.src = c.root / "src";
+  c.build = c.root / "build";
+  fs::create_directories(c.src);
+  fs::create_directories(c.build);
+  chmod(c.root.parent_path().c_str(), 0755);  // the sandbox users must reach the public headers
+  const fs::path bin = JELLY_BINARY_DIR;
+  for (const char* item :
+       {"CMakeLists.txt", "cmake", "framework", "assignments", "solutions", "grader", "docs"})
+    EXPECT_EQ(sh("cp -a '" + (kSource / item).string() + "' '" + c.src.string() + "/'"), 0);
+  for (const char* item : {"grader", "framework"})
+    EXPECT_EQ(sh("cp -a '" + (bin / item).string() + "' '" + c.build.string() + "/'"), 0);
+  fs::remove_all(c.build / "grader" / "object-cache");
+  fs::remove_all(c.build / "grader" / "gradescope-zip");
+  Json cfg = Json::parse(read_text(bin / "grader" / "grade-config.json"));
+  std::function<void(Json&)> move = [&](Json& j) {
+    if (j.is_string()) {
+      std::string s = j.get<std::string>();
+      if (s.rfind(bin.string(), 0) == 0)
+        s = c.build.string() + s.substr(bin.string().size());
+      else if (s.rfind(kSource.string(), 0) == 0)
+        s = c.src.string() + s.substr(kSource.string().size());
+      j = s;
+    } else if (j.is_array() || j.is_object()) {
+      for (Json& e : j) move(e);
+    }
+  };
+  move(cfg);
+  c.config = c.build / "grader" / "grade-config.json";
+  std::ofstream(c.config) << cfg.dump(1);
+  return c;
+}
+
+std::string hidden_case_ids() {
+  std::string ids;
+  for (const auto& e : fs::directory_iterator(kSource / "grader" / "data" / "hidden"))
+    ids += e.path().stem().string() + "\n";
+  return ids;
+}
+
+// Processes whose command line names `marker` (other than this test's own).
+std::string processes_naming(const std::string& marker) {
+  std::string found;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string pid = e.path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos || pid == std::to_string(getpid()))
+      continue;
+    std::string cmd = read_text(e.path() / "cmdline");
+    for (char& ch : cmd)
+      if (ch == '\0') ch = ' ';
+    if (cmd.find(marker) != std::string::npos) found += pid + ": " + cmd.substr(0, 200) + "\n";
+  }
+  return found;
+}
+
+// Processes of the users jelly-sandbox-N.
+std::string sandbox_user_processes() {
+  std::set<std::string> uids;
+  std::istringstream pw(read_text("/etc/passwd"));
+  for (std::string l; std::getline(pw, l);)
+    if (l.rfind("jelly-sandbox-", 0) == 0) {
+      std::istringstream f(l);
+      std::string name, x, uid;
+      std::getline(f, name, ':');
+      std::getline(f, x, ':');
+      std::getline(f, uid, ':');
+      uids.insert(uid);
+    }
+  std::string found;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string st = read_text(e.path() / "status");
+    const auto at = st.find("\nUid:\t");
+    if (at == std::string::npos) continue;
+    std::istringstream u(st.substr(at + 6));
+    std::string real;
+    u >> real;
+    if (uids.count(real)) found += e.path().filename().string() + " (uid " + real + ")\n";
+  }
+  return found;
+}
+
+std::vector<std::string> names_in(const fs::path& dir, const std::string& prefix) {
+  std::vector<std::string> v;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().filename().string().rfind(prefix, 0) == 0) v.push_back(it->path().string());
+  return v;
+}
+
+void hostile_neighbours(const std::string& isolation) {
+  const Clone c = make_clone(isolation);
+  const std::string grade = std::string(JELLY_GRADE_EXE) + " ";
+  // A Gradescope zip in the build tree; its staging folder must be gone once it is written.
+  const std::string zip = c.build / "jelly-gradescope.zip";
+  const std::string made = run("gradescope-zip " + zip + " --config " + c.config.string());
+  ASSERT_TRUE(fs::exists(zip)) << made;
+  EXPECT_FALSE(fs::exists(c.build / "grader" / "gradescope-zip"))
+      << "gradescope-zip left its staging folder (a world-readable copy of the hidden data)";
+  // ...and a stale one, as an older grader left it.
+  const fs::path stale = c.build / "grader" / "gradescope-zip" / "source" / "grader" / "data";
+  fs::create_directories(stale);
+  fs::copy(c.src / "grader" / "data" / "hidden", stale / "hidden",
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  const fs::path in = c.root / "in", out = c.root / "out";
+  fs::create_directories(in);
+  std::string paths;
+  for (const fs::path& p :
+       {c.build / "framework" / "tasks" / "libjelly_tasks_solutions.a",
+        c.build / "grader" / "jelly-grade-student-runner",
+        c.build / "grader" / "jelly-grade-reference-runner", c.src / "docs" / "mutation-table.md",
+        c.src / "grader" / "mutants" /
+            fs::directory_iterator(c.src / "grader" / "mutants")->path().filename(),
+        stale / "hidden" / kHidden.filename(), fs::path(zip),
+        c.src / "grader" / "data" / "hidden" / kHidden.filename(),
+        c.src / "grader" / "cases" / "forces.toml", c.src / "solutions" / "forces.cpp",
+        in / "a0_neighbour" / "forces.cpp", out / "students" / "a0_neighbour" / "results.json",
+        out / "students" / "a0_neighbour" / "report.md"}) {
+    ASSERT_TRUE(p.filename() == "results.json" || p.filename() == "report.md" ||
+                p.string().find("a0_neighbour") != std::string::npos || fs::exists(p))
+        << p;
+    paths += "\"" + p.string() + "\", ";
+  }
+  std::map<std::string, fs::perms> modes_before;
+  for (const fs::path& p : {c.src, c.src / "grader" / "data", c.build / "grader",
+                            c.build / "grader" / "jelly-grade-student-runner", fs::path(zip)})
+    modes_before[p.string()] = fs::status(p).permissions();
+  for (const OsRoute& r : kOsRoutes) {
+    const fs::path dir = in / r.name;
+    fs::create_directories(dir);
+    const fs::path base = c.src / (r.stubs ? "assignments" : "solutions");
+    for (const char* f : kTaskFiles) fs::copy_file(base / f, dir / f);
+    std::string code = replace_all(r.code, "@BUILD@", c.build.string());
+    code = replace_all(code, "@PATHS@", paths);
+    code = replace_all(code, "@ROOT@", c.root.string());
+    std::ofstream(dir / "forces.cpp", std::ios::binary)
+        << kReadRequest << code << read_text(base / "forces.cpp");
+  }
+  for (const char* good : {"a0_neighbour", "zz_well_behaved"}) {
+    fs::create_directories(in / good);
+    for (const char* f : kTaskFiles) fs::copy_file(c.src / "solutions" / f, in / good / f);
+  }
+  const std::string console =
+      run("batch " + in.string() + " --out " + out.string() + " --config " + c.config.string() +
+          " --jobs 2 --visibility all --timeout 10 --no-frames "
+          "--isolation " +
+          isolation);
+  std::ofstream(c.root / "console.txt") << console;
+  SCOPED_TRACE("console: " + (c.root / "console.txt").string());
+
+  // The neighbours are graded exactly.
+  for (const char* good : {"a0_neighbour", "zz_well_behaved"}) {
+    SCOPED_TRACE(good);
+    ASSERT_TRUE(fs::exists(out / "students" / good / "results.json")) << console;
+    const Json j = Json::parse(read_text(out / "students" / good / "results.json"));
+    EXPECT_NE(j["output"].get<std::string>().find("Sandbox: " + isolation), std::string::npos);
+    double max = 0;
+    for (const Json& t : j["tests"])
+      if (t.contains("max_score")) max += t["max_score"].get<double>();
+    EXPECT_GT(max, 0.0);
+    EXPECT_NEAR(j["score"].get<double>(), max, 1e-3) << j.dump(1).substr(0, 4000);
+  }
+  auto target = [&](const char* name) {
+    const Json j = Json::parse(read_text(out / "students" / name / "results.json"));
+    const Json* t = find_test(j, "a1.t8.contact_plane.eps");
+    return t ? *t : Json();
+  };
+  const std::string description =
+      Json::parse(read_text(out / "students" / "zz_well_behaved" /
+                            "results.json"))["extra_data"]["isolation_description"];
+  SCOPED_TRACE(description);
+  // The reference's binaries cannot be run: the stubs score 0.
+  {
+    const Json j =
+        Json::parse(read_text(out / "students" / "os_reference_binary" / "results.json"));
+    EXPECT_EQ(j["score"].get<double>(), 0.0) << "a reference binary was run and its result taken";
+    const std::string o = target("os_reference_binary")["output"];
+    EXPECT_NE(o.find("jelly-forge: cannot run jelly-grade-student-runner"), std::string::npos) << o;
+    EXPECT_NE(o.find("jelly-forge: cannot run jelly-grade-reference-runner"), std::string::npos)
+        << o;
+  }
+  // Nothing derived from the reference or the hidden data, and nothing of a neighbour, opens.
+  {
+    const std::string o = target("os_read_secrets")["output"];
+    EXPECT_NE(o.find("jelly-peek: "), std::string::npos) << o;
+    EXPECT_EQ(o.find("jelly-OPENED"), std::string::npos) << o;
+  }
+  // The process left behind is stopped with its test: the batch ended, the neighbours (graded at
+  // the same time and after) kept their marks.
+  {
+    const Json t = target("os_daemon");
+    EXPECT_EQ(t["status"], "failed");
+    EXPECT_TRUE(has_any(t["output"], "crashed with SIGKILL|left")) << t["output"];
+  }
+  // No public test sees what a hidden test left.
+  {
+    const Json j = Json::parse(read_text(out / "students" / "os_tmp_channel" / "results.json"));
+    std::istringstream ids(hidden_case_ids());
+    std::vector<std::string> hidden;
+    for (std::string id; std::getline(ids, id);) hidden.push_back("\"" + id + "\"");
+    ASSERT_GT(hidden.size(), 5u);
+    int public_tests = 0;
+    for (const Json& t : j["tests"]) {
+      const std::string name = t["name"];
+      if (name.find("[a1.") == std::string::npos) continue;
+      const std::string o = t.value("output", std::string());
+      bool is_hidden = false;
+      for (const std::string& h : hidden)
+        if (name.find("[" + h.substr(1, h.size() - 2) + "]") != std::string::npos) is_hidden = true;
+      if (is_hidden) continue;
+      ++public_tests;
+      for (const std::string& h : hidden)
+        EXPECT_EQ(o.find(h), std::string::npos) << name << " shows hidden case " << h << ":\n" << o;
+    }
+    EXPECT_GT(public_tests, 10);
+  }
+  // Per-test caps: memory of all processes together, and their number.
+  const bool cgroup_memory = description.find("cgroup v") != std::string::npos &&
+                             description.find("memory per process only") == std::string::npos;
+  if (cgroup_memory) {
+    const Json t = target("os_fork_memory");
+    EXPECT_EQ(t["status"], "failed");
+    EXPECT_NE(t["output"].get<std::string>().find("memory with all its processes together"),
+              std::string::npos)
+        << t["output"];
+  }
+  if (description.find("pids.max") != std::string::npos) {
+    const Json t = target("os_fork_many");
+    EXPECT_EQ(t["status"], "failed");
+    EXPECT_NE(t["output"].get<std::string>().find("more than 64 processes or threads"),
+              std::string::npos)
+        << t["output"];
+  }
+  if (isolation == "user") {
+    const Json t = target("os_symlink_flood");
+    EXPECT_EQ(t["status"], "failed");
+    EXPECT_NE(t["output"].get<std::string>().find("file(s) in /tmp"), std::string::npos)
+        << t["output"];
+  }
+  // Nothing is left behind: no process, no file in the shared folders, the tree's modes as they
+  // were, the private scratch folder gone.
+  EXPECT_EQ(processes_naming(c.root.string()), "");
+  EXPECT_EQ(sandbox_user_processes(), "");
+  for (const char* d : {"/tmp", "/var/tmp", "/dev/shm"})
+    for (const char* prefix : {"jelly-flood-", "jelly-channel-"})
+      EXPECT_EQ(names_in(d, prefix).size(), 0u) << d << "/" << prefix << "*";
+  for (const auto& [p, m] : modes_before)
+    EXPECT_EQ(fs::status(p).permissions(), m) << p << ": mode not restored";
+  EXPECT_FALSE(fs::exists(c.build / "grader" / ".sandbox-modes"));
+  std::error_code ec;
+  fs::remove_all(c.root.parent_path(), ec);
+}
+
+bool bwrap_usable(std::string& why) {
+  if (access("/usr/bin/bwrap", X_OK) != 0) {
+    why = "no /usr/bin/bwrap";
+    return false;
+  }
+  if (sh("/usr/bin/bwrap --unshare-all --unshare-user --ro-bind /usr /usr --symlink usr/lib /lib "
+         "--symlink usr/lib64 /lib64 --symlink usr/bin /bin /usr/bin/true >/dev/null 2>&1") != 0) {
+    why = "bwrap cannot create a sandbox here (user namespaces disabled?)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST(GraderSecurityOs, HostileNeighboursInUserMode) {
+  if (geteuid() != 0)
+    GTEST_SKIP() << "the user-drop mode needs root (it makes its sandbox users with useradd)";
+  hostile_neighbours("user");
+}
+
+TEST(GraderSecurityOs, HostileNeighboursInBubblewrap) {
+  std::string why;
+  if (!bwrap_usable(why)) GTEST_SKIP() << why;
+  hostile_neighbours("bwrap");
+}
+
+// A process that keeps the pipes of its test open after the test ended stalls nothing: the read
+// stops once the test's process is gone (here without any sandbox).
+TEST(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
+  const Clone c = make_clone("pipes");
+  const fs::path in = c.root / "in";
+  fs::create_directories(in / "holder");
+  for (const char* f : kTaskFiles) fs::copy_file(c.src / "solutions" / f, in / "holder" / f);
+  std::ofstream(in / "holder" / "forces.cpp", std::ios::binary)
+      << kReadRequest
+      << "static int jelly_hold = [] { if (!jelly_target()) return 0; if (fork() == 0) { setsid();"
+         " if (fork() == 0) { sleep(60); _exit(0); } _exit(0); } return 0; }();\n"
+      << read_text(c.src / "solutions" / "forces.cpp");
+  const auto start = std::chrono::steady_clock::now();
+  const std::string console = run("grade " + (in / "holder").string() + " --out " +
+                                  (c.root / "out").string() + " --config " + c.config.string() +
+                                  " --visibility public --format gradescope --isolation none");
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(s, 45.0) << "a leftover holding the pipes stalled jelly-grade\n" << console;
+  EXPECT_TRUE(fs::exists(c.root / "out" / "results.json")) << console;
+  // Where jelly-grade can make a cgroup (root here), the holder was found and stopped as well.
+  if (geteuid() == 0) {
+    EXPECT_EQ(processes_naming(c.root.string()), "");
+  }
+  std::error_code ec;
+  fs::remove_all(c.root.parent_path(), ec);
 }
