@@ -245,6 +245,45 @@ bool bundle_headers(const fs::path& stage, const std::string& name, const fs::pa
   return true;
 }
 
+/// setup.sh's compiler check, between its BEGIN/END lines (tests/grader/setup_compiler_check.sh
+/// runs the block alone with stand-in compilers). The framework needs GCC 11 or newer
+/// (floating-point std::to_chars) and CMake 3.16 or newer. Gradescope's Ubuntu 22.04 base image has
+/// GCC 11.4 and CMake 3.22; on an older image the block installs g++-11 where the archive has it,
+/// else it stops naming what to choose. The compiler it settles on is exported as CXX for CMake.
+std::string compiler_check_lines() {
+  return R"SH(# BEGIN compiler check: GCC 11+ (floating-point std::to_chars), CMake 3.16+
+cxx="${CXX:-g++}"
+gcc_major() {
+  { "$1" -dumpfullversion -dumpversion 2>/dev/null | head -1 | cut -d. -f1; } || true
+}
+if ! { "$cxx" --version 2>/dev/null || true; } | head -1 | grep -qi clang; then
+  major="$(gcc_major "$cxx")"
+  if [ -z "$major" ] || [ "$major" -lt 11 ]; then
+    echo "setup.sh: $cxx is GCC ${major:-(not found)}; Jelly Lab needs GCC 11 or newer" \
+         "(floating-point std::to_chars). Installing g++-11."
+    if apt-get install -y --no-install-recommends g++-11 &&
+       [ "$(gcc_major g++-11)" -ge 11 ] 2>/dev/null; then
+      cxx=g++-11
+    else
+      echo "setup.sh: FAILED: no GCC 11 or newer on this image. Choose Gradescope's Ubuntu" \
+           "22.04 base image (GCC 11.4, CMake 3.22), the one Jelly Lab is tested with." >&2
+      exit 1
+    fi
+  fi
+fi
+cmake_version="$({ cmake --version 2>/dev/null || true; } | head -1 | awk '{ print $3 }')"
+if [ -z "$cmake_version" ] ||
+   [ "$(printf '%s\n3.16\n' "$cmake_version" | sort -V | head -1)" != 3.16 ]; then
+  echo "setup.sh: FAILED: CMake ${cmake_version:-(not found)}; Jelly Lab needs CMake 3.16 or" \
+       "newer. Choose Gradescope's Ubuntu 22.04 base image (CMake 3.22)." >&2
+  exit 1
+fi
+export CXX="$cxx"
+echo "setup.sh: compiler $CXX ($("$CXX" --version | head -1)), CMake $cmake_version"
+# END compiler check
+)SH";
+}
+
 }  // namespace
 
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
@@ -286,7 +325,8 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
          "apt-get install -y --no-install-recommends libcli11-dev || "
          "echo 'setup.sh: no libcli11-dev; using source/third_party/cli11'\n"
-         "cd /autograder/source\n"
+      << compiler_check_lines()
+      << "cd /autograder/source\n"
          "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments "
          "-DJELLY_BUILD_TESTS=OFF "
          "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
