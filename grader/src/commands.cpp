@@ -291,6 +291,9 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   fs::remove_all(stage);
   fs::create_directories(stage / "source");
   // The framework as a student release has it, plus the grader's hidden data; never solutions/.
+  // Everything, setup.sh and run_autograder included, sits at the zip's top level: Gradescope
+  // extracts the zip into /autograder/source, where both scripts expect the framework's
+  // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
   for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
     const fs::path from = config.source_dir / item;
     if (!fs::exists(from)) continue;
@@ -311,7 +314,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
           {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
           "libcli11-dev"))
     return 2;
-  std::ofstream(stage / "setup.sh")
+  std::ofstream(stage / "source" / "setup.sh")
       << "#!/usr/bin/env bash\n"
          "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
          "set -euo pipefail\n"
@@ -339,7 +342,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "# else as this unprivileged user, with the grader's secrets readable by root only "
          "(docs/grader.md).\n"
       << sandbox_setup_lines("/autograder/source");
-  std::ofstream(stage / "run_autograder")
+  std::ofstream(stage / "source" / "run_autograder")
       << "#!/usr/bin/env bash\n"
          "# Gradescope entry point: grades /autograder/submission, writes "
          "/autograder/results/results.json.\n"
@@ -354,9 +357,9 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
          "/autograder/results "
          "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
-  fs::permissions(stage / "setup.sh",
+  fs::permissions(stage / "source" / "setup.sh",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
-  fs::permissions(stage / "run_autograder",
+  fs::permissions(stage / "source" / "run_autograder",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   const fs::path zip = fs::absolute(zip_path);
   fs::remove(zip);
@@ -366,14 +369,14 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   lim.limit_files = false;
   lim.result_pipe = false;
   const ChildResult c =
-      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "setup.sh", "run_autograder", "source"},
-                lim, stage);
+      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "."}, lim, stage / "source");
   if (c.exit_code != 0) {
     std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
     return 2;
   }
   std::cout << "jelly-grade: wrote " << zip.string()
-            << " (setup.sh, run_autograder, source/ without solutions/)\n";
+            << " (setup.sh, run_autograder and the framework without solutions/, all at the top: "
+               "Gradescope extracts it into /autograder/source)\n";
   return 0;
 }
 

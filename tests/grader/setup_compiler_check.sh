@@ -49,7 +49,7 @@ run() {
   local name="$1" want_rc="$2" want="$3" out rc
   out="$(cd "$work" && env -u CXX PATH="$bin:$PATH" bash -c 'set -euo pipefail; source ./block.sh; echo "CXX=$CXX"' 2>&1)"
   rc=$?
-  if [ "$rc" -eq "$want_rc" ] && printf '%s' "$out" | grep -qF -- "$want"; then
+  if [ "$rc" -eq "$want_rc" ] && grep -qF -- "$want" <<<"$out"; then
     echo "ok: $name"
   else
     echo "FAIL: $name (status $rc, expected $want_rc and '$want'):"; printf '%s\n' "$out" | sed 's/^/  /'
