@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "shell_quote.hpp"
+
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
@@ -28,7 +30,8 @@ struct Cmd {
 };
 
 Cmd run(const std::string& args) {
-  const std::string cmd = std::string(JELLY_GRADE_EXE) + " " + args + " 2>&1";
+  const std::string cmd = jelly::testing::shell_quoted(JELLY_GRADE_EXE) + " " +
+                          jelly::testing::quote_tree_paths(args) + " 2>&1";
   Cmd r;
   FILE* p = popen(cmd.c_str(), "r");
   char buf[4096];
@@ -368,7 +371,7 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   const fs::path zip = kWork / "autograder.zip";
   const Cmd r = run("gradescope-zip " + zip.string());
   ASSERT_EQ(r.status, 0) << r.out;
-  FILE* p = popen(("unzip -Z1 " + zip.string()).c_str(), "r");
+  FILE* p = popen(("unzip -Z1 " + jelly::testing::shell_quoted(zip.string())).c_str(), "r");
   std::string list;
   char buf[4096];
   std::size_t n;
