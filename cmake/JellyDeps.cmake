@@ -178,14 +178,19 @@ if(JELLY_BUILD_TESTS)
     if(NOT dir)
       jelly_dep_missing(GoogleTest libgtest-dev googletest)
     endif()
-    set(BUILD_GMOCK OFF CACHE BOOL "")
-    set(INSTALL_GTEST OFF CACHE BOOL "")
-    set(gtest_force_shared_crt ON CACHE BOOL "")   # MSVC: the same runtime as the project
-    add_subdirectory(${dir} ${PROJECT_BINARY_DIR}/third_party/googletest EXCLUDE_FROM_ALL)
-    if(NOT TARGET GTest::gtest)   # googletest 1.11+ defines these aliases itself
-      add_library(GTest::gtest ALIAS gtest)
-      add_library(GTest::gtest_main ALIAS gtest_main)
-    endif()
+    # Built from its two source files, not through googletest's own CMakeLists.txt: that one says
+    # cmake_minimum_required(VERSION 3.5), for which CMake 3.27+ prints a deprecation warning to
+    # every student (and CMake 4 one more), and it sets compiler flags of its own. gtest-all.cc is
+    # googletest's own single-file build; the runtime (MSVC /MD) and standard are the project's.
+    add_library(jelly_dep_gtest STATIC ${dir}/googletest/src/gtest-all.cc)
+    target_include_directories(jelly_dep_gtest SYSTEM PUBLIC ${dir}/googletest/include)
+    target_include_directories(jelly_dep_gtest PRIVATE ${dir}/googletest)
+    target_link_libraries(jelly_dep_gtest PUBLIC Threads::Threads)
+    add_library(jelly_dep_gtest_main STATIC ${dir}/googletest/src/gtest_main.cc)
+    target_link_libraries(jelly_dep_gtest_main PUBLIC jelly_dep_gtest)
+    set_target_properties(jelly_dep_gtest jelly_dep_gtest_main PROPERTIES EXCLUDE_FROM_ALL ON)
+    add_library(GTest::gtest ALIAS jelly_dep_gtest)
+    add_library(GTest::gtest_main ALIAS jelly_dep_gtest_main)
     jelly_dep_report(GoogleTest "bundled ${dir} (built here)")
   endif()
 endif()

@@ -23,6 +23,39 @@ else()
   if(NOT dir)
     jelly_dep_missing(GLFW libglfw3-dev glfw)
   endif()
+  # Bundled GLFW 3.3 on Linux/BSD builds its X11 backend (a Wayland desktop runs it through
+  # XWayland), which needs the X11 development headers; without them GLFW stops the configure with
+  # "Could NOT find X11 (missing: X11_X11_INCLUDE_PATH X11_X11_LIB)", which names no package. A
+  # student would rather have everything else: the viewer is turned off for this configure (a
+  # normal variable over the cache option, so the next configure after installing the packages
+  # turns it back on) with a warning that names the packages. tests/deps (x11_missing) checks it.
+  if(NOT WIN32 AND NOT APPLE AND NOT GLFW_USE_WAYLAND)
+    find_package(X11 QUIET)
+    set(missing_x11)
+    if(NOT X11_X11_INCLUDE_PATH OR NOT X11_X11_LIB OR NOT X11_Xkb_INCLUDE_PATH)
+      list(APPEND missing_x11 X11)
+    endif()
+    foreach(part Xrandr Xinerama Xcursor Xi)   # the extensions GLFW's CMakeLists requires
+      if(NOT X11_${part}_INCLUDE_PATH)
+        list(APPEND missing_x11 ${part})
+      endif()
+    endforeach()
+    if(missing_x11)
+      string(REPLACE ";" ", " missing_x11 "${missing_x11}")
+      message(WARNING "Jelly Lab: the viewer is OFF for this build: the X11 development headers "
+        "that the bundled GLFW needs are not installed (missing: ${missing_x11}).\n"
+        "Everything else builds as usual: the jelly command line, the unit tests, the self-check.\n"
+        "To get the viewer (jelly-lab, jelly render), install them and run the same cmake command again:\n"
+        "  Debian/Ubuntu: sudo apt-get install libx11-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev\n"
+        "  Fedora:        sudo dnf install libX11-devel libXrandr-devel libXinerama-devel libXcursor-devel libXi-devel\n"
+        "  Arch:          sudo pacman -S libx11 libxrandr libxinerama libxcursor libxi\n"
+        "(On a Wayland desktop too: the viewer runs through XWayland.) "
+        "To build without the viewer and without this warning: -DJELLY_BUILD_VIEWER=OFF.")
+      set(JELLY_BUILD_VIEWER OFF)
+      set(JELLY_VIEWER_OFF_REASON "X11 development headers missing (${missing_x11})")
+      return()
+    endif()
+  endif()
   set(GLFW_BUILD_DOCS OFF CACHE BOOL "")
   set(GLFW_BUILD_TESTS OFF CACHE BOOL "")
   set(GLFW_BUILD_EXAMPLES OFF CACHE BOOL "")

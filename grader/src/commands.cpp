@@ -284,6 +284,45 @@ bool bundle_headers(const fs::path& stage, const std::string& name, const fs::pa
   return true;
 }
 
+/// setup.sh's compiler check, between its BEGIN/END lines (tests/grader/setup_compiler_check.sh
+/// runs the block alone with stand-in compilers). The framework needs GCC 11 or newer
+/// (floating-point std::to_chars) and CMake 3.16 or newer. Gradescope's Ubuntu 22.04 base image has
+/// GCC 11.4 and CMake 3.22; on an older image the block installs g++-11 where the archive has it,
+/// else it stops naming what to choose. The compiler it settles on is exported as CXX for CMake.
+std::string compiler_check_lines() {
+  return R"SH(# BEGIN compiler check: GCC 11+ (floating-point std::to_chars), CMake 3.16+
+cxx="${CXX:-g++}"
+gcc_major() {
+  { "$1" -dumpfullversion -dumpversion 2>/dev/null | head -1 | cut -d. -f1; } || true
+}
+if ! { "$cxx" --version 2>/dev/null || true; } | head -1 | grep -qi clang; then
+  major="$(gcc_major "$cxx")"
+  if [ -z "$major" ] || [ "$major" -lt 11 ]; then
+    echo "setup.sh: $cxx is GCC ${major:-(not found)}; Jelly Lab needs GCC 11 or newer" \
+         "(floating-point std::to_chars). Installing g++-11."
+    if apt-get install -y --no-install-recommends g++-11 &&
+       [ "$(gcc_major g++-11)" -ge 11 ] 2>/dev/null; then
+      cxx=g++-11
+    else
+      echo "setup.sh: FAILED: no GCC 11 or newer on this image. Choose Gradescope's Ubuntu" \
+           "22.04 base image (GCC 11.4, CMake 3.22), the one Jelly Lab is tested with." >&2
+      exit 1
+    fi
+  fi
+fi
+cmake_version="$({ cmake --version 2>/dev/null || true; } | head -1 | awk '{ print $3 }')"
+if [ -z "$cmake_version" ] ||
+   [ "$(printf '%s\n3.16\n' "$cmake_version" | sort -V | head -1)" != 3.16 ]; then
+  echo "setup.sh: FAILED: CMake ${cmake_version:-(not found)}; Jelly Lab needs CMake 3.16 or" \
+       "newer. Choose Gradescope's Ubuntu 22.04 base image (CMake 3.22)." >&2
+  exit 1
+fi
+export CXX="$cxx"
+echo "setup.sh: compiler $CXX ($("$CXX" --version | head -1)), CMake $cmake_version"
+# END compiler check
+)SH";
+}
+
 }  // namespace
 
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
@@ -300,6 +339,9 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   } remove_stage{stage};
   fs::create_directories(stage / "source");
   // The framework as a student release has it, plus the grader's hidden data; never solutions/.
+  // Everything, setup.sh and run_autograder included, sits at the zip's top level: Gradescope
+  // extracts the zip into /autograder/source, where both scripts expect the framework's
+  // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
   for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
     const fs::path from = config.source_dir / item;
     if (!fs::exists(from)) continue;
@@ -320,7 +362,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
           {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
           "libcli11-dev"))
     return 2;
-  std::ofstream(stage / "setup.sh")
+  std::ofstream(stage / "source" / "setup.sh")
       << "#!/usr/bin/env bash\n"
          "# Gradescope image setup (runs once): dependencies, then the framework and jelly-grade.\n"
          "set -euo pipefail\n"
@@ -334,7 +376,8 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "echo 'setup.sh: no libtomlplusplus-dev; using source/third_party/tomlplusplus'\n"
          "apt-get install -y --no-install-recommends libcli11-dev || "
          "echo 'setup.sh: no libcli11-dev; using source/third_party/cli11'\n"
-         "cd /autograder/source\n"
+      << compiler_check_lines()
+      << "cd /autograder/source\n"
          "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DJELLY_TASKS=assignments "
          "-DJELLY_BUILD_TESTS=OFF "
          "-DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_VIEWER=OFF\n"
@@ -347,7 +390,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
          "# else as this unprivileged user, with the grader's secrets readable by root only "
          "(docs/grader.md).\n"
       << sandbox_setup_lines("/autograder/source");
-  std::ofstream(stage / "run_autograder")
+  std::ofstream(stage / "source" / "run_autograder")
       << "#!/usr/bin/env bash\n"
          "# Gradescope entry point: grades /autograder/submission, writes "
          "/autograder/results/results.json.\n"
@@ -359,9 +402,9 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
       << "build/grader/jelly-grade grade /autograder/submission --visibility all --out "
          "/autograder/results "
          "--format gradescope,terminal --isolation \"${JELLY_GRADE_ISOLATION:-auto}\"\n";
-  fs::permissions(stage / "setup.sh",
+  fs::permissions(stage / "source" / "setup.sh",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
-  fs::permissions(stage / "run_autograder",
+  fs::permissions(stage / "source" / "run_autograder",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   const fs::path zip = fs::absolute(zip_path);
   fs::remove(zip);
@@ -371,14 +414,14 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   lim.limit_files = false;
   lim.result_pipe = false;
   const ChildResult c =
-      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "setup.sh", "run_autograder", "source"},
-                lim, stage);
+      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "."}, lim, stage / "source");
   if (c.exit_code != 0) {
     std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
     return 2;
   }
   std::cout << "jelly-grade: wrote " << zip.string()
-            << " (setup.sh, run_autograder, source/ without solutions/)\n";
+            << " (setup.sh, run_autograder and the framework without solutions/, all at the top: "
+               "Gradescope extracts it into /autograder/source)\n";
   return 0;
 }
 

@@ -1,7 +1,7 @@
 // Where a submission's compiler, assembler, linker and runner run: somewhere the grader's secrets
 // (hidden reference data, case files with hidden parameters, the reference runner, solutions/,
 // other submissions' objects) cannot be read. The operating system is the defence, chosen once per
-// jelly-grade run (docs/grader.md, "Threat model"):
+// jelly-grade run (docs/grader.md, "The sandbox: threat model"):
 //   bwrap  bubblewrap: new user, mount, pid, network and IPC namespaces with a minimal read-only
 //          view (toolchain, public headers, the objects it links) plus the submission's own folder;
 //   user   when the grader runs as root and bwrap is unusable (containers without user

@@ -14,7 +14,8 @@ execute_process(COMMAND "${GRADE}" gradescope-zip "${WORK}/autograder.zip" RESUL
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "gradescope-zip failed (${rc}): ${out}${err}")
 endif()
-execute_process(COMMAND unzip -q "${WORK}/autograder.zip" -d "${WORK}/autograder" RESULT_VARIABLE rc)
+# Where Gradescope extracts it: /autograder/source (the zip's top level is the framework).
+execute_process(COMMAND unzip -q "${WORK}/autograder.zip" -d "${WORK}/autograder/source" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "unzip failed (${rc})")
 endif()
@@ -26,7 +27,7 @@ if(NOT EXISTS "${src}/third_party/cli11/include/CLI/CLI.hpp" OR NOT EXISTS "${sr
   message(FATAL_ERROR "the zip has no bundled CLI11 headers and licence under source/third_party/cli11")
 endif()
 # setup.sh's configure line, plus: pretend the distribution has neither toml++ nor CLI11.
-file(READ "${WORK}/autograder/setup.sh" setup)
+file(READ "${WORK}/autograder/source/setup.sh" setup)
 string(FIND "${setup}" "-DJELLY_TASKS=assignments" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "setup.sh no longer configures as this test assumes:\n${setup}")

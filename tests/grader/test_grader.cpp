@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "shell_quote.hpp"
+
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
@@ -28,7 +30,8 @@ struct Cmd {
 };
 
 Cmd run(const std::string& args) {
-  const std::string cmd = std::string(JELLY_GRADE_EXE) + " " + args + " 2>&1";
+  const std::string cmd = jelly::testing::shell_quoted(JELLY_GRADE_EXE) + " " +
+                          jelly::testing::quote_tree_paths(args) + " 2>&1";
   Cmd r;
   FILE* p = popen(cmd.c_str(), "r");
   char buf[4096];
@@ -562,16 +565,21 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   const fs::path zip = kWork / "autograder.zip";
   const Cmd r = run("gradescope-zip " + zip.string());
   ASSERT_EQ(r.status, 0) << r.out;
-  FILE* p = popen(("unzip -Z1 " + zip.string()).c_str(), "r");
+  FILE* p = popen(("unzip -Z1 " + jelly::testing::shell_quoted(zip.string())).c_str(), "r");
   std::string list;
   char buf[4096];
   std::size_t n;
   while ((n = fread(buf, 1, sizeof buf, p)) > 0) list.append(buf, n);
   pclose(p);
-  EXPECT_NE(list.find("setup.sh\n"), std::string::npos);
-  EXPECT_NE(list.find("run_autograder\n"), std::string::npos);
-  EXPECT_NE(list.find("source/grader/data/hidden/"), std::string::npos);
-  EXPECT_NE(list.find("source/third_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
+  // One folder: Gradescope extracts the zip into /autograder/source, where setup.sh runs
+  // `cmake -S .`, so the framework's CMakeLists.txt is at the top beside the two scripts.
+  list.insert(0, "\n");  // every entry is "\n" + path + "\n"
+  EXPECT_NE(list.find("\nsetup.sh\n"), std::string::npos) << list;
+  EXPECT_NE(list.find("\nrun_autograder\n"), std::string::npos);
+  EXPECT_NE(list.find("\nCMakeLists.txt\n"), std::string::npos);
+  EXPECT_NE(list.find("\ngrader/data/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("\nthird_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
+  EXPECT_EQ(list.find("\nsource/"), std::string::npos) << "a source/ folder inside the zip";
   EXPECT_EQ(list.find("solutions/"), std::string::npos);
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
   EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);

@@ -24,6 +24,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "shell_quote.hpp"
+
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
@@ -47,7 +49,8 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 }
 
 std::string run(const std::string& args) {
-  const std::string cmd = std::string(JELLY_GRADE_EXE) + " " + args + " 2>&1";
+  const std::string cmd = jelly::testing::shell_quoted(JELLY_GRADE_EXE) + " " +
+                          jelly::testing::quote_tree_paths(args) + " 2>&1";
   std::string out;
   FILE* p = popen(cmd.c_str(), "r");
   char buf[4096];

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <string>
 
+#include "shell_quote.hpp"
+
 namespace jelly::testing {
 
 /// Exit code and everything the command printed (stdout and stderr together).
@@ -17,7 +19,7 @@ struct CliResult {
 
 /// Runs `JELLY_CLI arguments` through the shell and collects its output and exit code.
 inline CliResult run_jelly(const std::string& arguments) {
-  const std::string command = std::string(JELLY_CLI) + " " + arguments + " 2>&1";
+  const std::string command = shell_quoted(JELLY_CLI) + " " + quote_tree_paths(arguments) + " 2>&1";
   CliResult r;
   FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buf{};

@@ -56,5 +56,19 @@ if [ -n "$hidden_file" ]; then
   plant "a hidden data file" 'cp "$hidden_file" "$copy/docs/data.json"' "docs/data.json"
 fi
 
+# 5. Instructor material in a shipped doc (the doc-content check): a command that needs solutions/,
+# the threat model's list, the release tool. The message names file and line.
+lines=$(wc -l <"$rel/docs/viewer.md")
+plant "an instructor-only build command in a doc" \
+  'printf "Build the reference: cmake -S . -B build -DJELLY_TASKS=solutions\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
+plant "the threat model's undefended list in a doc" \
+  'printf "**Not defended**: timing side channels\n" >>"$copy/docs/handout/README.md"' "docs/handout/README.md:"
+plant "the release tool named in the front page" \
+  'printf "Made with tools/make-student-release.\n" >>"$copy/README.md"' "README.md:"
+check "the release's grader.md has the student's sandbox section, not the threat model" \
+  'grep -q "^## The sandbox" "$rel/docs/grader.md" && ! grep -qi "threat model" "$rel/docs/grader.md"'
+check "no audience marker is left in the release" \
+  '! grep -rlE --include="*.md" --exclude-dir=third_party -- "<!-- (/?instructor-only|student-only:)|:student-only -->" "$rel"'
+
 [ "$failures" -eq 0 ] && echo "all checks passed" && exit 0
 echo "$failures check(s) failed"; exit 1
