@@ -87,6 +87,19 @@ else()
   add_library(Eigen3::Eigen ALIAS jelly_dep_eigen)
   jelly_dep_report(Eigen "bundled ${dir}")
 endif()
+# One Eigen configuration on every platform (issue 22, docs/platforms.md "Same bits everywhere"):
+# Eigen's scalar path, never its SSE2/AVX/NEON packet code. The packets round differently from the
+# scalar path (x86-64's SSE2 build and the aarch64 build gave other last bits of the course scene at
+# t = 0.6 s) and fuse multiply-adds on ARM64 whatever the compiler flags say. Set on the Eigen target
+# itself, so every translation unit that includes Eigen sees the same definition (no inline Eigen
+# function compiled two ways in one program), and grade-config.json's "defines" carry it to the
+# grader's compile of a submission. The compiler's own vectorisation of the project's loops
+# (-O3, JELLY_NATIVE, target_clones) is unaffected and keeps the bits (-ffp-contract=off).
+if(TARGET jelly_dep_eigen)
+  target_compile_definitions(jelly_dep_eigen INTERFACE EIGEN_DONT_VECTORIZE)
+else()
+  set_property(TARGET Eigen3::Eigen APPEND PROPERTY INTERFACE_COMPILE_DEFINITIONS EIGEN_DONT_VECTORIZE)
+endif()
 
 # ---- toml++ (scenes, rubric; header-only when bundled) -----------------------------------------
 # Where a distribution has no libtomlplusplus-dev (a Gradescope image is Ubuntu), the autograder

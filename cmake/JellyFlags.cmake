@@ -17,18 +17,14 @@ add_library(jelly::flags ALIAS jelly_flags)
 target_compile_options(jelly_flags INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-ffp-contract=off -fno-fast-math -fno-math-errno -fno-trapping-math>
   $<$<CXX_COMPILER_ID:MSVC>:/fp:precise /utf-8>)
-# Eigen's own packet code fuses multiply-adds on ARM64 whatever the compiler flags say (its NEON
-# pmadd is vfmaq_f64 whenever __ARM_FEATURE_FMA is defined, i.e. always on AArch64, and small
-# fixed-size products such as the cube's rotation use it): keep Eigen scalar there. x86-64 is
-# unaffected (SSE2 has no FMA; JELLY_NATIVE adds -mno-fma for the same reason).
-if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(arm64|ARM64|aarch64)$" OR CMAKE_OSX_ARCHITECTURES MATCHES "arm64")
-  target_compile_definitions(jelly_flags INTERFACE EIGEN_DONT_VECTORIZE)
-endif()
+# Eigen's own packet code is off on every platform (EIGEN_DONT_VECTORIZE, defined on the Eigen3::Eigen
+# target in cmake/JellyDeps.cmake so that every user of Eigen sees it): its SSE2 path rounds other
+# bits than its scalar path, and its NEON pmadd fuses multiply-adds on ARM64 whatever the flags say.
 if(JELLY_NATIVE)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
     # Wider vectors, same bits: -ffp-contract=off already forbids the compiler's own fusing, and
-    # -mno-fma keeps Eigen's explicit packet code (pmadd) from fusing multiply-adds either. Eigen
-    # refuses AVX-512 without FMA, so the width stops at AVX2.
+    # -mno-fma keeps FMA out of any code that asks for it explicitly (intrinsics, a library's
+    # packet code). -mno-avx512f keeps the width at AVX2, the widest tests/determinism checks.
     target_compile_options(jelly_flags INTERFACE
       $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-march=native -mno-fma -mno-avx512f>)
   else()

@@ -25,6 +25,8 @@ PACKAGES=(
   libc++-dev libc++abi-dev xz-utils bzip2
   # the Windows checks (label platform): MinGW-w64 cross-compiler, wine, Mesa's GL for Xvfb
   g++-mingw-w64-x86-64-posix wine64 libgl1-mesa-dri
+  # the ARM64 check (label platform, the stand-in for Apple silicon): cross-compiler and qemu-user
+  g++-aarch64-linux-gnu qemu-user
 )
 
 check_only=0

@@ -56,10 +56,10 @@ std::vector<SpringInput> random_inputs(const Params& random) {
   std::vector<SpringInput> out;
   for (long i = 0; i < count; ++i) {
     SpringInput s;
-    s.xa = Vec3(px * r.next(), px * r.next(), px * r.next());  // draw order is part of the case
-    s.xb = Vec3(px * r.next(), px * r.next(), px * r.next());
-    s.va = Vec3(pv * r.next(), pv * r.next(), pv * r.next());
-    s.vb = Vec3(pv * r.next(), pv * r.next(), pv * r.next());
+    s.xa = px * r.next3();  // draw order is part of the case (Sequence::next3)
+    s.xb = px * r.next3();
+    s.va = pv * r.next3();
+    s.vb = pv * r.next3();
     s.k = ks * (k0 + r.next());
     s.rest = r0 + rs * r.next();
     s.degenerate = kDefaultDegenerate;
@@ -124,8 +124,8 @@ void run_cube_scene(const TaskTable& tasks, const Params& params, const Json& in
   const long steps = params.integer("steps"), every = params.integer("sample_every");
   const Vec3 c = s.x.rowwise().mean();
   for (Eigen::Index i = 0; i < s.size(); ++i) {
-    s.x.col(i) = c + stretch * (s.x.col(i) - c) + jitter * Vec3(r.next(), r.next(), r.next());
-    s.v.col(i) = speed * Vec3(r.next(), r.next(), r.next());
+    s.x.col(i) = c + stretch * (s.x.col(i) - c) + jitter * r.next3();
+    s.v.col(i) = speed * r.next3();
   }
   Workspace w;
   w.resize(s.size());

@@ -86,8 +86,8 @@ State perturbed_cube_state(const Params& params, const Json& input) {
   Sequence r(static_cast<std::uint64_t>(params.integer("seed")));
   const double dx = params.number("dx"), dv = params.number("dv");
   for (Eigen::Index i = 0; i < s.size(); ++i) {
-    s.x.col(i) += dx * Vec3(r.next(), r.next(), r.next());
-    s.v.col(i) = dv * Vec3(r.next(), r.next(), r.next());
+    s.x.col(i) += dx * r.next3();
+    s.v.col(i) = dv * r.next3();
   }
   return s;
 }

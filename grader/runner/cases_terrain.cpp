@@ -104,13 +104,17 @@ void place_cloud(const Params& pl, const Terrain& terrain, Sequence& r, Vec3Arra
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     if (mode == "drop") {
       const Vec3 c = pl.vec("center"), half = pl.vec("half"), vel = pl.vec("velocity");
-      const Vec3 base(c.x() + half.x() * r.next(), c.y(), c.z() + half.z() * r.next());
+      // Draws in the order of the reference data (z before x: Sequence::next3).
+      const double uz = r.next(), ux = r.next();
+      const Vec3 base(c.x() + half.x() * ux, c.y(), c.z() + half.z() * uz);
       x.col(i) = base + Vec3(0.0, half.y() * r.next(), 0.0);
-      v.col(i) = Vec3(vel.x() * r.next(), vel.y() * r.next(), vel.z() * r.next());
+      v.col(i) = vel.cwiseProduct(r.next3());
     } else if (mode == "slide_plane") {
       const Vec3 c = pl.vec("center"), half = pl.vec("half"), vel = pl.vec("velocity");
-      x.col(i) = Vec3(c.x() + half.x() * r.next(), c.y(), c.z() + half.z() * r.next());
-      v.col(i) = Vec3(vel.x() * r.next(), 0.0, vel.z() * r.next());
+      const double uz = r.next(), ux = r.next();
+      x.col(i) = Vec3(c.x() + half.x() * ux, c.y(), c.z() + half.z() * uz);
+      const double wz = r.next(), wx = r.next();
+      v.col(i) = Vec3(vel.x() * wx, 0.0, vel.z() * wz);
     } else if (mode == "slide_bowl") {
       if (!std::holds_alternative<Bowl>(terrain.shape))
         throw std::runtime_error("params.placement.mode: slide_bowl needs a bowl terrain");

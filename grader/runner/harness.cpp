@@ -183,4 +183,11 @@ double Sequence::next() {
   return 2.0 * unit - 1.0;
 }
 
+Vec3 Sequence::next3() {
+  const double z = next();
+  const double y = next();
+  const double x = next();
+  return Vec3(x, y, z);
+}
+
 }  // namespace jelly::grade

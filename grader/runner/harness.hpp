@@ -135,6 +135,11 @@ class Sequence {
   explicit Sequence(std::uint64_t seed)
       : state_(seed * 6364136223846793005ULL + 1442695040888963407ULL) {}
   double next();
+  /// Three draws as (x, y, z): z first, then y, then x. The reference data was made with
+  /// `Vec3(r.next(), r.next(), r.next())`, whose arguments GCC on x86-64 evaluates last to first;
+  /// C++ leaves that order unspecified and GCC on aarch64 goes first to last (issue 22), so the
+  /// order is spelled out here.
+  Vec3 next3();
 
  private:
   std::uint64_t state_;

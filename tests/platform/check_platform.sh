@@ -3,7 +3,8 @@
 # scene and a few other runs with it and with this (Linux GCC) build's `jelly`, and fails unless
 # every output file is the same bytes.
 #
-#   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE]]
+#   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE [HOST_HASH]]]
+#   (HOST_HASH may also come from the environment, JELLY_HOST_HASH: CTest sets it)
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
 #                     under wine; also runs the unit tests that exist on Windows (stubs, session,
@@ -12,6 +13,12 @@
 #                     for the stubs, full public marks for solutions/, and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
 #             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
+#             aarch64 ARM64 Linux: g++-aarch64-linux-gnu cross-build (cmake/toolchains/aarch64-linux-gnu.cmake),
+#                     run under qemu-aarch64 (the stand-in here for Apple silicon); also runs the
+#                     stub and session unit tests and the self-check there (the aarch64 runners
+#                     graded by the aarch64 jelly-grade under qemu, each runner started through
+#                     qemu), and, when HOST_HASH (this build's tests/determinism/jelly_hash_clones)
+#                     is given and TASKS is solutions, the determinism hash program
 #   TASKS     assignments | solutions: the same as the host build's JELLY_TASKS
 #
 # Exit 0: same bytes; 1: a difference or a failed build/run; 77: skipped (compiler or wine
@@ -21,6 +28,7 @@
 set -uo pipefail
 platform="${1:?platform}"; host_jelly="${2:?host jelly}"; src="${3:?source dir}"; work="${4:?work dir}"
 tasks="${5:?tasks}"; jobs="${6:-2}"; host_grade="${7:-}"
+host_hash="${8:-${JELLY_HOST_HASH:-}}"
 say() { printf 'platform[%s]: %s\n' "$platform" "$*"; }
 skip() { say "SKIPPED: $*"; exit 77; }
 die() { say "FAILED: $*"; exit 1; }
@@ -52,7 +60,7 @@ case "$platform" in
     exe=.exe
     toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/mingw-w64-x86_64.cmake")
     targets=(jelly jelly_tests_stubs jelly_tests_session jelly_tests_process_win jelly-grade
-             jelly-grade-student-runner jelly_tests_stub_runner_win)
+             jelly-grade-student-runner jelly_tests_stub_runner)
     [ -f "$src/solutions/forces.cpp" ] && targets+=(jelly-grade-reference-runner)
     viewer=OFF
     if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab jelly_tests_render)
@@ -70,7 +78,26 @@ int main() { return std::vector<int>{1}.size() == 1 ? 0 : 1; }' >"$work/probe.cp
     targets=(jelly)
     viewer=OFF
     ;;
-  *) die "unknown platform '$platform' (mingw or libcxx)" ;;
+  aarch64)
+    command -v aarch64-linux-gnu-g++ >/dev/null ||
+      skip "aarch64-linux-gnu-g++ not found (Debian package g++-aarch64-linux-gnu)"
+    qemu="$(command -v qemu-aarch64 || command -v qemu-aarch64-static || true)"
+    [ -n "$qemu" ] || skip "qemu-aarch64 not found (Debian package qemu-user)"
+    sysroot=/usr/aarch64-linux-gnu
+    [ -f "$sysroot/lib/ld-linux-aarch64.so.1" ] ||
+      skip "no aarch64 C library in $sysroot (Debian package libc6-dev-arm64-cross)"
+    run=("$qemu" -L "$sysroot")
+    exe=""
+    toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/aarch64-linux-gnu.cmake" -DJELLY_GRADER_SECCOMP=OFF)
+    targets=(jelly jelly_tests_stubs jelly_tests_session jelly-grade jelly-grade-student-runner
+             jelly_tests_stub_runner)
+    if [ -f "$src/solutions/forces.cpp" ]; then
+      targets+=(jelly-grade-reference-runner)
+      [ "$tasks" = solutions ] && [ -n "$host_hash" ] && targets+=(jelly_hash_clones)
+    fi
+    viewer=OFF  # GLFW would need the X11 libraries for arm64 (multiarch): the viewer is not cross-built
+    ;;
+  *) die "unknown platform '$platform' (mingw, libcxx or aarch64)" ;;
 esac
 
 # ---- third-party libraries: the bundled sources a student release carries -------------------
@@ -91,9 +118,9 @@ deps=(-DJELLY_DEPS=bundled -DJELLY_THIRD_PARTY_DIR="$third")
 build="$work/build"
 t0=$(date +%s)
 tests=OFF
-[ "$platform" = mingw ] && tests=ON
+[ "$platform" != libcxx ] && tests=ON
 grader=OFF
-[ "$platform" = mingw ] && grader=ON  # on Windows: the self-check (jelly-grade --runner)
+[ "$platform" != libcxx ] && grader=ON  # the self-check (jelly-grade --runner)
 cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
       -DJELLY_TASKS="$tasks" -DJELLY_BUILD_TESTS=$tests -DJELLY_BUILD_VIEWER=$viewer -DJELLY_BUILD_GRADER=$grader \
       -DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_FUZZERS=OFF >"$work/configure.log" 2>&1 ||
@@ -147,39 +174,70 @@ for f in "$out/host"/*; do
 done
 say "runs compared in $(timer "$t0")"
 
+# ---- the determinism hash (tests/determinism) ---------------------------------------------------
+# The state hashes of the course scene after 2 s for four integrators: the same program built here
+# (x86-64, SSE2 or AVX2 loops chosen at run time) and for the target.
+if [[ " ${targets[*]} " == *" jelly_hash_clones "* ]]; then
+  target_hash="$(find "$build" -name "jelly_hash_clones$exe" -type f | head -1)"
+  "$host_hash" >"$out/host/determinism-hash.txt" 2>&1
+  "${run[@]}" "$target_hash" >"$out/$platform/determinism-hash.txt" 2>&1
+  if [ -s "$out/host/determinism-hash.txt" ] &&
+     cmp -s "$out/host/determinism-hash.txt" "$out/$platform/determinism-hash.txt"; then
+    say "same determinism hashes: $(tr '\n' ' ' <"$out/host/determinism-hash.txt")"
+  else
+    say "DIFFERENT determinism hashes"; diff "$out/host/determinism-hash.txt" "$out/$platform/determinism-hash.txt"
+    failed=1
+  fi
+fi
+
 # ---- unit tests on the target -----------------------------------------------------------------
-if [ "$platform" = mingw ]; then
+where="under wine"
+[ "$platform" = aarch64 ] && where="under qemu-aarch64"
+if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   t0=$(date +%s)
   stubs="$(find "$build" -name "jelly_tests_stubs$exe" -type f | head -1)"
   if [ -z "$stubs" ]; then say "FAILED: no jelly_tests_stubs$exe"; failed=1
   else
     # The student release's unit tests that exist on Windows: the stubs', the session's and the
     # renderer's (null backend; its picture tests need OSMesa), plus the Windows process launcher's.
-    suites=(jelly_tests_session jelly_tests_process_win)
+    suites=(jelly_tests_session)
+    [ "$platform" = mingw ] && suites+=(jelly_tests_process_win)
     [ "$viewer" = ON ] && suites+=(jelly_tests_render)
     for name in jelly_tests_stubs "${suites[@]}"; do
       t="$(find "$build" -name "$name$exe" -type f | head -1)"
       [ -n "$t" ] || { say "FAILED: $name$exe was not built"; failed=1; continue; }
       log="$out/$(basename "$t" "$exe").txt"
       if (cd "$src" && "${run[@]}" "$t" --gtest_brief=1 >"$log" 2>&1); then
-        say "unit tests under wine: $(basename "$t") $(grep -E '^\[  PASSED  \]' "$log" | tr -d '\r')"
+        say "unit tests $where: $(basename "$t") $(grep -E '^\[  PASSED  \]' "$log" | tr -d '\r')"
       else
-        tail -40 "$log"; say "FAILED: $(basename "$t") under wine"; failed=1
+        tail -40 "$log"; say "FAILED: $(basename "$t") $where"; failed=1
       fi
     done
-    say "unit tests under wine took $(timer "$t0")"
+    say "unit tests $where took $(timer "$t0")"
   fi
 fi
-# ---- the self-check under wine ------------------------------------------------------------------
-# The grader's case book, points and messages on runners CMake built for Windows: the stubs must
+# ---- the self-check under wine or qemu ------------------------------------------------------------
+# The grader's case book, points and messages on runners CMake built for the target: the stubs must
 # score 0, solutions/ full public marks, and each report must read as the Linux grader's on the
-# same code (sandbox line and timings aside). The `selfcheck` target itself is run too (wine is the
-# toolchain's CMAKE_CROSSCOMPILING_EMULATOR): its exit status is pass/fail.
-if [ "$platform" = mingw ]; then
+# same code (sandbox line and timings aside). On Windows the `selfcheck` target itself is run too
+# (wine is the toolchain's CMAKE_CROSSCOMPILING_EMULATOR): its exit status is pass/fail. On
+# aarch64, jelly-grade runs under qemu and starts each runner through a two-line script that runs
+# it under qemu too (without binfmt_misc the kernel cannot start an aarch64 program by itself).
+if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   t0=$(date +%s)
-  grade_exe="$(find "$build" -name "jelly-grade.exe" -type f | head -1)"
-  stub_runner="$(find "$build" -name "jelly_tests_stub_runner_win.exe" -type f | head -1)"
-  ref_runner="$(find "$build" -name "jelly-grade-reference-runner.exe" -type f | head -1)"
+  grade_exe="$(find "$build" -name "jelly-grade$exe" -type f | head -1)"
+  stub_runner="$(find "$build" -name "jelly_tests_stub_runner$exe" -type f | head -1)"
+  ref_runner="$(find "$build" -name "jelly-grade-reference-runner$exe" -type f | head -1)"
+  if [ "$platform" = aarch64 ]; then
+    through_qemu() {  # RUNNER NAME: prints the path of a script that runs RUNNER under qemu
+      [ -n "$1" ] || return 0
+      printf '#!/bin/sh\nexec %q -L %q %q "$@"\n' "$qemu" "$sysroot" "$1" >"$out/$2.sh"
+      chmod +x "$out/$2.sh"
+      echo "$out/$2.sh"
+    }
+    stub_runner="$(through_qemu "$stub_runner" stub-runner)"
+    ref_runner="$(through_qemu "$ref_runner" reference-runner)"
+  fi
   selfcheck_case() {  # NAME DIR RUNNER zero|full
     local name=$1 dir=$2 runner=$3 expect=$4 rc total
     [ -n "$runner" ] || { say "FAILED: no runner for the self-check on $name"; failed=1; return; }
@@ -193,21 +251,23 @@ if [ "$platform" = mingw ]; then
       zero) [[ "$total" == "0.00 / "* && "$total" != *"/ 0.00" && $rc -eq 1 ]] ;;
       full) [[ -n "$total" && "${total% / *}" == "${total#* / }" && "$total" != "0.00 / 0.00" && $rc -eq 0 ]] ;;
     esac || { cat "$out/selfcheck-$name.txt"; say "FAILED: self-check on $name: $total (exit $rc), expected $expect"; failed=1; return; }
-    say "self-check under wine on $name: $total (exit $rc), as expected ($expect)"
+    say "self-check $where on $name: $total (exit $rc), as expected ($expect)"
     if [ -n "$host_grade" ]; then
       "$host_grade" grade "$dir" --visibility public --format terminal --out "$out/grader-$name" \
         >"$out/grader-$name.txt" 2>&1
       if bash "$src/tests/grader/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
-        say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check under wine on $name"
+        say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check $where on $name"
       else
         cat "$out/same-$name.txt"; say "FAILED: the self-check's report on $name differs from the Linux grader's"; failed=1
       fi
     fi
   }
-  if [ -z "$grade_exe" ]; then say "FAILED: no jelly-grade.exe"; failed=1
+  if [ -z "$grade_exe" ]; then say "FAILED: no jelly-grade$exe"; failed=1
   else
     selfcheck_case stubs "$src/assignments" "$stub_runner" zero
     [ -f "$src/solutions/forces.cpp" ] && selfcheck_case solutions "$src/solutions" "$ref_runner" full
+  fi
+  if [ -n "$grade_exe" ] && [ "$platform" = mingw ]; then
     # The target students use (cmake --build --preset ... --target selfcheck), on JELLY_TASKS.
     cmake --build "$build" --target selfcheck >"$out/selfcheck-target.txt" 2>&1
     rc=$?
@@ -219,7 +279,7 @@ if [ "$platform" = mingw ]; then
       tail -30 "$out/selfcheck-target.txt"; say "FAILED: the selfcheck target on $tasks/ (exit $rc)"; failed=1
     fi
   fi
-  say "self-check under wine took $(timer "$t0")"
+  say "self-check $where took $(timer "$t0")"
 fi
 # ---- the viewer opens under wine -------------------------------------------------------------
 # Wine's opengl32 goes to the host's GLX: Mesa's llvmpipe under Xvfb gives OpenGL 3.3 core.

@@ -71,10 +71,12 @@ TEST(StudyEffects, RestVolumeIsTheCubesVolumeInAnyOrientation) {
   EXPECT_NEAR(d(rows[0], "rest_volume"), 1.0, 1e-13);
   EXPECT_NEAR(d(rows[1], "rest_volume"), 2.5 * 2.5 * 2.5, 1e-12);
   for (const auto& row : rows) {
-    // Nothing moves: no cave-in, at rest from the start, no energy lost.
+    // Nothing moves: no cave-in, at rest from the start, no energy lost but rounding (a rotated
+    // cube's springs are an ulp off their rest lengths: residual energies of ~1e-29 J, whose
+    // exact value depends on how the rotation is rounded).
     EXPECT_LT(std::abs(d(row, "cave_in_max")), 1e-12);
     EXPECT_EQ(d(row, "rest_time"), 0.0);
-    EXPECT_EQ(d(row, "energy_dissipated"), 0.0);
+    EXPECT_LT(std::abs(d(row, "energy_dissipated")), 1e-20);
   }
 }
 
