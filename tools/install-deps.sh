@@ -3,6 +3,7 @@
 # Idempotent: installs only what is missing, runs `apt-get update` once first, prints what it does.
 #
 #   sudo tools/install-deps.sh             # everything needed to build, test and self-check
+#   sudo tools/install-deps.sh --student   # only what a student needs: build, viewer, self-check
 #   sudo tools/install-deps.sh --ffmpeg    # also ffmpeg (turning recorded frames into videos)
 #   tools/install-deps.sh --check          # only list what is missing; exit 1 if anything is
 #
@@ -29,15 +30,28 @@ PACKAGES=(
   g++-aarch64-linux-gnu qemu-user
 )
 
+# A student's machine: the compiler, the libraries of the framework, its tests and viewer, and the
+# self-check's sandbox; none of the instructor's cross-compilers, emulators or formatters.
+STUDENT_PACKAGES=(
+  build-essential cmake g++ pkg-config
+  libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev
+  libgtest-dev libgmock-dev
+  libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
+  libseccomp-dev bubblewrap
+)
+
 check_only=0
+extra=()
 for arg in "$@"; do
   case "$arg" in
-    --ffmpeg) PACKAGES+=(ffmpeg) ;;
+    --student) PACKAGES=("${STUDENT_PACKAGES[@]}") ;;
+    --ffmpeg) extra+=(ffmpeg) ;;
     --check) check_only=1 ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "install-deps.sh: unknown option '$arg' (expected --ffmpeg, --check or --help)" >&2; exit 2 ;;
+    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --student, --ffmpeg, --check or --help)" >&2; exit 2 ;;
   esac
 done
+PACKAGES+=("${extra[@]}")
 
 missing=()
 for p in "${PACKAGES[@]}"; do
