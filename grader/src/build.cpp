@@ -341,7 +341,9 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   for (const std::string& i : config.include_dirs) base.push_back("-I" + i);
   base.push_back("-fdiagnostics-color=never");
   // Messages without quoted source lines: filter_diagnostics decides what a student may see.
-  base.push_back("-fno-diagnostics-show-caret");
+  // GCC's spelling; Clang (and Apple's) has its own and stops at GCC's as an unknown argument.
+  const bool clang = config.compiler_id.find("Clang") != std::string::npos;
+  base.push_back(clang ? "-fno-caret-diagnostics" : "-fno-diagnostics-show-caret");
   for (const std::string& b : base) flags_key += "\n" + b;
   // The framework's own headers are part of what an object was compiled from: a changed struct
   // (e.g. a new TaskTable member) must not reuse objects built against the old layout.

@@ -31,8 +31,12 @@ struct Limits {
   /// Called (in the calling thread) once the child has exited or been killed: ends every other
   /// process it left behind (isolation.cpp: its cgroup, its sandbox user). Its output is then read
   /// for at most `drain_s` more seconds: a process that kept a copy of a pipe cannot stall us.
+  /// Generous, because an honest run may still hold its pipes for a moment after the child was
+  /// reaped (bwrap's own init leaves its pid namespace after the outer bwrap has exited) and a busy
+  /// machine can stretch that moment: hitting the limit fails the test, so it must only ever be
+  /// hit by a process that survived end_leftovers, which kills every process a holder could be.
   std::function<void()> end_leftovers;
-  double drain_s = 0.5;
+  double drain_s = 5.0;
 };
 
 struct ChildResult {
