@@ -248,12 +248,7 @@ std::string nm_text(const std::string& nm, const std::vector<std::string>& files
   std::vector<std::string> argv = {nm, "-P", "-A", "-g", "--defined-only"};
   if (dynamic) argv.push_back("-D");
   argv.insert(argv.end(), files.begin(), files.end());
-  Limits lim;
-  lim.timeout_s = 60.0;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
-  lim.keep_output = 64 << 20;
+  const Limits lim = trusted_tool_limits(60.0, 64 << 20);
   return run_child(argv, lim, {}).out;
 }
 

@@ -25,12 +25,7 @@ namespace jelly::grade {
 namespace {
 
 std::string run_text(const std::vector<std::string>& argv, const fs::path& cwd = {}) {
-  Limits lim;
-  lim.timeout_s = 120.0;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
-  lim.keep_output = 16 << 20;
+  const Limits lim = trusted_tool_limits(120.0, 16 << 20);
   const ChildResult c = run_child(argv, lim, cwd);
   if (c.exit_code != 0) return "";
   return c.out;
@@ -408,11 +403,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   const fs::path zip = fs::absolute(zip_path);
   fs::remove(zip);
-  Limits lim;
-  lim.timeout_s = 300;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
+  const Limits lim = trusted_tool_limits(300.0);
   const ChildResult c =
       run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "."}, lim, stage / "source");
   if (c.exit_code != 0) {

@@ -55,11 +55,7 @@ std::vector<double> numbers(const Json& outputs, const char* key) {
 /// failed.
 std::string render(const fs::path& jelly, const fs::path& csv, const fs::path& dir,
                    const std::string& label) {
-  Limits lim;
-  lim.timeout_s = 60.0;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
+  const Limits lim = trusted_tool_limits(60.0);
   const ChildResult c =
       run_child({jelly.string(), "render", "builtin:course-2023", "--replay", csv.string(),
                  "--frames", dir.string(), "--width", std::to_string(kWidth), "--height",

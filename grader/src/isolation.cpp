@@ -124,11 +124,7 @@ bool bwrap_works(const std::string& bwrap, std::string& why) {
   }
   std::vector<std::string> argv = bwrap_base(bwrap);
   argv.insert(argv.end(), {"--chdir", "/tmp", "/usr/bin/true"});
-  Limits lim;
-  lim.timeout_s = 10.0;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
+  const Limits lim = trusted_tool_limits(10.0);
   const ChildResult c = run_child(argv, lim);
   if (c.started && c.exit_code == 0) return true;
   why = bwrap + " cannot create a sandbox here (" +
@@ -308,11 +304,7 @@ void ensure_user(const std::string& name, int& uid, int& gid) {
     throw std::runtime_error("--isolation user: no user " + name +
                              " and no useradd to make it (create users " + kSandboxUser +
                              "-0, -1, ... one per core, as the Gradescope setup.sh does)");
-  Limits lim;
-  lim.timeout_s = 30;
-  lim.memory_bytes = 0;
-  lim.limit_files = false;
-  lim.result_pipe = false;
+  const Limits lim = trusted_tool_limits(30.0);
   const ChildResult c = run_child({useradd, "--system", "--no-create-home", "--user-group",
                                    "--shell", "/usr/sbin/nologin", name},
                                   lim);

@@ -39,6 +39,19 @@ struct Limits {
   double drain_s = 5.0;
 };
 
+/// Limits for a trusted tool the grader runs itself (nm, zip, useradd, the sandbox probe, the
+/// renderer): a wall-clock timeout and no other cap, no result pipe.
+inline Limits trusted_tool_limits(double timeout_s,
+                                  std::size_t keep_output = Limits{}.keep_output) {
+  Limits lim;
+  lim.timeout_s = timeout_s;
+  lim.memory_bytes = 0;
+  lim.limit_files = false;
+  lim.result_pipe = false;
+  lim.keep_output = keep_output;
+  return lim;
+}
+
 struct ChildResult {
   bool started = false;
   std::string start_error;
