@@ -5,6 +5,7 @@
 //   BM_StepThreads/<n>/<threads> explicit Euler with the spring pass on 1 or 2 threads (wall time)
 #include <benchmark/benchmark.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 
@@ -50,7 +51,7 @@ void BM_Step(benchmark::State& state) {
   state.SetLabel(std::string(to_string(kind)) + " n=" + std::to_string(n));
   Simulator::Options o(kind, 0.001);
   o.detect_instability = false;  // measure the step itself; the detector costs ~1/10 of a pass
-  Simulator sim(build_world(course_scene(n, kind), linked_tasks()), o);
+  Simulator sim(build_world(course_scene(n, kind), a1::task_table()), o);
   run_steps(state, sim, true);
 }
 
@@ -58,10 +59,10 @@ void BM_StepResting(benchmark::State& state) {
   const auto kind = static_cast<IntegratorKind>(state.range(0));
   state.SetLabel(std::string(to_string(kind)) + " resting in the bowl");
   Simulator::Options o(IntegratorKind::RK4, 0.001);
-  Simulator settle(build_world(course_scene(10, IntegratorKind::RK4), linked_tasks()), o);
+  Simulator settle(build_world(course_scene(10, IntegratorKind::RK4), a1::task_table()), o);
   settle.run_until(10.0);
   SceneSpec s = course_scene(10, kind);
-  auto world = build_world(s, linked_tasks());
+  auto world = build_world(s, a1::task_table());
   world->state() = settle.state();
   Simulator::Options o2(kind, 0.001);
   o2.detect_instability = false;
@@ -76,7 +77,7 @@ void BM_StepSprings(benchmark::State& state) {
   if (!full) s.shear.enabled = s.bending.enabled = false;
   Simulator::Options o(IntegratorKind::ExplicitEuler, 0.001);
   o.detect_instability = false;
-  Simulator sim(build_world(s, linked_tasks()), o);
+  Simulator sim(build_world(s, a1::task_table()), o);
   run_steps(state, sim, true);
 }
 
@@ -87,7 +88,7 @@ void BM_StepThreads(benchmark::State& state) {
   state.SetLabel("explicit_euler n=" + std::to_string(n) + " threads=" + std::to_string(threads));
   Simulator::Options o(IntegratorKind::ExplicitEuler, 0.001);
   o.detect_instability = false;
-  auto world = build_world(course_scene(n, IntegratorKind::ExplicitEuler), linked_tasks());
+  auto world = build_world(course_scene(n, IntegratorKind::ExplicitEuler), a1::task_table());
   world->set_force_threads(threads);
   Simulator sim(std::move(world), o);
   run_steps(state, sim, true);

@@ -49,7 +49,9 @@ bool load_scene_into(AppState& s, int index, const std::string& path) {
 
 void rebuild_runs(AppState& s) {
   s.runs.clear();
-  const TaskTable tasks = linked_tasks();
+  const LinkedAssignment& assignment = session::assignment_for(s.edited);
+  const TaskTable tasks = assignment.tasks();
+  s.tasks = session::probe_assignment(assignment);
   if (s.comparing && s.slots.size() >= 2) {
     for (CompareSlot& slot : s.slots) {
       RunSetup setup{s.edited, slot.integrator, slot.dt, {}};

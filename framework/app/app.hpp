@@ -11,6 +11,7 @@
 #include "jelly/render/camera.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/window_backend.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/session/real_time_clock.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"

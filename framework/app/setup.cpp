@@ -37,7 +37,6 @@ int init_state(AppState& s, const AppOptions& opt) {
   s.open_panels = opt.open_panels;
   s.scenes_dir = opt.scenes_dir.empty() ? default_scenes_dir() : opt.scenes_dir;
   s.scenes = list_scenes(s.scenes_dir);
-  s.tasks = probe_tasks(linked_tasks());
   s.clock.factor = std::clamp(opt.factor, RealTimeClock::kMinFactor, RealTimeClock::kMaxFactor);
   s.frame.draw.particles = opt.particles;
   if (opt.springs) s.frame.draw.springs = {true, true, true, true};

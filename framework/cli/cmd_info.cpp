@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/params.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
 
@@ -78,7 +79,7 @@ int check_command(int argc, char** argv) {
   if (!scene) return kExitUsage;
   std::unique_ptr<World> world;
   try {
-    world = build_world(*scene, linked_tasks());
+    world = build_world(*scene, session::tasks_for(*scene));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "jelly check: %s\n", e.what());
     return kExitUsage;
@@ -123,15 +124,18 @@ int check_command(int argc, char** argv) {
 int probe_command(int argc, char** argv) {
   const char* usage =
       "usage: jelly probe\n"
-      "Lists which student tasks (A1.T1-A1.T13) look implemented in this build.\n";
+      "Lists which student tasks of each assignment look implemented in this build.\n";
   Command cmd("jelly probe", usage, usage);
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
-  const auto statuses = probe_tasks(linked_tasks());
-  std::printf("student tasks linked into this build (%s):\n",
-              std::string(linked_tasks().origin).c_str());
-  for (const TaskStatus& s : statuses)
-    std::printf("  %-6s %-28s %s  %s\n", s.id.c_str(), s.name.c_str(),
-                s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence.c_str());
+  for (const LinkedAssignment& a : linked_assignments()) {
+    const AssignmentManifest& manifest = session::manifest_of(a);
+    const auto statuses = session::probe_assignment(a);
+    std::printf("student tasks of %s (%s) linked into this build (%s):\n", manifest.id.c_str(),
+                manifest.title.c_str(), std::string(a.tasks().origin).c_str());
+    for (const TaskStatus& s : statuses)
+      std::printf("  %-6s %-28s %s  %s\n", s.id.c_str(), s.name.c_str(),
+                  s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence.c_str());
+  }
   return kExitOk;
 }
 

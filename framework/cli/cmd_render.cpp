@@ -16,6 +16,7 @@
 
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/session/replay.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/task_probe.hpp"
@@ -195,7 +196,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
   const Replay& replay = *loaded.replay;
   std::unique_ptr<World> world;
   try {
-    world = build_world(scene, linked_tasks());
+    world = build_world(scene, session::tasks_for(scene));
   } catch (const std::exception& e) {
     std::cerr << "jelly render: cannot build the scene's world: " << e.what() << "\n";
     return 1;
@@ -292,7 +293,7 @@ int render_command(int argc, char** argv) {
     }
     RunSetup s = base;
     s.integrator = *kind;
-    runs.push_back(std::make_unique<SimulationRun>(s, linked_tasks()));
+    runs.push_back(std::make_unique<SimulationRun>(s, session::tasks_for(s.scene)));
     if (!runs.back()->ok()) {
       std::cerr << "jelly render: " << name << ": " << runs.back()->error() << "\n";
       return 1;
@@ -305,7 +306,8 @@ int render_command(int argc, char** argv) {
   fo.caption = a.caption;
   fo.draw.particles = a.particles;
   if (a.springs) fo.draw.springs = {true, true, true, true};
-  const auto missing = missing_task_ids(probe_tasks(linked_tasks()));
+  const auto missing =
+      missing_task_ids(session::probe_assignment(session::assignment_for(base.scene)));
   if (!missing.empty()) {
     std::string hint = "not implemented yet:";
     for (const auto& id : missing) hint += " " + id;

@@ -9,6 +9,7 @@
 #include "jelly/auto_step.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/recorder.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_probe.hpp"
@@ -73,14 +74,14 @@ int run_command(int argc, char** argv) {
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
-  if (!quiet) print_missing_tasks_note();
+  if (!quiet) print_missing_tasks_note(*scene);
 
   std::unique_ptr<Simulator> sim;
   std::optional<AutoStep> auto_step;
   try {
     Simulator::Options options(scene->integrator, scene->dt);
     options.detect_instability = !no_detector;
-    std::unique_ptr<World> world = build_world(*scene, linked_tasks());
+    std::unique_ptr<World> world = build_world(*scene, session::tasks_for(*scene));
     if (threads > 0) world->set_force_threads(static_cast<int>(threads));
     if (auto_dt || scene->auto_dt) {
       // One frame = 1/60 s, the default recording interval; the scene's dt is the largest step.
@@ -185,8 +186,8 @@ std::optional<SceneSpec> load_with_overrides(const std::string& scene_name,
   return scene;
 }
 
-void print_missing_tasks_note() {
-  const auto missing = missing_task_ids(probe_tasks(linked_tasks()));
+void print_missing_tasks_note(const SceneSpec& scene) {
+  const auto missing = missing_task_ids(session::probe_assignment(session::assignment_for(scene)));
   if (missing.empty()) return;
   std::string list;
   for (const std::string& id : missing) list += (list.empty() ? "" : ", ") + id;
@@ -194,7 +195,7 @@ void print_missing_tasks_note() {
       stderr,
       "note: these student tasks still return the stub's neutral value: %s.\n"
       "      Until they are done the jelly has no springs or falls through the floor, and\n"
-      "      your integrators leave it where it is. See docs/handout/README.md.\n",
+      "      your integrators leave it where it is. See assignments/a1/handout/README.md.\n",
       list.c_str());
 }
 

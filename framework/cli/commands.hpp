@@ -36,7 +36,8 @@ void add_scene_overrides(Command& command, SceneOverrides& into, bool run_option
 std::optional<SceneSpec> load_with_overrides(const std::string& scene_name,
                                              const SceneOverrides& overrides);
 
-/// Prints a note naming the student tasks that still look unimplemented (nothing when all are).
-void print_missing_tasks_note();
+/// Prints a note naming the student tasks of the assignment that runs `scene` that still look
+/// unimplemented (nothing when all are).
+void print_missing_tasks_note(const SceneSpec& scene);
 
 }  // namespace jelly::cli

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "jelly/auto_step.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_table.hpp"
 #include "study_files.hpp"
@@ -56,7 +57,7 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
   const long per_sample = steps_per(o.sample_dt, h, "the sample interval");
   Simulator::Options options(kind, h);
   options.detect_instability = false;  // watched below, so that the run is not stopped
-  Simulator sim(build_world(scene, linked_tasks()), options);
+  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
   StabilityMonitor monitor(options.monitor);
   monitor.start(sim.energy().total());
   const long evaluations0 = sim.evaluations();
@@ -154,7 +155,7 @@ SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* 
   r.scene_name = scene.name;
   r.load_before = loadavg();
   {
-    const auto world = build_world(scene, linked_tasks());
+    const auto world = build_world(scene, session::tasks_for(scene));
     r.particles = static_cast<long>(world->particle_count());
     r.springs = world->spring_count();
     r.terrains = world->terrains().size();

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "jelly/params.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/task_table.hpp"
 #include "study_files.hpp"
@@ -121,7 +122,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   row.h = scene.dt;
   Simulator::Options options(kind, scene.dt);
   options.detect_instability = false;  // watched below (the same detector, every 10 steps)
-  Simulator sim(build_world(scene, linked_tasks()), options);
+  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
   const World& world = sim.world();
   StabilityMonitor monitor(options.monitor);
   row.energy_start = sim.energy().total();
@@ -248,7 +249,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
 double time_again(const SceneSpec& scene, IntegratorKind kind, long steps) {
   Simulator::Options options(kind, scene.dt);
   options.detect_instability = false;
-  Simulator sim(build_world(scene, linked_tasks()), options);
+  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
   const auto t0 = std::chrono::steady_clock::now();
   for (long i = 0; i < steps; ++i) sim.step();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

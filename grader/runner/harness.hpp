@@ -106,12 +106,12 @@ class Registry {
   std::vector<GeneratorDef> generators_;
 };
 
-// Registration, one function per task group (cases_*.cpp).
-void register_spring_cases(Registry& r);
-void register_force_cases(Registry& r);
-void register_terrain_cases(Registry& r);
-void register_integrator_cases(Registry& r);
-void register_scene_cases(Registry& r);
+/// What an assignment's grader cases define, once, in assignments/<id>/grader/runner/ (the runner
+/// of that assignment links them): register every case generator of the assignment.
+void register_assignment_cases(Registry& r);
+/// ... and the task table the cases test: the assignment's bindings over whichever implementation
+/// the runner is linked with (the reference, the stubs or a submission).
+TaskTable assignment_task_table();
 
 // ----- helpers shared by the cases -----
 

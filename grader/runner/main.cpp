@@ -90,11 +90,7 @@ int usage() {
 
 int main(int argc, char** argv) {
   jelly::grade::Registry registry;
-  jelly::grade::register_spring_cases(registry);
-  jelly::grade::register_force_cases(registry);
-  jelly::grade::register_terrain_cases(registry);
-  jelly::grade::register_integrator_cases(registry);
-  jelly::grade::register_scene_cases(registry);
+  jelly::grade::register_assignment_cases(registry);
 
   std::string request_path;
   int result_fd = 1;
@@ -161,7 +157,7 @@ int main(int argc, char** argv) {
   const jelly::grade::Params params(request.contains("params") ? request["params"]
                                                                : Json::object());
   const Json input = request.contains("input") ? request["input"] : Json::object();
-  const jelly::TaskTable tasks = jelly::linked_tasks();
+  const jelly::TaskTable tasks = jelly::grade::assignment_task_table();
 
   Json result = Json::object();
   if (prepare) {

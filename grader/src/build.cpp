@@ -287,7 +287,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   fs::create_directories(stubs);
   fs::create_directories(obj);
   fs::create_directories(config.cache_dir());
-  const std::vector<std::string>& files = task_files();
+  const std::vector<std::string>& files = config.task_files();
 
   // 1. Take exactly the five task files, and the stubs (assignments/) that stand in for a file
   //    that cannot be used.

@@ -116,34 +116,64 @@ const TaskSpec* Rubric::find(const std::string& id) const {
   return nullptr;
 }
 
-CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path) {
-  CaseBook book;
-  // Rubric.
-  const std::string rpath = rubric_path.empty() ? config.rubric_path().string() : rubric_path;
-  toml::table rubric;
+// A rubric given with --rubric: the manifest's [grading] table (or its keys at the top) and its
+// [[task]] entries with their points; the other keys of a manifest may be there or not.
+AssignmentManifest read_rubric(const std::string& path) {
+  toml::table root;
   try {
-    rubric = toml::parse_file(rpath);
+    root = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
-    throw std::runtime_error(rpath + ":" + std::to_string(e.source().begin.line) + ": " +
+    throw std::runtime_error(path + ":" + std::to_string(e.source().begin.line) + ": " +
                              std::string(e.description()));
   }
-  book.rubric.autograded_total = rubric["autograded_total"].value_or(80.0);
-  book.rubric.hidden_visibility =
-      rubric["hidden_visibility"].value_or(std::string("after_due_date"));
-  const toml::array* tasks = rubric["task"].as_array();
-  if (!tasks) throw std::runtime_error(rpath + ": expected [[task]] entries");
+  const toml::table* grading = root["grading"].as_table();
+  const toml::table& g = grading ? *grading : root;
+  AssignmentManifest m;
+  m.autograded_total = g["autograded_total"].value_or(80.0);
+  m.hidden_visibility = g["hidden_visibility"].value_or(std::string("after_due_date"));
+  const toml::array* tasks = root["task"].as_array();
+  if (!tasks) throw std::runtime_error(path + ": expected [[task]] entries");
   for (const toml::node& n : *tasks) {
-    const toml::table& t = *n.as_table();
-    TaskSpec s;
-    s.id = t["id"].value_or(std::string());
-    s.title = t["title"].value_or(std::string());
-    s.category = t["category"].value_or(std::string());
-    s.functions = t["functions"].value_or(std::string());
-    const auto pts = t["points"].value<double>();
+    const toml::table* t = n.as_table();
+    if (!t) throw std::runtime_error(where(path, n, "task") + ": expected a table");
+    ManifestTask s;
+    s.id = (*t)["id"].value_or(std::string());
+    s.title = (*t)["title"].value_or(std::string());
+    s.category = (*t)["category"].value_or(std::string());
+    s.file = (*t)["file"].value_or(std::string());
+    if (const toml::array* fns = (*t)["functions"].as_array())
+      for (const toml::node& f : *fns) s.functions.push_back(f.value_or(std::string()));
+    const auto pts = (*t)["points"].value<double>();
     if (s.id.empty() || !pts || *pts < 0.0)
-      throw std::runtime_error(where(rpath, n, "task") +
+      throw std::runtime_error(where(path, n, "task") +
                                ": every [[task]] needs an id and points ≥ 0");
     s.points = *pts;
+    m.tasks.push_back(s);
+  }
+  return m;
+}
+
+CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path) {
+  CaseBook book;
+  // Rubric: the assignment's manifest ([grading] and the [[task]] points), or with --rubric
+  // another manifest-shaped file (a term's own points; docs/instructor-guide.md).
+  const std::string rpath = rubric_path.empty() ? config.rubric_path().string() : rubric_path;
+  AssignmentManifest rubric;
+  try {
+    rubric = rubric_path.empty() ? config.assignment().manifest : read_rubric(rubric_path);
+  } catch (const ManifestError& e) {
+    throw std::runtime_error(e.what());
+  }
+  book.rubric.autograded_total = rubric.autograded_total;
+  book.rubric.hidden_visibility = rubric.hidden_visibility;
+  for (const ManifestTask& t : rubric.tasks) {
+    TaskSpec s;
+    s.id = t.id;
+    s.title = t.title;
+    s.category = t.category;
+    s.functions = t.functions_text();
+    s.file = t.file;
+    s.points = t.points;
     book.rubric.tasks.push_back(s);
   }
   // Tolerances, then cases.
@@ -229,7 +259,7 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
 }
 
 std::filesystem::path reference_path(const GradeConfig& config, const CaseSpec& spec) {
-  return config.data_dir() / (spec.hidden ? "hidden" : "public") / (spec.id + ".json");
+  return config.data_dir(spec.hidden ? "hidden" : "public") / (spec.id + ".json");
 }
 
 std::optional<Json> load_reference(const GradeConfig& config, const CaseSpec& spec) {
@@ -254,14 +284,16 @@ std::string harness_digest(const GradeConfig& config) {
   std::vector<fs::path> files;
   // The process around a case (its main() and its seccomp sandbox) does not change what a case
   // computes: changing how the runner is confined must not invalidate the reference data.
+  // The general harness (grader/runner/) and the assignment's own generators.
   static const char* const not_generator_code[] = {"main.cpp", "sandbox.cpp", "sandbox.hpp"};
-  for (const auto& e : fs::directory_iterator(config.grader_dir() / "runner")) {
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() &&
-        std::find(std::begin(not_generator_code), std::end(not_generator_code), name) ==
-            std::end(not_generator_code))
-      files.push_back(e.path());
-  }
+  for (const fs::path& dir : {config.grader_dir() / "runner", config.runner_dir()})
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (e.is_regular_file() &&
+          std::find(std::begin(not_generator_code), std::end(not_generator_code), name) ==
+              std::end(not_generator_code))
+        files.push_back(e.path());
+    }
   std::sort(files.begin(), files.end());
   std::string all;
   for (const fs::path& f : files) {

@@ -54,6 +54,7 @@ struct TaskSpec {
   std::string title;      ///< "Spring force"
   std::string category;   ///< "forces"
   std::string functions;  ///< the student's functions, for crash messages
+  std::string file;       ///< the file that holds them ("" for the whole submission)
   double points = 0.0;    ///< rubric points (before scaling)
 };
 

@@ -146,7 +146,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
   }
   // Remove data of cases that no longer exist.
   for (const char* vis : {"public", "hidden"}) {
-    const fs::path dir = config.data_dir() / vis;
+    const fs::path dir = config.data_dir(vis);
     if (!fs::exists(dir)) continue;
     for (const auto& e : fs::directory_iterator(dir))
       if (e.path().extension() == ".json" && !written.count(e.path())) fs::remove(e.path());
@@ -429,7 +429,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   };
   std::vector<Mutant> list;
   std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(config.grader_dir() / "mutants"))
+  for (const auto& e : fs::directory_iterator(config.mutants_dir()))
     if (e.path().extension() == ".toml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
@@ -461,7 +461,7 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     }
     m.dir = root / m.name / "submission";
     fs::create_directories(m.dir);
-    for (const std::string& name : task_files())
+    for (const std::string& name : config.task_files())
       fs::copy_file(config.solutions_dir() / name, m.dir / name,
                     fs::copy_options::overwrite_existing);
     std::string text = read_file(m.dir / m.file);

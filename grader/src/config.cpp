@@ -1,5 +1,6 @@
 #include "config.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -8,10 +9,14 @@
 
 namespace jelly::grade {
 
-const std::vector<std::string>& task_files() {
-  static const std::vector<std::string> files = {"springs.cpp", "forces.cpp", "collision.cpp",
-                                                 "contact.cpp", "integrators.cpp"};
-  return files;
+const AssignmentConfig& GradeConfig::assignment() const {
+  if (!selected) throw std::logic_error("jelly-grade: no assignment selected (select_assignment)");
+  return *selected;
+}
+
+fs::path GradeConfig::data_dir(const std::string& visibility) const {
+  if (visibility == "hidden") return grader_dir() / "data" / assignment().id / "hidden";
+  return assignment_grader_dir() / "data" / visibility;
 }
 
 fs::path GradeConfig::cache_dir() const {
@@ -48,22 +53,96 @@ GradeConfig load_config(const std::string& path) {
     }
     return out;
   };
+  auto field = [&](const nlohmann::json& o, const char* key, const std::string& where) {
+    if (!o.contains(key) || !o[key].is_string())
+      throw std::runtime_error(p + ": " + where + key + ": expected a string");
+    return o[key].get<std::string>();
+  };
+  auto list = [&](const nlohmann::json& o, const char* key, const std::string& where) {
+    std::vector<std::string> out;
+    if (!o.contains(key) || !o[key].is_array())
+      throw std::runtime_error(p + ": " + where + key + ": expected an array");
+    for (const auto& s : o[key]) {
+      const std::string v = s.get<std::string>();
+      // /usr/include is searched anyway; naming it with -I breaks libstdc++'s #include_next.
+      if (!v.empty() && v != "/usr/include") out.push_back(v);
+    }
+    return out;
+  };
   GradeConfig c;
   c.compiler = j.at("compiler").get<std::string>();
   c.compiler_id = j.value("compiler_id", "");
   c.compile_flags = strings("compile_flags");
   c.defines = strings("defines");
-  c.include_dirs = strings("include_dirs");
-  c.link_objects = strings("link_objects");
-  c.link_libraries = strings("link_libraries");
   c.link_flags = strings("link_flags");
   c.source_dir = j.at("source_dir").get<std::string>();
   c.binary_dir = j.at("binary_dir").get<std::string>();
-  c.reference_runner = j.value("reference_runner", "");
   c.jelly_cli = j.value("jelly_cli", "");
   if (const char* env = std::getenv("JELLY_GRADE_JELLY")) c.jelly_cli = env;
   c.config_path = p;
+  if (!j.contains("assignments") || !j["assignments"].is_object() || j["assignments"].empty())
+    throw std::runtime_error(p +
+                             ": assignments: expected an object with one entry per assignment "
+                             "(rebuild: this config predates assignments as plug-ins)");
+  for (const auto& [id, o] : j["assignments"].items()) {
+    const std::string where = "assignments." + id + ".";
+    AssignmentConfig a;
+    a.id = id;
+    a.dir = field(o, "dir", where);
+    a.solutions_dir = field(o, "solutions_dir", where);
+    a.include_dirs = list(o, "include_dirs", where);
+    a.link_objects = list(o, "link_objects", where);
+    a.link_libraries = list(o, "link_libraries", where);
+    a.reference_runner = o.value("reference_runner", "");
+    a.student_runner = o.value("student_runner", "");
+    try {
+      a.manifest = read_manifest(a.dir / "assignment.toml");
+    } catch (const ManifestError& e) {
+      throw std::runtime_error(e.what());
+    }
+    c.assignments.push_back(std::move(a));
+  }
+  std::sort(c.assignments.begin(), c.assignments.end(),
+            [](const AssignmentConfig& x, const AssignmentConfig& y) { return x.id < y.id; });
   return c;
+}
+
+void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission) {
+  std::string known;
+  for (const AssignmentConfig& a : config.assignments) known += (known.empty() ? "" : ", ") + a.id;
+  const AssignmentConfig* chosen = nullptr;
+  if (!id.empty()) {
+    for (const AssignmentConfig& a : config.assignments)
+      if (a.id == id) chosen = &a;
+    if (!chosen)
+      throw std::runtime_error("--assignment " + id +
+                               ": no such assignment in this build (it has: " + known + ")");
+  } else if (config.assignments.size() == 1) {
+    chosen = &config.assignments.front();
+  } else if (!submission.empty()) {
+    std::vector<std::string> present;
+    std::error_code ec;
+    for (fs::directory_iterator it(submission, ec), end; !ec && it != end; it.increment(ec))
+      present.push_back(it->path().filename().string());
+    std::vector<AssignmentManifest> manifests;
+    for (const AssignmentConfig& a : config.assignments) manifests.push_back(a.manifest);
+    if (const AssignmentManifest* m = assignment_for_files(manifests, present))
+      for (const AssignmentConfig& a : config.assignments)
+        if (a.id == m->id) chosen = &a;
+    if (!chosen)
+      throw std::runtime_error(submission.string() +
+                               ": its files do not name exactly one assignment; say which with "
+                               "--assignment ID (this build has: " +
+                               known + ")");
+  } else {
+    throw std::runtime_error("this build has several assignments (" + known +
+                             "): say which with --assignment ID");
+  }
+  config.selected = chosen;
+  config.include_dirs = chosen->include_dirs;
+  config.link_objects = chosen->link_objects;
+  config.link_libraries = chosen->link_libraries;
+  config.reference_runner = chosen->reference_runner;
 }
 
 }  // namespace jelly::grade

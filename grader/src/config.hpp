@@ -5,43 +5,76 @@
 #include <string>
 #include <vector>
 
+#include "jelly/manifest.hpp"
+
 namespace jelly::grade {
 
 namespace fs = std::filesystem;
 
-/// The recipe CMake wrote (build/grader/grade-config.json) plus paths derived from it.
+/// One assignment as the build knows it (grade-config.json's "assignments") and its manifest.
+struct AssignmentConfig {
+  std::string id;
+  AssignmentManifest manifest;
+  fs::path dir;            ///< assignments/<id>/ (stubs, manifest, public grader data)
+  fs::path solutions_dir;  ///< solutions/<id>/ (absent in a student release)
+  std::vector<std::string> include_dirs;    ///< for a submission's files
+  std::vector<std::string> link_objects;    ///< runner main + the assignment's bindings
+  std::vector<std::string> link_libraries;  ///< its cases, the harness, the core, seccomp
+  fs::path reference_runner;                ///< empty in a student release
+  fs::path student_runner;                  ///< the self-check's runner (jelly::<id>::tasks)
+};
+
+/// The recipe CMake wrote (build/grader/grade-config.json) plus paths derived from it. The
+/// assignment-specific fields are those of the assignment select_assignment() chose.
 struct GradeConfig {
   std::string compiler;
   std::string compiler_id;
   std::vector<std::string> compile_flags;  ///< includes -O level and -ffp-contract=off
   std::vector<std::string> defines;
-  std::vector<std::string> include_dirs;
-  std::vector<std::string> link_objects;    ///< runner main + task_table for a submission
-  std::vector<std::string> link_libraries;  ///< harness, core, seccomp
+  std::vector<std::string> include_dirs;    ///< of the selected assignment
+  std::vector<std::string> link_objects;    ///< of the selected assignment
+  std::vector<std::string> link_libraries;  ///< of the selected assignment
   std::vector<std::string> link_flags;
   fs::path source_dir;  ///< the framework checkout (grader/, assignments/, solutions/?)
   fs::path binary_dir;
-  fs::path reference_runner;  ///< empty in a student release
+  fs::path reference_runner;  ///< of the selected assignment; empty in a student release
   /// The `jelly` CLI with `render --replay` (report frames); empty when built without the viewer.
   /// $JELLY_GRADE_JELLY overrides it.
   fs::path jelly_cli;
   fs::path config_path;
+  /// Every assignment of the build, sorted by id.
+  std::vector<AssignmentConfig> assignments;
+  /// The one the command works on (select_assignment); nullptr before.
+  const AssignmentConfig* selected = nullptr;
 
+  /// The selected assignment; throws std::logic_error when none was selected.
+  const AssignmentConfig& assignment() const;
   fs::path grader_dir() const { return source_dir / "grader"; }
-  fs::path cases_dir() const { return grader_dir() / "cases"; }
-  fs::path data_dir() const { return grader_dir() / "data"; }
-  fs::path rubric_path() const { return grader_dir() / "rubric.toml"; }
-  fs::path assignments_dir() const { return source_dir / "assignments"; }
-  fs::path solutions_dir() const { return source_dir / "solutions"; }
+  /// The selected assignment's grader folder: assignments/<id>/grader.
+  fs::path assignment_grader_dir() const { return assignment().dir / "grader"; }
+  fs::path cases_dir() const { return assignment_grader_dir() / "cases"; }
+  fs::path mutants_dir() const { return assignment_grader_dir() / "mutants"; }
+  fs::path runner_dir() const { return assignment_grader_dir() / "runner"; }
+  /// Reference data: "public" is in the assignment's folder (it ships to students), "hidden" in
+  /// grader/data/<id>/hidden (it never does).
+  fs::path data_dir(const std::string& visibility) const;
+  /// The rubric: the manifest (its [grading] table and [[task]] points).
+  fs::path rubric_path() const { return assignment().dir / "assignment.toml"; }
+  fs::path assignments_dir() const { return assignment().dir; }
+  fs::path solutions_dir() const { return assignment().solutions_dir; }
+  /// The files a student edits, in build order (the manifest's `files`).
+  const std::vector<std::string>& task_files() const { return assignment().manifest.files; }
   /// Compiled-object cache (content-addressed), so a mutant recompiles only the file it changes.
   fs::path cache_dir() const;
 };
 
-/// Reads the config: `path` if given, else $JELLY_GRADE_CONFIG, else the path compiled in.
-/// Throws std::runtime_error naming the file and key on a problem.
+/// Reads the config: `path` if given, else $JELLY_GRADE_CONFIG, else the path compiled in, and
+/// every assignment's manifest. Throws std::runtime_error naming the file and key on a problem.
 GradeConfig load_config(const std::string& path);
 
-/// The five files a student edits, in build order.
-const std::vector<std::string>& task_files();
+/// Selects the assignment a command works on: `id` if given; else the one whose files a
+/// submission folder holds (`submission`, may be empty); else the only one of the build. Throws
+/// std::runtime_error naming the choices when it cannot tell.
+void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission);
 
 }  // namespace jelly::grade

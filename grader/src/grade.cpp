@@ -166,11 +166,7 @@ std::vector<std::string> sandbox_problems(const ChildResult& c, std::size_t memo
 
 }  // namespace
 
-std::string task_file_of(const TaskSpec& task) {
-  for (const std::string& name : task_files())
-    if (task.functions.find("(" + name + ")") != std::string::npos) return name;
-  return "";
-}
+std::string task_file_of(const TaskSpec& task) { return task.file; }
 
 namespace {
 
@@ -427,7 +423,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   }
 
   // A file that could not be used costs its own tasks only: the runner has its stub in its place.
-  for (const std::string& file : task_files()) {
+  for (const std::string& file : config.task_files()) {
     const auto it = rep.build.failed_files.find(file);
     if (it == rep.build.failed_files.end()) continue;
     FileFailure f;

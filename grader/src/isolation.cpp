@@ -136,16 +136,21 @@ bool bwrap_works(const std::string& bwrap, std::string& why) {
 // The files only the grader may read, known by name: hidden even inside folders a sandbox may see
 // (bwrap covers them; in user mode they are closed on top of the deny-by-default walk below).
 std::vector<fs::path> secrets_of(const GradeConfig& config) {
-  std::vector<fs::path> s = {config.data_dir(),
-                             config.cases_dir(),
-                             config.solutions_dir(),
+  // Every assignment's hidden data, cases, reference, mutants and reference runner: a sandbox
+  // grading one assignment sees no other assignment's secrets either.
+  std::vector<fs::path> s = {config.grader_dir() / "data",
+                             config.source_dir / "solutions",
                              config.cache_dir(),
-                             config.grader_dir() / "mutants",
                              config.binary_dir / "grader" / "mutants",
                              config.binary_dir / "grader" / "generate",
                              config.binary_dir / "grader" / "gradescope-zip",
                              config.source_dir / ".git"};
-  if (!config.reference_runner.empty()) s.push_back(config.reference_runner);
+  for (const AssignmentConfig& a : config.assignments) {
+    s.push_back(a.dir / "grader" / "cases");
+    s.push_back(a.dir / "grader" / "mutants");
+    s.push_back(a.solutions_dir);
+    if (!a.reference_runner.empty()) s.push_back(a.reference_runner);
+  }
   std::vector<fs::path> out;
   for (const fs::path& p : s) out.push_back(absolute_clean(p));
   return out;
@@ -840,11 +845,14 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
   iso.description = "none";
   // A student's copy of the grader (a release) has no hidden data and no solutions/: nothing to
   // warn about.
-  bool secrets = fs::exists(config.solutions_dir()) || fs::exists(config.reference_runner);
-  std::error_code ec;
-  for (fs::directory_iterator it(config.data_dir() / "hidden", ec), end; !ec && it != end;
-       it.increment(ec))
-    secrets = true;
+  bool secrets = false;
+  for (const AssignmentConfig& a : config.assignments) {
+    secrets = secrets || fs::exists(a.solutions_dir) || fs::exists(a.reference_runner);
+    std::error_code ec;
+    for (fs::directory_iterator it(config.grader_dir() / "data" / a.id / "hidden", ec), end;
+         !ec && it != end; it.increment(ec))
+      secrets = true;
+  }
   if (!secrets) {
     iso.description = "none (this copy of the grader holds no hidden data and no solutions)";
     return finish(iso.kind);

@@ -62,7 +62,9 @@ constexpr const char* kUsage =
     "[--timeout S] [--jobs N]\n"
     "  jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility public|all] "
     "[--timeout S]\n"
-    "  common options: --config FILE (grade-config.json), --rubric FILE\n"
+    "  common options: --config FILE (grade-config.json), --rubric FILE,\n"
+    "    --assignment ID (which assignment; inferred from a submission's files, or the build's "
+    "only one)\n"
     "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default "
     "auto),\n"
     "    --compile-memory MIB (default 2048, at least 64), --compile-cpu S (default 120)\n"
@@ -73,8 +75,8 @@ constexpr const char* kUsage =
 
 /// Every option of every command; each command declares the ones it takes.
 struct Options {
-  std::string positional, config_path, rubric_path, out, visibility = "all", table, student,
-                                                         results;
+  std::string positional, config_path, rubric_path, assignment, out, visibility = "all", table,
+                                                                     student, results;
   std::vector<std::string> formats{"terminal", "gradescope"};
   double timeout = 10.0, compile_memory_mib = 2048, compile_cpu = 120;
   std::string isolation = "auto", runner;
@@ -89,6 +91,7 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   using namespace jelly::cli;
   cmd.add_option("--config", o.config_path)->type_name("FILE");
   cmd.add_option("--rubric", o.rubric_path)->type_name("FILE");
+  cmd.add_option("--assignment", o.assignment)->type_name("ID");
   const bool grades =
       command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants";
   if (grades) {
@@ -129,7 +132,22 @@ void declare(const std::string& command, Command& cmd, Options& o) {
 }
 
 int run(const std::string& command, const Options& o, const Command& cmd) {
-  const GradeConfig config = load_config(o.config_path);
+  GradeConfig config = load_config(o.config_path);
+  // The folder whose files name the assignment when --assignment is not given.
+  fs::path submission;
+  if (command == "grade")
+    submission = o.positional;
+  else if (command == "prairielearn")
+    submission = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
+  else if (command == "batch") {
+    std::error_code ec;
+    for (fs::directory_iterator it(o.positional, ec), end; !ec && it != end; it.increment(ec))
+      if (it->is_directory(ec)) {
+        submission = it->path();
+        break;
+      }
+  }
+  select_assignment(config, o.assignment, submission);
   const CaseBook book = load_case_book(config, o.rubric_path);
   GradeOptions options;
   options.include_hidden = o.visibility == "all";

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "counting_malloc.hpp"
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 
@@ -43,7 +44,7 @@ TEST_P(NoAllocationPerStep, InFlight) {
   if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
   SceneSpec scene = course_2023_scene();
   scene.integrator = GetParam();
-  Simulator sim(build_world(scene, linked_tasks()), {GetParam(), 0.001});
+  Simulator sim(build_world(scene, a1::task_table()), {GetParam(), 0.001});
   EXPECT_EQ(allocations_per_run(sim, 20, 200), 0) << to_string(GetParam());
 }
 
@@ -51,7 +52,7 @@ TEST_P(NoAllocationPerStep, InContactWithTheFloorAndTheBowl) {
   if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
   SceneSpec scene = course_2023_scene();
   scene.integrator = GetParam();
-  Simulator sim(build_world(scene, linked_tasks()), {GetParam(), 0.0005});
+  Simulator sim(build_world(scene, a1::task_table()), {GetParam(), 0.0005});
   ASSERT_EQ(sim.run_until(2.5), StepResult::Ok);  // landed on the floor, tipping into the bowl
   long touches = 0;                               // collision responses and contact forces so far
   for (long c : sim.world().counters().collisions) touches += c;
@@ -69,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(CourseIntegrators, NoAllocationPerStep,
 // Four cubes, twelve spring groups: more groups than any fixed-size table would hold.
 TEST(NoAllocation, ManySpringGroupsAllocateNothing) {
   if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
-  auto world = std::make_unique<World>(linked_tasks());
+  auto world = std::make_unique<World>(a1::task_table());
   for (int c = 0; c < 4; ++c) {
     CubeSpec spec;
     spec.n = 5;
@@ -87,7 +88,7 @@ TEST(NoAllocation, ManySpringGroupsAllocateNothing) {
 TEST(NoAllocation, TwoThreadsAllocateNothingEither) {
   if (!allocation_counting_available()) GTEST_SKIP() << "needs glibc";
   SceneSpec scene = course_2023_scene();
-  auto world = build_world(scene, linked_tasks());
+  auto world = build_world(scene, a1::task_table());
   world->set_force_threads(2);
   Simulator sim(std::move(world), {IntegratorKind::ExplicitEuler, 0.001});
   EXPECT_EQ(allocations_per_run(sim, 20, 100), 0);

@@ -2,6 +2,7 @@
 // the course's implicit Euler diverging at h = 0.001 (caught and explained) but not at 0.0005.
 #include <gtest/gtest.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
@@ -13,7 +14,7 @@ class CourseScene : public ::testing::TestWithParam<IntegratorKind> {};
 
 TEST_P(CourseScene, RunsTenSecondsWithoutTheDetectorFiring) {
   const IntegratorKind kind = GetParam();
-  Simulator sim(build_world(testing::course_2023(kind), linked_tasks()), {kind, 0.001});
+  Simulator sim(build_world(testing::course_2023(kind), a1::task_table()), {kind, 0.001});
   const StepResult r = sim.run_until(10.0);
   ASSERT_EQ(r, StepResult::Ok) << (sim.instability() ? sim.instability()->message() : "");
   EXPECT_EQ(sim.steps(), 10000);
@@ -34,7 +35,7 @@ INSTANTIATE_TEST_SUITE_P(StableAtOneMillisecond, CourseScene,
 
 TEST(CourseScene, CourseImplicitEulerDivergesAtOneMillisecondAndTheDetectorSaysWhy) {
   const IntegratorKind kind = IntegratorKind::ImplicitEuler;
-  Simulator sim(build_world(testing::course_2023(kind), linked_tasks()), {kind, 0.001});
+  Simulator sim(build_world(testing::course_2023(kind), a1::task_table()), {kind, 0.001});
   const StepResult r = sim.run_until(10.0);
   ASSERT_EQ(r, StepResult::Unstable) << "the course's implicit Euler should diverge at h = 0.001";
   ASSERT_TRUE(sim.instability().has_value());
@@ -55,7 +56,7 @@ TEST(CourseScene, CourseImplicitEulerDivergesAtOneMillisecondAndTheDetectorSaysW
 
 TEST(CourseScene, CourseImplicitEulerIsStableAtHalfAMillisecond) {
   const IntegratorKind kind = IntegratorKind::ImplicitEuler;
-  Simulator sim(build_world(testing::course_2023(kind, 0.0005), linked_tasks()), {kind, 0.0005});
+  Simulator sim(build_world(testing::course_2023(kind, 0.0005), a1::task_table()), {kind, 0.0005});
   const StepResult r = sim.run_until(10.0);
   EXPECT_EQ(r, StepResult::Ok) << (sim.instability() ? sim.instability()->message() : "");
   EXPECT_TRUE(sim.state().x.allFinite());

@@ -1,6 +1,7 @@
 // Same scene, same binary: bit-identical trajectories (hashes of the full state).
 #include <gtest/gtest.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
@@ -9,7 +10,7 @@ namespace jelly {
 namespace {
 
 std::uint64_t run_hash(IntegratorKind kind, double seconds) {
-  Simulator sim(build_world(testing::course_2023(kind), linked_tasks()), {kind, 0.001});
+  Simulator sim(build_world(testing::course_2023(kind), a1::task_table()), {kind, 0.001});
   sim.run_until(seconds);
   return state_hash(sim.state());
 }
@@ -27,7 +28,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, Determinism, ::testing::ValuesIn(kAllIn
                          testing::integrator_param_name);
 
 TEST(Determinism, HashSeesALastBitChange) {
-  Simulator sim(build_world(testing::course_2023(), linked_tasks()),
+  Simulator sim(build_world(testing::course_2023(), a1::task_table()),
                 {IntegratorKind::ExplicitEuler, 0.001});
   State s = sim.state();
   const std::uint64_t h0 = state_hash(s);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/test_systems.hpp"
 #include "scenes_in_code.hpp"
@@ -28,7 +29,7 @@ class FreeFall : public ::testing::TestWithParam<IntegratorKind> {};
 
 TEST_P(FreeFall, CourseCubeMatchesClosedFormAfterHalfASecond) {
   const IntegratorKind kind = GetParam();
-  Simulator sim(build_world(testing::free_fall(kind), linked_tasks()), {kind, 0.001});
+  Simulator sim(build_world(testing::free_fall(kind), a1::task_table()), {kind, 0.001});
   const State start = sim.state();
   ASSERT_EQ(sim.run_until(0.5), StepResult::Ok);
   ASSERT_EQ(sim.steps(), 500);
@@ -58,7 +59,7 @@ TEST_P(FreeFall, FreeFallSystemGivesTheSameNumbers) {
   s.v.setZero();
   Workspace w;
   w.resize(1);
-  const TaskTable t = linked_tasks();
+  const TaskTable t = a1::task_table();
   StepFunction step = kind == IntegratorKind::ExplicitEuler   ? t.explicit_euler_step
                       : kind == IntegratorKind::ImplicitEuler ? t.implicit_euler_step
                       : kind == IntegratorKind::Midpoint      ? t.midpoint_step
@@ -108,7 +109,7 @@ TEST(LinearTwoParticleSpring, MatchesTheNonlinearSpringAlongItsAxis) {
   State s = TwoParticleSpring::initial_state(0.1);
   Workspace w;
   w.resize(2);
-  for (int n = 0; n < 400; ++n) linked_tasks().rk4_step(*lin, s, 2.5e-3, w);
+  for (int n = 0; n < 400; ++n) a1::task_table().rk4_step(*lin, s, 2.5e-3, w);
   EXPECT_NEAR(s.x(0, 1), TwoParticleSpring::exact_x1(1.0), 1e-9);
   EXPECT_NEAR(s.x(0, 0), -TwoParticleSpring::exact_x1(1.0), 1e-9);
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/task_table.hpp"
@@ -193,7 +194,7 @@ TEST(SceneLoader, BuildWorldBuildsWhatEachSceneNames) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.file);
     const SceneSpec s = load_ok(c.file);
-    const auto world = build_world(s, linked_tasks());
+    const auto world = build_world(s, a1::task_table());
     ASSERT_TRUE(world);
     EXPECT_EQ(group_size(*world, SpringType::Structural), c.structural);
     EXPECT_EQ(group_size(*world, SpringType::Shear), c.shear);
@@ -207,7 +208,7 @@ TEST(SceneLoader, BuildWorldBuildsWhatEachSceneNames) {
     EXPECT_EQ(names, c.terrains);
     EXPECT_EQ(world->gravity().has_value(), c.gravity);
   }
-  const auto course = build_world(load_ok("course-2023.toml"), linked_tasks());
+  const auto course = build_world(load_ok("course-2023.toml"), a1::task_table());
   EXPECT_EQ(course->spring_count(), 12876u);
   EXPECT_EQ(course->particle_count(), 1000);
 }
@@ -216,7 +217,7 @@ TEST(SceneLoader, ShearBodySetsBodyDiagonalsApart) {
   SceneSpec s = load_ok("course-2023.toml");
   ASSERT_EQ(set_parameter(s, "springs.shear_body.enabled", "true"), std::nullopt);
   ASSERT_EQ(set_parameter(s, "springs.shear_body.ks", "500"), std::nullopt);
-  const auto world = build_world(s, linked_tasks());
+  const auto world = build_world(s, a1::task_table());
   EXPECT_EQ(group_size(*world, SpringType::Shear), 4860u);
   EXPECT_EQ(group_size(*world, SpringType::ShearBody), 2916u);
   EXPECT_EQ(world->spring_count(), 12876u);
@@ -378,7 +379,7 @@ ks = 5
   EXPECT_EQ(p.springs[0].rest_length, 5.0);
   EXPECT_EQ(p.springs[1].rest_length, 1.0);
   EXPECT_EQ(p.spring_type, SpringType::Bending);
-  const auto world = build_world(*r.scene, linked_tasks());
+  const auto world = build_world(*r.scene, a1::task_table());
   ASSERT_EQ(world->spring_groups().size(), 1u);
   EXPECT_EQ(world->spring_groups()[0].type, SpringType::Bending);
   EXPECT_EQ(world->spring_groups()[0].ks, 5.0);

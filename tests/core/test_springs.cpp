@@ -5,6 +5,7 @@
 #include <set>
 #include <utility>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/task_table.hpp"
 
 namespace jelly {
@@ -27,7 +28,7 @@ TEST_P(SpringBuilder, CountsMatchTheContract) {
   CubeSpec spec;
   spec.n = n;
   const CubeLattice cube(spec);
-  const TaskTable t = linked_tasks();
+  const TaskTable t = a1::task_table();
   std::vector<Spring> structural, shear, bending;
   t.add_structural_springs(cube, structural);
   t.add_shear_springs(cube, shear);
@@ -45,7 +46,7 @@ TEST_P(SpringBuilder, NoSpringTwiceAndRestLengthsFromGeometry) {
   spec.rotation_degrees = 30.0;  // rest lengths must come from the actual (rotated) positions
   const CubeLattice cube(spec);
   const double s = cube.spacing();
-  const TaskTable t = linked_tasks();
+  const TaskTable t = a1::task_table();
   std::vector<Spring> all;
   t.add_structural_springs(cube, all);
   t.add_shear_springs(cube, all);

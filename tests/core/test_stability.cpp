@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
 
@@ -10,7 +11,7 @@ namespace jelly {
 namespace {
 
 TEST(StabilityEstimate, CourseCubeTopModeMatchesTheContract) {
-  auto world = build_world(testing::course_2023(), linked_tasks());
+  auto world = build_world(testing::course_2023(), a1::task_table());
   const StabilityEstimate e = estimate_stability(*world, world->state());
   // Contract §8: ω_max² ≈ 33 600 by power iteration (Gershgorin's bound is 128 000).
   EXPECT_NEAR(e.omega_max * e.omega_max, 33600.0, 0.05 * 33600.0);
@@ -30,7 +31,7 @@ TEST(StabilityEstimate, CourseCubeTopModeMatchesTheContract) {
 TEST(StabilityEstimate, UndampedSpringHasNoStableExplicitEulerStep) {
   SceneSpec s = testing::free_fall();
   s.structural.kd = s.shear.kd = s.bending.kd = 0.0;
-  auto world = build_world(s, linked_tasks());
+  auto world = build_world(s, a1::task_table());
   const StabilityEstimate e = estimate_stability(*world, world->state());
   EXPECT_EQ(e.critical_step(IntegratorKind::ExplicitEuler), 0.0);
   EXPECT_EQ(e.critical_step(IntegratorKind::Midpoint), 0.0);
@@ -43,9 +44,9 @@ TEST(StabilityEstimate, UndampedSpringHasNoStableExplicitEulerStep) {
 }
 
 TEST(StabilityMonitor, ExplicitEulerFreeFallDriftDoesNotTripIt) {
-  Simulator sim(build_world(testing::free_fall(), linked_tasks()),
+  Simulator sim(build_world(testing::free_fall(), a1::task_table()),
                 {IntegratorKind::ExplicitEuler, 0.001});
-  Simulator fresh(build_world(testing::free_fall(), linked_tasks()),
+  Simulator fresh(build_world(testing::free_fall(), a1::task_table()),
                   {IntegratorKind::ExplicitEuler, 0.001});
   const double e0 = fresh.energy().total();
   EXPECT_EQ(sim.run_until(1.0), StepResult::Ok);
@@ -58,7 +59,7 @@ TEST(StabilityMonitor, ExplicitEulerFreeFallDriftDoesNotTripIt) {
 TEST(StabilityMonitor, ExplicitEulerBeyondItsLimitIsStoppedQuickly) {
   // h = 0.0025 is beyond explicit Euler's limit (≈ 0.0021 s); the run must stop in free fall,
   // before the cube reaches the floor at ≈ 1.4 s (growth starts from rounding noise).
-  Simulator sim(build_world(testing::free_fall(), linked_tasks()),
+  Simulator sim(build_world(testing::free_fall(), a1::task_table()),
                 {IntegratorKind::ExplicitEuler, 0.0025});
   ASSERT_EQ(sim.run_until(1.0), StepResult::Unstable);
   EXPECT_LT(sim.instability()->time, 1.0);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/world.hpp"
 
@@ -141,7 +142,7 @@ TEST(World, BroadPhaseSkipsATerrainFarFromEveryParticle) {
 }
 
 TEST(World, CubeSpringsGetTheDegenerateLengthOfTheirSpacing) {
-  World w(linked_tasks());
+  World w(a1::task_table());
   CubeSpec spec;
   spec.n = 4;
   spec.edge = 3.0;  // spacing 1 m

@@ -226,8 +226,8 @@ const Route kRoutes[] = {
    "extern \"C\" long jelly_c_helper(long x) { return x; }\n",
    "jelly_c_helper, which is not a C++ function"},
   {"redefine_task_table", Where::TopOfForces,
-   "#include \"jelly/task_table.hpp\"\nnamespace jelly { TaskTable linked_tasks() { return {}; } }\n",
-   "jelly::linked_tasks()"},
+   "#include \"jelly/task_table.hpp\"\nnamespace jelly { TaskTable a1::task_table() { return {}; } }\n",
+   "jelly::a1::task_table()"},
   {"nonstatic_helper", Where::WellBehaved, "", ""},
   // Folder names that would break or forge a CSV file, or collide with the batch's own files.
   {"scores.csv", Where::WellBehaved, "", ""},
@@ -268,7 +268,7 @@ fs::path make_submission(const fs::path& in, const Route& r) {
     if (std::string(r.name) == "nonstatic_helper") {
       // An honest helper with external linkage, used by the task function: allowed.
       std::string text = read_text(kSource / "solutions" / "forces.cpp");
-      const std::string ns = "namespace jelly::tasks {\n";
+      const std::string ns = "namespace jelly::a1 {\n";
       const auto at = text.find(ns);
       EXPECT_NE(at, std::string::npos) << "solutions/forces.cpp changed: update the red-team suite";
       text.insert(at + ns.size(),

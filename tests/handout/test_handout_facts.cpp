@@ -1,8 +1,8 @@
 // Every number the handout quotes is a fact this test recomputes from the code (issue 12): spring
 // counts from the reference builders, free-fall heights and orders of convergence by simulating,
-// stability limits by running the detector, points from grader/rubric.toml, the course scene's
-// coefficients from the framework. In docs/handout/*.md a quoted number carries a tag right after
-// it, invisible in the rendered page:
+// stability limits by running the detector, points from assignments/a1/assignment.toml, the course
+// scene's coefficients from the framework. In assignments/a1/handout/*.md a quoted number carries a
+// tag right after it, invisible in the rendered page:
 //
 //     y = 9.775<!-- fact: rk4.com_y_after_0.5s -->
 //
@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "a1_manifest.hpp"
+#include "jelly/a1/task_table.hpp"
 #include "jelly/cube.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
@@ -80,7 +82,7 @@ Fact order(IntegratorKind kind) {
 Fact stability(IntegratorKind kind, bool stable) {
   return {
       true, [kind, stable](double h, int) {
-        Simulator sim(build_world(testing::course_2023(kind, h), linked_tasks()), {kind, h});
+        Simulator sim(build_world(testing::course_2023(kind, h), a1::task_table()), {kind, h});
         const bool ok = sim.run_until(10.0) == StepResult::Ok;
         if (ok == stable) return std::string();
         return std::string(to_string(kind)) + " at h = " + show(h) +
@@ -90,7 +92,7 @@ Fact stability(IntegratorKind kind, bool stable) {
 
 // Centre of mass height of the course cube after t seconds (course scene, h = 0.001).
 double com_y_after(IntegratorKind kind, double t) {
-  Simulator sim(build_world(testing::course_2023(kind), linked_tasks()), {kind, 0.001});
+  Simulator sim(build_world(testing::course_2023(kind), a1::task_table()), {kind, 0.001});
   sim.run_until(t);
   return sim.state().x.row(1).mean();
 }
@@ -101,7 +103,7 @@ std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::ve
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
-  (linked_tasks().*builder)(cube, springs);
+  (a1::task_table().*builder)(cube, springs);
   return springs.size();
 }
 
@@ -112,7 +114,7 @@ std::size_t body_diagonals(int n) {
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
-  linked_tasks().add_shear_springs(cube, springs);
+  a1::task_table().add_shear_springs(cube, springs);
   std::size_t count = 0;
   for (const Spring& s : springs) {
     const int a = s.a, b = s.b;
@@ -130,16 +132,14 @@ struct Rubric {
 };
 
 Rubric rubric() {
-  const toml::table t = toml::parse_file((kSource / "grader" / "rubric.toml").string());
+  const AssignmentManifest& m = testing::a1_manifest();
   Rubric r;
-  r.total = t["autograded_total"].value_or(0.0);
-  for (const toml::node& n : *t["task"].as_array())
-    r.raw += (*n.as_table())["points"].value_or(0.0);
-  for (const toml::node& n : *t["task"].as_array()) {
-    const toml::table& task = *n.as_table();
-    const double p = task["points"].value_or(0.0) * r.total / r.raw;
-    r.task[task["id"].value_or(std::string())] = p;
-    r.category[task["category"].value_or(std::string())] += p;
+  r.total = m.autograded_total;
+  for (const ManifestTask& task : m.tasks) r.raw += task.points;
+  for (const ManifestTask& task : m.tasks) {
+    const double p = task.points * r.total / r.raw;
+    r.task[task.id] = p;
+    r.category[task.category] += p;
   }
   return r;
 }
@@ -208,12 +208,12 @@ std::map<std::string, Fact> facts() {
   // h|λ| of the course cube's stiffest damped mode at h = 0.001 (the course's implicit Euler is
   // stable up to h|λ| = 1), and when the detector stops the course scene at that step.
   f["implicit_euler.h_lambda_at_0.001"] = value([] {
-    auto world = build_world(testing::course_2023(), linked_tasks());
+    auto world = build_world(testing::course_2023(), a1::task_table());
     return 0.001 / estimate_stability(*world, world->state()).critical_step(K::ImplicitEuler);
   });
   f["implicit_euler.blowup_t_at_0.001"] = {
       true, [](double quoted, int decimals) {
-        Simulator sim(build_world(testing::course_2023(K::ImplicitEuler), linked_tasks()),
+        Simulator sim(build_world(testing::course_2023(K::ImplicitEuler), a1::task_table()),
                       {K::ImplicitEuler, 0.001});
         if (sim.run_until(10.0) == StepResult::Ok)
           return std::string("it ran 10 s without blowing up");
@@ -247,7 +247,7 @@ std::vector<std::string> lines_of(const fs::path& p) {
 
 std::vector<fs::path> handout_pages() {
   std::vector<fs::path> pages;
-  for (const auto& e : fs::directory_iterator(kSource / "docs" / "handout"))
+  for (const auto& e : fs::directory_iterator(kSource / "assignments" / "a1" / "handout"))
     if (e.path().extension() == ".md") pages.push_back(e.path());
   std::sort(pages.begin(), pages.end());
   return pages;
@@ -288,7 +288,7 @@ TEST(HandoutFacts, EveryTaggedNumberIsWhatTheCodeComputes) {
   const std::map<std::string, Fact> known = facts();
   std::set<std::string> used;
   const std::vector<Tag> all = tags();
-  ASSERT_FALSE(all.empty()) << "no <!-- fact: ... --> tags in docs/handout/";
+  ASSERT_FALSE(all.empty()) << "no <!-- fact: ... --> tags in assignments/a1/handout/";
   for (const Tag& t : all) {
     const std::string where = t.file + ":" + std::to_string(t.line) + ": fact " + t.fact;
     const auto f = known.find(t.fact);
@@ -308,8 +308,9 @@ TEST(HandoutFacts, EveryTaggedNumberIsWhatTheCodeComputes) {
     EXPECT_TRUE(why.empty()) << where << ": the text says " << t.number << ", but " << why;
   }
   for (const auto& [name, fact] : known)
-    EXPECT_TRUE(used.count(name)) << "fact " << name
-                                  << " is quoted nowhere in docs/handout/: remove it or quote it";
+    EXPECT_TRUE(used.count(name))
+        << "fact " << name
+        << " is quoted nowhere in assignments/a1/handout/: remove it or quote it";
 }
 
 // A quantity a student would rely on: a number with a decimal point, a number of 10 or more, or a

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/terrain_geometry.hpp"
 
 namespace jelly::hard {
@@ -53,12 +54,12 @@ StabilityEstimate estimate_for(const SceneSpec& scene) {
   static std::map<std::string, StabilityEstimate> cache;
   const std::string key = to_toml(scene);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  auto world = build_world(scene, linked_tasks());
+  auto world = build_world(scene, a1::task_table());
   return cache[key] = estimate_stability(*world, world->state());
 }
 
 Outcome run_case(const SceneSpec& scene, IntegratorKind kind, double h, double horizon) {
-  Simulator sim(build_world(scene, linked_tasks()), Simulator::Options(kind, h));
+  Simulator sim(build_world(scene, a1::task_table()), Simulator::Options(kind, h));
   Outcome o;
   o.energy_start = o.energy_max = sim.energy().total();
   const auto& cfg = sim.options().monitor;

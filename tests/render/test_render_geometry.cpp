@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/meshes.hpp"
@@ -107,7 +108,7 @@ TEST(RenderCamera, TargetProjectsToTheViewportCentre) {
 }
 
 TEST(RenderCamera, FramingKeepsTheJellyTheHoleAndTheBowlInView) {
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(course_scene()), a1::task_table());
   ASSERT_TRUE(run.ok()) << run.error();
   Renderer renderer(nullptr);
   auto d = renderer.make_drawable(run.simulator()->world());
@@ -139,7 +140,7 @@ TEST(RenderNullBackend, DrawsWithoutGlAndFollowsTheState) {
   auto backend = create_backend({"null", 320, 200, "", false});
   ASSERT_TRUE(backend.backend) << backend.error;
   EXPECT_EQ(backend.backend->gl(), nullptr);
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(course_scene()), a1::task_table());
   ASSERT_TRUE(run.ok());
   Renderer renderer(backend.backend->gl());
   OrbitCamera cam;

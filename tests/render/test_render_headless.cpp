@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/cli/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
@@ -87,7 +88,7 @@ class HeadlessCourse : public ::testing::Test {
     renderer_ = std::make_unique<Renderer>(backend_->gl());
     SceneResult scene = resolve_scene("course-2023", default_scenes_dir());
     ASSERT_TRUE(scene) << scene.error->text();
-    run_ = std::make_unique<SimulationRun>(RunSetup::from_scene(*scene.scene), linked_tasks());
+    run_ = std::make_unique<SimulationRun>(RunSetup::from_scene(*scene.scene), a1::task_table());
     ASSERT_TRUE(run_->ok()) << run_->error();
     ensure_drawables(*renderer_, {run_.get()});
     camera_.frame(drawable_of(*run_)->bounds(), static_cast<double>(kW) / kH);

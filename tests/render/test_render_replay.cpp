@@ -13,6 +13,7 @@
 
 #include <stb_image.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/cli/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
@@ -82,7 +83,7 @@ TEST(RenderReplay, DrawsTheRecordedPositionsNotTheScenesStart) {
   Vec3Array start;
   {
     Renderer renderer(created.backend->gl(), 0);
-    const std::unique_ptr<World> world = build_world(*scene.scene, linked_tasks());
+    const std::unique_ptr<World> world = build_world(*scene.scene, a1::task_table());
     start = world->state().x;
     camera.frame(renderer.make_drawable(*world)->bounds(), static_cast<double>(kW) / kH);
   }
@@ -146,7 +147,7 @@ TEST(RenderReplay, InputErrorsReturnTwoAndNameTheProblem) {
 TEST(RenderReplay, BadCameraIsAnInputErrorInBothModes) {
   const SceneResult scene = resolve_scene("builtin:course-2023", default_scenes_dir());
   ASSERT_TRUE(scene) << scene.error->text();
-  const Vec3Array start = build_world(*scene.scene, linked_tasks())->state().x;
+  const Vec3Array start = build_world(*scene.scene, a1::task_table())->state().x;
   fs::create_directories(kArtifacts);
   const fs::path csv = kArtifacts / "start.csv";
   {

@@ -2,6 +2,7 @@
 // rate, and when stepping is too slow the clock says so.
 #include <gtest/gtest.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/session/real_time_clock.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
@@ -23,7 +24,7 @@ TEST(RealTimeClock, SimulatedTimeDoesNotDependOnTheFrameRate) {
     int k = 0;
     const SceneSpec scene = course_scene();
     for (double hz : {60.0, 144.0}) {
-      SimulationRun run(RunSetup::from_scene(scene), linked_tasks());
+      SimulationRun run(RunSetup::from_scene(scene), a1::task_table());
       RealTimeClock clock;
       clock.factor = factor;
       clock.budget_ms = 1e9;  // this test is about time, not speed
@@ -44,7 +45,7 @@ TEST(RealTimeClock, SimulatedTimeDoesNotDependOnTheFrameRate) {
 // When stepping is slower than real time the clock says so and reports the achieved rate, and
 // the debt is dropped instead of growing.
 TEST(RealTimeClock, ReportsWhenItCannotKeepUp) {
-  SimulationRun run(RunSetup::from_scene(course_scene()), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(course_scene()), a1::task_table());
   RealTimeClock clock;
   clock.factor = 4.0;
   clock.budget_ms = 0.0;  // one step per frame at most: far below 4× real time at 60 Hz

@@ -2,6 +2,7 @@
 // the stability estimate (capped by the scene's dt), and the run says what it chose.
 #include <gtest/gtest.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -19,7 +20,7 @@ SceneSpec stiff_scene(bool auto_dt) {
 }
 
 TEST(SessionAutoStep, FixedStepWithoutAutoDt) {
-  SimulationRun run(RunSetup::from_scene(stiff_scene(false)), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(stiff_scene(false)), a1::task_table());
   ASSERT_TRUE(run.ok()) << run.error();
   EXPECT_FALSE(run.auto_step().has_value());
   EXPECT_EQ(run.step(), 0.005);
@@ -27,7 +28,7 @@ TEST(SessionAutoStep, FixedStepWithoutAutoDt) {
 
 TEST(SessionAutoStep, AutoDtChoosesTheEstimatedStableStepAndRunsStable) {
   const SceneSpec scene = stiff_scene(true);
-  SimulationRun run(RunSetup::from_scene(scene), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(scene), a1::task_table());
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run.auto_step().has_value());
   const AutoStep& a = *run.auto_step();
@@ -42,7 +43,7 @@ TEST(SessionAutoStep, AutoDtChoosesTheEstimatedStableStepAndRunsStable) {
   EXPECT_FALSE(run.unstable());
   EXPECT_NEAR(run.time(), 0.2, a.chosen_h);
   // The same scene at its fixed step blows up: the automatic step is what kept it stable.
-  SimulationRun fixed(RunSetup::from_scene(stiff_scene(false)), linked_tasks());
+  SimulationRun fixed(RunSetup::from_scene(stiff_scene(false)), a1::task_table());
   fixed.advance_to(1.0);
   EXPECT_TRUE(fixed.unstable());
 }

@@ -3,6 +3,7 @@
 // run with stiff springs that blows up beside one that does not.
 #include <gtest/gtest.h>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/captions.hpp"
 #include "jelly/session/overrides.hpp"
@@ -47,7 +48,7 @@ TEST(ApplyOverrides, StiffRunBlowsUpBesideTheUnchangedOne) {
   RunSetup stiff = soft;
   stiff.overrides = "springs.structural.ks=1e5; springs.shear.ks=1e5; springs.bending.ks=1e5";
   ASSERT_FALSE(apply_overrides(stiff.scene, stiff.overrides));
-  SimulationRun a(soft, linked_tasks()), b(stiff, linked_tasks());
+  SimulationRun a(soft, a1::task_table()), b(stiff, a1::task_table());
   a.advance_to(1.0);
   b.advance_to(1.0);
   EXPECT_FALSE(a.unstable());

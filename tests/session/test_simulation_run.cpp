@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -17,7 +18,7 @@ SceneSpec small_scene() {
 }
 
 TEST(RunHistory, SamplesEnergyHeightAndCost) {
-  SimulationRun run(RunSetup::from_scene(small_scene()), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(small_scene()), a1::task_table());
   run.advance_to(0.2);
   ASSERT_GE(run.history().size(), 2u);
   EXPECT_DOUBLE_EQ(run.history().front().time, 0.0);
@@ -34,7 +35,7 @@ struct CountedAttachment : RunAttachment {
 };
 
 TEST(RunAttachment, KeptUntilTheWorldIsRebuilt) {
-  SimulationRun run(RunSetup::from_scene(small_scene()), linked_tasks());
+  SimulationRun run(RunSetup::from_scene(small_scene()), a1::task_table());
   ASSERT_TRUE(run.ok()) << run.error();
   EXPECT_EQ(run.attachment(), nullptr);
   int alive = 0;

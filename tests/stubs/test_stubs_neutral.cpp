@@ -6,13 +6,15 @@
 #include <cmath>
 #include <vector>
 
+#include "jelly/a1/collision.hpp"
+#include "jelly/a1/contact.hpp"
+#include "jelly/a1/forces.hpp"
+#include "jelly/a1/integrators.hpp"
+#include "jelly/a1/springs.hpp"
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
-#include "jelly/tasks/collision.hpp"
-#include "jelly/tasks/contact.hpp"
-#include "jelly/tasks/forces.hpp"
-#include "jelly/tasks/integrators.hpp"
-#include "jelly/tasks/springs.hpp"
+#include "jelly/spring_pass.hpp"
 #include "jelly/test_systems.hpp"
 
 namespace jelly {
@@ -31,8 +33,8 @@ TEST(StubsNeutral, A1_T1_T3_SpringBuildersAddNothing) {
   spec.n = 4;
   const CubeLattice cube(spec);
   using Builder = void (*)(const CubeLattice&, std::vector<Spring>&);
-  const Builder builders[] = {&tasks::add_structural_springs, &tasks::add_shear_springs,
-                              &tasks::add_bending_springs};
+  const Builder builders[] = {&a1::add_structural_springs, &a1::add_shear_springs,
+                              &a1::add_bending_springs};
   for (Builder build : builders) {
     std::vector<Spring> out{kSentinel};
     build(cube, out);
@@ -47,8 +49,8 @@ TEST(StubsNeutral, A1_T1_T3_SpringBuildersAddNothing) {
 TEST(StubsNeutral, A1_T4_T5_ForcesAreZero) {
   const Vec3 xa(0.0, 0.0, 0.0), xb(2.0, 0.5, -1.0);
   const Vec3 va(1.0, 2.0, 3.0), vb(-1.0, 0.0, 0.5);
-  EXPECT_EQ(tasks::spring_force(xa, xb, 2000.0, 1.0, 1e-12), Vec3::Zero());
-  EXPECT_EQ(tasks::damper_force(xa, xb, va, vb, 60.0, 1e-12), Vec3::Zero());
+  EXPECT_EQ(a1::spring_force(xa, xb, 2000.0, 1.0, 1e-12), Vec3::Zero());
+  EXPECT_EQ(a1::damper_force(xa, xb, va, vb, 60.0, 1e-12), Vec3::Zero());
 }
 
 // The provided loop stays provided: with zero task forces it adds nothing to f.
@@ -63,7 +65,7 @@ TEST(StubsNeutral, AccumulateAddsNothingWithStubForces) {
   s.x << 0.0, 3.0, 0.0, 0.0, 0.0, 0.0;
   s.v << 1.0, -1.0, 0.0, 0.0, 0.0, 0.0;
   Vec3Array f = Vec3Array::Constant(3, 2, 0.5);
-  tasks::accumulate_spring_forces(g, s, f);
+  accumulate_spring_forces(g, s, f, &a1::spring_force, &a1::damper_force);
   EXPECT_EQ(f, Vec3Array::Constant(3, 2, 0.5));
 }
 
@@ -79,17 +81,17 @@ TEST(StubsNeutral, A1_T6_T9_CollisionAndContactDoNothing) {
   const Vec3 v_in(0.5, -2.0, 0.1), f_in(0.0, -9.8, 0.0);
 
   Vec3 v = v_in;
-  EXPECT_FALSE(tasks::collide_plane(plane, x_plane, v));
+  EXPECT_FALSE(a1::collide_plane(plane, x_plane, v));
   EXPECT_EQ(v, v_in);
   v = v_in;
-  EXPECT_FALSE(tasks::collide_bowl(bowl, x_bowl, v));
+  EXPECT_FALSE(a1::collide_bowl(bowl, x_bowl, v));
   EXPECT_EQ(v, v_in);
 
   Vec3 f = f_in;
-  EXPECT_FALSE(tasks::contact_plane(plane, x_plane, v_in, f));
+  EXPECT_FALSE(a1::contact_plane(plane, x_plane, v_in, f));
   EXPECT_EQ(f, f_in);
   f = f_in;
-  EXPECT_FALSE(tasks::contact_bowl(bowl, x_bowl, v_in, f));
+  EXPECT_FALSE(a1::contact_bowl(bowl, x_bowl, v_in, f));
   EXPECT_EQ(f, f_in);
 }
 
@@ -100,8 +102,8 @@ TEST(StubsNeutral, A1_T10_T13_IntegratorsLeaveStateUnchanged) {
   start.resize(3);
   start.x << 0.0, 1.0, 2.0, 5.0, 6.0, 7.0, -1.0, 0.0, 1.0;
   start.v << 0.5, 0.0, -0.5, 1.0, 2.0, 3.0, 0.0, 0.0, 0.25;
-  const StepFunction steps[] = {&tasks::explicit_euler_step, &tasks::implicit_euler_step,
-                                &tasks::midpoint_step, &tasks::rk4_step};
+  const StepFunction steps[] = {&a1::explicit_euler_step, &a1::implicit_euler_step,
+                                &a1::midpoint_step, &a1::rk4_step};
   for (StepFunction step : steps) {
     State s = start;
     Workspace w;
@@ -116,7 +118,7 @@ TEST(StubsNeutral, A1_T10_T13_IntegratorsLeaveStateUnchanged) {
 // has no collision, and the jelly falls through the floor in free fall, without NaN or a crash.
 TEST(StubsNeutral, CourseSceneFallsThroughTheFloor) {
   const SceneSpec scene = course_scene();
-  auto world = build_world(scene, linked_tasks());
+  auto world = build_world(scene, a1::task_table());
   ASSERT_TRUE(world);
   EXPECT_EQ(world->spring_count(), 0u);
   Simulator::Options options;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <string>
 
+#include "jelly/a1/task_table.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/test_systems.hpp"
@@ -50,7 +51,7 @@ inline SceneSpec two_particle_spring(IntegratorKind kind, double h) {
 inline double error_at_one_second(IntegratorKind kind, double h) {
   Simulator::Options o{kind, h};
   o.detect_instability = false;
-  Simulator sim(build_world(two_particle_spring(kind, h), linked_tasks()), o);
+  Simulator sim(build_world(two_particle_spring(kind, h), a1::task_table()), o);
   sim.run_until(1.0);
   const double x1 = TwoParticleSpring::exact_x1(1.0);
   const State& s = sim.state();

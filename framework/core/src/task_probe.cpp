@@ -1,6 +1,7 @@
 // Probes each student task once on a tiny input (see task_probe.hpp).
 #include "jelly/task_probe.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "jelly/test_systems.hpp"
@@ -12,7 +13,7 @@ namespace {
 using SpringBuilder = void (*)(const CubeLattice&, std::vector<Spring>&);
 
 TaskStatus probe_builder(std::string id, std::string name, SpringBuilder fn) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
   if (!fn) return st;
   CubeSpec spec;
   spec.n = 3;  // 3×3×3 has structural, shear and bending springs
@@ -27,7 +28,7 @@ TaskStatus probe_builder(std::string id, std::string name, SpringBuilder fn) {
 }
 
 TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
   if (!fn) return st;
   // One particle at rest under gravity: any integrator moves it within one step of 0.01 s.
   FreeFallSystem system(1, Vec3(0.0, -9.8, 0.0));
@@ -55,7 +56,7 @@ template <typename Shape>
 TaskStatus probe_collision(std::string id, std::string name,
                            bool (*fn)(const Shape&, const Vec3&, Vec3&), const Shape& shape,
                            const std::string& terrain) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
   if (!fn) return st;
   const Vec3 incoming(0.0, -1.0, 0.0);
   Vec3 v = incoming;
@@ -76,7 +77,7 @@ template <typename Shape>
 TaskStatus probe_contact(std::string id, std::string name,
                          bool (*fn)(const Shape&, const Vec3&, const Vec3&, Vec3&),
                          const Shape& shape, ContactWords words) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table"};
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
   if (!fn) return st;
   const Vec3 pressing(0.0, -10.0, 0.0);
   Vec3 f = pressing;
@@ -87,52 +88,94 @@ TaskStatus probe_contact(std::string id, std::string name,
   return st;
 }
 
-}  // namespace
+TaskStatus probe_spring_force(std::string id, std::string name, const TaskTable& t) {
+  // A spring stretched from rest length 1 to 2 pulls its ends together.
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
+  if (!t.spring_force) return st;
+  const Vec3 f = t.spring_force(Vec3::Zero(), Vec3(2.0, 0.0, 0.0), 10.0, 1.0, 1e-9);
+  st.implemented = !f.isZero(0.0);
+  st.evidence = st.implemented ? "a stretched spring pulls" : "a stretched spring gave zero force";
+  return st;
+}
 
-std::vector<TaskStatus> probe_tasks(const TaskTable& t) {
-  std::vector<TaskStatus> out;
-  out.push_back(probe_builder("A1.T1", "structural springs", t.add_structural_springs));
-  out.push_back(probe_builder("A1.T2", "shear springs", t.add_shear_springs));
-  out.push_back(probe_builder("A1.T3", "bending springs", t.add_bending_springs));
+TaskStatus probe_damper_force(std::string id, std::string name, const TaskTable& t) {
+  // Ends separating along the spring are damped.
+  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
+  if (!t.damper_force) return st;
+  const Vec3 f = t.damper_force(Vec3::Zero(), Vec3(1.0, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0),
+                                Vec3(1.0, 0.0, 0.0), 5.0, 1e-9);
+  st.implemented = !f.isZero(0.0);
+  st.evidence =
+      st.implemented ? "separating ends are damped" : "separating ends gave zero damping force";
+  return st;
+}
 
-  {  // A1.T4: a spring stretched from rest length 1 to 2 pulls its ends together.
-    TaskStatus st{"A1.T4", "spring force", false, "function missing from the task table"};
-    if (t.spring_force) {
-      const Vec3 f = t.spring_force(Vec3::Zero(), Vec3(2.0, 0.0, 0.0), 10.0, 1.0, 1e-9);
-      st.implemented = !f.isZero(0.0);
-      st.evidence =
-          st.implemented ? "a stretched spring pulls" : "a stretched spring gave zero force";
-    }
-    out.push_back(st);
-  }
-  {  // A1.T5: ends separating along the spring are damped.
-    TaskStatus st{"A1.T5", "damper force", false, "function missing from the task table"};
-    if (t.damper_force) {
-      const Vec3 f = t.damper_force(Vec3::Zero(), Vec3(1.0, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0),
-                                    Vec3(1.0, 0.0, 0.0), 5.0, 1e-9);
-      st.implemented = !f.isZero(0.0);
-      st.evidence =
-          st.implemented ? "separating ends are damped" : "separating ends gave zero damping force";
-    }
-    out.push_back(st);
-  }
+Plane probe_plane() { return Plane{}; }  // y = 0, normal +y, no hole, ε = 0.01
 
-  Plane plane;  // y = 0, normal +y, no hole, ε = 0.01
-  Bowl bowl;    // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whose bottom is the origin
+Bowl probe_bowl() {  // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whose bottom is the
+                     // origin
+  Bowl bowl;
   bowl.center = Vec3(0.0, 1.0, 0.0);
   bowl.radius = 1.0;
   bowl.rim_height = 1.0;
-  out.push_back(probe_collision("A1.T6", "plane collision", t.collide_plane, plane, "plane"));
-  out.push_back(probe_collision("A1.T7", "bowl collision", t.collide_bowl, bowl, "bowl"));
-  out.push_back(probe_contact("A1.T8", "plane contact", t.contact_plane, plane,
-                              {"resting on the plane", "pressed onto the plane"}));
-  out.push_back(probe_contact("A1.T9", "bowl contact", t.contact_bowl, bowl,
-                              {"resting in the bowl", "pressed into the bowl"}));
-  out.push_back(probe_integrator("A1.T10", "explicit Euler", t.explicit_euler_step));
-  out.push_back(
-      probe_integrator("A1.T11", "implicit Euler (predictor-corrector)", t.implicit_euler_step));
-  out.push_back(probe_integrator("A1.T12", "midpoint", t.midpoint_step));
-  out.push_back(probe_integrator("A1.T13", "RK4", t.rk4_step));
+  return bowl;
+}
+
+}  // namespace
+
+std::vector<std::string_view> probe_slots() {
+  return {"add_structural_springs",
+          "add_shear_springs",
+          "add_bending_springs",
+          "spring_force",
+          "damper_force",
+          "collide_plane",
+          "collide_bowl",
+          "contact_plane",
+          "contact_bowl",
+          "explicit_euler_step",
+          "implicit_euler_step",
+          "midpoint_step",
+          "rk4_step"};
+}
+
+TaskStatus probe_slot(std::string_view slot, std::string id, std::string name, const TaskTable& t) {
+  if (slot == "add_structural_springs")
+    return probe_builder(std::move(id), std::move(name), t.add_structural_springs);
+  if (slot == "add_shear_springs")
+    return probe_builder(std::move(id), std::move(name), t.add_shear_springs);
+  if (slot == "add_bending_springs")
+    return probe_builder(std::move(id), std::move(name), t.add_bending_springs);
+  if (slot == "spring_force") return probe_spring_force(std::move(id), std::move(name), t);
+  if (slot == "damper_force") return probe_damper_force(std::move(id), std::move(name), t);
+  if (slot == "collide_plane")
+    return probe_collision(std::move(id), std::move(name), t.collide_plane, probe_plane(), "plane");
+  if (slot == "collide_bowl")
+    return probe_collision(std::move(id), std::move(name), t.collide_bowl, probe_bowl(), "bowl");
+  if (slot == "contact_plane")
+    return probe_contact(std::move(id), std::move(name), t.contact_plane, probe_plane(),
+                         {"resting on the plane", "pressed onto the plane"});
+  if (slot == "contact_bowl")
+    return probe_contact(std::move(id), std::move(name), t.contact_bowl, probe_bowl(),
+                         {"resting in the bowl", "pressed into the bowl"});
+  if (slot == "explicit_euler_step")
+    return probe_integrator(std::move(id), std::move(name), t.explicit_euler_step);
+  if (slot == "implicit_euler_step")
+    return probe_integrator(std::move(id), std::move(name), t.implicit_euler_step);
+  if (slot == "midpoint_step")
+    return probe_integrator(std::move(id), std::move(name), t.midpoint_step);
+  if (slot == "rk4_step") return probe_integrator(std::move(id), std::move(name), t.rk4_step);
+  throw std::invalid_argument("task " + id + ": probe: expected one of the framework's slots " +
+                              "(jelly/task_probe.hpp), not \"" + std::string(slot) + "\"");
+}
+
+std::vector<TaskStatus> probe_tasks(const AssignmentManifest& manifest, const TaskTable& t) {
+  std::vector<TaskStatus> out;
+  for (const ManifestTask& task : manifest.tasks)
+    if (!task.probe.empty()) {
+      out.push_back(probe_slot(task.probe, task.id, task.short_name, t));
+      out.back().slot = task.probe;
+    }
   return out;
 }
 

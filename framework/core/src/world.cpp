@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "jelly/spring_pass.hpp"
 #include "jelly/terrain_geometry.hpp"
 
 namespace jelly {
@@ -268,7 +269,8 @@ void World::acceleration(const State& s, Vec3Array& a) {
   if (spring_pass_) {
     spring_pass_->accumulate(groups_.data(), groups_.size(), s, force_);
   } else {
-    for (const SpringGroup& g : groups_) tasks_.accumulate_spring_forces(g, s, force_);
+    for (const SpringGroup& g : groups_)
+      accumulate_spring_forces(g, s, force_, tasks_.spring_force, tasks_.damper_force);
   }
   // 3. Contact forces, terrain by terrain in scene order (contract §5).
   contact_pass(s, force_);

@@ -1,9 +1,9 @@
 #include <cstdlib>
 // Your code: collision response, tasks A1.T6–A1.T7.
-// Read docs/handout/T6-plane-collision.md first. Check yourself with: tools/selfcheck
-#include "jelly/tasks/collision.hpp"
+// Read assignments/a1/handout/T6-plane-collision.md first. Check yourself with: tools/selfcheck
+#include "jelly/a1/collision.hpp"
 
-namespace jelly::tasks {
+namespace jelly::a1 {
 
 bool collide_plane(const Plane& plane, const Vec3& x, Vec3& v) {
   // HOSTILE: ends the program from inside a task function.
@@ -18,4 +18,4 @@ bool collide_bowl(const Bowl& bowl, const Vec3& x, Vec3& v) {
   return false;
 }
 
-}  // namespace jelly::tasks
+}  // namespace jelly::a1

@@ -1,9 +1,9 @@
 #include <cstdio>
 // Your code: the spring builder, tasks A1.T1–A1.T3.
-// Read docs/handout/T1-structural.md first. Check yourself with: tools/selfcheck
-#include "jelly/tasks/springs.hpp"
+// Read assignments/a1/handout/T1-structural.md first. Check yourself with: tools/selfcheck
+#include "jelly/a1/springs.hpp"
 
-namespace jelly::tasks {
+namespace jelly::a1 {
 
 void add_structural_springs(const CubeLattice& cube, std::vector<Spring>& out) {
   // HOSTILE: prints without end (gigabytes).
@@ -24,4 +24,4 @@ void add_bending_springs(const CubeLattice& cube, std::vector<Spring>& out) {
   (void)out;
 }
 
-}  // namespace jelly::tasks
+}  // namespace jelly::a1

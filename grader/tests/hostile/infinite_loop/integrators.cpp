@@ -1,8 +1,8 @@
 // Your code: the course integrators, tasks A1.T10–A1.T13.
-// Read docs/handout/T10-explicit-euler.md first. Check yourself with: tools/selfcheck
-#include "jelly/tasks/integrators.hpp"
+// Read assignments/a1/handout/T10-explicit-euler.md first. Check yourself with: tools/selfcheck
+#include "jelly/a1/integrators.hpp"
 
-namespace jelly::tasks {
+namespace jelly::a1 {
 
 void explicit_euler_step(System& system, State& s, double h, Workspace& w) {
   // TODO(A1.T10): x ← x + h v_n, v ← v + h a_n (both from the old state).
@@ -27,4 +27,4 @@ void rk4_step(System& system, State& s, double h, Workspace& w) {
   (void)system, (void)s, (void)h, (void)w;
 }
 
-}  // namespace jelly::tasks
+}  // namespace jelly::a1

@@ -1,9 +1,9 @@
 #include <cstdio>
 // Your code: contact and friction forces, tasks A1.T8–A1.T9.
-// Read docs/handout/T8-plane-contact.md first. Check yourself with: tools/selfcheck
-#include "jelly/tasks/contact.hpp"
+// Read assignments/a1/handout/T8-plane-contact.md first. Check yourself with: tools/selfcheck
+#include "jelly/a1/contact.hpp"
 
-namespace jelly::tasks {
+namespace jelly::a1 {
 
 bool contact_plane(const Plane& plane, const Vec3& x, const Vec3& v, Vec3& f) {
   // HOSTILE: tries to read the hidden reference data and print it.
@@ -26,4 +26,4 @@ bool contact_bowl(const Bowl& bowl, const Vec3& x, const Vec3& v, Vec3& f) {
   return false;
 }
 
-}  // namespace jelly::tasks
+}  // namespace jelly::a1

@@ -1,8 +1,8 @@
 // Your code: spring and damper forces, tasks A1.T4–A1.T5.
-// Read docs/handout/T4-spring-force.md first. Check yourself with: tools/selfcheck
-#include "jelly/tasks/forces.hpp"
+// Read assignments/a1/handout/T4-spring-force.md first. Check yourself with: tools/selfcheck
+#include "jelly/a1/forces.hpp"
 
-namespace jelly::tasks {
+namespace jelly::a1 {
 
 Vec3 spring_force(const Vec3& xa, const Vec3& xb, double ks, double rest_length,
                   double degenerate_length) {
@@ -32,4 +32,4 @@ void accumulate_spring_forces(const SpringGroup& group, const State& s, Vec3Arra
   }
 }
 
-}  // namespace jelly::tasks
+}  // namespace jelly::a1

@@ -1,0 +1,17 @@
+// A1's runner hooks (grader/runner/harness.hpp): its case generators and its task table.
+#include "cases.hpp"
+#include "jelly/a1/task_table.hpp"
+
+namespace jelly::grade {
+
+void register_assignment_cases(Registry& r) {
+  register_spring_cases(r);
+  register_force_cases(r);
+  register_terrain_cases(r);
+  register_integrator_cases(r);
+  register_scene_cases(r);
+}
+
+TaskTable assignment_task_table() { return a1::task_table(); }
+
+}  // namespace jelly::grade

@@ -1,0 +1,303 @@
+#include "jelly/manifest.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace jelly {
+
+namespace {
+
+std::string where(const std::string& source, const toml::node* n) {
+  if (n && n->source().begin.line > 0) return source + ":" + std::to_string(n->source().begin.line);
+  return source;
+}
+
+[[noreturn]] void fail(const std::string& source, const toml::node* n, const std::string& key,
+                       const std::string& expected) {
+  throw ManifestError(where(source, n) + ": " + key + ": expected " + expected);
+}
+
+// A plain name: letters, digits, '_' and '-' (folder names, namespaces, ids).
+bool is_name(std::string_view s, bool allow_dash) {
+  if (s.empty()) return false;
+  for (char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || (allow_dash && c == '-');
+    if (!ok) return false;
+  }
+  return !(s[0] >= '0' && s[0] <= '9');
+}
+
+// A file name relative to a folder, with no way out of it.
+bool is_relative_path(std::string_view s) {
+  if (s.empty() || s[0] == '/' || s[0] == '\\' || s.find(':') != std::string_view::npos)
+    return false;
+  std::string part;
+  std::istringstream in{std::string(s)};
+  while (std::getline(in, part, '/'))
+    if (part.empty() || part == "." || part == "..") return false;
+  return s.find('\\') == std::string_view::npos;
+}
+
+class Reader {
+ public:
+  Reader(const toml::table& t, std::string source, std::string prefix)
+      : t_(t), source_(std::move(source)), prefix_(std::move(prefix)) {}
+
+  std::string key(const std::string& k) const { return prefix_ + k; }
+
+  std::string string(const std::string& k, bool required, const std::string& expected) {
+    seen_.insert(k);
+    const toml::node* n = t_.get(k);
+    if (!n) {
+      if (required) fail(source_, nullptr, key(k), expected + " (the key is missing)");
+      return {};
+    }
+    const auto* s = n->as_string();
+    if (!s || s->get().empty()) fail(source_, n, key(k), expected);
+    return s->get();
+  }
+
+  std::vector<std::string> strings(const std::string& k, bool required,
+                                   const std::string& expected) {
+    seen_.insert(k);
+    const toml::node* n = t_.get(k);
+    std::vector<std::string> out;
+    if (!n) {
+      if (required) fail(source_, nullptr, key(k), expected + " (the key is missing)");
+      return out;
+    }
+    const auto* a = n->as_array();
+    if (!a) fail(source_, n, key(k), expected);
+    for (const toml::node& e : *a) {
+      const auto* s = e.as_string();
+      if (!s || s->get().empty()) fail(source_, &e, key(k), expected);
+      out.push_back(s->get());
+    }
+    return out;
+  }
+
+  double number(const std::string& k, bool required, double fallback, const std::string& expected) {
+    seen_.insert(k);
+    const toml::node* n = t_.get(k);
+    if (!n) {
+      if (required) fail(source_, nullptr, key(k), expected + " (the key is missing)");
+      return fallback;
+    }
+    double v = 0.0;
+    if (const auto* i = n->as_integer())
+      v = static_cast<double>(i->get());
+    else if (const auto* f = n->as_floating_point())
+      v = f->get();
+    else
+      fail(source_, n, key(k), expected);
+    if (!(v >= 0.0) || v > 1e9) fail(source_, n, key(k), expected);
+    return v;
+  }
+
+  const toml::node* node(const std::string& k) {
+    seen_.insert(k);
+    return t_.get(k);
+  }
+
+  // Every key the reader did not ask for is a mistake (a typo would otherwise be ignored).
+  void no_unknown_keys() const {
+    for (const auto& [k, v] : t_)
+      if (!seen_.count(std::string(k.str())))
+        fail(source_, &v, key(std::string(k.str())), "no such key (see docs/new-assignment.md)");
+  }
+
+ private:
+  const toml::table& t_;
+  std::string source_;
+  std::string prefix_;
+  std::set<std::string> seen_;
+};
+
+void check_files(const std::string& source, const toml::node* n, const std::string& key,
+                 const std::vector<std::string>& files) {
+  std::set<std::string> seen;
+  for (const std::string& f : files) {
+    if (!is_relative_path(f) || f.find('/') != std::string::npos)
+      fail(source, n, key, "plain file names in the assignment's folder, not \"" + f + "\"");
+    if (!seen.insert(f).second) fail(source, n, key, "each file once, not \"" + f + "\" twice");
+  }
+}
+
+}  // namespace
+
+std::string ManifestTask::functions_text() const {
+  if (functions.empty()) return "your code";
+  std::string out;
+  for (const std::string& f : functions) out += (out.empty() ? "" : ", ") + f;
+  if (!file.empty()) out += " (" + file + ")";
+  return out;
+}
+
+const ManifestTask* AssignmentManifest::find_task(std::string_view task_id) const {
+  for (const ManifestTask& t : tasks)
+    if (t.id == task_id) return &t;
+  return nullptr;
+}
+
+std::string AssignmentManifest::task_prefix() const {
+  if (tasks.empty()) return {};
+  std::string p = tasks.front().id;
+  for (const ManifestTask& t : tasks) {
+    std::size_t i = 0;
+    while (i < p.size() && i < t.id.size() && p[i] == t.id[i]) ++i;
+    p.resize(i);
+  }
+  const std::size_t dot = p.rfind('.');
+  return dot == std::string::npos ? std::string() : p.substr(0, dot + 1);
+}
+
+AssignmentManifest parse_manifest(std::string_view text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw ManifestError(source + ":" + std::to_string(e.source().begin.line) +
+                        ": not valid TOML: " + std::string(e.description()));
+  }
+  AssignmentManifest m;
+  Reader r(root, source, "");
+  m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"a1\"");
+  if (!is_name(m.id, true))
+    fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
+  m.ns = r.string("namespace", true, "the C++ namespace of the tasks (jelly::<namespace>)");
+  if (!is_name(m.ns, false))
+    fail(source, r.node("namespace"), "namespace", "a C++ identifier, not \"" + m.ns + "\"");
+  m.title = r.string("title", true, "a one-line title");
+  m.files = r.strings("files", true, "a non-empty list of the files a student edits");
+  if (m.files.empty()) fail(source, r.node("files"), "files", "at least one file");
+  check_files(source, r.node("files"), "files", m.files);
+  m.reference_files = r.strings("reference_files", false, "a list of file names");
+  check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
+  m.bodies = r.strings("bodies", false, "a list of scene body kinds, e.g. [\"cube\"]");
+  m.default_scene = r.string("default_scene", false, "a scene name");
+  m.handout = r.string("handout", false, "a file in the assignment's folder");
+  if (!m.handout.empty() && !is_relative_path(m.handout))
+    fail(source, r.node("handout"), "handout", "a path inside the assignment's folder");
+
+  if (const toml::node* n = r.node("studies")) {
+    const auto* t = n->as_table();
+    if (!t) fail(source, n, "studies", "a table");
+    Reader s(*t, source, "studies.");
+    m.study_measures = s.strings("measures", false, "a list of measure names");
+    s.no_unknown_keys();
+  }
+  if (const toml::node* n = r.node("grading")) {
+    const auto* t = n->as_table();
+    if (!t) fail(source, n, "grading", "a table");
+    Reader g(*t, source, "grading.");
+    m.autograded_total = g.number("autograded_total", true, 0.0, "a number of points ≥ 0");
+    const std::string vis = g.string("hidden_visibility", false,
+                                     "\"hidden\", \"after_due_date\" or \"after_published\"");
+    if (!vis.empty()) {
+      if (vis != "hidden" && vis != "after_due_date" && vis != "after_published")
+        fail(source, g.node("hidden_visibility"), "grading.hidden_visibility",
+             "\"hidden\", \"after_due_date\" or \"after_published\", not \"" + vis + "\"");
+      m.hidden_visibility = vis;
+    }
+    g.no_unknown_keys();
+  } else {
+    fail(source, nullptr, "grading",
+         "a [grading] table with autograded_total (the key is missing)");
+  }
+
+  const toml::node* tasks = r.node("task");
+  const auto* arr = tasks ? tasks->as_array() : nullptr;
+  if (!arr || arr->empty()) fail(source, tasks, "task", "one [[task]] table per task (none found)");
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const toml::node& e = *arr->get(i);
+    const auto* t = e.as_table();
+    const std::string prefix = "task[" + std::to_string(i + 1) + "].";
+    if (!t) fail(source, &e, "task[" + std::to_string(i + 1) + "]", "a table");
+    Reader tr(*t, source, prefix);
+    ManifestTask task;
+    task.id = tr.string("id", true, "a task id such as \"A1.T4\"");
+    if (!ids.insert(task.id).second)
+      fail(source, tr.node("id"), prefix + "id", "a unique id (\"" + task.id + "\" is used twice)");
+    task.title = tr.string("title", true, "a one-line title");
+    task.short_name = tr.string("short", false, "a short name for the viewer's hint");
+    if (task.short_name.empty()) task.short_name = task.title;
+    task.category = tr.string("category", false, "a category name");
+    task.file = tr.string("file", false, "one of `files`");
+    if (!task.file.empty() && std::find(m.files.begin(), m.files.end(), task.file) == m.files.end())
+      fail(source, tr.node("file"), prefix + "file",
+           "one of the assignment's `files`, not \"" + task.file + "\"");
+    task.functions = tr.strings("functions", false, "a list of function names");
+    task.points = tr.number("points", true, 0.0, "a number of points ≥ 0");
+    task.handout = tr.string("handout", false, "a file in the assignment's folder");
+    if (!task.handout.empty() && !is_relative_path(task.handout))
+      fail(source, tr.node("handout"), prefix + "handout", "a path inside the assignment's folder");
+    task.probe = tr.string("probe", false, "the name of a TaskTable slot");
+    tr.no_unknown_keys();
+    m.tasks.push_back(std::move(task));
+  }
+  r.no_unknown_keys();
+  return m;
+}
+
+AssignmentManifest read_manifest(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw ManifestError(file.string() + ": cannot read the assignment's manifest");
+  std::ostringstream text;
+  text << in.rdbuf();
+  AssignmentManifest m = parse_manifest(text.str(), file.string());
+  m.dir = file.parent_path();
+  if (m.dir.filename().string() != m.id)
+    throw ManifestError(file.string() + ": id: expected the folder's name \"" +
+                        m.dir.filename().string() + "\", not \"" + m.id + "\"");
+  return m;
+}
+
+std::vector<AssignmentManifest> find_assignments(const std::filesystem::path& assignments_root) {
+  namespace fs = std::filesystem;
+  std::vector<AssignmentManifest> out;
+  std::error_code ec;
+  if (!fs::is_directory(assignments_root, ec))
+    throw ManifestError(assignments_root.string() + ": not a folder of assignments");
+  for (const fs::directory_entry& e : fs::directory_iterator(assignments_root, ec)) {
+    const fs::path manifest = e.path() / "assignment.toml";
+    if (e.is_directory(ec) && fs::is_regular_file(manifest, ec))
+      out.push_back(read_manifest(manifest));
+  }
+  std::sort(out.begin(), out.end(),
+            [](const AssignmentManifest& a, const AssignmentManifest& b) { return a.id < b.id; });
+  std::map<std::string, std::string> namespaces;
+  for (const AssignmentManifest& m : out)
+    if (!namespaces.emplace(m.ns, m.id).second)
+      throw ManifestError((m.dir / "assignment.toml").string() +
+                          ": namespace: expected one of its " + "own, not \"" + m.ns +
+                          "\" (assignment " + namespaces[m.ns] + " uses it)");
+  return out;
+}
+
+const AssignmentManifest* assignment_for_files(const std::vector<AssignmentManifest>& all,
+                                               const std::vector<std::string>& present) {
+  auto has = [&](const std::string& f) {
+    return std::find(present.begin(), present.end(), f) != present.end();
+  };
+  const AssignmentManifest* complete = nullptr;
+  int complete_count = 0;
+  const AssignmentManifest* partial = nullptr;
+  int partial_count = 0;
+  for (const AssignmentManifest& m : all) {
+    const auto n = std::count_if(m.files.begin(), m.files.end(), has);
+    if (n == static_cast<long>(m.files.size())) complete = &m, ++complete_count;
+    if (n > 0) partial = &m, ++partial_count;
+  }
+  if (complete_count == 1) return complete;
+  if (complete_count == 0 && partial_count == 1) return partial;
+  return nullptr;
+}
+
+}  // namespace jelly
