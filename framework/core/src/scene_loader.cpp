@@ -1,13 +1,14 @@
 // Scene files: reading (TOML via toml++), validating and writing back (`--set`: params.cpp).
 //
-// Every key is looked up in the declaration table (param_table.hpp): a key that is not declared
-// is an error (with a "did you mean" when a declared key is close), and every value is converted
-// and range-checked by its declaration. The first error (in file order) is returned with the
-// file, the dotted key, and the line and column toml++ reports. Nothing here throws, exits or
-// writes a file.
+// Every key is looked up in the declaration table (param_table.hpp) through its key walk: a key
+// that is not declared is an error (with a "did you mean" when a declared key is close), and every
+// value is converted by its row's kind and checked by the row's checks. The first error (in file
+// order) is returned with the file, the dotted key, and the line and column toml++ reports.
+// Nothing here throws, exits or writes a file.
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -298,11 +299,7 @@ class Loader {
     where_[b.key] = pos_of(n);
     auto v = convert(*b.decl, b.key, n);
     if (!v) return false;
-    if (auto msg = check_value(*b.decl, *v)) {
-      error(b.key, pos_of(n), *msg);
-      return false;
-    }
-    if (auto msg = check_in_scene(b, spec_, *v)) {
+    if (auto msg = check_row(b, spec_, *v)) {
       error(b.key, pos_of(n), *msg);
       return false;
     }
@@ -316,7 +313,7 @@ class Loader {
     where_[key] = pos_of(n);
     auto v = convert(*b->decl, key, n);
     if (v) {
-      if (auto msg = check_value(*b->decl, *v)) {
+      if (auto msg = check_row(*b, spec_, *v)) {
         error(key, pos_of(n), *msg);
         return std::nullopt;
       }
@@ -346,24 +343,40 @@ class Loader {
     for (const auto& [b, node] : found) apply(b, *node);
   }
 
-  /// The keys of the declaration rows that apply, under `prefix`, as written in the file.
-  std::vector<std::string> local_keys(const std::vector<Decl>& table, std::string_view group,
-                                      const Ctx& ctx) const {
+  /// The keys that apply in the table `prefix` ("body", "springs.shear", "terrain.floor"), as
+  /// written in the file, in table order.
+  std::vector<std::string> local_keys(std::string_view prefix) const {
     std::vector<std::string> out;
-    for (const Decl& d : table) {
-      const std::string_view p = d.pattern;
-      if (!group.empty() && p.substr(0, group.size() + 1) != std::string(group) + ".") continue;
-      if (!applies(d, spec_, ctx)) continue;
-      std::string local(p.substr(p.rfind('.') + 1));
+    walk_keys(&spec_, Walk::Applicable, [&](const Bound& b) {
+      if (key_table(b.key) != prefix) return false;
+      std::string local(key_local(b.key));
       if (std::find(out.begin(), out.end(), local) == out.end()) out.push_back(std::move(local));
-    }
+      return false;
+    });
     return out;
   }
 
   // ----- sections -----
+  /// The top-level names a scene file may use, in table order: the global rows' tables (scene,
+  /// simulation, gravity, body), then the collections (springs, terrain).
+  static std::vector<std::string> section_names() {
+    std::vector<std::string> out;
+    walk_keys(nullptr, Walk::All, [&](const Bound& b) {
+      std::string name(b.key.substr(0, b.key.find('.')));
+      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
+      return false;
+    });
+    return out;
+  }
+
+  static const Collection* find_collection(std::string_view name) {
+    for (const Collection& c : collections())
+      if (c.name == name) return &c;
+    return nullptr;
+  }
+
   void read_root(const toml::table& root) {
-    const std::vector<std::string> sections = {"scene", "simulation", "gravity",
-                                               "body",  "springs",    "terrain"};
+    const std::vector<std::string> sections = section_names();
     for (auto&& [k, node] : root) {
       const std::string name(k.str());
       if (std::find(sections.begin(), sections.end(), name) == sections.end())
@@ -373,8 +386,9 @@ class Loader {
       const toml::node* node = root.get(name);
       if (!node) continue;
       where_[name] = pos_of(*node);
-      if (name == "terrain") {
-        read_terrains(*node);
+      const Collection* collection = find_collection(name);
+      if (collection && collection->layout == Layout::ArrayOfTables) {
+        read_array(*collection, *node);
         continue;
       }
       const toml::table* t = node->as_table();
@@ -382,14 +396,14 @@ class Loader {
         error(name, pos_of(*node), "must be a table [" + name + "], got " + describe(*node));
         continue;
       }
-      if (name == "scene" || name == "simulation") {
-        apply_table(*t, name, "in [" + name + "]", local_keys(global_decls(), name, Ctx{}));
+      if (collection) {
+        read_tables(*collection, *t);
       } else if (name == "gravity") {
         read_gravity(*t);
       } else if (name == "body") {
         read_body(*t);
       } else {
-        read_springs(*t);
+        apply_table(*t, name, "in [" + name + "]", local_keys(name));
       }
     }
   }
@@ -410,54 +424,76 @@ class Loader {
       if (auto b = resolve(spec_, "body.type"); b && !apply(*b, *type)) return;
     }
     const std::string kind = spec_.body_kind == BodyKind::Cube ? "cube" : "particles";
-    std::vector<std::string> keys = local_keys(global_decls(), "body", Ctx{});
-    apply_table(t, "body", "for a " + kind + " body", keys, {"type"});
+    apply_table(t, "body", "for a " + kind + " body", local_keys("body"), {"type"});
   }
 
-  void read_springs(const toml::table& t) {
-    std::vector<std::string> names;
-    for (SpringType st : kSpringTypes) names.emplace_back(to_string(st));
+  /// A collection written as one table per element ([springs.shear]): each table must name an
+  /// element; its presence row (if the collection has one) is set on before the keys are read,
+  /// and its own key (enabled = false) read last.
+  void read_tables(const Collection& c, const toml::table& t) {
+    const std::vector<std::string> names = c.elements(spec_);
+    const Decl* presence = nullptr;
+    std::vector<std::string> listed;  // the keys a table holds, for "must be a table ... with"
+    for (const Decl& d : c.rows) {
+      if (d.presence) {
+        presence = &d;
+      } else {
+        listed.emplace_back(key_local(d.pattern));
+      }
+    }
+    std::string with;
+    for (std::size_t i = 0; i < listed.size(); ++i)
+      with += (i == 0 ? "" : i + 1 == listed.size() ? " and " : ", ") + listed[i];
     for (auto&& [k, node] : t) {
       const std::string name(k.str());
-      const std::string prefix = "springs." + name;
+      const std::string prefix = std::string(c.name) + "." + name;
       where_[prefix] = pos_of(node);
-      const auto type = spring_type_from_string(name);
-      if (!type) {
-        unknown_key(prefix, name, pos_of_key(k, node), names, "", "spring type");
+      const auto at = std::find(names.begin(), names.end(), name);
+      if (at == names.end()) {
+        unknown_key(prefix, name, pos_of_key(k, node), names, "", c.noun);
         continue;
       }
-      const toml::table* st = node.as_table();
-      if (!st) {
+      const toml::table* element = node.as_table();
+      if (!element) {
         error(prefix, pos_of(node),
-              "must be a table [" + prefix + "] with ks and kd, got " + describe(node));
+              "must be a table [" + prefix + "] with " + with + ", got " + describe(node));
         continue;
       }
-      const Ctx ctx{*type, 0};
-      const Decl& enabled = *find_decl("springs.*.enabled");
-      enabled.set(spec_, ctx, Value{true});
-      apply_table(*st, prefix, "in [" + prefix + "]", local_keys(spring_decls(), "", ctx),
-                  {"enabled"});
-      if (const toml::node* en = st->get("enabled")) {
-        if (auto v = read(prefix + ".enabled", *en)) enabled.set(spec_, ctx, *v);
+      const Ctx ctx{static_cast<std::size_t>(at - names.begin())};
+      std::vector<std::string_view> skip;
+      if (presence) {
+        presence->set(spec_, ctx, Value{true});
+        skip.push_back(key_local(presence->pattern));
+      }
+      apply_table(*element, prefix, "in [" + prefix + "]", local_keys(prefix), skip);
+      if (presence) {
+        if (const toml::node* en = element->get(key_local(presence->pattern))) {
+          if (auto v = read(prefix + "." + std::string(key_local(presence->pattern)), *en))
+            presence->set(spec_, ctx, *v);
+        }
       }
     }
   }
 
-  void read_terrains(const toml::node& node) {
+  /// A collection written as an array of tables ([[terrain]]), each entry one element.
+  void read_array(const Collection& c, const toml::node& node) {
+    const std::string name(c.name);
     const toml::array* list = node.as_array();
     if (!list) {
-      error("terrain", pos_of(node),
-            "must be an array of tables [[terrain]], got " + describe(node));
+      error(name, pos_of(node),
+            "must be an array of tables [[" + name + "]], got " + describe(node));
       return;
     }
     for (std::size_t i = 0; i < list->size(); ++i) {
       const toml::node& entry = *list->get(i);
-      const std::string label = "terrain[" + std::to_string(i) + "]";
+      const std::string label = name + "[" + std::to_string(i) + "]";
       const toml::table* t = entry.as_table();
       if (!t) {
-        error(label, pos_of(entry), "must be a table [[terrain]], got " + describe(entry));
+        error(label, pos_of(entry), "must be a table [[" + name + "]], got " + describe(entry));
         continue;
       }
+      // Making an element from its entry is the terrain's own step (preset, type, hole): the only
+      // array collection so far. Another one adds its step here.
       read_terrain(*t, label);
     }
   }
@@ -532,7 +568,6 @@ class Loader {
     }
     where_[prefix] = entry_pos;
     spec_.terrains.push_back(std::move(terrain));
-    const Ctx ctx{SpringType::Structural, spec_.terrains.size() - 1};
     Terrain& added = spec_.terrains.back();
 
     // A hole is given by both of its keys (a preset may already have one).
@@ -551,7 +586,7 @@ class Loader {
     }
     const std::string type_name(terrain_type_name(added));
     std::vector<std::string> keys = {"preset", "name"};
-    for (std::string& k : local_keys(terrain_decls(), "", ctx)) keys.push_back(std::move(k));
+    for (std::string& k : local_keys(prefix)) keys.push_back(std::move(k));
     if (auto* plane = std::get_if<Plane>(&added.shape); plane && !plane->has_hole) {
       keys.emplace_back("hole_center");
       keys.emplace_back("hole_radius");
@@ -565,7 +600,54 @@ class Loader {
   std::map<std::string, Pos> where_;  // key → where it was written, for cross-key errors
 };
 
+}  // namespace
+
+SceneResult parse_scene(std::string_view text, std::string_view source_name) {
+  try {
+    return Loader(source_name).run(text);
+  } catch (const std::exception& e) {
+    SceneResult r;
+    r.error = SceneError{std::string(source_name), "", 0, 0,
+                         std::string("internal error while reading the scene: ") + e.what()};
+    return r;
+  }
+}
+
+SceneResult load_scene(const std::filesystem::path& path) {
+  SceneResult r;
+  const std::string file = path.string();
+  try {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) {
+      r.error = SceneError{file, "", 0, 0, "cannot read the scene file: no such file"};
+      return r;
+    }
+    if (std::filesystem::is_directory(status)) {
+      r.error = SceneError{file, "", 0, 0, "is a directory; expected a .toml scene file"};
+      return r;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      r.error = SceneError{file, "", 0, 0, "cannot open the scene file for reading"};
+      return r;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) {
+      r.error = SceneError{file, "", 0, 0, "error while reading the scene file"};
+      return r;
+    }
+    return parse_scene(text.str(), file);
+  } catch (const std::exception& e) {
+    r.error = SceneError{file, "", 0, 0, std::string("cannot read the scene file: ") + e.what()};
+    return r;
+  }
+}
+
 // ----- writing -----
+
+namespace {
 
 std::string toml_string(std::string_view s) {
   std::string out = "\"";
@@ -634,86 +716,30 @@ std::string toml_value(ValueKind kind, const Value& v) {
   return "\"\"";
 }
 
-/// Writes the rows of `table` that apply under ctx, except `skip`, as "key = value" lines.
-void write_rows(std::string& out, const SceneSpec& scene, const std::vector<Decl>& table,
-                std::string_view group, const Ctx& ctx, const std::vector<std::string_view>& skip) {
-  for (const Decl& d : table) {
-    const std::string_view p = d.pattern;
-    if (!group.empty() && p.substr(0, group.size() + 1) != std::string(group) + ".") continue;
-    const std::string_view local = p.substr(p.rfind('.') + 1);
-    if (std::find(skip.begin(), skip.end(), local) != skip.end()) continue;
-    if (!applies(d, scene, ctx)) continue;
-    out += std::string(local) + " = " + toml_value(d.kind, d.get(scene, ctx)) + "\n";
-  }
+/// The header of the table a key belongs to: "[body]", "[springs.shear]", or for an element of
+/// an array collection "[[terrain]]" and its name key.
+std::string table_header(const Bound& b) {
+  const std::string table(key_table(b.key));
+  if (!b.collection || b.collection->layout == Layout::Tables) return "[" + table + "]\n";
+  const std::string name(b.collection->name);
+  return "[[" + name + "]]\nname = " + toml_string(table.substr(name.size() + 1)) + "\n";
 }
 
 }  // namespace
 
-SceneResult parse_scene(std::string_view text, std::string_view source_name) {
-  try {
-    return Loader(source_name).run(text);
-  } catch (const std::exception& e) {
-    SceneResult r;
-    r.error = SceneError{std::string(source_name), "", 0, 0,
-                         std::string("internal error while reading the scene: ") + e.what()};
-    return r;
-  }
-}
-
-SceneResult load_scene(const std::filesystem::path& path) {
-  SceneResult r;
-  const std::string file = path.string();
-  try {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) {
-      r.error = SceneError{file, "", 0, 0, "cannot read the scene file: no such file"};
-      return r;
-    }
-    if (std::filesystem::is_directory(status)) {
-      r.error = SceneError{file, "", 0, 0, "is a directory; expected a .toml scene file"};
-      return r;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      r.error = SceneError{file, "", 0, 0, "cannot open the scene file for reading"};
-      return r;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) {
-      r.error = SceneError{file, "", 0, 0, "error while reading the scene file"};
-      return r;
-    }
-    return parse_scene(text.str(), file);
-  } catch (const std::exception& e) {
-    r.error = SceneError{file, "", 0, 0, std::string("cannot read the scene file: ") + e.what()};
-    return r;
-  }
-}
-
 std::string to_toml(const SceneSpec& scene) {
   std::string out = "# Written by jelly (to_toml); reads back to the same scene.\n";
-  const Ctx none{};
-  out += "\n[scene]\n";
-  write_rows(out, scene, global_decls(), "scene", none, {});
-  out += "\n[simulation]\n";
-  write_rows(out, scene, global_decls(), "simulation", none, {});
-  if (scene.gravity) {
-    out += "\n[gravity]\n";
-    write_rows(out, scene, global_decls(), "gravity", none, {"enabled"});
-  }
-  out += "\n[body]\n";
-  write_rows(out, scene, global_decls(), "body", none, {});
-  for (SpringType t : kSpringTypes) {
-    if (!spring_settings(scene, t).enabled) continue;
-    out += "\n[springs." + std::string(to_string(t)) + "]\n";
-    write_rows(out, scene, spring_decls(), "", Ctx{t, 0}, {"enabled"});
-  }
-  for (std::size_t i = 0; i < scene.terrains.size(); ++i) {
-    out += "\n[[terrain]]\nname = " + toml_string(scene.terrains[i].name) + "\n";
-    write_rows(out, scene, terrain_decls(), "", Ctx{SpringType::Structural, i}, {});
-  }
+  std::string table;  // the table written last
+  walk_keys(&scene, Walk::Applicable, [&](const Bound& b) {
+    if (b.decl->presence) return false;
+    if (key_table(b.key) != table) {
+      table = std::string(key_table(b.key));
+      out += "\n" + table_header(b);
+    }
+    out += std::string(key_local(b.key)) + " = " +
+           toml_value(b.decl->kind, b.decl->get(scene, b.ctx)) + "\n";
+    return false;
+  });
   return out;
 }
 
