@@ -1,4 +1,5 @@
-// Scene files: reading (TOML via toml++), validating and writing back (`--set`: params.cpp).
+// Scene files in: reading (TOML via toml++) and validating. The writer is scene_writer.cpp,
+// `--set` is params.cpp.
 //
 // Every key is looked up in the declaration table (param_table.hpp) through its key walk: a key
 // that is not declared is an error (with a "did you mean" when a declared key is close), and every
@@ -8,7 +9,6 @@
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -643,104 +643,6 @@ SceneResult load_scene(const std::filesystem::path& path) {
     r.error = SceneError{file, "", 0, 0, std::string("cannot read the scene file: ") + e.what()};
     return r;
   }
-}
-
-// ----- writing -----
-
-namespace {
-
-std::string toml_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    switch (ch) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20 || c == 0x7F) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04X", c);
-          out += buf;
-        } else {
-          out += ch;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-/// A double as a TOML float ("2000.0", "0.001", "1e-07").
-std::string toml_double(double v) {
-  std::string s = format_double(v);
-  if (s.find_first_of(".eEni") == std::string::npos) s += ".0";
-  return s;
-}
-
-std::string toml_vec3(const Vec3& v) {
-  return "[" + toml_double(v.x()) + ", " + toml_double(v.y()) + ", " + toml_double(v.z()) + "]";
-}
-
-std::string toml_value(ValueKind kind, const Value& v) {
-  switch (kind) {
-    case ValueKind::Real: return toml_double(std::get<double>(v));
-    case ValueKind::Integer: return std::to_string(std::get<long long>(v));
-    case ValueKind::Bool: return std::get<bool>(v) ? "true" : "false";
-    case ValueKind::Vector3: return toml_vec3(std::get<Vec3>(v));
-    case ValueKind::Choice:
-    case ValueKind::Text: return toml_string(std::get<std::string>(v));
-    case ValueKind::Vec3List: {
-      const auto& list = std::get<std::vector<Vec3>>(v);
-      std::string s = "[";
-      for (std::size_t i = 0; i < list.size(); ++i)
-        s += (i ? ",\n  " : "\n  ") + toml_vec3(list[i]);
-      return s + (list.empty() ? "]" : ",\n]");
-    }
-    case ValueKind::IndexPairList: {
-      std::string s = "[";
-      const auto& list = std::get<std::vector<IndexPair>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i)
-        s += (i ? ", [" : "[") + std::to_string(list[i][0]) + ", " + std::to_string(list[i][1]) +
-             "]";
-      return s + "]";
-    }
-    case ValueKind::RealList: {
-      std::string s = "[";
-      const auto& list = std::get<std::vector<double>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i) s += (i ? ", " : "") + toml_double(list[i]);
-      return s + "]";
-    }
-  }
-  return "\"\"";
-}
-
-/// The header of the table a key belongs to: "[body]", "[springs.shear]", or for an element of
-/// an array collection "[[terrain]]" and its name key.
-std::string table_header(const Bound& b) {
-  const std::string table(key_table(b.key));
-  if (!b.collection || b.collection->layout == Layout::Tables) return "[" + table + "]\n";
-  const std::string name(b.collection->name);
-  return "[[" + name + "]]\nname = " + toml_string(table.substr(name.size() + 1)) + "\n";
-}
-
-}  // namespace
-
-std::string to_toml(const SceneSpec& scene) {
-  std::string out = "# Written by jelly (to_toml); reads back to the same scene.\n";
-  std::string table;  // the table written last
-  walk_keys(&scene, Walk::Applicable, [&](const Bound& b) {
-    if (b.decl->presence) return false;
-    if (key_table(b.key) != table) {
-      table = std::string(key_table(b.key));
-      out += "\n" + table_header(b);
-    }
-    out += std::string(key_local(b.key)) + " = " +
-           toml_value(b.decl->kind, b.decl->get(scene, b.ctx)) + "\n";
-    return false;
-  });
-  return out;
 }
 
 }  // namespace jelly
