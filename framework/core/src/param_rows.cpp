@@ -615,11 +615,14 @@ std::string expand(std::string_view pattern, std::string_view element) {
 
 std::optional<Bound> find_key(const SceneSpec& s, std::string_view key, Walk which) {
   std::optional<Bound> found;
-  walk_keys(&s, which, [&](const Bound& b) {
-    if (b.key != key) return false;
-    found = b;
-    return true;
-  });
+  walk_keys(
+      &s, which,
+      [&](const Bound& b) {
+        if (b.key != key) return false;
+        found = b;
+        return true;
+      },
+      key.substr(0, key.find('.')));
   return found;
 }
 
@@ -631,14 +634,19 @@ std::string_view key_table(std::string_view key) {
 }
 std::string_view key_local(std::string_view key) { return key.substr(key.rfind('.') + 1); }
 
-bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit) {
+bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit,
+               std::string_view section) {
   const auto each = [&](const Decl& d, Ctx ctx, std::string key, const Collection* of) {
     if (scene && which == Walk::Applicable && !applies(d, *scene, ctx)) return false;
     return visit(Bound{&d, ctx, std::move(key), of});
   };
+  const auto in_section = [&](std::string_view name) { return section.empty() || name == section; };
   for (const Decl& d : global_decls())
-    if (each(d, Ctx{}, std::string(d.pattern), nullptr)) return true;
+    if (in_section(d.pattern.substr(0, d.pattern.find('.'))) &&
+        each(d, Ctx{}, std::string(d.pattern), nullptr))
+      return true;
   for (const Collection& c : collections()) {
+    if (!in_section(c.name)) continue;
     const std::vector<std::string> elements =
         scene ? c.elements(*scene) : std::vector<std::string>{std::string(c.placeholder)};
     for (std::size_t i = 0; i < elements.size(); ++i)

@@ -130,8 +130,11 @@ enum class Walk {
 /// The one key walk: calls visit for every key of `scene` in table order (the global rows, then
 /// each collection's rows for each of its elements), stopping early when visit returns true;
 /// returns whether it stopped. With scene == nullptr it walks the declarations themselves, each
-/// collection once with its placeholder as the element ("springs.<type>.ks"), every row.
-bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit);
+/// collection once with its placeholder as the element ("springs.<type>.ks"), every row. A
+/// non-empty `section` ("body", "springs", "terrain") limits the walk to the keys that start with
+/// it, which saves building the others' keys when one key is looked up.
+bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit,
+               std::string_view section = {});
 
 /// The part of a key or pattern before its last '.' ("terrain.floor" of "terrain.floor.radius")
 /// and after it ("radius").

@@ -347,12 +347,16 @@ class Loader {
   /// written in the file, in table order.
   std::vector<std::string> local_keys(std::string_view prefix) const {
     std::vector<std::string> out;
-    walk_keys(&spec_, Walk::Applicable, [&](const Bound& b) {
-      if (key_table(b.key) != prefix) return false;
-      std::string local(key_local(b.key));
-      if (std::find(out.begin(), out.end(), local) == out.end()) out.push_back(std::move(local));
-      return false;
-    });
+    walk_keys(
+        &spec_, Walk::Applicable,
+        [&](const Bound& b) {
+          if (key_table(b.key) != prefix) return false;
+          std::string local(key_local(b.key));
+          if (std::find(out.begin(), out.end(), local) == out.end())
+            out.push_back(std::move(local));
+          return false;
+        },
+        prefix.substr(0, prefix.find('.')));
     return out;
   }
 
