@@ -8,16 +8,16 @@ namespace jelly {
 
 namespace {
 
-std::string_view scope_text(params_detail::Scope s) {
+std::string scope_text(const params_detail::Bound& b) {
   using params_detail::Scope;
-  switch (s) {
+  switch (b.decl->scope) {
     case Scope::Always: return "every scene";
     case Scope::GravityOn: return "with gravity";
     case Scope::Cube: return "cube body";
     case Scope::Particles: return "particles body";
-    case Scope::SpringAny: return "every spring type";
+    case Scope::Element:
+      return "every " + std::string(b.collection ? b.collection->noun : "element");
     case Scope::SpringOn: return "present spring types";
-    case Scope::TerrainAny: return "every terrain";
     case Scope::Plane: return "plane";
     case Scope::PlaneHole: return "plane with a hole";
     case Scope::Bowl: return "bowl";
@@ -73,23 +73,15 @@ std::string parameter_reference_markdown() {
   std::string out =
       "| key | applies to | type | unit | default | valid range | description |\n"
       "|---|---|---|---|---|---|---|\n";
-  const auto row = [&](const Decl& d, std::string key) {
+  // The declarations themselves: each collection once, its element shown as "<type>", "<name>".
+  walk_keys(nullptr, Walk::All, [&](const Bound& b) {
+    const Decl& d = *b.decl;
     const std::string def = d.default_text.empty() ? "—" : "`" + std::string(d.default_text) + "`";
-    out += "| `" + key + "` | " + std::string(scope_text(d.scope)) + " | " +
-           std::string(kind_text(d.kind)) + " | " + std::string(d.unit) + " | " + def + " | " +
-           range_text(d) + " | " + std::string(d.description) + " |\n";
-  };
-  for (const Decl& d : global_decls()) row(d, std::string(d.pattern));
-  for (const Decl& d : spring_decls()) {
-    std::string key(d.pattern);
-    key.replace(key.find('*'), 1, "<type>");
-    row(d, key);
-  }
-  for (const Decl& d : terrain_decls()) {
-    std::string key(d.pattern);
-    key.replace(key.find('*'), 1, "<name>");
-    row(d, key);
-  }
+    out += "| `" + b.key + "` | " + scope_text(b) + " | " + std::string(kind_text(d.kind)) + " | " +
+           std::string(d.unit) + " | " + def + " | " + range_text(d) + " | " +
+           std::string(d.description) + " |\n";
+    return false;
+  });
   return out;
 }
 

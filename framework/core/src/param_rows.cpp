@@ -1,11 +1,15 @@
 // The declaration table: every scene parameter, declared once (house style §14).
 //
-// Each row gives the key (with '*' for a spring type or a terrain name), when it applies, its
-// value kind, unit, whether it has a default, valid range, a one-line description, and how it is
-// read from and written to a SceneSpec. Defaults are not typed here: they are read from the
-// default-constructed structs of jelly/scene_spec.hpp and jelly/terrain.hpp, so each is written
-// once. The loader (scene_loader.cpp), set_parameter, get_parameter, scene_parameters, to_toml and
-// docs/scenes.md all go through these rows. Also here: resolving a dotted key against a scene.
+// Each row gives the key (with '*' for the element of its collection), when it applies, its value
+// kind, unit, whether it has a default, valid range, its own check against the scene where it has
+// one, a one-line description, and how it is read from and written to a SceneSpec. Defaults are
+// not typed here: they are read from the default-constructed structs of jelly/scene_spec.hpp and
+// jelly/terrain.hpp, so each is written once. Rows are global ("simulation.dt") or belong to a
+// declared collection (springs.*, terrain.*; collections() below): a new collection, such as a
+// later assignment's sphere.*, is one more entry there with its element list and rows.
+//
+// Also here: the one key walk (walk_keys) that the scene reader and writer, set_parameter,
+// get_parameter, scene_parameters and the reference table all use, and resolving a dotted key.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,10 +67,23 @@ Decl make(std::string_view pattern, Scope scope, ValueKind kind, std::string_vie
   return d;
 }
 
+/// A row whose key is written as the presence of its table ([gravity], [springs.<type>]).
+Decl presence(Decl d) {
+  d.presence = true;
+  return d;
+}
+/// A row with its own check against the rest of the scene.
+Decl checked(Decl d, RowCheck check) {
+  d.check = check;
+  return d;
+}
+
 // ----- accessors shared by several rows -----
 
-Terrain& terrain(SceneSpec& s, const Ctx& c) { return s.terrains[c.terrain]; }
-const Terrain& terrain(const SceneSpec& s, const Ctx& c) { return s.terrains[c.terrain]; }
+SpringType spring_type(const Ctx& c) { return kSpringTypes[c.index]; }
+
+Terrain& terrain(SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
+const Terrain& terrain(const SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
 SurfaceProperties& surface(SceneSpec& s, const Ctx& c) {
   return std::visit([](auto& shape) -> SurfaceProperties& { return shape.surface; },
                     terrain(s, c).shape);
@@ -179,7 +196,7 @@ const std::vector<Decl>& global_decls() {
           [](const SceneSpec& s, const Ctx&) -> Value { return s.auto_dt; },
           [](SceneSpec& s, const Ctx&, const Value& v) { s.auto_dt = flag(v); }),
       // [gravity]
-      make(
+      presence(make(
           "gravity.enabled", Scope::Always, ValueKind::Bool, "", Default::Yes, kAny,
           "Whether the scene has gravity (a [gravity] table); true adds it with the default "
           "acceleration",
@@ -190,7 +207,7 @@ const std::vector<Decl>& global_decls() {
             } else if (!s.gravity) {
               s.gravity = default_gravity();
             }
-          }),
+          })),
       make(
           "gravity.acceleration", Scope::GravityOn, ValueKind::Vector3, "m/s^2", Default::Yes, kAny,
           "Constant gravitational acceleration g (y is up)",
@@ -259,52 +276,59 @@ const std::vector<Decl>& global_decls() {
             if (s.particles.velocities.cols() != s.particles.positions.cols())
               s.particles.velocities = Vec3Array::Zero(3, s.particles.positions.cols());
           }),
-      make(
-          "body.velocities", Scope::Particles, ValueKind::Vec3List, "m/s", Default::None, kAny,
-          "Initial velocities, one per position (optional: zero)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.velocities); },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
-          }),
-      make(
-          "body.springs", Scope::Particles, ValueKind::IndexPairList, "", Default::None, kAny,
-          "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
-          [](const SceneSpec& s, const Ctx&) -> Value {
-            std::vector<IndexPair> out;
-            for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
-            return out;
-          },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            // A spring that is unchanged (same pair at the same place in the list) keeps its
-            // rest length; a new one rests at the distance between the current positions.
-            const Vec3Array& x = s.particles.positions;
-            const std::vector<Spring>& old = s.particles.springs;
-            std::vector<Spring> springs;
-            for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
-              Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
-                        std::numeric_limits<double>::quiet_NaN()};
-              const std::size_t k = springs.size();
-              if (k < old.size() && old[k].a == sp.a && old[k].b == sp.b)
-                sp.rest_length = old[k].rest_length;
-              else if (p[0] >= 0 && p[1] >= 0 && p[0] < x.cols() && p[1] < x.cols())
-                sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
-              springs.push_back(sp);
-            }
-            s.particles.springs = std::move(springs);
-          }),
-      make(
-          "body.rest_lengths", Scope::Particles, ValueKind::RealList, "m", Default::None, kPositive,
-          "Rest length of each spring, one per spring (optional: the initial distance)",
-          [](const SceneSpec& s, const Ctx&) -> Value {
-            std::vector<double> out;
-            for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
-            return out;
-          },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            const auto& r = std::get<std::vector<double>>(v);
-            for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
-              s.particles.springs[i].rest_length = r[i];
-          }),
+      checked(make(
+                  "body.velocities", Scope::Particles, ValueKind::Vec3List, "m/s", Default::None,
+                  kAny, "Initial velocities, one per position (optional: zero)",
+                  [](const SceneSpec& s, const Ctx&) -> Value {
+                    return columns(s.particles.velocities);
+                  },
+                  [](SceneSpec& s, const Ctx&, const Value& v) {
+                    s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
+                  }),
+              check_velocity_count),
+      checked(
+          make(
+              "body.springs", Scope::Particles, ValueKind::IndexPairList, "", Default::None, kAny,
+              "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
+              [](const SceneSpec& s, const Ctx&) -> Value {
+                std::vector<IndexPair> out;
+                for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
+                return out;
+              },
+              [](SceneSpec& s, const Ctx&, const Value& v) {
+                // A spring that is unchanged (same pair at the same place in the list) keeps its
+                // rest length; a new one rests at the distance between the current positions.
+                const Vec3Array& x = s.particles.positions;
+                const std::vector<Spring>& old = s.particles.springs;
+                std::vector<Spring> springs;
+                for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
+                  Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
+                            std::numeric_limits<double>::quiet_NaN()};
+                  const std::size_t k = springs.size();
+                  if (k < old.size() && old[k].a == sp.a && old[k].b == sp.b)
+                    sp.rest_length = old[k].rest_length;
+                  else if (p[0] >= 0 && p[1] >= 0 && p[0] < x.cols() && p[1] < x.cols())
+                    sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
+                  springs.push_back(sp);
+                }
+                s.particles.springs = std::move(springs);
+              }),
+          check_spring_indices),
+      checked(make(
+                  "body.rest_lengths", Scope::Particles, ValueKind::RealList, "m", Default::None,
+                  kPositive,
+                  "Rest length of each spring, one per spring (optional: the initial distance)",
+                  [](const SceneSpec& s, const Ctx&) -> Value {
+                    std::vector<double> out;
+                    for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
+                    return out;
+                  },
+                  [](SceneSpec& s, const Ctx&, const Value& v) {
+                    const auto& r = std::get<std::vector<double>>(v);
+                    for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
+                      s.particles.springs[i].rest_length = r[i];
+                  }),
+              check_rest_length_count),
       make(
           "body.spring_type", Scope::Particles, ValueKind::Choice, "", Default::Yes, kAny,
           "Whose coefficients the springs use; that [springs.<type>] table must be present",
@@ -319,43 +343,48 @@ const std::vector<Decl>& global_decls() {
   return table;
 }
 
-const std::vector<Decl>& spring_decls() {
-  static const std::vector<Decl> table = with_defaults({
-      make(
-          "springs.*.enabled", Scope::SpringAny, ValueKind::Bool, "", Default::Yes, kAny,
+namespace {
+
+std::vector<Decl> spring_rows() {
+  return with_defaults({
+      presence(make(
+          "springs.*.enabled", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
           "Whether springs of this type are built (the table is present); true adds them with "
           "the default coefficients",
           [](const SceneSpec& s, const Ctx& c) -> Value {
-            return spring_settings(s, c.spring).enabled;
+            return spring_settings(s, spring_type(c)).enabled;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            SpringSettings& st = spring_settings(s, c.spring);
+            SpringSettings& st = spring_settings(s, spring_type(c));
             if (flag(v) == st.enabled) return;
             st = SpringSettings{};  // on: defaults; off: back to the normal form of an absent table
             st.enabled = flag(v);
-          }),
+          })),
       make(
           "springs.*.ks", Scope::SpringOn, ValueKind::Real, "N/m", Default::Yes, kNonNegative,
           "Stiffness of every spring of this type",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).ks; },
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return spring_settings(s, spring_type(c)).ks;
+          },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            spring_settings(s, c.spring).ks = real(v);
+            spring_settings(s, spring_type(c)).ks = real(v);
           }),
       make(
           "springs.*.kd", Scope::SpringOn, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
           "Damping along every spring of this type",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return spring_settings(s, c.spring).kd; },
+          [](const SceneSpec& s, const Ctx& c) -> Value {
+            return spring_settings(s, spring_type(c)).kd;
+          },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            spring_settings(s, c.spring).kd = real(v);
+            spring_settings(s, spring_type(c)).kd = real(v);
           }),
   });
-  return table;
 }
 
-const std::vector<Decl>& terrain_decls() {
-  static const std::vector<Decl> table = with_defaults({
+std::vector<Decl> terrain_rows() {
+  return with_defaults({
       make(
-          "terrain.*.type", Scope::TerrainAny, ValueKind::Choice, "", Default::None, kAny,
+          "terrain.*.type", Scope::Element, ValueKind::Choice, "", Default::None, kAny,
           "Shape: plane, bowl (inside of a sphere below a rim) or sphere (obstacle); changing it "
           "keeps the surface and takes the new shape's default geometry",
           [](const SceneSpec& s, const Ctx& c) -> Value {
@@ -426,49 +455,92 @@ const std::vector<Decl>& terrain_decls() {
           [](SceneSpec& s, const Ctx& c, const Value& v) { sphere(s, c).radius = real(v); }),
       // Surface, every terrain
       make(
-          "terrain.*.epsilon", Scope::TerrainAny, ValueKind::Real, "m", Default::Yes, kPositive,
+          "terrain.*.epsilon", Scope::Element, ValueKind::Real, "m", Default::Yes, kPositive,
           "Collision tolerance ε",
           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).surface().epsilon; },
           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).epsilon = real(v); }),
       make(
-          "terrain.*.restitution", Scope::TerrainAny, ValueKind::Real, "", Default::Yes,
-          kUnitInterval,
+          "terrain.*.restitution", Scope::Element, ValueKind::Real, "", Default::Yes, kUnitInterval,
           "Coefficient of restitution k_r: the share of normal velocity kept, reversed",
           [](const SceneSpec& s, const Ctx& c) -> Value {
             return terrain(s, c).surface().restitution;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).restitution = real(v); }),
       make(
-          "terrain.*.friction", Scope::TerrainAny, ValueKind::Real, "s/m", Default::Yes,
-          kNonNegative, "Friction coefficient k_f: friction = -k_f (-N·f) v_T",
+          "terrain.*.friction", Scope::Element, ValueKind::Real, "s/m", Default::Yes, kNonNegative,
+          "Friction coefficient k_f: friction = -k_f (-N·f) v_T",
           [](const SceneSpec& s, const Ctx& c) -> Value {
             return terrain(s, c).surface().friction;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) { surface(s, c).friction = real(v); }),
       make(
-          "terrain.*.collision", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "terrain.*.collision", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
           "Apply the collision velocity response at the start of each step",
           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).collision; },
           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).collision = flag(v); }),
       make(
-          "terrain.*.contact", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "terrain.*.contact", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
           "Add the contact and friction forces in every evaluation",
           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).contact; },
           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).contact = flag(v); }),
       make(
-          "terrain.*.project", Scope::TerrainAny, ValueKind::Bool, "", Default::Yes, kAny,
+          "terrain.*.project", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
           "After the response, move particles behind the surface onto it (not in the course)",
           [](const SceneSpec& s, const Ctx& c) -> Value { return terrain(s, c).project; },
           [](SceneSpec& s, const Ctx& c, const Value& v) { terrain(s, c).project = flag(v); }),
   });
-  return table;
+}
+
+std::vector<std::string> spring_type_names(const SceneSpec&) {
+  std::vector<std::string> out;
+  for (SpringType t : kSpringTypes) out.emplace_back(to_string(t));
+  return out;
+}
+
+std::vector<std::string> terrain_names(const SceneSpec& s) {
+  std::vector<std::string> out;
+  for (const Terrain& t : s.terrains) out.push_back(t.name);
+  return out;
+}
+
+Collection collection(std::string_view name, std::string_view placeholder, std::string_view noun,
+                      Layout layout, std::vector<std::string> (*elements)(const SceneSpec&),
+                      std::vector<Decl> rows) {
+  Collection c;
+  c.name = name;
+  c.placeholder = placeholder;
+  c.noun = noun;
+  c.layout = layout;
+  c.elements = elements;
+  c.rows = std::move(rows);
+  return c;
+}
+
+}  // namespace
+
+// ----- the collections -----
+
+const std::vector<Collection>& collections() {
+  static const std::vector<Collection> list = [] {
+    std::vector<Collection> out;
+    // [springs.<type>]: one table per spring type the scene uses (every type has keys).
+    out.push_back(collection("springs", "<type>", "spring type", Layout::Tables, spring_type_names,
+                             spring_rows()));
+    // [[terrain]]: the scene's terrains, each named by its `name` key.
+    out.push_back(collection("terrain", "<name>", "terrain", Layout::ArrayOfTables, terrain_names,
+                             terrain_rows()));
+    return out;
+  }();
+  return list;
 }
 
 // ----- small helpers -----
 
 const Decl* find_decl(std::string_view pattern) {
-  for (const auto* table : {&global_decls(), &spring_decls(), &terrain_decls()})
-    for (const Decl& d : *table)
+  for (const Decl& d : global_decls())
+    if (d.pattern == pattern) return &d;
+  for (const Collection& c : collections())
+    for (const Decl& d : c.rows)
       if (d.pattern == pattern) return &d;
   return nullptr;
 }
@@ -512,90 +584,89 @@ Terrain default_terrain(std::string_view name, std::string_view type) {
 }
 
 bool applies(const Decl& d, const SceneSpec& s, const Ctx& c) {
-  const bool has_terrain = c.terrain < s.terrains.size();
+  const bool has_terrain = c.index < s.terrains.size();
   switch (d.scope) {
     case Scope::Always: return true;
     case Scope::GravityOn: return s.gravity.has_value();
     case Scope::Cube: return s.body_kind == BodyKind::Cube;
     case Scope::Particles: return s.body_kind == BodyKind::Particles;
-    case Scope::SpringAny: return true;
-    case Scope::SpringOn: return spring_settings(s, c.spring).enabled;
-    case Scope::TerrainAny: return has_terrain;
+    case Scope::Element: return true;  // walk_keys visits only the elements a scene has
+    case Scope::SpringOn: return spring_settings(s, spring_type(c)).enabled;
     case Scope::Plane:
-      return has_terrain && std::holds_alternative<Plane>(s.terrains[c.terrain].shape);
+      return has_terrain && std::holds_alternative<Plane>(s.terrains[c.index].shape);
     case Scope::PlaneHole:
-      return has_terrain && std::holds_alternative<Plane>(s.terrains[c.terrain].shape) &&
-             std::get<Plane>(s.terrains[c.terrain].shape).has_hole;
-    case Scope::Bowl:
-      return has_terrain && std::holds_alternative<Bowl>(s.terrains[c.terrain].shape);
+      return has_terrain && std::holds_alternative<Plane>(s.terrains[c.index].shape) &&
+             std::get<Plane>(s.terrains[c.index].shape).has_hole;
+    case Scope::Bowl: return has_terrain && std::holds_alternative<Bowl>(s.terrains[c.index].shape);
     case Scope::Sphere:
-      return has_terrain && std::holds_alternative<Sphere>(s.terrains[c.terrain].shape);
+      return has_terrain && std::holds_alternative<Sphere>(s.terrains[c.index].shape);
   }
   return false;
 }
 
 namespace {
 
-std::vector<std::string_view> split_key(std::string_view key) {
-  std::vector<std::string_view> parts;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t dot = key.find('.', start);
-    parts.push_back(key.substr(start, dot == std::string_view::npos ? dot : dot - start));
-    if (dot == std::string_view::npos) break;
-    start = dot + 1;
-  }
-  return parts;
+std::string expand(std::string_view pattern, std::string_view element) {
+  const std::size_t star = pattern.find('*');
+  if (star == std::string_view::npos) return std::string(pattern);
+  return std::string(pattern.substr(0, star)) + std::string(element) +
+         std::string(pattern.substr(star + 1));
 }
 
-std::string_view local_part(std::string_view pattern) {
-  return pattern.substr(pattern.rfind('.') + 1);
-}
-
-std::optional<Bound> resolve_impl(const SceneSpec& s, std::string_view key, bool check_scope) {
-  const auto parts = split_key(key);
-  if (parts.size() == 2) {
-    for (const Decl& d : global_decls())
-      if (d.pattern == key && (!check_scope || applies(d, s, Ctx{})))
-        return Bound{&d, Ctx{}, std::string(key)};
-    return std::nullopt;
-  }
-  if (parts.size() != 3) return std::nullopt;
-  if (parts[0] == "springs") {
-    const auto type = spring_type_from_string(parts[1]);
-    if (!type) return std::nullopt;
-    const Ctx ctx{*type, 0};
-    for (const Decl& d : spring_decls())
-      if (local_part(d.pattern) == parts[2] && (!check_scope || applies(d, s, ctx)))
-        return Bound{&d, ctx, std::string(key)};
-    return std::nullopt;
-  }
-  if (parts[0] == "terrain") {
-    for (std::size_t i = 0; i < s.terrains.size(); ++i) {
-      if (s.terrains[i].name != parts[1]) continue;
-      const Ctx ctx{SpringType::Structural, i};
-      for (const Decl& d : terrain_decls())
-        if (local_part(d.pattern) == parts[2] && (!check_scope || applies(d, s, ctx)))
-          return Bound{&d, ctx, std::string(key)};
-      return std::nullopt;
-    }
-  }
-  return std::nullopt;
+std::optional<Bound> find_key(const SceneSpec& s, std::string_view key, Walk which) {
+  std::optional<Bound> found;
+  walk_keys(
+      &s, which,
+      [&](const Bound& b) {
+        if (b.key != key) return false;
+        found = b;
+        return true;
+      },
+      key.substr(0, key.find('.')));
+  return found;
 }
 
 }  // namespace
 
+std::string_view key_table(std::string_view key) {
+  const std::size_t dot = key.rfind('.');
+  return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
+}
+std::string_view key_local(std::string_view key) { return key.substr(key.rfind('.') + 1); }
+
+bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit,
+               std::string_view section) {
+  const auto each = [&](const Decl& d, Ctx ctx, std::string key, const Collection* of) {
+    if (scene && which == Walk::Applicable && !applies(d, *scene, ctx)) return false;
+    return visit(Bound{&d, ctx, std::move(key), of});
+  };
+  const auto in_section = [&](std::string_view name) { return section.empty() || name == section; };
+  for (const Decl& d : global_decls())
+    if (in_section(d.pattern.substr(0, d.pattern.find('.'))) &&
+        each(d, Ctx{}, std::string(d.pattern), nullptr))
+      return true;
+  for (const Collection& c : collections()) {
+    if (!in_section(c.name)) continue;
+    const std::vector<std::string> elements =
+        scene ? c.elements(*scene) : std::vector<std::string>{std::string(c.placeholder)};
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      for (const Decl& d : c.rows)
+        if (each(d, Ctx{i}, expand(d.pattern, elements[i]), &c)) return true;
+  }
+  return false;
+}
+
 std::optional<Bound> resolve(const SceneSpec& s, std::string_view key) {
-  return resolve_impl(s, key, true);
+  return find_key(s, key, Walk::Applicable);
 }
 std::optional<Bound> resolve_any(const SceneSpec& s, std::string_view key) {
-  return resolve_impl(s, key, false);
+  return find_key(s, key, Walk::All);
 }
 
 std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
-  const std::string local(local_part(b.decl->pattern));
+  const std::string local(key_local(b.decl->pattern));
   const auto terrain_label = [&] {
-    const Terrain& t = s.terrains[b.ctx.terrain];
+    const Terrain& t = s.terrains[b.ctx.index];
     return "terrain \"" + t.name + "\" is a " + std::string(terrain_type_name(t));
   };
   switch (b.decl->scope) {
@@ -605,14 +676,14 @@ std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
     case Scope::Particles:
       return local + " is a key of a particles body, and this scene's body is a cube";
     case Scope::SpringOn: {
-      const std::string type(to_string(b.ctx.spring));
+      const std::string type(to_string(spring_type(b.ctx)));
       return "the scene has no [springs." + type + "] table; add it with springs." + type +
              ".enabled=true";
     }
     case Scope::Plane: return local + " is a key of a plane terrain, and " + terrain_label();
     case Scope::PlaneHole:
-      if (std::holds_alternative<Plane>(s.terrains[b.ctx.terrain].shape))
-        return "terrain \"" + s.terrains[b.ctx.terrain].name +
+      if (std::holds_alternative<Plane>(s.terrains[b.ctx.index].shape))
+        return "terrain \"" + s.terrains[b.ctx.index].name +
                "\" has no hole; a hole needs both hole_center and hole_radius in the scene file";
       return local + " is a key of a plane terrain, and " + terrain_label();
     case Scope::Bowl: return local + " is a key of a bowl terrain, and " + terrain_label();

@@ -1,12 +1,15 @@
-// Internal to jelly::core: the parameter declaration table behind params.hpp and the scene loader.
+// Internal to jelly::core: the parameter declaration table behind params.hpp and the scene files.
 //
 // Every scene parameter is declared once in param_rows.cpp (key pattern, value kind, unit, default,
-// range, description, and how to read and write it in a SceneSpec). The scene loader,
-// set_parameter, get_parameter, scene_parameters, to_toml and docs/scenes.md all go through these
-// declarations.
+// range, description, its own check, and how to read and write it in a SceneSpec). Keys are global
+// ("simulation.dt") or belong to a named collection ("springs.<type>.ks", "terrain.<name>.radius"):
+// a collection is declared once (its name, its elements in a scene, its rows), so a new one is a
+// new declaration. Every user of the table (the scene reader and writer, set_parameter,
+// get_parameter, scene_parameters, docs/scenes.md) goes through one key walk, walk_keys.
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,24 +43,29 @@ using Value = std::variant<double, long long, bool, Vec3, std::string, std::vect
 
 /// When a declared key belongs to a scene.
 enum class Scope {
-  Always,      ///< every scene
-  GravityOn,   ///< scenes with gravity
-  Cube,        ///< body.type = cube
-  Particles,   ///< body.type = particles
-  SpringAny,   ///< springs.<type>.*, every spring type
-  SpringOn,    ///< springs.<type>.*, only when that type is in the scene
-  TerrainAny,  ///< terrain.<name>.*, every terrain
-  Plane,       ///< plane terrains
-  PlaneHole,   ///< plane terrains with a hole
-  Bowl,        ///< bowl terrains
-  Sphere,      ///< sphere terrains
+  Always,     ///< every scene
+  GravityOn,  ///< scenes with gravity
+  Cube,       ///< body.type = cube
+  Particles,  ///< body.type = particles
+  Element,    ///< every element of the row's collection ("every spring type", "every terrain")
+  SpringOn,   ///< springs.<type>.*, only when that type is in the scene
+  Plane,      ///< plane terrains
+  PlaneHole,  ///< plane terrains with a hole
+  Bowl,       ///< bowl terrains
+  Sphere,     ///< sphere terrains
 };
 
-/// Which spring type or terrain a wildcard key refers to.
+/// Which element of its collection a row's key refers to: the position in the collection's
+/// elements (kSpringTypes for springs, SceneSpec::terrains for terrain); 0 for global rows.
 struct Ctx {
-  SpringType spring = SpringType::Structural;
-  std::size_t terrain = 0;
+  std::size_t index = 0;
 };
+
+struct Decl;
+/// A row's own check of a value against the rest of the scene (list lengths that must match,
+/// indices in range): the message ("must give one velocity per position (8), got 2") or nullopt.
+using RowCheck = std::optional<std::string> (*)(const Decl&, const SceneSpec&, const Ctx&,
+                                                const Value&);
 
 /// One declared parameter.
 struct Decl {
@@ -73,25 +81,65 @@ struct Decl {
   double max = 0.0;
   bool min_inclusive = true;
   bool max_inclusive = true;
-  bool nonzero = false;                   ///< Vector3 that must have non-zero length
+  bool nonzero = false;   ///< Vector3 that must have non-zero length
+  bool presence = false;  ///< true: the key is written as its table's presence ([gravity],
+                          ///< [springs.<type>]), not as a key of its own
   std::vector<std::string_view> choices;  ///< Choice values
   std::string_view description;
   Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
   void (*set)(SceneSpec&, const Ctx&, const Value&) = nullptr;
+  RowCheck check = nullptr;  ///< the row's own check against the scene (after the range check)
 };
 
-/// A declaration resolved against one scene: the declaration, its context and the full key.
+/// How a collection's elements are written in a scene file.
+enum class Layout {
+  Tables,         ///< one table per element, named by it: [springs.shear]
+  ArrayOfTables,  ///< an array of tables whose `name` key names the element: [[terrain]]
+};
+
+/// A named collection of keys: "<name>.<element>.<row>" for each element a scene has.
+struct Collection {
+  std::string_view name;         ///< the first part of its keys: "springs", "terrain"
+  std::string_view placeholder;  ///< the element in the reference table: "<type>", "<name>"
+  std::string_view noun;         ///< one element in messages and docs: "spring type", "terrain"
+  Layout layout = Layout::Tables;
+  /// The element names of a scene, in key order (Ctx::index is the position in this list).
+  std::vector<std::string> (*elements)(const SceneSpec&) = nullptr;
+  std::vector<Decl> rows;  ///< patterns "<name>.*.<key>", in table order
+};
+
+/// A declaration resolved against one scene: the declaration, its context, the full key, and the
+/// collection it belongs to (nullptr for a global row).
 struct Bound {
   const Decl* decl = nullptr;
   Ctx ctx;
   std::string key;
+  const Collection* collection = nullptr;
 };
 
-/// Declarations in table order: scene, simulation, gravity, body (global), per spring type, per
-/// terrain.
+/// The global declarations in table order: scene, simulation, gravity, body.
 const std::vector<Decl>& global_decls();
-const std::vector<Decl>& spring_decls();
-const std::vector<Decl>& terrain_decls();
+/// The declared collections in table order (springs, terrain).
+const std::vector<Collection>& collections();
+
+/// Which keys walk_keys visits.
+enum class Walk {
+  Applicable,  ///< the keys that apply to the scene
+  All,         ///< every key the scene's elements could have, applicable or not
+};
+/// The one key walk: calls visit for every key of `scene` in table order (the global rows, then
+/// each collection's rows for each of its elements), stopping early when visit returns true;
+/// returns whether it stopped. With scene == nullptr it walks the declarations themselves, each
+/// collection once with its placeholder as the element ("springs.<type>.ks"), every row. A
+/// non-empty `section` ("body", "springs", "terrain") limits the walk to the keys that start with
+/// it, which saves building the others' keys when one key is looked up.
+bool walk_keys(const SceneSpec* scene, Walk which, const std::function<bool(const Bound&)>& visit,
+               std::string_view section = {});
+
+/// The part of a key or pattern before its last '.' ("terrain.floor" of "terrain.floor.radius")
+/// and after it ("radius").
+std::string_view key_table(std::string_view key);
+std::string_view key_local(std::string_view key);
 
 /// The spring types in the order scenes list them, and their key names.
 inline constexpr std::array<SpringType, 4> kSpringTypes = {
@@ -104,8 +152,16 @@ std::string_view terrain_type_name(const Terrain& t);
 
 /// The declaration with this exact pattern ("terrain.*.epsilon"), or nullptr.
 const Decl* find_decl(std::string_view pattern);
-/// Checks that need the rest of the scene (list lengths that must match); message or nullopt.
-std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, const Value& v);
+/// The checks of a value a row carries: its kind and range (check_value), then its own check
+/// against the rest of the scene (Decl::check); the message or nullopt.
+std::optional<std::string> check_row(const Bound& b, const SceneSpec& s, const Value& v);
+/// The row checks of body.velocities, body.springs and body.rest_lengths (scene_checks.cpp).
+std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s, const Ctx&,
+                                                const Value& v);
+std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s, const Ctx&,
+                                                const Value& v);
+std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
+                                                   const Value& v);
 
 /// Whether a declaration applies to the scene in context ctx.
 bool applies(const Decl& d, const SceneSpec& s, const Ctx& ctx);

@@ -1,5 +1,6 @@
 // The public interface of the parameters (params.hpp): the parameters of a scene, and getting and
-// setting one by its dotted key. The rows are in param_rows.cpp, validation in scene_checks.cpp.
+// setting one by its dotted key. The rows and the key walk are in param_rows.cpp, validation in
+// scene_checks.cpp.
 #include "jelly/params.hpp"
 
 #include <exception>
@@ -37,31 +38,14 @@ ParamInfo info_of(const Bound& b) {
   return p;
 }
 
-std::string expand(std::string_view pattern, std::string_view name) {
-  const std::size_t star = pattern.find('*');
-  if (star == std::string_view::npos) return std::string(pattern);
-  return std::string(pattern.substr(0, star)) + std::string(name) +
-         std::string(pattern.substr(star + 1));
-}
-
 }  // namespace
 
 std::vector<ParamInfo> scene_parameters(const SceneSpec& scene) {
   std::vector<ParamInfo> out;
-  for (const Decl& d : global_decls())
-    if (applies(d, scene, Ctx{})) out.push_back(info_of(Bound{&d, Ctx{}, std::string(d.pattern)}));
-  for (SpringType t : kSpringTypes) {
-    const Ctx ctx{t, 0};
-    for (const Decl& d : spring_decls())
-      if (applies(d, scene, ctx))
-        out.push_back(info_of(Bound{&d, ctx, expand(d.pattern, to_string(t))}));
-  }
-  for (std::size_t i = 0; i < scene.terrains.size(); ++i) {
-    const Ctx ctx{SpringType::Structural, i};
-    for (const Decl& d : terrain_decls())
-      if (applies(d, scene, ctx))
-        out.push_back(info_of(Bound{&d, ctx, expand(d.pattern, scene.terrains[i].name)}));
-  }
+  walk_keys(&scene, Walk::Applicable, [&](const Bound& b) {
+    out.push_back(info_of(b));
+    return false;
+  });
   return out;
 }
 
@@ -98,8 +82,7 @@ std::optional<SceneError> set_parameter(SceneSpec& scene, std::string_view key,
     auto parsed = parse_text(*b->decl, value);
     if (const auto* msg = std::get_if<std::string>(&parsed)) return fail(k, *msg);
     const Value& v = std::get<Value>(parsed);
-    if (auto msg = check_value(*b->decl, v)) return fail(k, *msg);
-    if (auto msg = check_in_scene(*b, scene, v)) return fail(k, *msg);
+    if (auto msg = check_row(*b, scene, v)) return fail(k, *msg);
     SceneSpec changed = scene;
     b->decl->set(changed, b->ctx, v);
     if (auto cross = check_scene(changed))

@@ -1,6 +1,7 @@
-// Validation of scene values, in one place: a value against its declaration (range, kind), a
-// value against the rest of the scene (list lengths, indices), terrain names, and the scene as a
-// whole (bowl rim, particle counts, spring tables). The loader and set_parameter both call these.
+// Validation of scene values, in one place: a value against its declaration (range, kind), the
+// rows' own checks against the rest of the scene (list lengths, indices; param_rows.cpp names
+// them per row), terrain names, and the scene as a whole (bowl rim, particle counts, spring
+// tables). The scene reader and set_parameter both call these, through check_row.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -114,26 +115,37 @@ bool valid_terrain_name(std::string_view name) {
 
 }  // namespace
 
-std::optional<std::string> check_in_scene(const Bound& b, const SceneSpec& s, const Value& v) {
-  if (b.decl->pattern == "body.rest_lengths") {
-    const std::size_t given = std::get<std::vector<double>>(v).size();
-    if (given != s.particles.springs.size())
-      return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
-             "), got " + std::to_string(given);
-  }
-  if (b.decl->pattern == "body.springs") {
-    // Checked here, before the indices are narrowed to int by the setter.
-    const Eigen::Index n = s.particles.positions.cols();
-    const auto& pairs = std::get<std::vector<IndexPair>>(v);
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-      if (pairs[i][0] >= n || pairs[i][1] >= n)
-        return spring_index_message(i, pairs[i][0], pairs[i][1], n);
-  }
-  if (b.decl->pattern == "body.velocities") {
-    const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
-    if (given != s.particles.positions.cols())
-      return velocity_count_message(s.particles.positions.cols(), given);
-  }
+std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
+                                                   const Value& v) {
+  const std::size_t given = std::get<std::vector<double>>(v).size();
+  if (given != s.particles.springs.size())
+    return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
+           "), got " + std::to_string(given);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s, const Ctx&,
+                                                const Value& v) {
+  // Checked here, before the indices are narrowed to int by the setter.
+  const Eigen::Index n = s.particles.positions.cols();
+  const auto& pairs = std::get<std::vector<IndexPair>>(v);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    if (pairs[i][0] >= n || pairs[i][1] >= n)
+      return spring_index_message(i, pairs[i][0], pairs[i][1], n);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s, const Ctx&,
+                                                const Value& v) {
+  const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
+  if (given != s.particles.positions.cols())
+    return velocity_count_message(s.particles.positions.cols(), given);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_row(const Bound& b, const SceneSpec& s, const Value& v) {
+  if (auto msg = check_value(*b.decl, v)) return msg;
+  if (b.decl->check) return b.decl->check(*b.decl, s, b.ctx, v);
   return std::nullopt;
 }
 

@@ -28,8 +28,11 @@ struct ParamInfo {
   std::string description;           ///< one line for help texts and tooltips
 };
 
-/// Every parameter of `scene`: the global ones, plus terrain.<name>.* for each of its terrains and
-/// the body keys of its body kind. Order is stable (the order of the declaration table).
+/// Every parameter that applies to `scene`: the global ones (the body keys of its body kind, the
+/// gravity keys when it has gravity), then each collection's keys for each of its elements
+/// (springs.<type>.* for every spring type, ks and kd only for the types it has;
+/// terrain.<name>.* for each of its terrains). Order is stable (the order of the declaration
+/// table).
 std::vector<ParamInfo> scene_parameters(const SceneSpec& scene);
 
 /// The declaration of one key in `scene`, or nullopt when the key is not declared.

@@ -1,10 +1,11 @@
-// Scene files: reading (TOML via toml++), validating and writing back (`--set`: params.cpp).
+// Scene files in: reading (TOML via toml++) and validating. The writer is scene_writer.cpp,
+// `--set` is params.cpp.
 //
-// Every key is looked up in the declaration table (param_table.hpp): a key that is not declared
-// is an error (with a "did you mean" when a declared key is close), and every value is converted
-// and range-checked by its declaration. The first error (in file order) is returned with the
-// file, the dotted key, and the line and column toml++ reports. Nothing here throws, exits or
-// writes a file.
+// Every key is looked up in the declaration table (param_table.hpp) through its key walk: a key
+// that is not declared is an error (with a "did you mean" when a declared key is close), and every
+// value is converted by its row's kind and checked by the row's checks. The first error (in file
+// order) is returned with the file, the dotted key, and the line and column toml++ reports.
+// Nothing here throws, exits or writes a file.
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cctype>
@@ -298,11 +299,7 @@ class Loader {
     where_[b.key] = pos_of(n);
     auto v = convert(*b.decl, b.key, n);
     if (!v) return false;
-    if (auto msg = check_value(*b.decl, *v)) {
-      error(b.key, pos_of(n), *msg);
-      return false;
-    }
-    if (auto msg = check_in_scene(b, spec_, *v)) {
+    if (auto msg = check_row(b, spec_, *v)) {
       error(b.key, pos_of(n), *msg);
       return false;
     }
@@ -316,7 +313,7 @@ class Loader {
     where_[key] = pos_of(n);
     auto v = convert(*b->decl, key, n);
     if (v) {
-      if (auto msg = check_value(*b->decl, *v)) {
+      if (auto msg = check_row(*b, spec_, *v)) {
         error(key, pos_of(n), *msg);
         return std::nullopt;
       }
@@ -346,24 +343,44 @@ class Loader {
     for (const auto& [b, node] : found) apply(b, *node);
   }
 
-  /// The keys of the declaration rows that apply, under `prefix`, as written in the file.
-  std::vector<std::string> local_keys(const std::vector<Decl>& table, std::string_view group,
-                                      const Ctx& ctx) const {
+  /// The keys that apply in the table `prefix` ("body", "springs.shear", "terrain.floor"), as
+  /// written in the file, in table order.
+  std::vector<std::string> local_keys(std::string_view prefix) const {
     std::vector<std::string> out;
-    for (const Decl& d : table) {
-      const std::string_view p = d.pattern;
-      if (!group.empty() && p.substr(0, group.size() + 1) != std::string(group) + ".") continue;
-      if (!applies(d, spec_, ctx)) continue;
-      std::string local(p.substr(p.rfind('.') + 1));
-      if (std::find(out.begin(), out.end(), local) == out.end()) out.push_back(std::move(local));
-    }
+    walk_keys(
+        &spec_, Walk::Applicable,
+        [&](const Bound& b) {
+          if (key_table(b.key) != prefix) return false;
+          std::string local(key_local(b.key));
+          if (std::find(out.begin(), out.end(), local) == out.end())
+            out.push_back(std::move(local));
+          return false;
+        },
+        prefix.substr(0, prefix.find('.')));
     return out;
   }
 
   // ----- sections -----
+  /// The top-level names a scene file may use, in table order: the global rows' tables (scene,
+  /// simulation, gravity, body), then the collections (springs, terrain).
+  static std::vector<std::string> section_names() {
+    std::vector<std::string> out;
+    walk_keys(nullptr, Walk::All, [&](const Bound& b) {
+      std::string name(b.key.substr(0, b.key.find('.')));
+      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
+      return false;
+    });
+    return out;
+  }
+
+  static const Collection* find_collection(std::string_view name) {
+    for (const Collection& c : collections())
+      if (c.name == name) return &c;
+    return nullptr;
+  }
+
   void read_root(const toml::table& root) {
-    const std::vector<std::string> sections = {"scene", "simulation", "gravity",
-                                               "body",  "springs",    "terrain"};
+    const std::vector<std::string> sections = section_names();
     for (auto&& [k, node] : root) {
       const std::string name(k.str());
       if (std::find(sections.begin(), sections.end(), name) == sections.end())
@@ -373,8 +390,9 @@ class Loader {
       const toml::node* node = root.get(name);
       if (!node) continue;
       where_[name] = pos_of(*node);
-      if (name == "terrain") {
-        read_terrains(*node);
+      const Collection* collection = find_collection(name);
+      if (collection && collection->layout == Layout::ArrayOfTables) {
+        read_array(*collection, *node);
         continue;
       }
       const toml::table* t = node->as_table();
@@ -382,14 +400,14 @@ class Loader {
         error(name, pos_of(*node), "must be a table [" + name + "], got " + describe(*node));
         continue;
       }
-      if (name == "scene" || name == "simulation") {
-        apply_table(*t, name, "in [" + name + "]", local_keys(global_decls(), name, Ctx{}));
+      if (collection) {
+        read_tables(*collection, *t);
       } else if (name == "gravity") {
         read_gravity(*t);
       } else if (name == "body") {
         read_body(*t);
       } else {
-        read_springs(*t);
+        apply_table(*t, name, "in [" + name + "]", local_keys(name));
       }
     }
   }
@@ -410,54 +428,76 @@ class Loader {
       if (auto b = resolve(spec_, "body.type"); b && !apply(*b, *type)) return;
     }
     const std::string kind = spec_.body_kind == BodyKind::Cube ? "cube" : "particles";
-    std::vector<std::string> keys = local_keys(global_decls(), "body", Ctx{});
-    apply_table(t, "body", "for a " + kind + " body", keys, {"type"});
+    apply_table(t, "body", "for a " + kind + " body", local_keys("body"), {"type"});
   }
 
-  void read_springs(const toml::table& t) {
-    std::vector<std::string> names;
-    for (SpringType st : kSpringTypes) names.emplace_back(to_string(st));
+  /// A collection written as one table per element ([springs.shear]): each table must name an
+  /// element; its presence row (if the collection has one) is set on before the keys are read,
+  /// and its own key (enabled = false) read last.
+  void read_tables(const Collection& c, const toml::table& t) {
+    const std::vector<std::string> names = c.elements(spec_);
+    const Decl* presence = nullptr;
+    std::vector<std::string> listed;  // the keys a table holds, for "must be a table ... with"
+    for (const Decl& d : c.rows) {
+      if (d.presence) {
+        presence = &d;
+      } else {
+        listed.emplace_back(key_local(d.pattern));
+      }
+    }
+    std::string with;
+    for (std::size_t i = 0; i < listed.size(); ++i)
+      with += (i == 0 ? "" : i + 1 == listed.size() ? " and " : ", ") + listed[i];
     for (auto&& [k, node] : t) {
       const std::string name(k.str());
-      const std::string prefix = "springs." + name;
+      const std::string prefix = std::string(c.name) + "." + name;
       where_[prefix] = pos_of(node);
-      const auto type = spring_type_from_string(name);
-      if (!type) {
-        unknown_key(prefix, name, pos_of_key(k, node), names, "", "spring type");
+      const auto at = std::find(names.begin(), names.end(), name);
+      if (at == names.end()) {
+        unknown_key(prefix, name, pos_of_key(k, node), names, "", c.noun);
         continue;
       }
-      const toml::table* st = node.as_table();
-      if (!st) {
+      const toml::table* element = node.as_table();
+      if (!element) {
         error(prefix, pos_of(node),
-              "must be a table [" + prefix + "] with ks and kd, got " + describe(node));
+              "must be a table [" + prefix + "] with " + with + ", got " + describe(node));
         continue;
       }
-      const Ctx ctx{*type, 0};
-      const Decl& enabled = *find_decl("springs.*.enabled");
-      enabled.set(spec_, ctx, Value{true});
-      apply_table(*st, prefix, "in [" + prefix + "]", local_keys(spring_decls(), "", ctx),
-                  {"enabled"});
-      if (const toml::node* en = st->get("enabled")) {
-        if (auto v = read(prefix + ".enabled", *en)) enabled.set(spec_, ctx, *v);
+      const Ctx ctx{static_cast<std::size_t>(at - names.begin())};
+      std::vector<std::string_view> skip;
+      if (presence) {
+        presence->set(spec_, ctx, Value{true});
+        skip.push_back(key_local(presence->pattern));
+      }
+      apply_table(*element, prefix, "in [" + prefix + "]", local_keys(prefix), skip);
+      if (presence) {
+        if (const toml::node* en = element->get(key_local(presence->pattern))) {
+          if (auto v = read(prefix + "." + std::string(key_local(presence->pattern)), *en))
+            presence->set(spec_, ctx, *v);
+        }
       }
     }
   }
 
-  void read_terrains(const toml::node& node) {
+  /// A collection written as an array of tables ([[terrain]]), each entry one element.
+  void read_array(const Collection& c, const toml::node& node) {
+    const std::string name(c.name);
     const toml::array* list = node.as_array();
     if (!list) {
-      error("terrain", pos_of(node),
-            "must be an array of tables [[terrain]], got " + describe(node));
+      error(name, pos_of(node),
+            "must be an array of tables [[" + name + "]], got " + describe(node));
       return;
     }
     for (std::size_t i = 0; i < list->size(); ++i) {
       const toml::node& entry = *list->get(i);
-      const std::string label = "terrain[" + std::to_string(i) + "]";
+      const std::string label = name + "[" + std::to_string(i) + "]";
       const toml::table* t = entry.as_table();
       if (!t) {
-        error(label, pos_of(entry), "must be a table [[terrain]], got " + describe(entry));
+        error(label, pos_of(entry), "must be a table [[" + name + "]], got " + describe(entry));
         continue;
       }
+      // Making an element from its entry is the terrain's own step (preset, type, hole): the only
+      // array collection so far. Another one adds its step here.
       read_terrain(*t, label);
     }
   }
@@ -532,7 +572,6 @@ class Loader {
     }
     where_[prefix] = entry_pos;
     spec_.terrains.push_back(std::move(terrain));
-    const Ctx ctx{SpringType::Structural, spec_.terrains.size() - 1};
     Terrain& added = spec_.terrains.back();
 
     // A hole is given by both of its keys (a preset may already have one).
@@ -551,7 +590,7 @@ class Loader {
     }
     const std::string type_name(terrain_type_name(added));
     std::vector<std::string> keys = {"preset", "name"};
-    for (std::string& k : local_keys(terrain_decls(), "", ctx)) keys.push_back(std::move(k));
+    for (std::string& k : local_keys(prefix)) keys.push_back(std::move(k));
     if (auto* plane = std::get_if<Plane>(&added.shape); plane && !plane->has_hole) {
       keys.emplace_back("hole_center");
       keys.emplace_back("hole_radius");
@@ -564,88 +603,6 @@ class Loader {
   std::vector<SceneError> errors_;
   std::map<std::string, Pos> where_;  // key → where it was written, for cross-key errors
 };
-
-// ----- writing -----
-
-std::string toml_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    switch (ch) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20 || c == 0x7F) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04X", c);
-          out += buf;
-        } else {
-          out += ch;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-/// A double as a TOML float ("2000.0", "0.001", "1e-07").
-std::string toml_double(double v) {
-  std::string s = format_double(v);
-  if (s.find_first_of(".eEni") == std::string::npos) s += ".0";
-  return s;
-}
-
-std::string toml_vec3(const Vec3& v) {
-  return "[" + toml_double(v.x()) + ", " + toml_double(v.y()) + ", " + toml_double(v.z()) + "]";
-}
-
-std::string toml_value(ValueKind kind, const Value& v) {
-  switch (kind) {
-    case ValueKind::Real: return toml_double(std::get<double>(v));
-    case ValueKind::Integer: return std::to_string(std::get<long long>(v));
-    case ValueKind::Bool: return std::get<bool>(v) ? "true" : "false";
-    case ValueKind::Vector3: return toml_vec3(std::get<Vec3>(v));
-    case ValueKind::Choice:
-    case ValueKind::Text: return toml_string(std::get<std::string>(v));
-    case ValueKind::Vec3List: {
-      const auto& list = std::get<std::vector<Vec3>>(v);
-      std::string s = "[";
-      for (std::size_t i = 0; i < list.size(); ++i)
-        s += (i ? ",\n  " : "\n  ") + toml_vec3(list[i]);
-      return s + (list.empty() ? "]" : ",\n]");
-    }
-    case ValueKind::IndexPairList: {
-      std::string s = "[";
-      const auto& list = std::get<std::vector<IndexPair>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i)
-        s += (i ? ", [" : "[") + std::to_string(list[i][0]) + ", " + std::to_string(list[i][1]) +
-             "]";
-      return s + "]";
-    }
-    case ValueKind::RealList: {
-      std::string s = "[";
-      const auto& list = std::get<std::vector<double>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i) s += (i ? ", " : "") + toml_double(list[i]);
-      return s + "]";
-    }
-  }
-  return "\"\"";
-}
-
-/// Writes the rows of `table` that apply under ctx, except `skip`, as "key = value" lines.
-void write_rows(std::string& out, const SceneSpec& scene, const std::vector<Decl>& table,
-                std::string_view group, const Ctx& ctx, const std::vector<std::string_view>& skip) {
-  for (const Decl& d : table) {
-    const std::string_view p = d.pattern;
-    if (!group.empty() && p.substr(0, group.size() + 1) != std::string(group) + ".") continue;
-    const std::string_view local = p.substr(p.rfind('.') + 1);
-    if (std::find(skip.begin(), skip.end(), local) != skip.end()) continue;
-    if (!applies(d, scene, ctx)) continue;
-    out += std::string(local) + " = " + toml_value(d.kind, d.get(scene, ctx)) + "\n";
-  }
-}
 
 }  // namespace
 
@@ -690,31 +647,6 @@ SceneResult load_scene(const std::filesystem::path& path) {
     r.error = SceneError{file, "", 0, 0, std::string("cannot read the scene file: ") + e.what()};
     return r;
   }
-}
-
-std::string to_toml(const SceneSpec& scene) {
-  std::string out = "# Written by jelly (to_toml); reads back to the same scene.\n";
-  const Ctx none{};
-  out += "\n[scene]\n";
-  write_rows(out, scene, global_decls(), "scene", none, {});
-  out += "\n[simulation]\n";
-  write_rows(out, scene, global_decls(), "simulation", none, {});
-  if (scene.gravity) {
-    out += "\n[gravity]\n";
-    write_rows(out, scene, global_decls(), "gravity", none, {"enabled"});
-  }
-  out += "\n[body]\n";
-  write_rows(out, scene, global_decls(), "body", none, {});
-  for (SpringType t : kSpringTypes) {
-    if (!spring_settings(scene, t).enabled) continue;
-    out += "\n[springs." + std::string(to_string(t)) + "]\n";
-    write_rows(out, scene, spring_decls(), "", Ctx{t, 0}, {"enabled"});
-  }
-  for (std::size_t i = 0; i < scene.terrains.size(); ++i) {
-    out += "\n[[terrain]]\nname = " + toml_string(scene.terrains[i].name) + "\n";
-    write_rows(out, scene, terrain_decls(), "", Ctx{SpringType::Structural, i}, {});
-  }
-  return out;
 }
 
 }  // namespace jelly
