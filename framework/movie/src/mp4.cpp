@@ -7,8 +7,13 @@
 
 namespace jelly::movie {
 
+#ifdef _WIN32
+const char* const kFfmpegInstallHint =
+    "install ffmpeg (https://ffmpeg.org/download.html) and put the folder of ffmpeg.exe on PATH";
+#else
 const char* const kFfmpegInstallHint =
     "install ffmpeg: apt-get install ffmpeg on Debian/Ubuntu, or tools/install-deps.sh --ffmpeg";
+#endif
 
 Mp4Result encode_mp4(const std::filesystem::path& frames_dir, double fps,
                      const std::filesystem::path& out) {
