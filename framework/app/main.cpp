@@ -4,13 +4,13 @@
 #include <vector>
 
 #include "app.hpp"
-#include "jelly/cli/render_command.hpp"
+#include "jelly/movie/render_command.hpp"
 
 int main(int argc, char** argv) {
   if (argc >= 2 &&
       (std::strcmp(argv[1], "--headless") == 0 || std::strcmp(argv[1], "render") == 0)) {
     // Same path as `jelly render`: argv[0] becomes the command name.
-    return jelly::render_command(argc - 1, argv + 1);
+    return jelly::movie::render_command(argc - 1, argv + 1);
   }
   jelly::app::AppOptions options;
   if (const auto code = jelly::app::parse_options(argc, argv, options)) return *code;

@@ -4,7 +4,9 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -45,105 +47,123 @@ bool step_input(const char* label, double& dt) {
   return ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive());
 }
 
-/// One widget per declared parameter; applies the change through set_parameter (so the panel
-/// validates exactly like a scene file). Returns true when a value changed.
+/// The group a parameter is shown under: the first part of its key ("springs", "body",
+/// "terrain.floor", ...).
+std::string parameter_group(const std::string& key) {
+  std::string g = key.substr(0, key.find('.'));
+  if (g == "terrain") g = key.substr(0, key.find('.', 8));
+  return g;
+}
+
+// One widget per parameter type. Each shows the value of `p.key` in `scene` and, when the user
+// finished an edit, returns the new value as text (what set_parameter reads).
+
+std::optional<std::string> real_widget(const SceneSpec& scene, const ParamInfo& p,
+                                       const std::string& label) {
+  double v = get_number(scene, p.key).value_or(0.0);
+  if (p.bounded && std::isfinite(p.min) && std::isfinite(p.max)) {
+    const bool log = p.min > 0.0 && p.max / p.min > 100.0;
+    ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &p.min, &p.max, "%.5g",
+                        log ? ImGuiSliderFlags_Logarithmic : 0);
+  } else {
+    ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, "%.5g");
+  }
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return std::nullopt;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return std::string(buf);
+}
+
+std::optional<std::string> integer_widget(const SceneSpec& scene, const ParamInfo& p,
+                                          const std::string& label) {
+  int v = static_cast<int>(get_number(scene, p.key).value_or(0.0));
+  if (p.bounded && std::isfinite(p.max) && p.max - p.min <= 100) {
+    const int lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
+    ImGui::SliderInt(label.c_str(), &v, lo, hi);
+  } else {
+    ImGui::InputInt(label.c_str(), &v);
+  }
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return std::nullopt;
+  return std::to_string(v);
+}
+
+std::optional<std::string> bool_widget(const SceneSpec& scene, const ParamInfo& p,
+                                       const std::string& label) {
+  bool v = get_parameter(scene, p.key).value_or("false") == "true";
+  if (!ImGui::Checkbox(label.c_str(), &v)) return std::nullopt;
+  return std::string(v ? "true" : "false");
+}
+
+std::optional<std::string> vector3_widget(const SceneSpec& scene, const ParamInfo& p,
+                                          const std::string& label) {
+  double v[3] = {0, 0, 0};
+  const std::string cur = get_parameter(scene, p.key).value_or("0,0,0");
+  std::sscanf(cur.c_str(), "%lf , %lf , %lf", &v[0], &v[1], &v[2]);
+  ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, v, 3, nullptr, nullptr, "%.4g");
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return std::nullopt;
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
+  return std::string(buf);
+}
+
+std::optional<std::string> choice_widget(const SceneSpec& scene, const ParamInfo& p,
+                                         const std::string& label) {
+  std::optional<std::string> text;
+  const std::string cur = get_parameter(scene, p.key).value_or("");
+  if (ImGui::BeginCombo(label.c_str(), cur.c_str())) {
+    for (const std::string& c : p.choices)
+      if (ImGui::Selectable(c.c_str(), c == cur) && c != cur) text = c;
+    ImGui::EndCombo();
+  }
+  return text;
+}
+
+std::optional<std::string> parameter_widget(const SceneSpec& scene, const ParamInfo& p,
+                                            const std::string& label) {
+  switch (p.type) {
+    case ParamType::Real: return real_widget(scene, p, label);
+    case ParamType::Integer: return integer_widget(scene, p, label);
+    case ParamType::Bool: return bool_widget(scene, p, label);
+    case ParamType::Vector3: return vector3_widget(scene, p, label);
+    case ParamType::Choice: return choice_widget(scene, p, label);
+    case ParamType::Text:
+      ImGui::LabelText(label.c_str(), "%s", get_parameter(scene, p.key).value_or("").c_str());
+      break;
+  }
+  return std::nullopt;
+}
+
+/// The tooltip of the widget just drawn: the parameter's meaning, default and range.
+void parameter_tooltip(const ParamInfo& p) {
+  if (!ImGui::IsItemHovered() || p.description.empty()) return;
+  std::string tip = p.description + "\ndefault " + p.default_text;
+  if (p.bounded) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "\nrange %s%g, %g%s", p.min_inclusive ? "[" : "(", p.min, p.max,
+                  p.max_inclusive ? "]" : ")");
+    tip += buf;
+  }
+  ImGui::SetTooltip("%s", tip.c_str());
+}
+
+/// One widget per declared parameter, under a heading per group; applies the change through
+/// set_parameter (so the panel validates exactly like a scene file). Returns true when a value
+/// changed.
 bool parameter_widgets(AppState& s) {
   bool changed = false;
   std::string group;
   for (const ParamInfo& p : scene_parameters(s.edited)) {
-    // Group by the first part of the key ("springs", "body", "terrain.floor", ...).
-    std::string g = p.key.substr(0, p.key.find('.'));
-    if (g == "terrain") g = p.key.substr(0, p.key.find('.', 8));
-    if (g != group) {
+    if (std::string g = parameter_group(p.key); g != group) {
       group = g;
       ImGui::Separator();
       ImGui::TextDisabled("%s", group.c_str());
     }
     const std::string label = p.key.substr(group.size() + (p.key.size() > group.size() ? 1 : 0)) +
                               (p.unit.empty() ? "" : " [" + p.unit + "]") + "##" + p.key;
-    std::string text;
-    bool edited = false;
-    switch (p.type) {
-      case ParamType::Real: {
-        double v = get_number(s.edited, p.key).value_or(0.0);
-        if (p.bounded && std::isfinite(p.min) && std::isfinite(p.max)) {
-          const bool log = p.min > 0.0 && p.max / p.min > 100.0;
-          ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &p.min, &p.max, "%.5g",
-                              log ? ImGuiSliderFlags_Logarithmic : 0);
-        } else {
-          ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, "%.5g");
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) {
-          char buf[64];
-          std::snprintf(buf, sizeof buf, "%.17g", v);
-          text = buf;
-          edited = true;
-        }
-        break;
-      }
-      case ParamType::Integer: {
-        int v = static_cast<int>(get_number(s.edited, p.key).value_or(0.0));
-        if (p.bounded && std::isfinite(p.max) && p.max - p.min <= 100) {
-          const int lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
-          ImGui::SliderInt(label.c_str(), &v, lo, hi);
-        } else {
-          ImGui::InputInt(label.c_str(), &v);
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) {
-          text = std::to_string(v);
-          edited = true;
-        }
-        break;
-      }
-      case ParamType::Bool: {
-        bool v = get_parameter(s.edited, p.key).value_or("false") == "true";
-        if (ImGui::Checkbox(label.c_str(), &v)) {
-          text = v ? "true" : "false";
-          edited = true;
-        }
-        break;
-      }
-      case ParamType::Vector3: {
-        double v[3] = {0, 0, 0};
-        const std::string cur = get_parameter(s.edited, p.key).value_or("0,0,0");
-        std::sscanf(cur.c_str(), "%lf , %lf , %lf", &v[0], &v[1], &v[2]);
-        ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, v, 3, nullptr, nullptr, "%.4g");
-        if (ImGui::IsItemDeactivatedAfterEdit()) {
-          char buf[128];
-          std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
-          text = buf;
-          edited = true;
-        }
-        break;
-      }
-      case ParamType::Choice: {
-        const std::string cur = get_parameter(s.edited, p.key).value_or("");
-        if (ImGui::BeginCombo(label.c_str(), cur.c_str())) {
-          for (const std::string& c : p.choices)
-            if (ImGui::Selectable(c.c_str(), c == cur) && c != cur) {
-              text = c;
-              edited = true;
-            }
-          ImGui::EndCombo();
-        }
-        break;
-      }
-      case ParamType::Text:
-        ImGui::LabelText(label.c_str(), "%s", get_parameter(s.edited, p.key).value_or("").c_str());
-        break;
-    }
-    if (ImGui::IsItemHovered() && !p.description.empty()) {
-      std::string tip = p.description + "\ndefault " + p.default_text;
-      if (p.bounded) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "\nrange %s%g, %g%s", p.min_inclusive ? "[" : "(", p.min,
-                      p.max, p.max_inclusive ? "]" : ")");
-        tip += buf;
-      }
-      ImGui::SetTooltip("%s", tip.c_str());
-    }
-    if (edited) {
-      if (auto err = set_parameter(s.edited, p.key, text)) {
+    const std::optional<std::string> text = parameter_widget(s.edited, p, label);
+    parameter_tooltip(p);
+    if (text) {
+      if (auto err = set_parameter(s.edited, p.key, *text)) {
         s.scene_error = err->text();
       } else {
         s.scene_error.clear();
@@ -172,19 +192,8 @@ bool header(AppState& s, const char* label, const char* key, bool open_by_defaul
   return ImGui::CollapsingHeader(label, open_by_default ? ImGuiTreeNodeFlags_DefaultOpen : 0);
 }
 
-}  // namespace
-
-void draw_panels(AppState& s, double fps) {
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.panel_width), io.DisplaySize.y));
-  ImGui::Begin("Jelly Lab", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::PushItemWidth(-170);
-  const std::vector<SimulationRun*> runs = s.run_pointers();
-  SimulationRun* main_run = runs.empty() ? nullptr : runs.front();
-
-  // ---- student hints ----
+/// The student's hints: the tasks the probe finds not implemented (shown only while some are).
+void tasks_section(const AppState& s) {
   int missing = 0;
   for (const TaskStatus& t : s.tasks) missing += t.implemented ? 0 : 1;
   if (missing > 0 &&
@@ -195,187 +204,232 @@ void draw_panels(AppState& s, double fps) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.evidence.c_str());
       }
   }
+}
 
-  // ---- scenes ----
-  if (header(s, "Scene", "scene", true)) {
-    const char* current =
-        s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
-    if (ImGui::BeginCombo("scene", current)) {
-      for (std::size_t i = 0; i < s.scenes.size(); ++i)
-        if (ImGui::Selectable(s.scenes[i].name.c_str(), static_cast<int>(i) == s.scene_index))
-          load_scene_into(s, static_cast<int>(i));
-      ImGui::EndCombo();
-    }
-    char path[512];
-    std::snprintf(path, sizeof path, "%s", s.open_path.c_str());
-    if (ImGui::InputText("file", path, sizeof path)) s.open_path = path;
-    ImGui::SameLine();
-    if (ImGui::Button("Open") && !s.open_path.empty()) load_scene_into(s, -1, s.open_path);
-    if (!s.edited.description.empty()) ImGui::TextWrapped("%s", s.edited.description.c_str());
-    if (!s.scene_error.empty()) ImGui::TextColored(kRed, "%s", s.scene_error.c_str());
+/// Scene: the scenes folder's list, a file to open, the description and the last load error.
+void scene_section(AppState& s) {
+  if (!header(s, "Scene", "scene", true)) return;
+  const char* current =
+      s.scene_index >= 0 ? s.scenes[s.scene_index].name.c_str() : s.edited.name.c_str();
+  if (ImGui::BeginCombo("scene", current)) {
+    for (std::size_t i = 0; i < s.scenes.size(); ++i)
+      if (ImGui::Selectable(s.scenes[i].name.c_str(), static_cast<int>(i) == s.scene_index))
+        load_scene_into(s, static_cast<int>(i));
+    ImGui::EndCombo();
   }
+  char path[512];
+  std::snprintf(path, sizeof path, "%s", s.open_path.c_str());
+  if (ImGui::InputText("file", path, sizeof path)) s.open_path = path;
+  ImGui::SameLine();
+  if (ImGui::Button("Open") && !s.open_path.empty()) load_scene_into(s, -1, s.open_path);
+  if (!s.edited.description.empty()) ImGui::TextWrapped("%s", s.edited.description.c_str());
+  if (!s.scene_error.empty()) ImGui::TextColored(kRed, "%s", s.scene_error.c_str());
+}
 
-  // ---- simulation ----
-  if (header(s, "Simulation", "simulation", true)) {
-    if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
-    ImGui::SameLine();
-    if (ImGui::Button("Step (N)")) s.step_requested = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)")) s.reset_requested = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Camera (C)")) s.camera_reset_requested = true;
-    if (main_run && main_run->simulator())
-      ImGui::Text("t = %.3f s   step %ld   %.0f fps", main_run->time(),
-                  main_run->simulator()->steps(), fps);
-    float factor = static_cast<float>(s.clock.factor);
-    if (ImGui::SliderFloat("real-time factor", &factor, 0.1f, 4.0f, "%.2fx",
-                           ImGuiSliderFlags_Logarithmic)) {
-      s.clock.factor = factor;
-      s.clock.restart();
-    }
-    if (s.scripted) {
-      ImGui::TextDisabled("scripted run (not real time)");
-    } else if (s.playing && !s.recording) {
-      if (s.clock.behind())
-        ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time",
-                           s.clock.achieved_factor());
-      else
-        ImGui::TextColored(kGreen, "running at %.2fx real time", s.clock.achieved_factor());
-    }
-    if (!s.comparing) {
-      if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
-      if (step_input(s.edited.auto_dt ? "largest step h" : "step h", s.dt))
-        s.reset_requested = true;
-      if (ImGui::Checkbox("automatic step (stability estimate)", &s.edited.auto_dt))
-        s.reset_requested = true;
-      s.edited.integrator = s.integrator;  // keep the parameter view in step
-      s.edited.dt = s.dt;
-      if (main_run && main_run->auto_step())
-        ImGui::TextWrapped("%s", main_run->auto_step()->message().c_str());
-      if (main_run && main_run->simulator()) {
-        const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
-        if (std::isinf(hc))
-          ImGui::TextDisabled("stable step estimate: any h");
-        else if (hc > 0.0)
-          ImGui::TextDisabled("stable step estimate: h <= %.3g s", hc);
-      }
-    }
-    // Instability banner with one-click retry.
-    for (SimulationRun* r : runs) {
-      if (!r->simulator() || !r->simulator()->instability()) continue;
-      const InstabilityReport& rep = *r->simulator()->instability();
-      ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      ImGui::TextWrapped("UNSTABLE: %s stopped at step %ld (t = %.3f s, h = %g s): %s",
-                         std::string(display_name(rep.integrator)).c_str(), rep.step, rep.time,
-                         rep.step_size, rep.reason.c_str());
-      ImGui::PopStyleColor();
-      char label[96];
-      std::snprintf(label, sizeof label, "Retry at h = %.3g s##%p", rep.recommended_step,
-                    static_cast<void*>(r));
-      if (ImGui::Button(label) && rep.recommended_step > 0.0 &&
-          std::isfinite(rep.recommended_step)) {
-        if (s.comparing) {
-          for (CompareSlot& slot : s.slots)
-            if (slot.integrator == rep.integrator) slot.dt = rep.recommended_step;
-        } else {
-          s.dt = rep.recommended_step;
-        }
-        s.reset_requested = true;
-      }
-    }
-    for (SimulationRun* r : runs)
-      if (!r->ok()) ImGui::TextColored(kRed, "cannot run: %s", r->error().c_str());
+/// Play, step, reset, camera; the time, step count and frame rate; the real-time factor and
+/// whether the runs keep up with it.
+void time_controls(AppState& s, const SimulationRun* main_run, double fps) {
+  if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
+  ImGui::SameLine();
+  if (ImGui::Button("Step (N)")) s.step_requested = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) s.reset_requested = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Camera (C)")) s.camera_reset_requested = true;
+  if (main_run && main_run->simulator())
+    ImGui::Text("t = %.3f s   step %ld   %.0f fps", main_run->time(),
+                main_run->simulator()->steps(), fps);
+  float factor = static_cast<float>(s.clock.factor);
+  if (ImGui::SliderFloat("real-time factor", &factor, 0.1f, 4.0f, "%.2fx",
+                         ImGuiSliderFlags_Logarithmic)) {
+    s.clock.factor = factor;
+    s.clock.restart();
   }
-
-  // ---- comparison ----
-  if (header(s, "Comparison mode", "comparison", false)) {
-    if (ImGui::Checkbox("compare side by side", &s.comparing)) s.reset_requested = true;
-    int count = static_cast<int>(s.slots.size());
-    if (ImGui::SliderInt("runs", &count, 2, 4)) {
-      s.slots.resize(count, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}});
-      s.reset_requested = s.comparing;
-    }
-    for (std::size_t i = 0; i < s.slots.size(); ++i) {
-      ImGui::PushID(static_cast<int>(i));
-      CompareSlot& slot = s.slots[i];
-      if (integrator_combo("integrator", slot.integrator)) s.reset_requested = s.comparing;
-      if (step_input("step h", slot.dt)) s.reset_requested = s.comparing;
-      // This run's own parameters, e.g. "springs.structural.ks=1e5" beside an unchanged run.
-      char buf[256];
-      std::snprintf(buf, sizeof buf, "%s", slot.overrides.c_str());
-      if (ImGui::InputTextWithHint("own parameters", "key=value; ... (jelly params)", buf,
-                                   sizeof buf, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        slot.overrides = buf;
-        s.reset_requested = s.comparing;
-      }
-      if (!slot.error.empty()) ImGui::TextColored(kRed, "%s", slot.error.c_str());
-      ImGui::Separator();
-      ImGui::PopID();
-    }
-    if (ImGui::Button("Start together")) {
-      s.comparing = true;
-      s.reset_requested = true;
-      s.playing = true;
-    }
+  if (s.scripted) {
+    ImGui::TextDisabled("scripted run (not real time)");
+  } else if (s.playing && !s.recording) {
+    if (s.clock.behind())
+      ImGui::TextColored(kRed, "can't keep up: running at %.2fx real time",
+                         s.clock.achieved_factor());
+    else
+      ImGui::TextColored(kGreen, "running at %.2fx real time", s.clock.achieved_factor());
   }
+}
 
-  // ---- parameters ----
-  if (header(s, "Parameters", "parameters", false)) {
-    if (ImGui::Button("Reset to the scene's values")) {
-      s.edited = s.original;
-      s.integrator = s.original.integrator;
-      s.dt = s.original.dt;
-      s.scene_error.clear();
-      s.reset_requested = true;
-    }
-    if (parameter_widgets(s)) {
-      // simulation.integrator and simulation.dt are the Simulation panel's integrator and step.
-      s.integrator = s.edited.integrator;
-      s.dt = s.edited.dt;
+/// The single run's integrator, step and automatic step, with the stable-step estimate (in
+/// comparison mode each slot has its own: comparison_section).
+void integrator_controls(AppState& s, SimulationRun* main_run) {
+  if (integrator_combo("integrator", s.integrator)) s.reset_requested = true;
+  if (step_input(s.edited.auto_dt ? "largest step h" : "step h", s.dt)) s.reset_requested = true;
+  if (ImGui::Checkbox("automatic step (stability estimate)", &s.edited.auto_dt))
+    s.reset_requested = true;
+  s.edited.integrator = s.integrator;  // keep the parameter view in step
+  s.edited.dt = s.dt;
+  if (main_run && main_run->auto_step())
+    ImGui::TextWrapped("%s", main_run->auto_step()->message().c_str());
+  if (main_run && main_run->simulator()) {
+    const double hc = main_run->simulator()->estimate().critical_step(s.integrator);
+    if (std::isinf(hc))
+      ImGui::TextDisabled("stable step estimate: any h");
+    else if (hc > 0.0)
+      ImGui::TextDisabled("stable step estimate: h <= %.3g s", hc);
+  }
+}
+
+/// Each unstable run's report with a one-click retry at the recommended step, and each run that
+/// could not start.
+void run_problems(AppState& s, const std::vector<SimulationRun*>& runs) {
+  for (SimulationRun* r : runs) {
+    if (!r->simulator() || !r->simulator()->instability()) continue;
+    const InstabilityReport& rep = *r->simulator()->instability();
+    ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+    ImGui::TextWrapped("UNSTABLE: %s stopped at step %ld (t = %.3f s, h = %g s): %s",
+                       std::string(display_name(rep.integrator)).c_str(), rep.step, rep.time,
+                       rep.step_size, rep.reason.c_str());
+    ImGui::PopStyleColor();
+    char label[96];
+    std::snprintf(label, sizeof label, "Retry at h = %.3g s##%p", rep.recommended_step,
+                  static_cast<void*>(r));
+    if (ImGui::Button(label) && rep.recommended_step > 0.0 && std::isfinite(rep.recommended_step)) {
+      if (s.comparing) {
+        for (CompareSlot& slot : s.slots)
+          if (slot.integrator == rep.integrator) slot.dt = rep.recommended_step;
+      } else {
+        s.dt = rep.recommended_step;
+      }
       s.reset_requested = true;
     }
   }
+  for (SimulationRun* r : runs)
+    if (!r->ok()) ImGui::TextColored(kRed, "cannot run: %s", r->error().c_str());
+}
 
-  // ---- drawing ----
-  if (header(s, "Draw", "draw", false)) {
-    ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
-    ImGui::Checkbox("particles", &s.frame.draw.particles);
-    static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear",
-                                   "bending springs"};
-    for (int i = 0; i < 4; ++i) {
-      const auto& c = colors::kSprings[i];
-      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
-      ImGui::Checkbox(names[i], &s.frame.draw.springs[i]);
-      ImGui::PopStyleColor();
-    }
-    ImGui::Checkbox("ground grid", &s.frame.draw.grid);
-    ImGui::Checkbox("parameters on the frame", &s.frame.caption);
-  }
+/// Simulation: time controls, the integrator and step (one run), instability banners.
+void simulation_section(AppState& s, const std::vector<SimulationRun*>& runs, double fps) {
+  if (!header(s, "Simulation", "simulation", true)) return;
+  SimulationRun* main_run = runs.empty() ? nullptr : runs.front();
+  time_controls(s, main_run, fps);
+  if (!s.comparing) integrator_controls(s, main_run);
+  run_problems(s, runs);
+}
 
-  // ---- plots ----
-  if (header(s, "Plots", "plots", true)) {
-    for (SimulationRun* r : runs) {
-      if (runs.size() > 1)
-        ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
-      ImGui::PushID(r);
-      plot("energy", r->history(), &RunSample::energy, "J");
-      plot("COM height", r->history(), &RunSample::com_height, "m");
-      plot("ms / step", r->history(), &RunSample::ms_per_step, "ms");
-      ImGui::PopID();
-    }
+/// One comparison slot: integrator, step and the run's own parameters.
+void comparison_slot(AppState& s, CompareSlot& slot) {
+  if (integrator_combo("integrator", slot.integrator)) s.reset_requested = s.comparing;
+  if (step_input("step h", slot.dt)) s.reset_requested = s.comparing;
+  // This run's own parameters, e.g. "springs.structural.ks=1e5" beside an unchanged run.
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s", slot.overrides.c_str());
+  if (ImGui::InputTextWithHint("own parameters", "key=value; ... (jelly params)", buf, sizeof buf,
+                               ImGuiInputTextFlags_EnterReturnsTrue)) {
+    slot.overrides = buf;
+    s.reset_requested = s.comparing;
   }
+  if (!slot.error.empty()) ImGui::TextColored(kRed, "%s", slot.error.c_str());
+}
 
-  // ---- recording ----
-  if (header(s, "Recording", "recording", false)) {
-    if (ImGui::Button(s.recording ? "Stop recording" : "Record PNG frames")) toggle_recording(s);
-    ImGui::SameLine();
-    if (ImGui::Button("Screenshot (P)")) s.screenshot_requested = true;
-    ImGui::TextWrapped(
-        "Frames advance 1/30 s x factor each, so the video plays at the chosen speed; "
-        "MP4 when ffmpeg is installed.");
-    if (!s.record_message.empty()) ImGui::TextWrapped("%s", s.record_message.c_str());
-    if (!s.screenshot_message.empty()) ImGui::TextWrapped("%s", s.screenshot_message.c_str());
+/// Comparison mode: on or off, how many runs, each slot, and starting them together.
+void comparison_section(AppState& s) {
+  if (!header(s, "Comparison mode", "comparison", false)) return;
+  if (ImGui::Checkbox("compare side by side", &s.comparing)) s.reset_requested = true;
+  int count = static_cast<int>(s.slots.size());
+  if (ImGui::SliderInt("runs", &count, 2, 4)) {
+    s.slots.resize(count, CompareSlot{IntegratorKind::RK4, s.dt, {}, {}});
+    s.reset_requested = s.comparing;
   }
+  for (std::size_t i = 0; i < s.slots.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    comparison_slot(s, s.slots[i]);
+    ImGui::Separator();
+    ImGui::PopID();
+  }
+  if (ImGui::Button("Start together")) {
+    s.comparing = true;
+    s.reset_requested = true;
+    s.playing = true;
+  }
+}
+
+/// Parameters: every declared parameter of the edited scene, and going back to the file's.
+void parameters_section(AppState& s) {
+  if (!header(s, "Parameters", "parameters", false)) return;
+  if (ImGui::Button("Reset to the scene's values")) {
+    s.edited = s.original;
+    s.integrator = s.original.integrator;
+    s.dt = s.original.dt;
+    s.scene_error.clear();
+    s.reset_requested = true;
+  }
+  if (parameter_widgets(s)) {
+    // simulation.integrator and simulation.dt are the Simulation panel's integrator and step.
+    s.integrator = s.edited.integrator;
+    s.dt = s.edited.dt;
+    s.reset_requested = true;
+  }
+}
+
+/// Draw: what the frame shows (each spring type in its colour).
+void draw_section(AppState& s) {
+  if (!header(s, "Draw", "draw", false)) return;
+  ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
+  ImGui::Checkbox("particles", &s.frame.draw.particles);
+  static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear",
+                                 "bending springs"};
+  for (int i = 0; i < 4; ++i) {
+    const auto& c = colors::kSprings[i];
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
+    ImGui::Checkbox(names[i], &s.frame.draw.springs[i]);
+    ImGui::PopStyleColor();
+  }
+  ImGui::Checkbox("ground grid", &s.frame.draw.grid);
+  ImGui::Checkbox("parameters on the frame", &s.frame.caption);
+}
+
+/// Plots: energy, centre-of-mass height and cost per step of each run.
+void plots_section(AppState& s, const std::vector<SimulationRun*>& runs) {
+  if (!header(s, "Plots", "plots", true)) return;
+  for (SimulationRun* r : runs) {
+    if (runs.size() > 1)
+      ImGui::TextDisabled("%s", std::string(display_name(r->setup().integrator)).c_str());
+    ImGui::PushID(r);
+    plot("energy", r->history(), &RunSample::energy, "J");
+    plot("COM height", r->history(), &RunSample::com_height, "m");
+    plot("ms / step", r->history(), &RunSample::ms_per_step, "ms");
+    ImGui::PopID();
+  }
+}
+
+/// Recording: start and stop PNG frames (and the MP4), a screenshot, and what they wrote.
+void recording_section(AppState& s) {
+  if (!header(s, "Recording", "recording", false)) return;
+  if (ImGui::Button(s.recording ? "Stop recording" : "Record PNG frames")) toggle_recording(s);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (P)")) s.screenshot_requested = true;
+  ImGui::TextWrapped(
+      "Frames advance 1/30 s x factor each, so the video plays at the chosen speed; "
+      "MP4 when ffmpeg is installed.");
+  if (!s.record_message.empty()) ImGui::TextWrapped("%s", s.record_message.c_str());
+  if (!s.screenshot_message.empty()) ImGui::TextWrapped("%s", s.screenshot_message.c_str());
+}
+
+}  // namespace
+
+void draw_panels(AppState& s, double fps) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.panel_width), io.DisplaySize.y));
+  ImGui::Begin("Jelly Lab", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(-170);
+  tasks_section(s);
+  scene_section(s);  // may load another scene, which rebuilds the runs: take them after it
+  const std::vector<SimulationRun*> runs = s.run_pointers();
+  simulation_section(s, runs, fps);
+  comparison_section(s);
+  parameters_section(s);
+  draw_section(s);
+  plots_section(s, runs);
+  recording_section(s);
   ImGui::PopItemWidth();
   ImGui::End();
 }

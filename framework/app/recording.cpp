@@ -1,9 +1,10 @@
-// jelly-lab's recording (PNG frames, then an MP4 through ffmpeg) and screenshots.
+// jelly-lab's recording (PNG frames, then an MP4 through jelly::movie's ffmpeg step) and
+// screenshots.
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 
 #include "app_loop.hpp"
+#include "jelly/movie/mp4.hpp"
 
 namespace jelly::app {
 
@@ -19,22 +20,23 @@ std::string timestamp() {
   return buf;
 }
 
-bool ffmpeg_available() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
-
 }  // namespace
 
 void finish_recording(AppState& s) {
   s.recording = false;
   std::string msg = std::to_string(s.record_frame) + " frames in " + s.record_dir.string();
-  if (s.record_frame > 0 && ffmpeg_available()) {
+  if (s.record_frame > 0) {
+    // Recorded frames advance 1/30 s x factor each (stepping.cpp): the video plays at 30 fps.
     const fs::path mp4 = s.record_dir / "video.mp4";
-    const std::string cmd = "ffmpeg -loglevel error -y -framerate 30 -i '" +
-                            (s.record_dir / "frame_%05d.png").string() +
-                            "' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" +
-                            mp4.string() + "'";
-    msg += std::system(cmd.c_str()) == 0 ? ", " + mp4.filename().string() : " (ffmpeg failed)";
-  } else if (s.record_frame > 0) {
-    msg += " (no ffmpeg: PNG only)";
+    const movie::Mp4Result video = movie::encode_mp4(s.record_dir, 30.0, mp4);
+    switch (video.status) {
+      case movie::Mp4Result::Status::Written: msg += ", " + mp4.filename().string(); break;
+      case movie::Mp4Result::Status::Failed: msg += " (ffmpeg failed: " + video.detail + ")"; break;
+      case movie::Mp4Result::Status::NoFfmpeg:
+        msg +=
+            " (no ffmpeg: PNG only; for video.mp4, " + std::string(movie::kFfmpegInstallHint) + ")";
+        break;
+    }
   }
   s.record_message = msg;
 }

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 
 #ifdef JELLY_HAVE_RENDER
-#include "jelly/cli/render_command.hpp"
+#include "jelly/movie/render_command.hpp"
 #endif
 #ifdef JELLY_HAVE_STUDY
 #include "study_command.hpp"
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     if (command == "params") return params_command(argc, argv);
     if (command == "probe") return probe_command(argc, argv);
 #ifdef JELLY_HAVE_RENDER
-    if (command == "render") return jelly::render_command(argc - 1, argv + 1);
+    if (command == "render") return jelly::movie::render_command(argc - 1, argv + 1);
 #endif
 #ifdef JELLY_HAVE_STUDY
     if (command == "study") return study_command(argc, argv);

@@ -12,12 +12,14 @@ set(_good
   "assignments/forces.cpp|#include \"jelly/tasks/forces.hpp\""
   "framework/session/src/a.cpp|#include \"jelly/session/x.hpp\"\n#include \"jelly/scene.hpp\""
   "framework/render/src/a.cpp|#include <GL/glcorearb.h>\n#include \"jelly/session/x.hpp\"\n#include \"jelly/render/y.hpp\""
-  "framework/cli/a.cpp|#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
-  "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/cli/render_command.hpp\""
+  "framework/movie/src/a.cpp|#include \"jelly/render/y.hpp\"\n#include \"jelly/movie/z.hpp\"\n#include \"jelly/cli_common/c.hpp\""
+  "framework/cli/a.cpp|#include \"jelly/movie/render_command.hpp\"\n#include \"jelly/cli/x.hpp\""
+  "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/movie/mp4.hpp\""
   "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"process.hpp\""
   "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\""
-  "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_render)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()"
-  "framework/app/CMakeLists.txt|add_executable(jelly-lab main.cpp)\ntarget_link_libraries(jelly-lab PRIVATE jelly::render_command jelly::render)")
+  "framework/movie/CMakeLists.txt|add_library(jelly_movie a.cpp)\ntarget_link_libraries(jelly_movie PUBLIC jelly::render jelly::session)"
+  "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_movie)\n  target_link_libraries(jelly PRIVATE jelly::movie)\nendif()"
+  "framework/app/CMakeLists.txt|add_executable(jelly-lab main.cpp)\ntarget_link_libraries(jelly-lab PRIVATE jelly::movie jelly::render)")
 # Planted violations: file|text|expected "FILE:LINE:" of the message.
 set(_bad
   "framework/core/src/bad.cpp|// one\n\n#include \"jelly/session/scene_catalog.hpp\"|framework/core/src/bad.cpp:3:"
@@ -25,13 +27,19 @@ set(_bad
   "solutions/bad.cpp|#include \"jelly/session/simulation_run.hpp\"|solutions/bad.cpp:1:"
   "framework/session/src/bad.cpp|#include \"jelly/scene.hpp\"\n#include \"jelly/render/renderer.hpp\"|framework/session/src/bad.cpp:2:"
   "framework/session/src/gl.cpp|#include <GL/glcorearb.h>|framework/session/src/gl.cpp:1:"
-  "framework/render/src/bad.cpp|#include \"jelly/cli/render_command.hpp\"|framework/render/src/bad.cpp:1:"
+  "framework/render/src/bad.cpp|#include \"jelly/movie/render_command.hpp\"|framework/render/src/bad.cpp:1:"
+  "framework/movie/src/bad.cpp|#include \"jelly/cli/x.hpp\"|framework/movie/src/bad.cpp:1:"
+  "framework/movie/src/gl.cpp|#include <GL/glcorearb.h>|framework/movie/src/gl.cpp:1:"
+  "framework/cli/draws.cpp|#include \"jelly/render/renderer.hpp\"|framework/cli/draws.cpp:1:"
   "framework/cli/bad.cpp|#  include <jelly/app/app.hpp>|framework/cli/bad.cpp:1:"
   "framework/app/bad.cpp|#include \"jelly/cli/cli_args.hpp\"|framework/app/bad.cpp:1:"
+  "framework/app/sideways.cpp|#include \"jelly/cli/render_command.hpp\"|framework/app/sideways.cpp:1:"
   "grader/src/bad.cpp|#include \"jelly/render/frame.hpp\"|grader/src/bad.cpp:1:"
   "framework/render/src/nolayer.cpp|#include \"jelly/newthing/x.hpp\"|framework/render/src/nolayer.cpp:1:"
   "framework/render/CMakeLists.txt|add_library(jelly_render a.cpp)\n# The CLI forwards `jelly render` here:\nif(TARGET jelly)\n  target_link_libraries(jelly PRIVATE jelly::render)\nendif()|framework/render/CMakeLists.txt:3:"
-  "framework/session/CMakeLists.txt|add_library(jelly_session a.cpp)\ntarget_link_libraries(jelly_session PUBLIC jelly::core\n  jelly::render)|framework/session/CMakeLists.txt:3:")
+  "framework/session/CMakeLists.txt|add_library(jelly_session a.cpp)\ntarget_link_libraries(jelly_session PUBLIC jelly::core\n  jelly::render)|framework/session/CMakeLists.txt:3:"
+  "framework/render/src/CMakeLists.txt|add_library(x a.cpp)\ntarget_link_libraries(x PRIVATE jelly::movie)|framework/render/src/CMakeLists.txt:2:"
+  "framework/movie/src/CMakeLists.txt|add_library(y a.cpp)\ntarget_link_libraries(y PRIVATE jelly)|framework/movie/src/CMakeLists.txt:2:")
 
 function(_plant entries)
   foreach(entry IN LISTS entries)

@@ -1,7 +1,9 @@
 # cmake -DJELLY=… -DSCENE=… -DDIR=… -DFFPROBE=… -P check_mp4.cmake
 # `jelly render` writes video.mp4 beside the PNGs when ffmpeg is on PATH: 0.2 s at 30 fps must give
-# an H.264 video of 7 frames at 30 fps and 160×120.
+# an H.264 video of 7 frames at 30 fps and 160×120. The frames folder has a space, quotes and a
+# `$(...)` in its name: ffmpeg is started with an argument vector, no shell, so nothing is quoted.
 file(REMOVE_RECURSE "${DIR}")
+set(DIR "${DIR}/frames of Jo's \"jelly\" $(false)")
 execute_process(COMMAND "${JELLY}" render "${SCENE}" --frames "${DIR}" --duration 0.2 --fps 30
                         --width 160 --height 120 --samples 0 --no-caption
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -11,7 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "jelly/a1/task_table.hpp"
-#include "jelly/cli/render_command.hpp"
+#include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/session/captions.hpp"
@@ -215,7 +215,7 @@ TEST(RenderCommand, WritesNumberedFramesWithTheParametersPrinted) {
       "270",    "--fps",       "10",       "--duration", "0.2",     "--no-video"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
-  ASSERT_EQ(render_command(static_cast<int>(argv.size()), argv.data()), 0);
+  ASSERT_EQ(movie::render_command(static_cast<int>(argv.size()), argv.data()), 0);
   for (const char* f : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   EXPECT_FALSE(fs::exists(dir / "frame_00003.png"));
@@ -235,7 +235,7 @@ TEST(RenderCommand, UsageErrorsReturnTwo) {
   for (auto& args : cases) {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
-    EXPECT_EQ(render_command(static_cast<int>(argv.size()), argv.data()), 2) << args.back();
+    EXPECT_EQ(movie::render_command(static_cast<int>(argv.size()), argv.data()), 2) << args.back();
   }
 }
 

@@ -14,7 +14,7 @@
 #include <stb_image.h>
 
 #include "jelly/a1/task_table.hpp"
-#include "jelly/cli/render_command.hpp"
+#include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/session/replay.hpp"
@@ -65,7 +65,7 @@ int jelly_votes(const Image& img, const OrbitCamera& cam, const Vec3& x) {
 int run_render(std::vector<std::string> args) {
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
-  return render_command(static_cast<int>(argv.size()), argv.data());
+  return movie::render_command(static_cast<int>(argv.size()), argv.data());
 }
 
 TEST(RenderReplay, DrawsTheRecordedPositionsNotTheScenesStart) {

@@ -1,4 +1,4 @@
-#include "jelly/cli/render_command.hpp"
+#include "jelly/movie/render_command.hpp"
 
 #include "jelly/cli_common/command_line.hpp"
 
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "jelly/movie/mp4.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/session/assignments.hpp"
@@ -21,7 +22,7 @@
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/task_probe.hpp"
 
-namespace jelly {
+namespace jelly::movie {
 
 namespace {
 
@@ -139,23 +140,6 @@ std::optional<int> parse(int argc, char** argv, Args& a) {
     return cmd.error(
         "--replay draws recorded positions: --compare, --integrator and --benchmark do not apply");
   return std::nullopt;
-}
-
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (!path) return false;
-#ifdef _WIN32
-  const char separator = ';';
-  const std::string file = program + ".exe";
-#else
-  const char separator = ':';
-  const std::string& file = program;
-#endif
-  for (const std::string& dir : split(path, separator)) {
-    std::error_code ec;
-    if (fs::exists(fs::path(dir) / file, ec)) return true;
-  }
-  return false;
 }
 
 /// Creates the frames folder (and its parents); false, after saying why on stderr, when it cannot.
@@ -368,29 +352,21 @@ int render_command(int argc, char** argv) {
     }
   std::cout << "wrote " << frames << " frames to " << a.frames.string() << "\n";
   if (a.video) {
-    if (on_path("ffmpeg")) {
-      const fs::path mp4 = a.frames / "video.mp4";
-      char fps[32];
-      std::snprintf(fps, sizeof fps, "%g", a.fps);
-#ifdef _WIN32
-      const char q = '"';  // cmd.exe does not know single quotes
-#else
-      const char q = '\'';
-#endif
-      const std::string cmd = "ffmpeg -loglevel error -y -framerate " + std::string(fps) + " -i " +
-                              q + (a.frames / "frame_%05d.png").string() + q + " -vf " + q +
-                              "pad=ceil(iw/2)*2:ceil(ih/2)*2" + q +
-                              " -pix_fmt yuv420p -c:v libx264 " + q + mp4.string() + q;
-      if (std::system(cmd.c_str()) == 0)
-        std::cout << "wrote " << mp4.string() << "\n";
-      else
-        std::cerr << "jelly render: ffmpeg failed; the PNG frames are in " << a.frames.string()
-                  << "\n";
-    } else {
-      std::cout << "(no ffmpeg on PATH: PNG frames only)\n";
+    const fs::path mp4 = a.frames / "video.mp4";
+    const Mp4Result video = encode_mp4(a.frames, a.fps, mp4);
+    switch (video.status) {
+      case Mp4Result::Status::Written: std::cout << "wrote " << mp4.string() << "\n"; break;
+      case Mp4Result::Status::Failed:
+        std::cerr << "jelly render: ffmpeg failed (" << video.detail << "); the PNG frames are in "
+                  << a.frames.string() << "\n";
+        break;
+      case Mp4Result::Status::NoFfmpeg:
+        std::cout << "(no ffmpeg on PATH: PNG frames only; for video.mp4, " << kFfmpegInstallHint
+                  << ")\n";
+        break;
     }
   }
   return status;
 }
 
-}  // namespace jelly
+}  // namespace jelly::movie
