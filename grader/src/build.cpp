@@ -12,10 +12,10 @@
 #include <regex>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "cases.hpp"
 #include "files.hpp"
+#include "parallel.hpp"
 #include "process.hpp"
 #include "symbols.hpp"
 #include "text_safety.hpp"
@@ -381,10 +381,10 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
     std::string name;
     bool stub;
   };
-  std::vector<Job> queue;
+  std::vector<Job> compiles;  // started in this order
   for (const std::string& name : files) {
-    if (!broken.count(name)) queue.push_back({name, false});
-    queue.push_back({name, true});
+    if (!broken.count(name)) compiles.push_back({name, false});
+    compiles.push_back({name, true});
   }
   std::map<std::string, std::string> stub_failed;  // stub → what the compiler (or system) said
   auto compile = [&](const Job& job) {
@@ -433,33 +433,21 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
       if (!ec) fs::rename(tmp, cached, ec);
     }
   };
-  auto worker = [&]() {
-    for (;;) {
-      Job job;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (queue.empty()) return;
-        job = queue.front();
-        queue.erase(queue.begin());
-      }
-      try {
-        compile(job);
-      } catch (const std::exception& e) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (job.stub) {
-          stub_failed[job.name] = e.what();
-        } else {
-          broken[job.name] = "did not compile";
-          messages[job.name] +=
-              job.name + ": error: the grader could not compile it: " + std::string(e.what()) +
-              "\n";
-        }
+  parallel_for(compiles.size(), std::max(1, jobs), [&](std::size_t k) {
+    const Job& job = compiles[k];
+    try {
+      compile(job);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (job.stub) {
+        stub_failed[job.name] = e.what();
+      } else {
+        broken[job.name] = "did not compile";
+        messages[job.name] +=
+            job.name + ": error: the grader could not compile it: " + std::string(e.what()) + "\n";
       }
     }
-  };
-  std::vector<std::thread> threads;
-  for (int i = 0; i < std::max(1, jobs); ++i) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
+  });
   if (!stub_failed.empty()) {
     // Not the student's fault: the grader cannot stand a stub in for a broken file (assignments/
     // changed, or the machine could not run the compiler: processes or memory exhausted).

@@ -5,18 +5,16 @@
 #endif
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
+#include "parallel.hpp"
 #include "text_safety.hpp"
 
 namespace jelly::grade {
@@ -336,9 +334,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   rep.isolation = options.isolation.name;
   rep.isolation_description = options.isolation.description;
   rep.isolation_warning = options.isolation.warning;
-  const int jobs = options.jobs > 0
-                       ? options.jobs
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs = worker_count(options.jobs);
 
   // Select the cases and load their reference data (grader errors surface before any compiling).
   const std::string digest = harness_digest(config);
@@ -468,15 +464,11 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
     const bool separate = options.isolation.kind != IsolationKind::Bwrap;
     for (std::size_t i = 0; i < rep.cases.size(); ++i)
       phases[separate && rep.cases[i].spec->hidden ? 1 : 0].push_back(i);
-    const std::vector<std::size_t>* phase = &phases[0];
-    std::atomic<std::size_t> next{0};
-    auto worker = [&]() {
-      for (;;) {
-        const std::size_t k = next++;
-        if (k >= phase->size()) return;
-        const std::size_t i = (*phase)[k];
+    for (const std::vector<std::size_t>& phase : phases)
+      parallel_for(phase.size(), jobs, [&](std::size_t k) {
+        const std::size_t i = phase[k];
         CaseResult& r = rep.cases[i];
-        if (r.status == "skipped") continue;
+        if (r.status == "skipped") return;
         const TaskSpec* task = book.rubric.find(r.spec->task);
         const std::string file = task ? task_file_of(*task) : "";
         if (!file.empty() && rep.build.failed_files.count(file)) {
@@ -488,7 +480,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
               r,
               "not run: " + file + " " + what.substr(0, what.find(" (")) + ", so its tasks score 0",
               "the message about " + file + ":\n" + cut_utf8(msg, 3000));
-          continue;
+          return;
         }
         const fs::path runner = !file.empty() && rep.build.runners.count(file)
                                     ? rep.build.runners.at(file)
@@ -499,7 +491,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
                                  "together"
                                : "not run: your code did not compile (see the compiler errors)",
                   cut_utf8(rep.build.ok ? rep.build.link_errors : std::string(), 3000));
-          continue;
+          return;
         }
         try {
           run_and_judge(r, *refs[i], runner, book, work_dir, options, workspace.gid());
@@ -515,15 +507,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
           r.outputs = Json();
           r.failures.push_back("the grader could not digest this test's result; the test fails");
         }
-      }
-    };
-    for (const std::vector<std::size_t>& p : phases) {
-      phase = &p;
-      next = 0;
-      std::vector<std::thread> threads;
-      for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
-      for (std::thread& t : threads) t.join();
-    }
+      });
     rep.grading_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
