@@ -12,10 +12,10 @@
 #include <regex>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "cases.hpp"
 #include "files.hpp"
+#include "parallel.hpp"
 #include "process.hpp"
 #include "symbols.hpp"
 #include "text_safety.hpp"
@@ -277,171 +277,132 @@ const FrameworkSymbols& framework_symbols(const GradeConfig& config, const std::
 
 }  // namespace
 
-BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
-                             const fs::path& work_dir, int jobs, const Isolation& iso,
-                             const BuildLimits& limits, int gid) {
-  const auto start = std::chrono::steady_clock::now();
-  BuildResult r;
-  const fs::path src = work_dir / "src", stubs = work_dir / "stubs", obj = work_dir / "obj";
-  fs::create_directories(src);
-  fs::create_directories(stubs);
-  fs::create_directories(obj);
-  fs::create_directories(config.cache_dir());
-  const std::vector<std::string>& files = config.task_files();
+namespace {
+
+// One submission's build: what its steps share, and the steps, in the order build_submission
+// takes them.
+class SubmissionBuild {
+ public:
+  SubmissionBuild(const GradeConfig& config, const fs::path& submission, const fs::path& work_dir,
+                  const Isolation& iso, const BuildLimits& limits, int gid)
+      : config_(config),
+        submission_(submission),
+        work_dir_(work_dir),
+        iso_(iso),
+        limits_(limits),
+        gid_(gid),
+        src_(work_dir / "src"),
+        stubs_(work_dir / "stubs"),
+        obj_(work_dir / "obj"),
+        files_(config.task_files()) {
+    fs::create_directories(src_);
+    fs::create_directories(stubs_);
+    fs::create_directories(obj_);
+    fs::create_directories(config.cache_dir());
+  }
 
   // 1. Take exactly the five task files, and the stubs (assignments/) that stand in for a file
   //    that cannot be used.
-  std::map<std::string, std::string> shown;     // task file → name shown in messages
-  std::map<std::string, std::string> messages;  // task file → why it cannot be used, or warnings
-  std::map<std::string, std::string> broken;    // task files replaced by their stub → why
-  for (const std::string& name : files) {
-    std::vector<fs::path> hits =
-        fs::is_directory(submission) ? find_named(submission, name) : std::vector<fs::path>{};
-    fs::path from;
-    if (hits.empty()) {
-      from = config.assignments_dir() / name;
-      r.used[name] = "stub";
-      r.notes.push_back(name +
-                        " was not found in the submission: graded as the unchanged stub "
-                        "(its tasks score 0)");
-      shown[name] = name;
-    } else {
-      from = hits.front();
-      const std::string rel = fs::relative(from, submission).string();
-      r.used[name] = rel;
-      shown[name] = rel;
-      if (hits.size() > 1)
-        r.notes.push_back("several files are called " + name + "; graded " + rel +
-                          " (the one nearest the top)");
+  void take_files(BuildResult& r) {
+    for (const std::string& name : files_) {
+      std::vector<fs::path> hits =
+          fs::is_directory(submission_) ? find_named(submission_, name) : std::vector<fs::path>{};
+      fs::path from;
+      if (hits.empty()) {
+        from = config_.assignments_dir() / name;
+        r.used[name] = "stub";
+        r.notes.push_back(name +
+                          " was not found in the submission: graded as the unchanged stub "
+                          "(its tasks score 0)");
+        shown_[name] = name;
+      } else {
+        from = hits.front();
+        const std::string rel = fs::relative(from, submission_).string();
+        r.used[name] = rel;
+        shown_[name] = rel;
+        if (hits.size() > 1)
+          r.notes.push_back("several files are called " + name + "; graded " + rel +
+                            " (the one nearest the top)");
+      }
+      std::string refused;
+      const std::string text =
+          r.used[name] == "stub"
+              ? read_file(from)
+              : read_submitted(from, shown_[name], limits_.source_bytes, refused);
+      const std::string policy = refused + include_policy(shown_[name], text);
+      if (!policy.empty()) {
+        messages_[name] = policy;
+        broken_[name] = "was refused";
+      }
+      std::ofstream(src_ / name, std::ios::binary) << text;
+      std::ofstream(stubs_ / name, std::ios::binary) << read_file(config_.assignments_dir() / name);
     }
-    std::string refused;
-    const std::string text = r.used[name] == "stub"
-                                 ? read_file(from)
-                                 : read_submitted(from, shown[name], limits.source_bytes, refused);
-    const std::string policy = refused + include_policy(shown[name], text);
-    if (!policy.empty()) {
-      messages[name] = policy;
-      broken[name] = "was refused";
+  }
+
+  // 2. Compile (cached by content and flags), `jobs` at once: the submission's files and the
+  //    stubs. Throws when a stub does not compile (a grader error).
+  void compile_all(int jobs) {
+    choose_flags();
+    struct Job {
+      std::string name;
+      bool stub;
+    };
+    std::vector<Job> compiles;  // started in this order
+    for (const std::string& name : files_) {
+      if (!broken_.count(name)) compiles.push_back({name, false});
+      compiles.push_back({name, true});
     }
-    std::ofstream(src / name, std::ios::binary) << text;
-    std::ofstream(stubs / name, std::ios::binary) << read_file(config.assignments_dir() / name);
-  }
-  give_to_sandbox(iso, work_dir, gid);
-
-  // 2. Compile (cached by content and flags), in parallel: the submission's files and the stubs.
-  std::string flags_key = config.compiler + "\n" + config.compiler_id;
-  std::vector<std::string> base = {config.compiler};
-  for (const std::string& f : config.compile_flags) base.push_back(f);
-  for (const std::string& d : config.defines) base.push_back("-D" + d);
-  for (const std::string& i : config.include_dirs) base.push_back("-I" + i);
-  base.push_back("-fdiagnostics-color=never");
-  // Messages without quoted source lines: filter_diagnostics decides what a student may see.
-  // GCC's spelling; Clang (and Apple's) has its own and stops at GCC's as an unknown argument.
-  const bool clang = config.compiler_id.find("Clang") != std::string::npos;
-  base.push_back(clang ? "-fno-caret-diagnostics" : "-fno-diagnostics-show-caret");
-  for (const std::string& b : base) flags_key += "\n" + b;
-  // The framework's own headers are part of what an object was compiled from: a changed struct
-  // (e.g. a new TaskTable member) must not reuse objects built against the old layout.
-  flags_key += "\n" + framework_headers_digest(config);
-  // What the compiler could see is part of what an object was compiled from: an object made without
-  // a sandbox may hold any file of the machine (`.incbin`), and must never serve a sandboxed run.
-  flags_key += "\nsandbox " + iso.name;
-
-  // What the compiler may see and what of its messages a student may see.
-  auto tool_limits = [&]() {
-    Limits lim;
-    lim.timeout_s = limits.timeout_s;
-    lim.cpu_s = limits.cpu_s;
-    lim.memory_bytes = limits.memory_bytes;
-    lim.file_size_bytes = limits.file_bytes;
-    lim.limit_files = true;
-    lim.result_pipe = false;
-    lim.keep_output = 256 * 1024;
-    lim.kill_output = limits.output_bytes;
-    lim.max_open_files = limits.open_files;
-    return lim;
-  };
-  auto hint = [](const std::string& hit) -> std::string {
-    if (hit.find("memory") != std::string::npos || hit.find("CPU") != std::string::npos ||
-        hit.find("longer") != std::string::npos)
-      return " (a template or constexpr computation that never ends?)";
-    return "";
-  };
-  std::vector<fs::path> allowed = {src, "/usr/include", "/usr/lib/gcc"};
-  std::vector<fs::path> include_views;
-  for (const std::string& i : config.include_dirs) {
-    include_views.push_back(i);
-    allowed.push_back(i);
-  }
-  auto student_obj = [&](const std::string& name) { return obj / (name + ".o"); };
-  auto stub_obj = [&](const std::string& name) { return obj / ("stub-" + name + ".o"); };
-
-  std::mutex mutex;
-  struct Job {
-    std::string name;
-    bool stub;
-  };
-  std::vector<Job> queue;
-  for (const std::string& name : files) {
-    if (!broken.count(name)) queue.push_back({name, false});
-    queue.push_back({name, true});
-  }
-  std::map<std::string, std::string> stub_failed;  // stub → what the compiler (or system) said
-  auto compile = [&](const Job& job) {
-    const fs::path dir = job.stub ? stubs : src;
-    const std::string text = read_file(dir / job.name);
-    const fs::path cached =
-        config.cache_dir() / (fnv_hex(flags_key + "\n" + job.name + "\n" + text) + ".o");
-    const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
-    std::error_code ec;
-    if (fs::exists(cached)) {
-      fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
-      if (!ec) return;
-    }
-    std::vector<std::string> argv = base;
-    argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
-    SandboxView view;
-    view.writable = {work_dir};
-    view.read_only = include_views;
-    view.cwd = dir;
-    view.gid = gid;
-    const ChildResult c = run_isolated(iso, argv, view, tool_limits());
-    const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
-    if (job.stub) {
+    std::mutex mutex;
+    std::map<std::string, std::string> stub_failed;  // stub → what the compiler (or system) said
+    auto compile = [&](const Job& job) {
+      const fs::path dir = job.stub ? stubs_ : src_;
+      const std::string text = read_file(dir / job.name);
+      const fs::path cached =
+          config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + job.name + "\n" + text) + ".o");
+      const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
+      std::error_code ec;
+      if (fs::exists(cached)) {
+        fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
+        if (!ec) return;
+      }
+      std::vector<std::string> argv = base_;
+      argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
+      SandboxView view;
+      view.writable = {work_dir_};
+      view.read_only = include_views_;
+      view.cwd = dir;
+      view.gid = gid_;
+      const ChildResult c = run_isolated(iso_, argv, view, tool_limits());
+      const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
+      if (job.stub) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!ok) {
+          const std::string hit = limit_hit("compiling the stub " + job.name, c, c.err, limits_);
+          stub_failed[job.name] = !c.started ? "the compiler could not be started: " + c.start_error
+                                  : !hit.empty() ? hit
+                                                 : cut_utf8(c.err + c.out, 600);
+        }
+        return;
+      }
+      std::string msg = filter_diagnostics(c.err + c.out, src_, allowed_);
+      const std::string hit = limit_hit("compiling " + job.name, c, c.err + c.out, limits_);
+      if (!hit.empty()) msg = job.name + ": error: " + hit + hint(hit) + "\n" + msg;
+      if (!c.started)
+        msg +=
+            job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
       std::lock_guard<std::mutex> lock(mutex);
       if (!ok) {
-        const std::string hit = limit_hit("compiling the stub " + job.name, c, c.err, limits);
-        stub_failed[job.name] = !c.started ? "the compiler could not be started: " + c.start_error
-                                : !hit.empty() ? hit
-                                               : cut_utf8(c.err + c.out, 600);
+        broken_[job.name] = "did not compile";
+        messages_[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
+      } else {
+        if (!msg.empty()) messages_[job.name] = msg;  // warnings
+        const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + job.name;
+        fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
+        if (!ec) fs::rename(tmp, cached, ec);
       }
-      return;
-    }
-    std::string msg = filter_diagnostics(c.err + c.out, src, allowed);
-    const std::string hit = limit_hit("compiling " + job.name, c, c.err + c.out, limits);
-    if (!hit.empty()) msg = job.name + ": error: " + hit + hint(hit) + "\n" + msg;
-    if (!c.started)
-      msg += job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!ok) {
-      broken[job.name] = "did not compile";
-      messages[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
-    } else {
-      if (!msg.empty()) messages[job.name] = msg;  // warnings
-      const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + job.name;
-      fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
-      if (!ec) fs::rename(tmp, cached, ec);
-    }
-  };
-  auto worker = [&]() {
-    for (;;) {
-      Job job;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (queue.empty()) return;
-        job = queue.front();
-        queue.erase(queue.begin());
-      }
+    };
+    parallel_for(compiles.size(), std::max(1, jobs), [&](std::size_t k) {
+      const Job& job = compiles[k];
       try {
         compile(job);
       } catch (const std::exception& e) {
@@ -449,86 +410,65 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         if (job.stub) {
           stub_failed[job.name] = e.what();
         } else {
-          broken[job.name] = "did not compile";
-          messages[job.name] +=
+          broken_[job.name] = "did not compile";
+          messages_[job.name] +=
               job.name + ": error: the grader could not compile it: " + std::string(e.what()) +
               "\n";
         }
       }
+    });
+    if (!stub_failed.empty()) {
+      // Not the student's fault: the grader cannot stand a stub in for a broken file (assignments/
+      // changed, or the machine could not run the compiler: processes or memory exhausted).
+      std::string why;
+      for (const auto& [name, message] : stub_failed) why += "\n  " + name + ": " + message;
+      throw std::runtime_error(
+          "the stubs in " + config_.assignments_dir().string() +
+          " could not be compiled, so no stub can stand in for a broken file:" + why);
     }
-  };
-  std::vector<std::thread> threads;
-  for (int i = 0; i < std::max(1, jobs); ++i) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
-  if (!stub_failed.empty()) {
-    // Not the student's fault: the grader cannot stand a stub in for a broken file (assignments/
-    // changed, or the machine could not run the compiler: processes or memory exhausted).
-    std::string why;
-    for (const auto& [name, message] : stub_failed) why += "\n  " + name + ": " + message;
-    throw std::runtime_error(
-        "the stubs in " + config.assignments_dir().string() +
-        " could not be compiled, so no stub can stand in for a broken file:" + why);
   }
-
-  auto tidy = [&](std::string text) {
-    // Paths as the student knows them: relative to their submission, framework paths relative
-    // to the framework.
-    text = replace_all(text, src.string() + "/", "");
-    text = replace_all(text, obj.string() + "/", "");
-    text = replace_all(text, config.source_dir.string() + "/", "");
-    std::string out;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-      for (const auto& [name, rel] : shown)
-        if (line.rfind(name + ":", 0) == 0 && rel != name)
-          line = rel + line.substr(name.size());
-        else
-          line = replace_all(line, "from " + name + ":", "from " + rel + ":");
-      out += line + "\n";
-    }
-    return out;
-  };
 
   // 3. The symbols each compiled file defines: only its task functions and its own helpers, never
   //    one of the grader's (nm, in the sandbox: the objects are the submission's).
+  void check_symbols(BuildResult& r) {
 #if defined(__linux__)
-  const std::string nm = find_nm(config);
+    const std::string nm = find_nm(config_);
 #else
-  const std::string nm;  // the policy reads ELF names (macOS prefixes every symbol with '_')
+    const std::string nm;  // the policy reads ELF names (macOS prefixes every symbol with '_')
 #endif
-  if (nm.empty()) {
-    r.notes.push_back(
-        "the symbols of the submission were not checked (no nm for ELF objects here); the "
-        "framework still comes first on the link line");
-  } else {
+    if (nm.empty()) {
+      r.notes.push_back(
+          "the symbols of the submission were not checked (no nm for ELF objects here); the "
+          "framework still comes first on the link line");
+      return;
+    }
     std::vector<std::string> argv = {nm, "-p", "-P", "-A", "-g", "--defined-only"};
-    for (const std::string& name : files) {
-      if (!broken.count(name)) argv.push_back(student_obj(name).filename().string());
+    for (const std::string& name : files_) {
+      if (!broken_.count(name)) argv.push_back(student_obj(name).filename().string());
       argv.push_back(stub_obj(name).filename().string());
     }
     SandboxView view;
-    view.writable = {work_dir};
-    view.cwd = obj;
-    view.gid = gid;
+    view.writable = {work_dir_};
+    view.cwd = obj_;
+    view.gid = gid_;
     Limits lim = tool_limits();
     lim.keep_output = 16 << 20;
-    const ChildResult c = run_isolated(iso, argv, view, lim);
+    const ChildResult c = run_isolated(iso_, argv, view, lim);
     const auto defined = parse_nm(c.out);
     std::map<std::string, std::set<std::string>> own;
     std::map<std::string, std::string> task_of_symbol;
-    for (const std::string& name : files)
+    for (const std::string& name : files_)
       if (defined.count(stub_obj(name).filename().string()))
         for (const DefinedSymbol& s : defined.at(stub_obj(name).filename().string()))
           if (!s.weak()) own[name].insert(s.name), task_of_symbol[s.name] = name;
-    const FrameworkSymbols& fw = framework_symbols(config, nm);
-    for (const std::string& name : files) {
-      if (broken.count(name)) continue;
+    const FrameworkSymbols& fw = framework_symbols(config_, nm);
+    for (const std::string& name : files_) {
+      if (broken_.count(name)) continue;
       const std::string file = student_obj(name).filename().string();
       if (c.exit_code != 0 || !defined.count(file)) {
-        broken[name] = "could not be checked";
-        messages[name] = name + ": error: the grader could not list the symbols of " + name +
-                         " (nm failed); its tasks were not run\n";
+        broken_[name] = "could not be checked";
+        messages_[name] = name + ": error: the grader could not list the symbols of " + name +
+                          " (nm failed); its tasks were not run\n";
         continue;
       }
       std::map<std::string, std::string> others = task_of_symbol;
@@ -541,7 +481,7 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
         if (reason.empty()) continue;
         if (demangled.empty()) {
           const ChildResult d = run_isolated(
-              iso, {nm, "-p", "-C", "-P", "-g", "--defined-only", file}, view, tool_limits());
+              iso_, {nm, "-p", "-C", "-P", "-g", "--defined-only", file}, view, tool_limits());
           std::istringstream in(d.out);
           for (std::string l; std::getline(in, l);) demangled.push_back(l);
         }
@@ -562,88 +502,203 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
           cxx.clear();
         const std::string shown_symbol =
             cxx.empty() || cxx == syms[k].name ? syms[k].name : cxx + " (" + syms[k].name + ")";
-        why += shown[name] + ": error: defines the external symbol " + shown_symbol + ", which " +
+        why += shown_[name] + ": error: defines the external symbol " + shown_symbol + ", which " +
                reason + ".\n";
         if (why.size() > 4000) break;
       }
       if (!why.empty()) {
-        broken[name] = "was refused (it defines a symbol it may not)";
-        messages[name] = why +
-                         "  A graded file may define only its own task functions and helpers; put "
-                         "helpers in an anonymous namespace or make them static.\n";
+        broken_[name] = "was refused (it defines a symbol it may not)";
+        messages_[name] = why +
+                          "  A graded file may define only its own task functions and helpers; put "
+                          "helpers in an anonymous namespace or make them static.\n";
       }
     }
   }
 
   // 4. Link: the framework first (so that its definitions are the ones kept), the submission's
   //    usable files, the stubs in place of the broken ones, the libraries again for what the
-  //    submission's code needs of them.
-  auto link = [&](const std::map<std::string, bool>& use_student, const fs::path& runner,
-                  std::string& errors) {
-    std::vector<std::string> argv = {config.compiler};
-    for (const std::string& o : config.link_objects) argv.push_back(o);
-    for (const std::string& l : config.link_libraries) argv.push_back(l);
-    for (const std::string& name : files)
+  //    submission's code needs of them. When the files do not link together, each usable file
+  //    is linked alone with the other stubs.
+  void link_runners(BuildResult& r) {
+    std::map<std::string, bool> all;
+    for (const std::string& name : files_) all[name] = !broken_.count(name);
+    std::string link_errors;
+    const fs::path combined = work_dir_ / "runner";
+    if (link(all, combined, link_errors)) {
+      r.runner = combined;
+      for (const std::string& name : files_)
+        if (!broken_.count(name)) r.runners[name] = combined;
+      return;
+    }
+    // The files do not link together (one calls a helper another file defines, or a helper that
+    // is nowhere): each usable file is linked alone with the stubs, and graded with that runner.
+    r.link_errors = link_errors;
+    for (const std::string& name : files_) {
+      if (broken_.count(name)) continue;
+      std::map<std::string, bool> alone;
+      for (const std::string& other : files_) alone[other] = other == name;
+      std::string errors;
+      const fs::path runner = work_dir_ / ("runner-" + name.substr(0, name.find('.')));
+      if (link(alone, runner, errors)) {
+        r.runners[name] = runner;
+      } else {
+        broken_[name] = "did not link";
+        messages_[name] = name +
+                          ": error: does not link with the framework and the other files' stubs "
+                          "(does it use a function of another file that could not be used?):\n" +
+                          errors;
+      }
+    }
+  }
+
+  // 5. What the student reads: each replaced file's messages, the warnings of the others.
+  void collect_messages(BuildResult& r) {
+    for (const std::string& name : files_) {
+      if (!messages_.count(name)) continue;
+      if (broken_.count(name))
+        r.failed_files[name] = tidy(messages_[name]), r.failed_what[name] = broken_[name];
+      else
+        r.warnings += tidy(messages_[name]);
+    }
+    for (const std::string& name : files_)
+      if (r.failed_files.count(name)) r.errors += r.failed_files[name];
+    r.ok = !r.runners.empty();
+  }
+
+ private:
+  // The compiler's command line and the cache key of what an object was compiled from; what the
+  // compiler may see and what of its messages a student may see.
+  void choose_flags() {
+    flags_key_ = config_.compiler + "\n" + config_.compiler_id;
+    base_ = {config_.compiler};
+    for (const std::string& f : config_.compile_flags) base_.push_back(f);
+    for (const std::string& d : config_.defines) base_.push_back("-D" + d);
+    for (const std::string& i : config_.include_dirs) base_.push_back("-I" + i);
+    base_.push_back("-fdiagnostics-color=never");
+    // Messages without quoted source lines: filter_diagnostics decides what a student may see.
+    // GCC's spelling; Clang (and Apple's) has its own and stops at GCC's as an unknown argument.
+    const bool clang = config_.compiler_id.find("Clang") != std::string::npos;
+    base_.push_back(clang ? "-fno-caret-diagnostics" : "-fno-diagnostics-show-caret");
+    for (const std::string& b : base_) flags_key_ += "\n" + b;
+    // The framework's own headers are part of what an object was compiled from: a changed struct
+    // (e.g. a new TaskTable member) must not reuse objects built against the old layout.
+    flags_key_ += "\n" + framework_headers_digest(config_);
+    // What the compiler could see is part of what an object was compiled from: an object made
+    // without a sandbox may hold any file of the machine (`.incbin`), and must never serve a
+    // sandboxed run.
+    flags_key_ += "\nsandbox " + iso_.name;
+    allowed_ = {src_, "/usr/include", "/usr/lib/gcc"};
+    for (const std::string& i : config_.include_dirs) {
+      include_views_.push_back(i);
+      allowed_.push_back(i);
+    }
+  }
+
+  Limits tool_limits() const {
+    Limits lim;
+    lim.timeout_s = limits_.timeout_s;
+    lim.cpu_s = limits_.cpu_s;
+    lim.memory_bytes = limits_.memory_bytes;
+    lim.file_size_bytes = limits_.file_bytes;
+    lim.limit_files = true;
+    lim.result_pipe = false;
+    lim.keep_output = 256 * 1024;
+    lim.kill_output = limits_.output_bytes;
+    lim.max_open_files = limits_.open_files;
+    return lim;
+  }
+
+  static std::string hint(const std::string& hit) {
+    if (hit.find("memory") != std::string::npos || hit.find("CPU") != std::string::npos ||
+        hit.find("longer") != std::string::npos)
+      return " (a template or constexpr computation that never ends?)";
+    return "";
+  }
+
+  fs::path student_obj(const std::string& name) const { return obj_ / (name + ".o"); }
+  fs::path stub_obj(const std::string& name) const { return obj_ / ("stub-" + name + ".o"); }
+
+  // Paths as the student knows them: relative to their submission, framework paths relative
+  // to the framework.
+  std::string tidy(std::string text) const {
+    text = replace_all(text, src_.string() + "/", "");
+    text = replace_all(text, obj_.string() + "/", "");
+    text = replace_all(text, config_.source_dir.string() + "/", "");
+    std::string out;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+      for (const auto& [name, rel] : shown_)
+        if (line.rfind(name + ":", 0) == 0 && rel != name)
+          line = rel + line.substr(name.size());
+        else
+          line = replace_all(line, "from " + name + ":", "from " + rel + ":");
+      out += line + "\n";
+    }
+    return out;
+  }
+
+  // Links the files `use_student` marks with the student's objects, the others with their stubs,
+  // into `runner`; false with the messages in `errors` when it does not link.
+  bool link(const std::map<std::string, bool>& use_student, const fs::path& runner,
+            std::string& errors) const {
+    std::vector<std::string> argv = {config_.compiler};
+    for (const std::string& o : config_.link_objects) argv.push_back(o);
+    for (const std::string& l : config_.link_libraries) argv.push_back(l);
+    for (const std::string& name : files_)
       argv.push_back((use_student.at(name) ? student_obj(name) : stub_obj(name)).string());
-    for (const std::string& l : config.link_libraries) argv.push_back(l);
-    for (const std::string& f : config.link_flags) argv.push_back(f);
+    for (const std::string& l : config_.link_libraries) argv.push_back(l);
+    for (const std::string& f : config_.link_flags) argv.push_back(f);
     argv.insert(argv.end(), {"-o", runner.string()});
     SandboxView view;
-    view.writable = {work_dir};
-    view.cwd = work_dir;
-    view.gid = gid;
-    for (const std::string& o : config.link_objects) view.read_only.push_back(o);
-    for (const std::string& l : config.link_libraries) view.read_only.push_back(l);
-    const ChildResult c = run_isolated(iso, argv, view, tool_limits());
+    view.writable = {work_dir_};
+    view.cwd = work_dir_;
+    view.gid = gid_;
+    for (const std::string& o : config_.link_objects) view.read_only.push_back(o);
+    for (const std::string& l : config_.link_libraries) view.read_only.push_back(l);
+    const ChildResult c = run_isolated(iso_, argv, view, tool_limits());
     if (c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started) return true;
-    const std::string hit = limit_hit("linking", c, c.err + c.out, limits);
-    errors = tidy(filter_diagnostics(c.err + c.out, work_dir, allowed));
+    const std::string hit = limit_hit("linking", c, c.err + c.out, limits_);
+    errors = tidy(filter_diagnostics(c.err + c.out, work_dir_, allowed_));
     errors = replace_all(errors, "stub-", "the stub of ");
     if (!hit.empty()) errors = "error: " + hit + "\n" + errors;
     if (!c.started)
       errors += "error: the grader could not start the linker: " + c.start_error + "\n";
     if (errors.empty()) errors = "linking failed\n";
     return false;
-  };
-  std::map<std::string, bool> all;
-  for (const std::string& name : files) all[name] = !broken.count(name);
-  std::string link_errors;
-  const fs::path combined = work_dir / "runner";
-  if (link(all, combined, link_errors)) {
-    r.runner = combined;
-    for (const std::string& name : files)
-      if (!broken.count(name)) r.runners[name] = combined;
-  } else {
-    // The files do not link together (one calls a helper another file defines, or a helper that is
-    // nowhere): each usable file is linked alone with the stubs, and graded with that runner.
-    r.link_errors = link_errors;
-    for (const std::string& name : files) {
-      if (broken.count(name)) continue;
-      std::map<std::string, bool> alone;
-      for (const std::string& other : files) alone[other] = other == name;
-      std::string errors;
-      const fs::path runner = work_dir / ("runner-" + name.substr(0, name.find('.')));
-      if (link(alone, runner, errors)) {
-        r.runners[name] = runner;
-      } else {
-        broken[name] = "did not link";
-        messages[name] = name +
-                         ": error: does not link with the framework and the other files' stubs "
-                         "(does it use a function of another file that could not be used?):\n" +
-                         errors;
-      }
-    }
   }
-  for (const std::string& name : files) {
-    if (!messages.count(name)) continue;
-    if (broken.count(name))
-      r.failed_files[name] = tidy(messages[name]), r.failed_what[name] = broken[name];
-    else
-      r.warnings += tidy(messages[name]);
-  }
-  for (const std::string& name : files)
-    if (r.failed_files.count(name)) r.errors += r.failed_files[name];
-  r.ok = !r.runners.empty();
+
+  const GradeConfig& config_;
+  const fs::path& submission_;
+  const fs::path& work_dir_;
+  const Isolation& iso_;
+  const BuildLimits& limits_;
+  const int gid_;
+  const fs::path src_, stubs_, obj_;
+  const std::vector<std::string>& files_;
+  std::map<std::string, std::string> shown_;     // task file → name shown in messages
+  std::map<std::string, std::string> messages_;  // task file → why it cannot be used, or warnings
+  std::map<std::string, std::string> broken_;    // task files replaced by their stub → why
+  std::string flags_key_;                        // what an object is compiled from, but its text
+  std::vector<std::string> base_;                // the compiler's command line, but its files
+  std::vector<fs::path> allowed_;                // folders whose files a compiler message may quote
+  std::vector<fs::path> include_views_;  // what the sandboxed compiler sees besides the sources
+};
+
+}  // namespace
+
+BuildResult build_submission(const GradeConfig& config, const fs::path& submission,
+                             const fs::path& work_dir, int jobs, const Isolation& iso,
+                             const BuildLimits& limits, int gid) {
+  const auto start = std::chrono::steady_clock::now();
+  BuildResult r;
+  SubmissionBuild build(config, submission, work_dir, iso, limits, gid);
+  build.take_files(r);
+  give_to_sandbox(iso, work_dir, gid);
+  build.compile_all(jobs);
+  build.check_symbols(r);
+  build.link_runners(r);
+  build.collect_messages(r);
   seal_for_sandbox(iso, work_dir, gid);  // no test may change the runner or leave files for another
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -1,6 +1,9 @@
-// The jelly-grade subcommands beyond grading one submission.
+// The jelly-grade commands, one file each in commands/ (main.cpp reads the command line and calls
+// one of them; commands/common.hpp holds what they share).
 #pragma once
 
+#include <filesystem>
+#include <set>
 #include <string>
 
 #include "cases.hpp"
@@ -8,10 +11,32 @@
 
 namespace jelly::grade {
 
-/// Regenerates grader/data/{public,hidden}/*.json from solutions/ with the reference runner.
+/// What `jelly-grade grade` was asked for besides the grading options.
+struct GradeOneArgs {
+  std::filesystem::path submission;  ///< SUBMISSION_DIR
+  std::filesystem::path out;         ///< --out ("": grade-results)
+  std::set<std::string> formats;     ///< --format: "terminal" prints, the others are files in out
+  bool verbose = false;              ///< --verbose: every failure message, and the passed tests
+  bool frames = true;                ///< false with --no-frames
+  bool strict = false;               ///< --strict: exit status 1 unless the score is full
+};
+
+/// `grade` (commands/grade.cpp): grades one submission, writes its reports to args.out and prints
+/// the terminal summary. The exit status (0, or 1 with --strict when the score is not full).
+int grade_one(const GradeConfig& config, const CaseBook& book, const GradeOneArgs& args,
+              const GradeOptions& options);
+
+/// `prairielearn` (commands/prairielearn.cpp): PrairieLearn's external grader, grades `student`
+/// ("": /grade/student) into `results`/results.json ("": /grade/results).
+int prairielearn(const GradeConfig& config, const CaseBook& book, const std::string& student,
+                 const std::string& results, const GradeOptions& options);
+
+/// `generate-reference` (commands/generate_reference.cpp): regenerates
+/// grader/data/{public,hidden}/*.json from solutions/ with the reference runner.
 int generate_reference(const GradeConfig& config, const CaseBook& book);
 
-/// Grades every folder in `dir` (one per student) in parallel; results per student and scores.csv.
+/// `batch` (commands/batch.cpp): grades every folder in `dir` (one per student) in parallel;
+/// results per student and scores.csv.
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
           const std::string& out, int jobs, const GradeOptions& options, bool frames = true);
 
@@ -19,13 +44,15 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
 /// of the "user" sandbox and make the grader's secrets under `source` readable by root only.
 std::string sandbox_setup_lines(const std::string& source);
 
-/// Builds the Gradescope autograder zip (setup.sh, run_autograder, the framework without solutions/
-/// but with the hidden data).
+/// `gradescope-zip` (commands/gradescope_zip.cpp): builds the Gradescope autograder zip (setup.sh
+/// and run_autograder from grader/templates/, the framework without solutions/ but with the
+/// hidden data).
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path);
 
-/// Applies every grader/mutants/*.toml to a copy of solutions/, grades each, checks that the
-/// reference scores full marks, the stubs zero, and every mutant loses points in its own task only.
-/// Writes the table (Markdown) to `table_path` when given. Returns 0 when every check holds.
+/// `mutants` (commands/mutants.cpp): applies every grader/mutants/*.toml to a copy of solutions/,
+/// grades each, checks that the reference scores full marks, the stubs zero, and every mutant
+/// loses points in its own task only. Writes the table (Markdown) to `table_path` when given.
+/// Returns 0 when every check holds.
 int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
             const std::string& work, int jobs, const GradeOptions& options);
 

@@ -5,18 +5,16 @@
 #endif
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
+#include "parallel.hpp"
 #include "text_safety.hpp"
 
 namespace jelly::grade {
@@ -320,23 +318,15 @@ ChildResult run_case(const fs::path& runner, const CaseSpec& spec, const Json* i
   return run_isolated(*iso, argv, view, lim);
 }
 
-GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
-                             const fs::path& submission, const fs::path& requested_work_dir,
-                             const GradeOptions& options) {
-  // User mode: a private folder of the sandbox that no other submission's runs can read.
-  const Workspace workspace(options.isolation, requested_work_dir);
-  const fs::path& work_dir = workspace.dir();
-  GradeReport rep;
-  rep.submission = submission.string();
-  rep.visibility = options.include_hidden ? "all" : "public";
-  rep.isolation = options.isolation.name;
-  rep.isolation_description = options.isolation.description;
-  rep.isolation_warning = options.isolation.warning;
-  const int jobs = options.jobs > 0
-                       ? options.jobs
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+namespace {
 
-  // Select the cases and load their reference data (grader errors surface before any compiling).
+// The steps of grade_submission, in the order it takes them.
+
+// 1. Selects the cases (rep.cases, in case-book order) and loads their reference data, one entry
+//    per case (none for a skipped one). Grader errors (missing or stale data) throw here, before
+//    anything is compiled.
+std::vector<std::optional<Json>> select_cases(const GradeConfig& config, const CaseBook& book,
+                                              const GradeOptions& options, GradeReport& rep) {
   const std::string digest = harness_digest(config);
   std::vector<std::optional<Json>> refs;
   for (const CaseSpec& c : book.cases) {
@@ -383,12 +373,17 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
     rep.notes.push_back(
         "only the public tests were run (--visibility public); the final grade also has hidden "
         "tests");
+  return refs;
+}
 
-  // Build.
+// 2. Builds the submission's runner (or takes the prebuilt one of --runner): rep.build,
+//    rep.compiled and the build's notes.
+void build_runner(const GradeConfig& config, const fs::path& submission, const fs::path& work_dir,
+                  int jobs, int gid, const GradeOptions& options, GradeReport& rep) {
   if (!rep.isolation_warning.empty()) rep.notes.push_back("WARNING: " + rep.isolation_warning);
   if (options.runner.empty()) {
     rep.build = build_submission(config, submission, work_dir / "build", jobs, options.isolation,
-                                 options.build_limits, workspace.gid());
+                                 options.build_limits, gid);
   } else {
     // The self-check: CMake built the runner from the student's tasks (jelly-grade-student-runner).
     if (!fs::is_regular_file(options.runner))
@@ -401,8 +396,11 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   }
   for (const std::string& n : rep.build.notes) rep.notes.push_back(n);
   rep.compiled = rep.build.ok && rep.build.failed_files.empty() && !rep.build.runner.empty();
+}
 
-  // Points: a task's points are shared by its selected cases in proportion to their weights.
+// 3. Points: a task's points are shared by its selected cases in proportion to their weights
+//    (rep.tasks, in rubric order, pointing into rep.cases).
+void share_points(const CaseBook& book, GradeReport& rep) {
   const double scale = book.rubric.scale();
   for (const TaskSpec& t : book.rubric.tasks) {
     TaskResult tr;
@@ -421,8 +419,11 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
     for (CaseResult* c : t.cases)
       if (c->status != "skipped") c->max_score = t.max_score * c->spec->weight / wsum;
   }
+}
 
-  // A file that could not be used costs its own tasks only: the runner has its stub in its place.
+// 4. A file that could not be used costs its own tasks only: the runner has its stub in its
+//    place (rep.failed_files and their notes).
+void note_failed_files(const GradeConfig& config, GradeReport& rep) {
   for (const std::string& file : config.task_files()) {
     const auto it = rep.build.failed_files.find(file);
     if (it == rep.build.failed_files.end()) continue;
@@ -449,80 +450,81 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
         "your files do not link together (see below): each file's tasks were graded with that "
         "file alone and the other files' stubs; the course scene, which needs all of them, was "
         "not run");
-  auto not_run = [&](CaseResult& r, const std::string& why, const std::string& message) {
-    r.status = "failed";
-    r.not_run = true;
-    r.failures.push_back(why);
-    if (!message.empty()) r.failures.push_back(message);
-  };
-  {
-    const auto start = std::chrono::steady_clock::now();
-    // Outside bwrap, runs at the same time share the machine (abstract sockets, the process list):
-    // no hidden test runs while a public one does, so none can hand a hidden test's parameters
-    // to a public test's output. bwrap gives every run its own namespaces.
-    std::vector<std::size_t> phases[2];
-    const bool separate = options.isolation.kind != IsolationKind::Bwrap;
-    for (std::size_t i = 0; i < rep.cases.size(); ++i)
-      phases[separate && rep.cases[i].spec->hidden ? 1 : 0].push_back(i);
-    const std::vector<std::size_t>* phase = &phases[0];
-    std::atomic<std::size_t> next{0};
-    auto worker = [&]() {
-      for (;;) {
-        const std::size_t k = next++;
-        if (k >= phase->size()) return;
-        const std::size_t i = (*phase)[k];
-        CaseResult& r = rep.cases[i];
-        if (r.status == "skipped") continue;
-        const TaskSpec* task = book.rubric.find(r.spec->task);
-        const std::string file = task ? task_file_of(*task) : "";
-        if (!file.empty() && rep.build.failed_files.count(file)) {
-          const std::string& msg = rep.build.failed_files.at(file);
-          const std::string what = rep.build.failed_what.count(file)
-                                       ? rep.build.failed_what.at(file)
-                                       : std::string("did not compile");
-          not_run(
-              r,
-              "not run: " + file + " " + what.substr(0, what.find(" (")) + ", so its tasks score 0",
-              "the message about " + file + ":\n" + cut_utf8(msg, 3000));
-          continue;
-        }
-        const fs::path runner = !file.empty() && rep.build.runners.count(file)
-                                    ? rep.build.runners.at(file)
-                                    : rep.build.runner;
-        if (runner.empty()) {
-          not_run(r,
-                  rep.build.ok ? "not run: it needs all of your files, and they do not link "
-                                 "together"
-                               : "not run: your code did not compile (see the compiler errors)",
-                  cut_utf8(rep.build.ok ? rep.build.link_errors : std::string(), 3000));
-          continue;
-        }
-        try {
-          run_and_judge(r, *refs[i], runner, book, work_dir, options, workspace.gid());
-        } catch (const std::exception& e) {
-          r.status = "failed";
-          r.score = 0.0;
-          r.outputs = Json();
-          r.failures.push_back(std::string("the grader could not digest this test's result (") +
-                               e.what() + "); the test fails");
-        } catch (...) {
-          r.status = "failed";
-          r.score = 0.0;
-          r.outputs = Json();
-          r.failures.push_back("the grader could not digest this test's result; the test fails");
-        }
-      }
-    };
-    for (const std::vector<std::size_t>& p : phases) {
-      phase = &p;
-      next = 0;
-      std::vector<std::thread> threads;
-      for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
-      for (std::thread& t : threads) t.join();
-    }
-    rep.grading_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void not_run(CaseResult& r, const std::string& why, const std::string& message) {
+  r.status = "failed";
+  r.not_run = true;
+  r.failures.push_back(why);
+  if (!message.empty()) r.failures.push_back(message);
+}
+
+// 5a. One case: not run when its file could not be used or no runner has it, else run and
+//     judged; whatever goes wrong is this test's failure.
+void grade_case(CaseResult& r, const std::optional<Json>& ref, const CaseBook& book,
+                const BuildResult& build, const fs::path& work_dir, const GradeOptions& options,
+                int gid) {
+  if (r.status == "skipped") return;  // the only cases without reference data
+  const TaskSpec* task = book.rubric.find(r.spec->task);
+  const std::string file = task ? task_file_of(*task) : "";
+  if (!file.empty() && build.failed_files.count(file)) {
+    const std::string& msg = build.failed_files.at(file);
+    const std::string what =
+        build.failed_what.count(file) ? build.failed_what.at(file) : std::string("did not compile");
+    not_run(r,
+            "not run: " + file + " " + what.substr(0, what.find(" (")) + ", so its tasks score 0",
+            "the message about " + file + ":\n" + cut_utf8(msg, 3000));
+    return;
   }
+  const fs::path runner =
+      !file.empty() && build.runners.count(file) ? build.runners.at(file) : build.runner;
+  if (runner.empty()) {
+    not_run(r,
+            build.ok ? "not run: it needs all of your files, and they do not link "
+                       "together"
+                     : "not run: your code did not compile (see the compiler errors)",
+            cut_utf8(build.ok ? build.link_errors : std::string(), 3000));
+    return;
+  }
+  try {
+    run_and_judge(r, *ref, runner, book, work_dir, options, gid);
+  } catch (const std::exception& e) {
+    r.status = "failed";
+    r.score = 0.0;
+    r.outputs = Json();
+    r.failures.push_back(std::string("the grader could not digest this test's result (") +
+                         e.what() + "); the test fails");
+  } catch (...) {
+    r.status = "failed";
+    r.score = 0.0;
+    r.outputs = Json();
+    r.failures.push_back("the grader could not digest this test's result; the test fails");
+  }
+}
+
+// 5. Runs every selected case, `jobs` at once (rep.grading_seconds).
+void run_cases(const std::vector<std::optional<Json>>& refs, const CaseBook& book,
+               const fs::path& work_dir, int jobs, int gid, const GradeOptions& options,
+               GradeReport& rep) {
+  const auto start = std::chrono::steady_clock::now();
+  // Outside bwrap, runs at the same time share the machine (abstract sockets, the process list):
+  // no hidden test runs while a public one does, so none can hand a hidden test's parameters
+  // to a public test's output. bwrap gives every run its own namespaces.
+  std::vector<std::size_t> phases[2];
+  const bool separate = options.isolation.kind != IsolationKind::Bwrap;
+  for (std::size_t i = 0; i < rep.cases.size(); ++i)
+    phases[separate && rep.cases[i].spec->hidden ? 1 : 0].push_back(i);
+  for (const std::vector<std::size_t>& phase : phases)
+    parallel_for(phase.size(), jobs, [&](std::size_t k) {
+      const std::size_t i = phase[k];
+      grade_case(rep.cases[i], refs[i], book, rep.build, work_dir, options, gid);
+    });
+  rep.grading_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// 6. The task and total scores, sums of the cases' scaled shares.
+void add_up(GradeReport& rep) {
   for (TaskResult& t : rep.tasks) {
     for (CaseResult* c : t.cases) t.score += c->score;
     rep.score += t.score;
@@ -533,6 +535,30 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   for (TaskResult& t : rep.tasks) t.score = tidy(t.score), t.max_score = tidy(t.max_score);
   rep.score = tidy(rep.score);
   rep.max_score = tidy(rep.max_score);
+}
+
+}  // namespace
+
+GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
+                             const fs::path& submission, const fs::path& requested_work_dir,
+                             const GradeOptions& options) {
+  // User mode: a private folder of the sandbox that no other submission's runs can read.
+  const Workspace workspace(options.isolation, requested_work_dir);
+  const fs::path& work_dir = workspace.dir();
+  GradeReport rep;
+  rep.submission = submission.string();
+  rep.visibility = options.include_hidden ? "all" : "public";
+  rep.isolation = options.isolation.name;
+  rep.isolation_description = options.isolation.description;
+  rep.isolation_warning = options.isolation.warning;
+  const int jobs = worker_count(options.jobs);
+
+  const std::vector<std::optional<Json>> refs = select_cases(config, book, options, rep);
+  build_runner(config, submission, work_dir, jobs, workspace.gid(), options, rep);
+  share_points(book, rep);
+  note_failed_files(config, rep);
+  run_cases(refs, book, work_dir, jobs, workspace.gid(), options, rep);
+  add_up(rep);
   make_safe(rep);
   return rep;
 }

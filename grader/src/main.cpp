@@ -20,9 +20,7 @@
 // Exit status (jelly/cli_common/exit_codes.hpp): 0 when grading ran, whatever the score (1 with
 // --strict when it is not full); 1 when a self-test (mutants) fails or a batch had a grader error;
 // 2 on grader errors (bad arguments, missing or stale reference data).
-#include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <set>
 #include <string>
@@ -30,7 +28,6 @@
 
 #include "commands.hpp"
 #include "jelly/cli_common/command_line.hpp"
-#include "report.hpp"
 
 #ifdef _WIN32
 #ifndef NOMINMAX
@@ -43,7 +40,6 @@ namespace {
 
 using namespace jelly::grade;
 using jelly::cli::Command;
-using jelly::cli::kExitFailure;
 using jelly::cli::kExitOk;
 using jelly::cli::kExitUsage;
 
@@ -166,37 +162,20 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
            command == "mutants")
     options.isolation = choose_isolation(config, o.isolation);
   if (command == "grade") {
-    const std::set<std::string> f(o.formats.begin(), o.formats.end());
-    const fs::path out_dir = o.out.empty() ? fs::path("grade-results") : fs::path(o.out);
-    const fs::path work = out_dir / ".work";
-    fs::remove_all(work);
-    const GradeReport r = grade_submission(config, book, o.positional, work, options);
-    std::set<std::string> files = f;
-    files.erase("terminal");
-    if (!files.empty()) write_reports(r, book, out_dir, files, o.no_frames ? nullptr : &config);
-    // JELLY_GRADE_KEEP_WORK=1 keeps the built runner (out/.work/build/runner) for experiments
-    // such as the tolerance measurements of docs/tolerances.md.
-    if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
-    if (f.count("terminal")) std::cout << terminal_summary(r, o.verbose);
-    return o.strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9)
-               ? kExitFailure
-               : kExitOk;
+    GradeOneArgs args;
+    args.submission = o.positional;
+    args.out = o.out;
+    args.formats = std::set<std::string>(o.formats.begin(), o.formats.end());
+    args.verbose = o.verbose;
+    args.frames = !o.no_frames;
+    args.strict = o.strict;
+    return grade_one(config, book, args, options);
   }
   if (command == "batch")
     return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames);
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
-  if (command == "prairielearn") {
-    const fs::path s = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
-    const fs::path res = o.results.empty() ? fs::path("/grade/results") : fs::path(o.results);
-    fs::create_directories(res);
-    const fs::path work = res / ".work";
-    const GradeReport r = grade_submission(config, book, s, work, options);
-    fs::remove_all(work);
-    std::ofstream(res / "results.json") << prairielearn_results(r).dump(2) << "\n";
-    std::cout << terminal_summary(r, false);
-    return kExitOk;
-  }
+  if (command == "prairielearn") return prairielearn(config, book, o.student, o.results, options);
   return mutants(config, book, o.table, o.out, o.jobs, options);
 }
 

@@ -1,10 +1,17 @@
 // Unit tests of the grader's small pure modules: what a report may show of a student's bytes
-// (text_safety), the class file's fields (csv), and which symbols a task file may define (symbols).
+// (text_safety), the class file's fields (csv), which symbols a task file may define (symbols),
+// and the worker pool every parallel step goes through (parallel).
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "csv.hpp"
+#include "parallel.hpp"
 #include "symbols.hpp"
 #include "text_safety.hpp"
 
@@ -107,4 +114,38 @@ TEST(GraderSymbols, OnlyOwnTasksHelpersAndHeaderCopiesAreAllowed) {
   EXPECT_NE(why("seccomp_load", 'T').find("grader's own code"), std::string::npos);
   EXPECT_NE(why("_ZSt9terminatev", 'T').find("standard library"), std::string::npos);
   EXPECT_NE(why("_Znwm", 'T').find("standard library"), std::string::npos);
+}
+
+TEST(GraderParallel, EveryIndexRunsOnceOnAtMostTheWorkersAskedFor) {
+  for (const std::size_t count : {0u, 1u, 3u, 100u})
+    for (const int jobs : {1, 2, 7}) {
+      std::vector<std::atomic<int>> calls(count);
+      std::atomic<int> running{0}, most{0};
+      g::parallel_for(count, jobs, [&](std::size_t i) {
+        const int now = ++running;
+        for (int seen = most; now > seen && !most.compare_exchange_weak(seen, now);) {
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        ++calls[i];
+        --running;
+      });
+      for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(calls[i].load(), 1) << i << " of " << count;
+      EXPECT_LE(most.load(), jobs);
+    }
+  EXPECT_EQ(g::worker_count(3), 3);
+  EXPECT_GE(g::worker_count(0), 1);  // 0: one per core
+}
+
+TEST(GraderParallel, AnEscapingExceptionIsRethrownAfterEveryIndexRan) {
+  std::vector<std::atomic<int>> calls(50);
+  try {
+    g::parallel_for(calls.size(), 4, [&](std::size_t i) {
+      ++calls[i];
+      if (i == 7 || i == 30) throw std::runtime_error("index " + std::to_string(i));
+    });
+    ADD_FAILURE() << "no exception reached the caller";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "index 7");  // the lowest index that threw, whatever finished first
+  }
+  for (std::size_t i = 0; i < calls.size(); ++i) EXPECT_EQ(calls[i].load(), 1) << i;
 }

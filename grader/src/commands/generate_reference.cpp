@@ -1,0 +1,126 @@
+#include "commands.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace jelly::grade {
+
+namespace {
+
+std::string run_text(const std::vector<std::string>& argv, const fs::path& cwd = {}) {
+  const Limits lim = trusted_tool_limits(120.0, 16 << 20);
+  const ChildResult c = run_child(argv, lim, cwd);
+  if (c.exit_code != 0) return "";
+  return c.out;
+}
+
+std::string git_commit(const fs::path& dir) {
+  std::string s = run_text({"/usr/bin/git", "-C", dir.string(), "rev-parse", "HEAD"});
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+  return s.empty() ? "unknown" : s;
+}
+
+}  // namespace
+
+int generate_reference(const GradeConfig& config, const CaseBook& book) {
+  if (config.reference_runner.empty() || !fs::exists(config.reference_runner)) {
+    std::cerr
+        << "jelly-grade: generate-reference needs the reference runner (solutions/ must exist and "
+           "jelly-grade-reference-runner must be built)\n";
+    return 2;
+  }
+  const std::string listing = run_text({config.reference_runner.string(), "--list"});
+  std::map<std::string, std::string> descriptions;
+  std::istringstream in(listing);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto tab = line.find('\t');
+    if (tab != std::string::npos) descriptions[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+  const std::string digest = harness_digest(config);
+  const std::string commit = git_commit(config.source_dir);
+  const fs::path work = config.binary_dir / "grader" / "generate";
+  fs::create_directories(work);
+  std::set<fs::path> written;
+  for (const CaseSpec& c : book.cases) {
+    if (!descriptions.count(c.generator)) {
+      std::cerr << "jelly-grade: " << c.source << ": case " << c.id
+                << ": the runner has no generator \"" << c.generator
+                << "\" (see jelly-grade-reference-runner --list)\n";
+      return 2;
+    }
+    const ChildResult prep = run_case(config.reference_runner, c, nullptr, work, 120.0, 0, true);
+    Json input = Json::object();
+    try {
+      const Json prepared = Json::parse(prep.result);
+      if (prepared.contains("error"))
+        throw std::runtime_error(prepared["error"].get<std::string>());
+      input = prepared.at("input");
+    } catch (const std::exception& e) {
+      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << e.what() << " " << prep.err
+                << "\n";
+      return 2;
+    }
+    const ChildResult run = run_case(config.reference_runner, c, &input, work, 120.0, 0);
+    Json result;
+    try {
+      result = Json::parse(run.result);
+    } catch (const std::exception&) {
+      std::cerr << "jelly-grade: the reference failed on " << c.id << " (exit " << run.exit_code
+                << ", signal " << run.signal << "): " << run.err << "\n";
+      return 2;
+    }
+    if (!result.contains("outputs")) {
+      std::cerr << "jelly-grade: the reference failed on " << c.id << ": " << result.dump() << "\n";
+      return 2;
+    }
+    // Recorded frames (rule "frames") are for the report only: never stored as reference data;
+    // nor are the details that explain a student's value (Outputs::detail).
+    Json outputs = Json::object();
+    for (const auto& [name, value] : result["outputs"].items())
+      if (c.rule_for(name).kind != Rule::Kind::Frames) {
+        outputs[name] = value;
+        outputs[name].erase("detail_low");
+        outputs[name].erase("detail_high");
+      }
+    if (outputs.dump().find("null") != std::string::npos) {
+      std::cerr << "jelly-grade: the reference produced NaN or infinity in " << c.id
+                << "; fix the case before generating reference data\n";
+      return 2;
+    }
+    Json data;
+    data["format_version"] = kReferenceFormat;
+    data["case_id"] = c.id;
+    data["case_hash"] = case_hash(c, digest);
+    data["case_generator"] = c.generator;
+    data["params"] = c.params;
+    data["harness_digest"] = digest;
+    data["generator"] = "jelly-grade generate-reference (jelly-grade-reference-runner, solutions/)";
+    data["commit"] = commit;
+    data["compiler"] = config.compiler_id;
+    std::string flags;
+    for (const std::string& f : config.compile_flags) flags += (flags.empty() ? "" : " ") + f;
+    data["flags"] = flags;
+    if (!input.empty()) data["input"] = input;
+    data["outputs"] = outputs;
+    const fs::path p = reference_path(config, c);
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << data.dump(1) << "\n";
+    written.insert(p);
+  }
+  // Remove data of cases that no longer exist.
+  for (const char* vis : {"public", "hidden"}) {
+    const fs::path dir = config.data_dir(vis);
+    if (!fs::exists(dir)) continue;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".json" && !written.count(e.path())) fs::remove(e.path());
+  }
+  std::cout << "jelly-grade: wrote reference data for " << written.size() << " cases (commit "
+            << commit << ")\n";
+  return 0;
+}
+
+}  // namespace jelly::grade

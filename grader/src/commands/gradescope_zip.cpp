@@ -1,0 +1,134 @@
+#include "commands.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "commands/templates.hpp"
+
+namespace jelly::grade {
+
+std::string sandbox_setup_lines(const std::string& source) {
+  // One sandbox user per core: each concurrent compile or test runs as a user of its own, so that
+  // killing what one run left behind never touches another (isolation.hpp).
+  const std::string user = std::string(kSandboxUser) + "-$i";
+  return std::string("for i in $(seq 0 $(( $(nproc) - 1 ))); do id -u ") + user +
+         " >/dev/null 2>&1 || useradd --system --no-create-home --user-group --shell " +
+         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + source + "/grader/data " +
+         source + "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source +
+         "/grader/cases\n" + "if [ -d " + source +
+         "/build/grader/object-cache ]; then chmod 0700 " + source +
+         "/build/grader/object-cache; fi\n";
+}
+
+namespace {
+
+/// Copies the header folder INCLUDE_DIR/SUBDIR (which must hold FILE) into the zip's
+/// source/third_party/NAME/include/SUBDIR with the first licence that exists; says what is
+/// missing and returns false when the headers are not there.
+bool bundle_headers(const fs::path& stage, const std::string& name, const fs::path& include_dir,
+                    const std::string& subdir, const std::string& file,
+                    const std::vector<fs::path>& licences, const std::string& package) {
+  const fs::path headers = include_dir / subdir;
+  const fs::path bundle = stage / "source" / "third_party" / name;
+  if (!fs::exists(headers / file)) {
+    std::cerr << "jelly-grade: gradescope-zip: " << name << " headers not found at "
+              << headers.string() << " (expected " << file << " there; install " << package
+              << ")\n";
+    return false;
+  }
+  fs::create_directories(bundle / "include");
+  fs::copy(headers, bundle / "include" / subdir, fs::copy_options::recursive);
+  for (const fs::path& licence : licences)
+    if (fs::exists(licence)) {
+      fs::copy_file(licence, bundle / "LICENSE", fs::copy_options::overwrite_existing);
+      break;
+    }
+  return true;
+}
+
+/// `text` with its placeholder line "@SANDBOX_SETUP_LINES@" replaced by `lines`. A template without
+/// that line is a grader bug (grader/templates/ edited by hand): said so, and nothing is written.
+std::string with_sandbox_setup(std::string_view text, const std::string& lines,
+                               const char* template_name) {
+  const std::string placeholder = "@SANDBOX_SETUP_LINES@\n";
+  std::string out(text);
+  const auto at = out.find(placeholder);
+  if (at == std::string::npos)
+    throw std::logic_error(std::string("grader/templates/") + template_name + " has no line " +
+                           placeholder.substr(0, placeholder.size() - 1));
+  out.replace(at, placeholder.size(), lines);
+  return out;
+}
+
+}  // namespace
+
+int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
+  const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
+  fs::remove_all(stage);
+  // The staging folder holds the hidden data and cases: it goes as soon as the zip is written (or
+  // failed), whatever happens.
+  struct RemoveStage {
+    fs::path dir;
+    ~RemoveStage() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } remove_stage{stage};
+  fs::create_directories(stage / "source");
+  // The framework as a student release has it, plus the grader's hidden data; never solutions/.
+  // Everything, setup.sh and run_autograder included, sits at the zip's top level: Gradescope
+  // extracts the zip into /autograder/source, where both scripts expect the framework's
+  // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
+  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
+    const fs::path from = config.source_dir / item;
+    if (!fs::exists(from)) continue;
+    fs::copy(from, stage / "source" / item, fs::copy_options::recursive);
+  }
+  // Not needed to grade, and the mutants quote the reference solution.
+  fs::remove_all(stage / "source" / "grader" / "tests");
+  fs::remove_all(stage / "source" / "grader" / "mutants");
+  // toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
+  // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
+  // this machine, with their licences.
+  if (!bundle_headers(stage, "tomlplusplus", JELLY_TOMLPLUSPLUS_INCLUDE_DIR, "toml++", "toml.h",
+                      {"/usr/share/doc/libtomlplusplus-dev/copyright",
+                       JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
+                      "libtomlplusplus-dev") ||
+      !bundle_headers(
+          stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
+          {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
+          "libcli11-dev"))
+    return 2;
+  // setup.sh's compiler check sits between its "# BEGIN compiler check" and "# END compiler check"
+  // lines (tests/grader/setup_compiler_check.sh runs the block alone with stand-in compilers): the
+  // framework needs GCC 11 or newer (floating-point std::to_chars) and CMake 3.16 or newer.
+  // Gradescope's Ubuntu 22.04 base image has GCC 11.4 and CMake 3.22; on an older image the block
+  // installs g++-11 where the archive has it, else it stops naming what to choose. The compiler it
+  // settles on is exported as CXX for CMake.
+  const std::string sandbox = sandbox_setup_lines("/autograder/source");
+  const std::string setup = with_sandbox_setup(gradescope_setup_template(), sandbox, "setup.sh.in");
+  const std::string run =
+      with_sandbox_setup(gradescope_run_autograder_template(), sandbox, "run_autograder.in");
+  std::ofstream(stage / "source" / "setup.sh", std::ios::binary) << setup;
+  std::ofstream(stage / "source" / "run_autograder", std::ios::binary) << run;
+  fs::permissions(stage / "source" / "setup.sh",
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(stage / "source" / "run_autograder",
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  const fs::path zip = fs::absolute(zip_path);
+  fs::remove(zip);
+  const Limits lim = trusted_tool_limits(300.0);
+  const ChildResult c =
+      run_child({"/usr/bin/zip", "-q", "-r", zip.string(), "."}, lim, stage / "source");
+  if (c.exit_code != 0) {
+    std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
+    return 2;
+  }
+  std::cout << "jelly-grade: wrote " << zip.string()
+            << " (setup.sh, run_autograder and the framework without solutions/, all at the top: "
+               "Gradescope extracts it into /autograder/source)\n";
+  return 0;
+}
+
+}  // namespace jelly::grade

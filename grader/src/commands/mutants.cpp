@@ -1,0 +1,186 @@
+#include "commands.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <tuple>
+
+#include <toml++/toml.h>
+
+#include "commands/common.hpp"
+#include "files.hpp"
+#include "parallel.hpp"
+
+namespace jelly::grade {
+
+int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
+            const std::string& work, int jobs, const GradeOptions& options) {
+  struct Mutant {
+    std::string name, task, file, description;
+    bool public_catches = false;  // the handout says the self-check catches it: a public test must
+    std::vector<std::tuple<std::string, std::string, int>>
+        replacements;  // find, with, nth occurrence
+    fs::path dir;
+    GradeReport report;
+    std::string error;
+  };
+  std::vector<Mutant> list;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(config.mutants_dir()))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
+  fs::remove_all(root);
+  // Entry 0: the reference; entry 1: the stubs; then the mutants.
+  list.push_back(
+      {"reference", "", "", "solutions/ unchanged", false, {}, config.solutions_dir(), {}, {}});
+  list.push_back(
+      {"stubs", "", "", "assignments/ unchanged", false, {}, config.assignments_dir(), {}, {}});
+  for (const fs::path& f : files) {
+    toml::table t = toml::parse_file(f.string());
+    Mutant m;
+    m.name = f.stem().string();
+    m.task = t["task"].value_or(std::string());
+    m.file = t["file"].value_or(std::string());
+    m.description = t["description"].value_or(std::string());
+    m.public_catches = t["public_catches"].value_or(false);
+    if (const toml::array* reps = t["replace"].as_array())
+      for (const toml::node& n : *reps) {
+        const toml::table& r = *n.as_table();
+        m.replacements.emplace_back(r["find"].value_or(std::string()),
+                                    r["with"].value_or(std::string()),
+                                    static_cast<int>(r["nth"].value_or(1)));
+      }
+    if (m.task.empty() || m.file.empty() || m.replacements.empty()) {
+      std::cerr << "jelly-grade: " << f
+                << ": a mutant needs task, file and at least one [[replace]]\n";
+      return 2;
+    }
+    m.dir = root / m.name / "submission";
+    fs::create_directories(m.dir);
+    for (const std::string& name : config.task_files())
+      fs::copy_file(config.solutions_dir() / name, m.dir / name,
+                    fs::copy_options::overwrite_existing);
+    std::string text = read_file(m.dir / m.file);
+    for (const auto& [find, with, nth] : m.replacements) {
+      auto at = text.find(find);
+      for (int k = 1; k < nth && at != std::string::npos; ++k)
+        at = text.find(find, at + find.size());
+      if (find.empty() || at == std::string::npos) {
+        std::cerr << "jelly-grade: " << f << ": \"" << find << "\" is not in solutions/" << m.file
+                  << " (the mutant no longer applies)\n";
+        return 2;
+      }
+      text.replace(at, find.size(), with);
+    }
+    std::ofstream(m.dir / m.file, std::ios::binary) << text;
+    list.push_back(std::move(m));
+  }
+  GradeOptions per = options;
+  per.jobs = 1;
+  per.include_hidden = true;
+  std::mutex mutex;
+  parallel_for(list.size(), jobs, [&](std::size_t i) {
+    try {
+      list[i].report =
+          grade_submission(config, book, list[i].dir, root / list[i].name / "work", per);
+    } catch (const std::exception& e) {
+      list[i].error = e.what();
+    } catch (...) {
+      list[i].error = "unknown error";
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    std::cerr << "  graded " << list[i].name << ": " << pts(list[i].report.score) << "\n";
+  });
+
+  auto task_score = [](const GradeReport& r, const std::string& id) {
+    for (const TaskResult& t : r.tasks)
+      if (t.spec->id == id) return t.score;
+    return 0.0;
+  };
+  const GradeReport& ref = list[0].report;
+  bool all_ok = true;
+  std::ostringstream table;
+  table << "| Mutant | Task | What it does | Own task | Lost elsewhere | Caught by | Public tests "
+           "| Verdict |\n"
+           "|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Mutant& m = list[i];
+    const GradeReport& r = m.report;
+    std::string verdict, own = "—", elsewhere, caught, by_public = "—";
+    bool ok = m.error.empty();
+    if (!ok) verdict = "grader error: " + m.error;
+    if (ok && i == 0) {
+      ok = r.compiled && std::abs(r.score - r.max_score) < 1e-9;
+      own = pts(r.score) + " / " + pts(r.max_score);
+      verdict = ok ? "full marks ✓" : "NOT full marks ✗";
+      if (!ok)
+        for (const CaseResult& c : r.cases)
+          if (c.status == "failed") caught += c.spec->id + " ";
+    } else if (ok && i == 1) {
+      ok = r.compiled && r.score == 0.0;
+      own = pts(r.score) + " / " + pts(r.max_score);
+      verdict = ok ? "zero ✓" : "NOT zero ✗";
+      for (const CaseResult& c : r.cases)
+        if (c.status == "passed" && c.max_score > 0) caught += c.spec->id + " (passed!) ";
+    } else if (ok) {
+      const double mine = task_score(r, m.task), full = task_score(ref, m.task);
+      own = pts(mine) + " / " + pts(full);
+      const bool lost = r.compiled && mine < full - 1e-9;
+      bool leak = !r.compiled;
+      for (const TaskResult& t : r.tasks) {
+        if (t.spec->id == m.task) continue;
+        const double d = task_score(ref, t.spec->id) - t.score;
+        if (d > 1e-9) {
+          leak = true;
+          elsewhere += t.spec->id + " −" + pts(d) + " ";
+        }
+      }
+      bool public_caught = false;
+      for (const CaseResult& c : r.cases)
+        if (c.status == "failed" && c.spec->task == m.task) {
+          caught += c.spec->id + " ";
+          public_caught = public_caught || !c.spec->hidden;
+        }
+      by_public = std::string(public_caught ? "caught" : "missed") +
+                  (m.public_catches ? " (required)" : "");
+      ok = lost && !leak && (public_caught || !m.public_catches);
+      verdict = !lost  ? "NOT caught ✗"
+                : leak ? "loses points elsewhere ✗"
+                : !ok  ? "NOT caught by a public test ✗"
+                       : "caught in its task only ✓";
+    }
+    if (elsewhere.empty()) elsewhere = "none";
+    all_ok = all_ok && ok;
+    table << "| " << m.name << " | " << (m.task.empty() ? "all" : m.task) << " | " << m.description
+          << " | " << own << " | " << elsewhere << " | " << (caught.empty() ? "—" : caught) << " | "
+          << by_public << " | " << verdict << " |\n";
+  }
+  std::cout << table.str();
+  if (!table_path.empty()) {
+    std::ofstream f(table_path);
+    f << "# Grader self-test: the mutation table\n\n"
+         "Generated by `jelly-grade mutants --table docs/mutation-table.md` (CTest "
+         "`grader.mutants` runs the same\n"
+         "checks). Each mutant is a realistic mistake applied to a copy of `solutions/` (specs in\n"
+         "`grader/mutants/*.toml`) and graded with all tests, public and hidden. A mutant must "
+         "lose points in\n"
+         "its own task and keep every point elsewhere; the reference must score full marks and the "
+         "stubs zero.\n"
+         "\"Caught by\" lists the failing tests of the mutant's own task; \"Public tests\" says "
+         "whether the public\n"
+         "tests alone (the student's self-check) catch it, and \"(required)\" marks the mistakes "
+         "the handout says the\n"
+         "self-check catches (`public_catches = true` in the mutant's file): for those, \"missed\" "
+         "fails the self-test.\n\n"
+      << table.str();
+  }
+  std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n"
+                       : "jelly-grade: mutation self-test FAILED\n");
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace jelly::grade
