@@ -1,24 +1,31 @@
 # The layers of docs/architecture.md ("Layers"), kept true: every `#include "jelly/..."` (or <...>)
-# in the framework, the tasks, the grader and the benchmarks must name a header of the file's own
-# layer or of one below it, and the layers without GL must include no GL, GLFW or ImGui header.
-# Prints every violation as FILE:LINE and fails; passes silently otherwise.
+# in the framework, the assignments, their references, the grader and the benchmarks must name a
+# header of the file's own layer or of one below it, and the layers without GL must include no GL,
+# GLFW or ImGui header. Prints every violation as FILE:LINE and fails; passes silently otherwise.
 #
 #   cmake -DROOT=<source tree> -P check_layers.cmake
 #
 # A file's layer is its folder; a header's layer is its folder under jelly/ (a header straight in
-# jelly/, or in jelly/tasks/, is the core's). A new folder under jelly/ must be given a layer here
-# and in docs/architecture.md, or this check fails naming it.
+# jelly/ is the core's, except the manifest library's headers, framework/manifest/include/jelly/*).
+# A new folder under jelly/ must be given a layer here and in docs/architecture.md, or this check
+# fails naming it.
+#
+# The assignments: the files of assignments/<id>/ (stubs, bindings/, include/) and of
+# solutions/<id>/ are layer `assignment`, those of assignments/<id>/grader/ (case generators) layer
+# `assignment_grader`; both may include the core and their OWN assignment's headers
+# (assignments/<id>/include/jelly/<folder>/), never another assignment's. General code (the
+# framework, grader/src, grader/runner) includes no assignment's header at all. The manifest
+# library (framework/manifest) is layer 0: its own headers, the standard library and toml++ only.
 cmake_minimum_required(VERSION 3.16)
 if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<source tree> -P check_layers.cmake")
 endif()
 
 # Folder of a source file (relative to ROOT) -> its layer. Checked in order; the first match wins.
+# (assignments/<id>/ and solutions/<id>/ are matched before this list; see _file_layer.)
 set(_folders
+  "framework/manifest/" manifest
   "framework/core/"    core
-  "framework/tasks/"   tasks
-  "assignments/"       tasks
-  "solutions/"         tasks
   "framework/session/" session
   "framework/cli_common/" cli_common
   "framework/render/"  render
@@ -29,29 +36,87 @@ set(_folders
   "grader/"            grader
   "bench/"             bench)
 # What each layer may include (its own layer and those below it).
-set(_may_core    core)
-set(_may_tasks   core)
-set(_may_session core session)
+# `assignment` stands for the file's own assignment's headers (never another assignment's).
+set(_may_manifest manifest)
+set(_may_core    manifest core)
+set(_may_assignment core assignment)
+set(_may_assignment_grader core assignment)
+set(_may_session manifest core session)
 set(_may_cli_common cli_common)
-set(_may_render  core session render)
-set(_may_movie   core session render movie cli_common)
-set(_may_cli     core session movie cli cli_common)
-set(_may_app     core session render movie app cli_common)
-set(_may_grader  core grader cli_common)
-set(_may_bench   core)
+set(_may_render  manifest core session render)
+set(_may_movie   manifest core session render movie cli_common)
+set(_may_cli     manifest core session movie cli cli_common)
+set(_may_app     manifest core session render movie app cli_common)
+set(_may_grader  manifest core grader cli_common)
+set(_may_bench   manifest core assignment)
+# General code: it names no assignment, so it includes no assignment's header.
+set(_general manifest core session cli_common render movie cli app grader)
 # Layers that must stay free of GL (and of windowing and GUI libraries).
-set(_no_gl core tasks session cli_common movie cli grader bench)
+set(_no_gl manifest core assignment assignment_grader session cli_common movie cli grader bench)
 set(_gl_regex "^(GL|GLFW|KHR|EGL|OpenGL)/|^imgui|osmesa")
+# Layer 0 includes, besides its own headers, only the standard library (<vector>, <cstdio>) and
+# toml++ (<toml++/toml.h>).
+set(_manifest_external_regex "^([a-z_0-9]+|toml\\+\\+/.*)$")
 
-# Layer of an included header path "jelly/..."; "?" when no layer owns its folder.
-function(_header_layer header out)
-  if(header MATCHES "^jelly/[^/]+$" OR header MATCHES "^jelly/tasks/")
+# The manifest library's headers, and each assignment's header folders (jelly/<folder>/ under
+# assignments/<id>/include) with the assignment that owns them.
+file(GLOB _manifest_headers RELATIVE "${ROOT}/framework/manifest/include"
+     "${ROOT}/framework/manifest/include/jelly/*")
+file(GLOB _assignment_header_dirs LIST_DIRECTORIES true RELATIVE "${ROOT}/assignments"
+     "${ROOT}/assignments/*/include/jelly/*")
+set(_assignment_folders "")
+foreach(d IN LISTS _assignment_header_dirs)
+  if(IS_DIRECTORY "${ROOT}/assignments/${d}" AND d MATCHES "^([^/]+)/include/jelly/([^/]+)$")
+    set(_owner_of_${CMAKE_MATCH_2} ${CMAKE_MATCH_1})
+    list(APPEND _assignment_folders ${CMAKE_MATCH_2})
+  endif()
+endforeach()
+
+# Layer of an included header path "jelly/..."; "?" when no layer owns its folder. For an
+# assignment's header, `owner` is the assignment's id.
+function(_header_layer header out owner)
+  set(${owner} "" PARENT_SCOPE)
+  if(header IN_LIST _manifest_headers)
+    set(${out} manifest PARENT_SCOPE)
+  elseif(header MATCHES "^jelly/[^/]+$")
     set(${out} core PARENT_SCOPE)
   elseif(header MATCHES "^jelly/(session|render|movie|cli_common|cli|app|grader)/")
     set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  elseif(header MATCHES "^jelly/([^/]+)/" AND CMAKE_MATCH_1 IN_LIST _assignment_folders)
+    set(${out} assignment PARENT_SCOPE)
+    set(${owner} ${_owner_of_${CMAKE_MATCH_1}} PARENT_SCOPE)
   else()
     set(${out} "?" PARENT_SCOPE)
   endif()
+endfunction()
+
+# Layer of a source file (relative to ROOT), "" for files no layer checks; `own` is the id of the
+# assignment the file belongs to (assignments/<id>/..., solutions/<id>/...).
+function(_file_layer f out own)
+  set(${own} "" PARENT_SCOPE)
+  if(f MATCHES "^assignments/([^/]+)/grader/")
+    set(${out} assignment_grader PARENT_SCOPE)
+    set(${own} ${CMAKE_MATCH_1} PARENT_SCOPE)
+    return()
+  elseif(f MATCHES "^(assignments|solutions)/([^/]+)/")
+    set(${out} assignment PARENT_SCOPE)
+    set(${own} ${CMAKE_MATCH_2} PARENT_SCOPE)
+    return()
+  endif()
+  list(LENGTH _folders n)
+  set(i 0)
+  while(i LESS n)
+    list(GET _folders ${i} prefix)
+    math(EXPR j "${i} + 1")
+    list(GET _folders ${j} candidate)
+    string(FIND "${f}" "${prefix}" at)
+    if(at EQUAL 0)
+      set(${out} "${candidate}" PARENT_SCOPE)
+      return()
+    endif()
+    math(EXPR i "${i} + 2")
+  endwhile()
+  set(${out} "" PARENT_SCOPE)
 endfunction()
 
 # 1-based line of the first occurrence of `needle` in `text`.
@@ -71,23 +136,12 @@ file(GLOB_RECURSE _files RELATIVE "${ROOT}"
 list(FILTER _files INCLUDE REGEX "\\.(c|cc|cpp|cxx|h|hh|hpp|hxx|inl|ipp)$")
 list(SORT _files)
 foreach(f IN LISTS _files)
-  set(layer "")
-  set(found FALSE)
-  set(i 0)
-  list(LENGTH _folders n)
-  while(i LESS n)
-    list(GET _folders ${i} prefix)
-    math(EXPR j "${i} + 1")
-    list(GET _folders ${j} candidate)
-    string(FIND "${f}" "${prefix}" at)
-    if(at EQUAL 0)
-      set(layer "${candidate}")
-      set(found TRUE)
-      break()
-    endif()
-    math(EXPR i "${i} + 2")
-  endwhile()
-  if(NOT found OR layer STREQUAL "")
+  _file_layer("${f}" layer own)
+  if(layer STREQUAL "" AND f MATCHES "^framework/([^/]+)/")
+    math(EXPR _scanned "${_scanned} + 1")
+    list(APPEND _problems "${f}:1: framework/${CMAKE_MATCH_1}/ is in no layer (give it one in tests/layers/check_layers.cmake and docs/architecture.md)")
+    continue()
+  elseif(layer STREQUAL "")
     continue()
   endif()
   math(EXPR _scanned "${_scanned} + 1")
@@ -97,15 +151,22 @@ foreach(f IN LISTS _files)
     string(REGEX REPLACE "^#[ \t]*include[ \t]*[<\"]([^\">\n]*)[\">]$" "\\1" header "${inc}")
     set(why "")
     if(header MATCHES "^jelly/")
-      _header_layer("${header}" to)
+      _header_layer("${header}" to owner)
       if(to STREQUAL "?")
         set(why "${header} is in no layer (give its folder one in tests/layers/check_layers.cmake and docs/architecture.md)")
+      elseif(to STREQUAL "assignment" AND layer IN_LIST _general)
+        set(why "${layer} includes ${header}, a header of assignment ${owner}: general code names no assignment (it reaches an assignment through the TaskTable and the manifest)")
+      elseif(to STREQUAL "assignment" AND own AND NOT owner STREQUAL own)
+        set(why "${f} of assignment ${own} includes ${header}, a header of assignment ${owner}: an assignment includes only its own headers and the core")
       elseif(NOT to IN_LIST _may_${layer})
         string(REPLACE ";" ", " may "${_may_${layer}}")
+        string(REPLACE "assignment" "its own assignment's headers" may "${may}")
         set(why "${layer} includes ${header} (layer ${to}), but ${layer} may include only: ${may}")
       endif()
     elseif(layer IN_LIST _no_gl AND header MATCHES "${_gl_regex}")
       set(why "${layer} includes ${header}: the ${layer} layer has no GL, window or GUI code")
+    elseif(layer STREQUAL "manifest" AND inc MATCHES "<" AND NOT header MATCHES "${_manifest_external_regex}")
+      set(why "manifest includes ${header}: layer 0 includes only its own headers, the standard library and toml++")
     endif()
     if(why)
       _line_of("${text}" "${inc}" line)
@@ -116,6 +177,7 @@ endforeach()
 
 # CMake: the build files of a framework layer must not name a target of a layer they may not use
 # (render/CMakeLists.txt once linked itself into the `jelly` CLI target; now the CLI links render).
+set(_targets_manifest jelly_manifest jelly::manifest)
 set(_targets_core    jelly_core jelly::core)
 set(_targets_session jelly_session jelly::session)
 set(_targets_render  jelly_render jelly::render)
@@ -135,7 +197,7 @@ foreach(f IN LISTS _cmake_files)
   math(EXPR _scanned "${_scanned} + 1")
   file(READ "${ROOT}/${f}" text)
   string(REGEX REPLACE "#[^\n]*" "" code "${text}")  # comments may name anything
-  foreach(other core session render movie cli app)
+  foreach(other manifest core session render movie cli app)
     if(other IN_LIST _may_${layer})
       continue()
     endif()

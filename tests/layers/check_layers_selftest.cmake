@@ -1,6 +1,8 @@
 # check_layers.cmake must be able to fail: a small tree with one planted include per rule (a lower
-# layer including a higher one, a header in no layer, GL in a GL-free layer) must fail naming each
-# file and line, and the same tree without them, including every allowed kind, must pass.
+# layer including a higher one, a header in no layer, GL in a GL-free layer, the manifest library
+# reaching past the standard library and toml++, general code including an assignment's header, an
+# assignment including another's, a framework folder with no layer) must fail naming each file and
+# line, and the same tree without them, including every allowed kind, must pass.
 #
 #   cmake -DCHECK=<check_layers.cmake> -DWORK=<scratch folder> -P check_layers_selftest.cmake
 cmake_minimum_required(VERSION 3.16)
@@ -8,14 +10,25 @@ file(REMOVE_RECURSE "${WORK}")
 
 # Allowed includes, one per layer (the tree must pass with only these).
 set(_good
-  "framework/core/src/a.cpp|#include \"jelly/world.hpp\"\n#include \"jelly/tasks/forces.hpp\""
-  "assignments/forces.cpp|#include \"jelly/tasks/forces.hpp\""
+  "framework/manifest/include/jelly/manifest.hpp|#pragma once\n#include <string>\n#include <vector>"
+  "framework/manifest/src/manifest.cpp|#include \"jelly/manifest.hpp\"\n#include <toml++/toml.h>\n#include <filesystem>"
+  "framework/manifest/CMakeLists.txt|add_library(jelly_manifest src/manifest.cpp)\ntarget_link_libraries(jelly_manifest PRIVATE tomlplusplus::tomlplusplus)"
+  "framework/core/src/a.cpp|#include \"jelly/world.hpp\"\n#include \"jelly/manifest.hpp\""
+  "framework/core/CMakeLists.txt|add_library(jelly_core a.cpp)\ntarget_link_libraries(jelly_core PUBLIC jelly::manifest)"
+  "assignments/a1/include/jelly/a1/forces.hpp|#pragma once\n#include \"jelly/types.hpp\""
+  "assignments/a1/forces.cpp|#include \"jelly/a1/forces.hpp\""
+  "assignments/a1/bindings/task_table.cpp|#include \"jelly/task_table.hpp\"\n#include \"jelly/a1/forces.hpp\""
+  "assignments/a1/grader/runner/cases_forces.cpp|#include \"harness.hpp\"\n#include \"jelly/world.hpp\"\n#include \"jelly/a1/forces.hpp\""
+  "solutions/a1/forces.cpp|#include \"jelly/a1/forces.hpp\"\n#include \"jelly/spring_pass.hpp\""
+  "assignments/a2/include/jelly/a2/cloth.hpp|#pragma once\n#include \"jelly/types.hpp\""
+  "assignments/a2/cloth.cpp|#include \"jelly/a2/cloth.hpp\""
+  "bench/bench_a1.cpp|#include \"jelly/a1/forces.hpp\"\n#include \"jelly/world.hpp\""
   "framework/session/src/a.cpp|#include \"jelly/session/x.hpp\"\n#include \"jelly/scene.hpp\""
   "framework/render/src/a.cpp|#include <GL/glcorearb.h>\n#include \"jelly/session/x.hpp\"\n#include \"jelly/render/y.hpp\""
   "framework/movie/src/a.cpp|#include \"jelly/render/y.hpp\"\n#include \"jelly/movie/z.hpp\"\n#include \"jelly/cli_common/c.hpp\""
   "framework/cli/a.cpp|#include \"jelly/movie/render_command.hpp\"\n#include \"jelly/cli/x.hpp\""
   "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/movie/mp4.hpp\""
-  "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"process.hpp\""
+  "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"jelly/manifest.hpp\"\n#include \"process.hpp\""
   "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\""
   "framework/movie/CMakeLists.txt|add_library(jelly_movie a.cpp)\ntarget_link_libraries(jelly_movie PUBLIC jelly::render jelly::session)"
   "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_movie)\n  target_link_libraries(jelly PRIVATE jelly::movie)\nendif()"
@@ -24,7 +37,21 @@ set(_good
 set(_bad
   "framework/core/src/bad.cpp|// one\n\n#include \"jelly/session/scene_catalog.hpp\"|framework/core/src/bad.cpp:3:"
   "framework/core/include/jelly/bad.hpp|#pragma once\n#include <GLFW/glfw3.h>|framework/core/include/jelly/bad.hpp:2:"
-  "solutions/bad.cpp|#include \"jelly/session/simulation_run.hpp\"|solutions/bad.cpp:1:"
+  "solutions/a1/bad.cpp|#include \"jelly/session/simulation_run.hpp\"|solutions/a1/bad.cpp:1:"
+  "framework/manifest/src/bad.cpp|#include \"jelly/manifest.hpp\"\n#include \"jelly/world.hpp\"|framework/manifest/src/bad.cpp:2:"
+  "framework/manifest/src/eigen.cpp|#include <vector>\n#include <Eigen/Dense>|framework/manifest/src/eigen.cpp:2:"
+  "framework/manifest/src/CMakeLists.txt|add_library(m a.cpp)\ntarget_link_libraries(m PUBLIC jelly::core)|framework/manifest/src/CMakeLists.txt:2:"
+  "framework/core/src/a1.cpp|#include \"jelly/a1/forces.hpp\"|framework/core/src/a1.cpp:1:"
+  "framework/session/src/a1.cpp|#include \"jelly/a2/cloth.hpp\"|framework/session/src/a1.cpp:1:"
+  "grader/src/a1.cpp|#include \"jelly/manifest.hpp\"\n#include \"jelly/a1/forces.hpp\"|grader/src/a1.cpp:2:"
+  "grader/runner/a1.cpp|#include \"harness.hpp\"\n#include \"jelly/a1/forces.hpp\"|grader/runner/a1.cpp:2:"
+  "assignments/a2/bindings/bad.cpp|#include \"jelly/a1/forces.hpp\"|assignments/a2/bindings/bad.cpp:1:"
+  "assignments/a2/include/jelly/a2/bad.hpp|#pragma once\n#include \"jelly/a1/forces.hpp\"|assignments/a2/include/jelly/a2/bad.hpp:2:"
+  "solutions/a2/cloth.cpp|#include \"jelly/a2/cloth.hpp\"\n#include \"jelly/a1/forces.hpp\"|solutions/a2/cloth.cpp:2:"
+  "assignments/a2/grader/runner/cases.cpp|#include \"harness.hpp\"\n#include \"jelly/a1/forces.hpp\"|assignments/a2/grader/runner/cases.cpp:2:"
+  "assignments/a1/bindings/session.cpp|#include \"jelly/session/simulation_run.hpp\"|assignments/a1/bindings/session.cpp:1:"
+  "assignments/a1/grader/runner/gl.cpp|#include <GL/glcorearb.h>|assignments/a1/grader/runner/gl.cpp:1:"
+  "framework/tasks/task_table.cpp|#include \"jelly/a1/forces.hpp\"|framework/tasks/task_table.cpp:1:"
   "framework/session/src/bad.cpp|#include \"jelly/scene.hpp\"\n#include \"jelly/render/renderer.hpp\"|framework/session/src/bad.cpp:2:"
   "framework/session/src/gl.cpp|#include <GL/glcorearb.h>|framework/session/src/gl.cpp:1:"
   "framework/render/src/bad.cpp|#include \"jelly/movie/render_command.hpp\"|framework/render/src/bad.cpp:1:"
