@@ -1,6 +1,7 @@
 // jelly-grade runner: runs ONE grading case and writes its outputs as one JSON object to a file
 // descriptor the orchestrator gave it. The runner knows case GENERATORS only; a case is a
-// generator plus its parameters, both from grader/cases/*.toml, handed over in the request file:
+// generator plus its parameters, both from assignments/<id>/grader/cases/*.toml, handed over in
+// the request file:
 //   { "case": ID, "generator": NAME, "params": {...}, "input": {...prepared input, if any} }
 //
 //   runner --list                                  generator names and descriptions, one per line

@@ -1,5 +1,6 @@
-// Case specifications (grader/cases/*.toml), named tolerances, the rubric (grader/rubric.toml)
-// and the stored reference data (grader/data/{public,hidden}/<case>.json).
+// Case specifications (assignments/<id>/grader/cases/*.toml), named tolerances, the rubric (the
+// manifest's [grading] and [[task]] points) and the stored reference data
+// (assignments/<id>/grader/data/public/, grader/data/<id>/hidden/: <case>.json).
 #pragma once
 
 #include <map>
@@ -73,7 +74,7 @@ struct CaseBook {
   Rubric rubric;
 };
 
-/// Loads every grader/cases/*.toml and grader/rubric.toml (or `rubric_path`); throws
+/// Loads every case file of the assignment and its manifest's rubric (or `rubric_path`); throws
 /// std::runtime_error naming the file and key on any problem (unknown tolerance, task, ...).
 CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path = {});
 

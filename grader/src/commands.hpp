@@ -49,7 +49,8 @@ std::string sandbox_setup_lines(const std::string& source);
 /// hidden data).
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path);
 
-/// `mutants` (commands/mutants.cpp): applies every grader/mutants/*.toml to a copy of solutions/,
+/// `mutants` (commands/mutants.cpp): applies every assignments/<id>/grader/mutants/*.toml to a copy
+/// of solutions/<id>/,
 /// grades each, checks that the reference scores full marks, the stubs zero, and every mutant
 /// loses points in its own task only. Writes the table (Markdown) to `table_path` when given.
 /// Returns 0 when every check holds.

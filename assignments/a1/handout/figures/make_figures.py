@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the handout's geometry figures (SVG) from the physics contract's definitions.
 
-    python3 docs/handout/figures/make_figures.py      # rewrites springs.svg, plane.svg, bowl.svg
+    python3 assignments/a1/handout/figures/make_figures.py      # rewrites springs.svg, plane.svg, bowl.svg
 
 stability.svg is drawn by gnuplot from stability.gp. The numbers in bowl.svg are the course's 2023
 terrain (R = 9, c_y = 9/sqrt(2), rim at y = 0), computed here, not typed in.
