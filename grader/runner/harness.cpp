@@ -61,7 +61,8 @@ const GeneratorDef* Registry::find(const std::string& name) const {
 
 const Json& Params::at(const std::string& key) const {
   if (!has(key))
-    throw std::runtime_error(path_ + "." + key + " is missing (see the case in grader/cases/)");
+    throw std::runtime_error(path_ + "." + key +
+                             " is missing (see the case in the assignment's grader/cases/)");
   return j_.at(key);
 }
 

@@ -44,11 +44,11 @@ class Outputs {
   Json out_ = Json::object();
 };
 
-/// The parameters of one case: the `params` table of its [[case]] in grader/cases/*.toml, handed to
-/// the runner by the orchestrator. Every input a case feeds the student's code is made from these
-/// (and from framework presets), so a case's inputs live in data, not in this code: removing a case
-/// from the case files removes every trace of it. Reading a missing or mistyped key throws, naming
-/// the key and what was expected.
+/// The parameters of one case: the `params` table of its [[case]] in
+/// assignments/<id>/grader/cases/*.toml, handed to the runner by the orchestrator. Every input a
+/// case feeds the student's code is made from these (and from framework presets), so a case's
+/// inputs live in data, not in this code: removing a case from the case files removes every trace
+/// of it. Reading a missing or mistyped key throws, naming the key and what was expected.
 class Params {
  public:
   explicit Params(Json j, std::string path = "params") : j_(std::move(j)), path_(std::move(path)) {}

@@ -159,9 +159,8 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
   for (const auto& [name, rule] : course->spec->rules)
     records = records || rule.kind == Rule::Kind::Frames;
   if (!records || !course->spec->params.contains("frame_times")) {
-    result.unavailable =
-        "the course scene case records no frames (no frame_times in grader/cases/" +
-        course->spec->source + ")";
+    result.unavailable = "the course scene case records no frames (no frame_times in " +
+                         (config.cases_dir() / course->spec->source).string() + ")";
     return result;
   }
   if (config.jelly_cli.empty()) {

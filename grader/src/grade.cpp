@@ -353,10 +353,10 @@ std::vector<std::optional<Json>> select_cases(const GradeConfig& config, const C
             " was generated from different case code (grader/runner changed); run "
             "`jelly-grade generate-reference`");
       } else if (ref->value("case_hash", std::string()) != case_hash(c, digest)) {
-        throw std::runtime_error(reference_path(config, c).string() +
-                                 " was generated for a different version of case " + c.id +
-                                 " (its generator or params in grader/cases/" + c.source +
-                                 " changed); run `jelly-grade generate-reference`");
+        throw std::runtime_error(
+            reference_path(config, c).string() + " was generated for a different version of case " +
+            c.id + " (its generator or params in " + (config.cases_dir() / c.source).string() +
+            " changed); run `jelly-grade generate-reference`");
       }
     }
     rep.cases.push_back(std::move(r));
