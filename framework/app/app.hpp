@@ -20,11 +20,13 @@
 namespace jelly::app {
 
 struct AppOptions {
-  std::string scene = "course-2023";  ///< name under the scenes folder, or a path
-  std::filesystem::path scenes_dir;   ///< empty: session::default_scenes_dir()
-  std::string integrator;             ///< empty: the scene's
-  double dt = 0.0;                    ///< 0: the scene's
-  std::vector<std::string> compare;   ///< 2–4 integrators: start in comparison mode
+  /// Name under the scenes folder, or a path; empty: the linked assignment's default scene
+  /// (session::default_scene_name()).
+  std::string scene;
+  std::filesystem::path scenes_dir;  ///< empty: session::default_scenes_dir()
+  std::string integrator;            ///< empty: the scene's
+  double dt = 0.0;                   ///< 0: the scene's
+  std::vector<std::string> compare;  ///< 2–4 integrators: start in comparison mode
   std::vector<std::pair<int, std::string>> slot_sets;  ///< --slot-set K:key=value (1-based slot)
   std::string backend = "window";  ///< window | auto (auto falls back to offscreen)
   int width = 1600, height = 900;

@@ -40,11 +40,12 @@ int init_state(AppState& s, const AppOptions& opt) {
   s.clock.factor = std::clamp(opt.factor, RealTimeClock::kMinFactor, RealTimeClock::kMaxFactor);
   s.frame.draw.particles = opt.particles;
   if (opt.springs) s.frame.draw.springs = {true, true, true, true};
+  const std::string scene = opt.scene.empty() ? default_scene_name() : opt.scene;
   int index = -1;
   for (std::size_t i = 0; i < s.scenes.size(); ++i)
-    if (s.scenes[i].name == opt.scene || s.scenes[i].name == "builtin:" + opt.scene)
+    if (s.scenes[i].name == scene || s.scenes[i].name == "builtin:" + scene)
       index = static_cast<int>(i);
-  if (!load_scene_into(s, index, opt.scene)) {
+  if (!load_scene_into(s, index, scene)) {
     std::cerr << "jelly-lab: " << s.scene_error << "\n";
     if (s.scenes.empty() || !load_scene_into(s, 0)) return cli::kExitFailure;
   }

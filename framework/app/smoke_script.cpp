@@ -52,14 +52,16 @@ bool SmokeScript::frame(AppState& s, bool screenshot) {
     }
     return false;
   }
-  // Back to the course scene for the screenshot, a little after the start.
-  int course = 0;
+  // Back to the default scene (the assignment's manifest's default_scene, from the scenes folder
+  // or built in) for the screenshot, a little after the start.
+  const std::string name = session::default_scene_name();
+  int start = 0;
   for (std::size_t i = 0; i < s.scenes.size(); ++i)
-    if (s.scenes[i].name.find("course-2023") != std::string::npos) {
-      course = static_cast<int>(i);
+    if (s.scenes[i].name == name || s.scenes[i].name == "builtin:" + name) {
+      start = static_cast<int>(i);
       break;
     }
-  load_scene_into(s, course);
+  load_scene_into(s, start);
   for (SimulationRun* r : s.run_pointers()) r->advance_to(1.5);
   s.screenshot_requested = screenshot;
   return true;

@@ -2,8 +2,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <system_error>
 
 #include "commands.hpp"
 #include "jelly/auto_step.hpp"
@@ -20,8 +22,8 @@ namespace {
 
 constexpr const char* kRunHelp = R"(usage: jelly run SCENE [options]
 
-Runs SCENE (a .toml scene file, or a scene's name under scenes/ such as course-2023) without a
-window and writes what happened as CSV.
+Runs SCENE (a .toml scene file, or a scene's name under scenes/ such as hard/stiff-springs)
+without a window and writes what happened as CSV.
 
 options:
   --integrator NAME   explicit_euler | implicit_euler | midpoint | rk4 (the course's four, your
@@ -187,16 +189,30 @@ std::optional<SceneSpec> load_with_overrides(const std::string& scene_name,
 }
 
 void print_missing_tasks_note(const SceneSpec& scene) {
-  const auto missing = missing_task_ids(session::probe_assignment(session::assignment_for(scene)));
+  const LinkedAssignment& assignment = session::assignment_for(scene);
+  const auto missing = missing_task_ids(session::probe_assignment(assignment));
   if (missing.empty()) return;
   std::string list;
   for (const std::string& id : missing) list += (list.empty() ? "" : ", ") + id;
-  std::fprintf(
-      stderr,
-      "note: these student tasks still return the stub's neutral value: %s.\n"
-      "      Until they are done the jelly has no springs or falls through the floor, and\n"
-      "      your integrators leave it where it is. See assignments/a1/handout/README.md.\n",
-      list.c_str());
+  // The handout the manifest names, beside the manifest the program was built with (relative to
+  // the working folder when it is below it: "assignments/a1/handout/README.md" from the checkout).
+  const AssignmentManifest& manifest = session::manifest_of(assignment);
+  std::string handout = manifest.id + "'s handout";
+  if (!manifest.handout.empty()) {
+    const std::filesystem::path file =
+        std::filesystem::path(std::string(assignment.manifest_path)).parent_path() /
+        manifest.handout;
+    std::error_code ec;
+    const std::filesystem::path here = std::filesystem::current_path(ec);
+    const std::filesystem::path relative = ec ? file : file.lexically_relative(here);
+    handout = !relative.empty() && *relative.begin() != ".." ? relative.generic_string()
+                                                             : file.generic_string();
+  }
+  std::fprintf(stderr,
+               "note: these student tasks still return the stub's neutral value: %s.\n"
+               "      Until they are done the scene does not move as it should (what they compute\n"
+               "      is missing from every step). See %s.\n",
+               list.c_str(), handout.c_str());
 }
 
 }  // namespace jelly::cli

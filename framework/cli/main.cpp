@@ -20,7 +20,7 @@ commands:
   run SCENE      run a scene headless; write the trajectory and a summary as CSV
   check SCENE    validate a scene; print what it builds and each integrator's stable step size
   params SCENE   list every declared parameter of a scene (key, value, unit, range, meaning)
-  probe          list which student tasks (A1.T1–A1.T13) look implemented in this build
+  probe          list which student tasks of each assignment look implemented in this build
   render SCENE   draw frames (or --replay a recorded run) to PNG without a display (OSMesa)   [when built with the viewer]
   study ...      accuracy against cost; what a parameter does (effects)   [numerics study]
 

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "jelly/cli_common/command_line.hpp"
+#include "jelly/session/assignments.hpp"
 #include "study_accuracy.hpp"
 #include "study_effects.hpp"
 
@@ -75,6 +76,8 @@ against the value) and PREFIX-time.svg/.png (each run over time), with their .gp
   cost         wall time of the steps per simulated second (median of --repeats runs), force
                (acceleration) evaluations and backward Euler's CG iterations
   Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain.
+  Which of impact, bounce, cave-in, at rest and energy are measured and written is the scene's
+  assignment's choice: its manifest's [studies] measures (impact, bounce, cave_in, rest, energy).
 
 options:
   --param KEY         the parameter to sweep, as `jelly params SCENE` lists it; '*' stands for
@@ -227,6 +230,14 @@ int effects(int argc, char** argv) {
   if (!scene) return kExitUsage;
 
   study::EffectsOptions o;
+  try {
+    // What the scene's assignment studies: its manifest's [studies] measures.
+    const LinkedAssignment& assignment = session::assignment_for(*scene);
+    o.measures = study::measures_from(session::manifest_of(assignment).study_measures,
+                                      std::string(assignment.manifest_path));
+  } catch (const std::exception& e) {
+    return cmd.error(e.what());
+  }
   o.duration = scene->duration;
   o.key = key;
   o.values = split_values(values);

@@ -134,7 +134,8 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
                       : Vec3(0.0, 1.0, 0.0);
   const Eigen::VectorXd& mass = world.masses();
   const double total_mass = mass.sum();
-  const CubeLattice* cube = world.cubes().empty() ? nullptr : &world.cubes().front();
+  const CubeLattice* cube =
+      !o.measures.cave_in || world.cubes().empty() ? nullptr : &world.cubes().front();
   row.rest_volume = cube ? cube_volume(*cube, sim.state().x) : kNaN;
   const auto touches = [&] {
     const auto& c = world.counters();
@@ -257,6 +258,23 @@ double time_again(const SceneSpec& scene, IntegratorKind kind, long steps) {
 
 }  // namespace
 
+Measures measures_from(const std::vector<std::string>& names, const std::string& manifest) {
+  Measures m{false, false, false, false, false};
+  bool* flags[] = {&m.impact, &m.bounce, &m.cave_in, &m.rest, &m.energy};
+  for (const std::string& name : names) {
+    const auto it = std::find(kKnownMeasures.begin(), kKnownMeasures.end(), name);
+    if (it == kKnownMeasures.end()) {
+      std::string known;
+      for (std::string_view k : kKnownMeasures)
+        known += (known.empty() ? "" : ", ") + std::string(k);
+      throw std::invalid_argument(manifest + ": studies.measures: unknown measure \"" + name +
+                                  "\" (the framework measures: " + known + ")");
+    }
+    *flags[it - kKnownMeasures.begin()] = true;
+  }
+  return m;
+}
+
 std::vector<SceneSpec> effects_scenes(const SceneSpec& scene, const EffectsOptions& o,
                                       std::vector<std::string>* keys_out) {
   if (o.key.empty()) {
@@ -338,14 +356,16 @@ EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::
       }
       ++done;
       if (progress) {
-        std::fprintf(
-            progress,
-            "[%zu/%zu] %s%s%s %s h=%g: %s cave-in %s %%, bounce %s m, rest %s, wall %.3g s\n", done,
-            runs, o.key.c_str(), o.key.empty() ? "" : "=", row.value.c_str(),
-            std::string(to_string(kind)).c_str(), row.h, row.stable ? "stable," : "UNSTABLE,",
-            fmt("%.3g", 100.0 * row.cave_in).c_str(), fmt("%.3g", row.bounce).c_str(),
-            std::isnan(row.rest_time) ? "never" : (fmt("%.3g", row.rest_time) + " s").c_str(),
-            row.wall);
+        // The measures the scene's assignment reports, then the cost.
+        std::string seen = row.stable ? "stable," : "UNSTABLE,";
+        if (o.measures.cave_in) seen += " cave-in " + fmt("%.3g", 100.0 * row.cave_in) + " %,";
+        if (o.measures.bounce) seen += " bounce " + fmt("%.3g", row.bounce) + " m,";
+        if (o.measures.rest)
+          seen += " rest " +
+                  (std::isnan(row.rest_time) ? "never" : fmt("%.3g", row.rest_time) + " s") + ",";
+        std::fprintf(progress, "[%zu/%zu] %s%s%s %s h=%g: %s wall %.3g s\n", done, runs,
+                     o.key.c_str(), o.key.empty() ? "" : "=", row.value.c_str(),
+                     std::string(to_string(kind)).c_str(), row.h, seen.c_str(), row.wall);
         std::fflush(progress);
       }
       r.rows.push_back(std::move(row));

@@ -3,15 +3,36 @@
 // the bounce, the cave-in, when it comes to rest, the energy lost — and what the run cost.
 #pragma once
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "jelly/integrator.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly::cli::study {
+
+/// The measures the framework knows, by the names an assignment's manifest lists under
+/// [studies] measures (docs/parameters.md, "What is measured"). The cost and the stability of
+/// every run are always reported.
+inline constexpr std::array<std::string_view, 5> kKnownMeasures = {"impact", "bounce", "cave_in",
+                                                                   "rest", "energy"};
+
+/// Which measures a study computes and reports.
+struct Measures {
+  bool impact = true;   ///< first contact and the centre-of-mass speed just before it
+  bool bounce = true;   ///< the turn, the peak speed and the bounce after it
+  bool cave_in = true;  ///< the volume inside a cube body's outer surface, against its rest volume
+  bool rest = true;     ///< when the body comes to rest
+  bool energy = true;   ///< energy at start and end, and what was lost
+};
+
+/// The measures `names` lists (a manifest's [studies] measures; `manifest` names the file in
+/// errors). Throws std::invalid_argument naming the manifest and the key for an unknown name.
+Measures measures_from(const std::vector<std::string>& names, const std::string& manifest);
 
 /// What to sweep and how to measure it (plain data: the command line only fills it in).
 struct EffectsOptions {
@@ -26,6 +47,7 @@ struct EffectsOptions {
   double rest_hold = 0.5;                   ///< ... for at least this long, up to the end [s]
   double series_dt = 1.0 / 60.0;            ///< interval of the time series samples [s]
   int repeats = 1;                          ///< timing: median wall time over this many runs
+  Measures measures;                        ///< what to measure (the scene's assignment's list)
 };
 
 /// What one run measured (definitions: docs/parameters.md, "What is measured").

@@ -2,6 +2,7 @@
 // swept value and a plot of each run over time, both drawn by gnuplot (study_files.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "study_effects.hpp"
@@ -55,6 +56,16 @@ std::string plot_script(const std::string& header, const std::string& svg, const
   return gp.str();
 }
 
+/// gnuplot's multiplot line for `panels` panels: three columns from five panels on, else two.
+std::string multiplot_layout(int panels, const std::string& title) {
+  const int columns = panels > 4 ? 3 : panels > 1 ? 2 : 1;
+  const int rows = (panels + columns - 1) / columns;
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "set multiplot layout %d,%d title \"%s\" noenhanced font ',12'\n",
+                rows, columns, title.c_str());
+  return buf;
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const std::string& prefix,
@@ -66,26 +77,34 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::vector<fs::path> written;
   const EffectsOptions& o = r.options;
 
-  // ----- CSV: one row per run -----
+  // ----- CSV: one row per run; the columns of the measures the scene's assignment reports -----
+  const Measures& m = o.measures;
   std::ostringstream csv;
-  csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,contact_time,"
-         "impact_speed,turn_time,peak_speed_after_impact,com_apex,bounce_height,rest_volume,"
-         "cave_in_max,cave_in_final,rest_time,energy_start,energy_end,energy_dissipated,"
-         "dissipated_fraction,sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,"
-         "reason\n";
-  for (const EffectsRow& row : r.rows)
+  csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,"
+      << (m.impact ? "contact_time,impact_speed," : "")
+      << (m.bounce ? "turn_time,peak_speed_after_impact,com_apex,bounce_height," : "")
+      << (m.cave_in ? "rest_volume,cave_in_max,cave_in_final," : "") << (m.rest ? "rest_time," : "")
+      << (m.energy ? "energy_start,energy_end,energy_dissipated,dissipated_fraction," : "")
+      << "sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,reason\n";
+  for (const EffectsRow& row : r.rows) {
     csv << r.scene_name << ',' << csv_text(o.key) << ',' << csv_text(row.value) << ','
         << to_string(row.integrator) << ',' << num(row.h) << ',' << row.particles << ','
         << row.springs << ',' << (row.stable ? "true" : "false") << ','
-        << (row.finite ? "true" : "false") << ',' << num(row.detected_at) << ','
-        << num(row.contact_time) << ',' << num(row.impact_speed) << ',' << num(row.turn_time) << ','
-        << num(row.peak_speed) << ',' << num(row.com_apex) << ',' << num(row.bounce) << ','
-        << num(row.rest_volume) << ',' << num(row.cave_in) << ',' << num(row.cave_in_final) << ','
-        << num(row.rest_time) << ',' << num(row.energy_start) << ',' << num(row.energy_end) << ','
-        << num(row.dissipated()) << ','
-        << num(row.energy_start != 0.0 ? row.dissipated() / row.energy_start : 0.0) << ','
-        << num(row.sim_time) << ',' << row.evaluations << ',' << row.cg_iterations << ','
+        << (row.finite ? "true" : "false") << ',' << num(row.detected_at) << ',';
+    if (m.impact) csv << num(row.contact_time) << ',' << num(row.impact_speed) << ',';
+    if (m.bounce)
+      csv << num(row.turn_time) << ',' << num(row.peak_speed) << ',' << num(row.com_apex) << ','
+          << num(row.bounce) << ',';
+    if (m.cave_in)
+      csv << num(row.rest_volume) << ',' << num(row.cave_in) << ',' << num(row.cave_in_final)
+          << ',';
+    if (m.rest) csv << num(row.rest_time) << ',';
+    if (m.energy)
+      csv << num(row.energy_start) << ',' << num(row.energy_end) << ',' << num(row.dissipated())
+          << ',' << num(row.energy_start != 0.0 ? row.dissipated() / row.energy_start : 0.0) << ',';
+    csv << num(row.sim_time) << ',' << row.evaluations << ',' << row.cg_iterations << ','
         << num(row.wall) << ',' << num(row.wall_per_sim()) << ',' << csv_text(row.reason) << '\n';
+  }
   write_file(with(".csv"), csv.str());
   written.push_back(with(".csv"));
 
@@ -107,27 +126,35 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
      << " s). Wall time is the stepping only (median of " << o.repeats << " run"
      << (o.repeats > 1 ? "s" : "") << "); load average " << r.load_before << " before, "
      << r.load_after << " after (a shared machine). Definitions: docs/parameters.md.\n\n";
-  md << "| integrator |" << (o.key.empty() ? "" : " value |")
-     << " h [s] | stable | impact speed [m/s] | peak speed after [m/s] | bounce [m] | cave-in max "
-        "| "
-        "cave-in at end | at rest from [s] | energy lost | wall s / sim s | force evals / sim s "
-        "|\n";
-  md << "|---|" << (o.key.empty() ? "" : "---|")
-     << "---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| integrator |" << (o.key.empty() ? "" : " value |") << " h [s] | stable |"
+     << (m.impact ? " impact speed [m/s] |" : "")
+     << (m.bounce ? " peak speed after [m/s] | bounce [m] |" : "")
+     << (m.cave_in ? " cave-in max | cave-in at end |" : "")
+     << (m.rest ? " at rest from [s] |" : "") << (m.energy ? " energy lost |" : "")
+     << " wall s / sim s | force evals / sim s |\n";
+  md << "|---|" << (o.key.empty() ? "" : "---|") << "---|---|" << (m.impact ? "---|" : "")
+     << (m.bounce ? "---|---|" : "") << (m.cave_in ? "---|---|" : "") << (m.rest ? "---|" : "")
+     << (m.energy ? "---|" : "") << "---|---|\n";
   for (const EffectsRow& row : r.rows) {
     std::string stable = row.stable ? "yes" : "**no**";
     if (!row.stable)
       stable += " (" + std::string(row.finite ? "detector" : "blew up") +
                 " at t = " + fmt("%.3g", row.detected_at) + " s)";
     md << "| " << to_string(row.integrator) << " |" << (o.key.empty() ? "" : " " + row.value + " |")
-       << " " << num(row.h) << " | " << stable << " | " << fmt("%.2f", row.impact_speed) << " | "
-       << fmt("%.2f", row.peak_speed) << " | " << fmt("%.3f", row.bounce) << " | "
-       << fmt("%.1f %%", 100.0 * row.cave_in) << " | " << fmt("%.1f %%", 100.0 * row.cave_in_final)
-       << " | " << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time))
-       << " | "
-       << fmt("%.0f %%",
-              row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0)
-       << " | " << fmt("%.3g", row.wall_per_sim()) << " | "
+       << " " << num(row.h) << " | " << stable << " | ";
+    if (m.impact) md << fmt("%.2f", row.impact_speed) << " | ";
+    if (m.bounce) md << fmt("%.2f", row.peak_speed) << " | " << fmt("%.3f", row.bounce) << " | ";
+    if (m.cave_in)
+      md << fmt("%.1f %%", 100.0 * row.cave_in) << " | "
+         << fmt("%.1f %%", 100.0 * row.cave_in_final) << " | ";
+    if (m.rest)
+      md << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time))
+         << " | ";
+    if (m.energy)
+      md << fmt("%.0f %%",
+                row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0)
+         << " | ";
+    md << fmt("%.3g", row.wall_per_sim()) << " | "
        << fmt("%.0f", row.sim_time > 0
                           ? static_cast<double>(row.evaluations + row.cg_iterations) / row.sim_time
                           : 0.0)
@@ -166,19 +193,16 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
 
   const std::string dat_name = with(".dat").filename().string();
   const std::string xlabel = o.key.empty() ? "integrator" : o.key;
-  std::ostringstream body;
-  {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 2,3 title \"%s\" noenhanced font ',12'\n",
-                  title.c_str());
-    body << buf;
-  }
+  // The panels of the measures the scene's assignment reports, then the cost.
   const char* panels[6][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
                               {"4", "bounce height of the centre of mass [m]"},
                               {"5", "cave-in: largest volume loss [%]"},
                               {"6", "at rest from [s] (none: never)"},
                               {"7", "energy dissipated [% of the start]"},
                               {"8", "wall time per simulated second [s]"}};
+  const bool shown[6] = {m.bounce, m.bounce, m.cave_in, m.rest, m.energy, true};
+  std::ostringstream body;
+  body << multiplot_layout(static_cast<int>(std::count(shown, shown + 6, true)), title);
   // Which measure has any finite value (gnuplot refuses a panel without one).
   const auto measure = [](const EffectsRow& row, int p) {
     const double v[6] = {row.peak_speed, row.bounce,       row.cave_in,
@@ -187,6 +211,7 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   };
   bool cross_titled = false;
   for (int p = 0; p < 6; ++p) {
+    if (!shown[p]) continue;
     body << "set ylabel '" << panels[p][1] << "' font ',9'\n";
     body << (p == 5 ? "set logscale y\n" : "unset logscale y\n");
     const bool any = std::any_of(r.rows.begin(), r.rows.end(), [&](const EffectsRow& row) {
@@ -253,18 +278,15 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   write_file(with("-time.dat"), tdat.str());
   written.push_back(with("-time.dat"));
   const std::string tdat_name = with("-time.dat").filename().string();
-  std::ostringstream tbody;
-  {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 2,2 title \"%s\" noenhanced font ',12'\n",
-                  title.c_str());
-    tbody << buf;
-  }
   const char* tpanels[4][2] = {{"2", "centre-of-mass height [m]"},
                                {"4", "volume / rest volume"},
                                {"3", "centre-of-mass speed [m/s]"},
                                {"6", "total energy [J]"}};
+  const bool tshown[4] = {true, m.cave_in, true, m.energy};
+  std::ostringstream tbody;
+  tbody << multiplot_layout(static_cast<int>(std::count(tshown, tshown + 4, true)), title);
   for (int p = 0; p < 4; ++p) {
+    if (!tshown[p]) continue;
     tbody << "set ylabel '" << tpanels[p][1] << "'\nplot ";
     for (std::size_t i = 0; i < r.series.size(); ++i)
       tbody << (i ? ", \\\n     " : "") << "'" << tdat_name << "' index " << i

@@ -51,14 +51,15 @@ std::vector<double> numbers(const Json& outputs, const char* key) {
   return v;
 }
 
-/// Runs `jelly render builtin:course-2023 --replay CSV --frames DIR ...`; "" or the reason it
-/// failed.
-std::string render(const fs::path& jelly, const fs::path& csv, const fs::path& dir,
-                   const std::string& label) {
+/// Runs `jelly render builtin:SCENE --replay CSV --frames DIR ...` (SCENE: the manifest's
+/// default_scene, the built-in copy so that the scenes folder cannot change it); "" or the reason
+/// it failed.
+std::string render(const fs::path& jelly, const std::string& scene, const fs::path& csv,
+                   const fs::path& dir, const std::string& label) {
   const Limits lim = trusted_tool_limits(60.0);
   const ChildResult c =
-      run_child({jelly.string(), "render", "builtin:course-2023", "--replay", csv.string(),
-                 "--frames", dir.string(), "--width", std::to_string(kWidth), "--height",
+      run_child({jelly.string(), "render", "builtin:" + scene, "--replay", csv.string(), "--frames",
+                 dir.string(), "--width", std::to_string(kWidth), "--height",
                  std::to_string(kHeight), "--samples", "0", "--no-caption", "--label", label},
                 lim);
   if (!c.started) return "cannot start " + jelly.string() + ": " + c.start_error;
@@ -150,17 +151,27 @@ std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path,
 CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report,
                                   const fs::path& out_dir, const fs::path& work) {
   CourseFrames result;
+  // The scene case: the last case that records frames (an output with rule "frames"); its frames
+  // are drawn in the assignment's default scene (the manifest's default_scene).
+  const auto records = [](const CaseSpec& spec) {
+    for (const auto& [name, rule] : spec.rules)
+      if (rule.kind == Rule::Kind::Frames) return true;
+    return false;
+  };
   const CaseResult* course = nullptr;
   for (const CaseResult& c : report.cases)
-    if (c.spec->generator == "course_scene" && c.status != "skipped") course = &c;
+    if (records(*c.spec) && c.status != "skipped") course = &c;
   if (!course || !report.compiled) return result;
   result.shown = true;
-  bool records = false;
-  for (const auto& [name, rule] : course->spec->rules)
-    records = records || rule.kind == Rule::Kind::Frames;
-  if (!records || !course->spec->params.contains("frame_times")) {
+  if (!course->spec->params.contains("frame_times")) {
     result.unavailable = "the course scene case records no frames (no frame_times in " +
                          (config.cases_dir() / course->spec->source).string() + ")";
+    return result;
+  }
+  const std::string scene = config.assignment().manifest.default_scene;
+  if (scene.empty()) {
+    result.unavailable = "the assignment's manifest (" + config.rubric_path().string() +
+                         ") names no default_scene to draw the frames in";
     return result;
   }
   if (config.jelly_cli.empty()) {
@@ -185,8 +196,8 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
     const bool yours = !your_times.empty();
     std::vector<double> ref_times;
     if (yours) {
-      if (const std::string err =
-              render(config.jelly_cli, dir / "yours.csv", out_dir / "frames" / "yours", "yours");
+      if (const std::string err = render(config.jelly_cli, scene, dir / "yours.csv",
+                                         out_dir / "frames" / "yours", "yours");
           !err.empty()) {
         result.unavailable = err;
         return result;
@@ -209,7 +220,7 @@ CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& 
     std::vector<double> ref_dropped;
     if (!ref.is_null() &&
         !(ref_times = write_replay_csv(ref, dir / "reference.csv", ref_dropped)).empty()) {
-      if (const std::string err = render(config.jelly_cli, dir / "reference.csv",
+      if (const std::string err = render(config.jelly_cli, scene, dir / "reference.csv",
                                          out_dir / "frames" / "reference", "reference");
           !err.empty()) {
         result.unavailable = err;

@@ -22,7 +22,7 @@ using session::SimulationRun;
 SceneSpec course_scene() {
   SceneResult r = session::resolve_scene("course-2023", session::default_scenes_dir());
   EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return r ? *r.scene : session::builtin_course_2023();
+  return r ? *r.scene : course_2023_scene();
 }
 
 TEST(RenderMeshes, PlaneHoleInnerRingIsThePhysicalRadius) {

@@ -13,7 +13,7 @@ namespace {
 SceneSpec course_scene() {
   SceneResult r = resolve_scene("course-2023", default_scenes_dir());
   EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return r ? *r.scene : builtin_course_2023();
+  return r ? *r.scene : course_2023_scene();
 }
 
 // Simulated time follows wall time × factor whatever the frame rate: 1 s of wall time at 60 Hz and

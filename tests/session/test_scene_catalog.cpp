@@ -6,6 +6,8 @@
 #include <fstream>
 #include <string>
 
+#include "jelly/linked_assignments.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/session/scene_catalog.hpp"
 
 namespace jelly::session {
@@ -48,24 +50,44 @@ TEST_F(SceneCatalog, FindsANameInTheScenesFolderWithOrWithoutToml) {
   EXPECT_EQ(name_of(resolve_scene("sub/b.toml", dir_)), "beta");
 }
 
-TEST_F(SceneCatalog, TheCourseSceneIsBuiltInWhereTheFolderLacksIt) {
-  const SceneResult by_name = resolve_scene("course-2023", dir_);
+TEST_F(SceneCatalog, TheDefaultSceneIsBuiltInWhereTheFolderLacksIt) {
+  // The default scene is the linked assignment's manifest's default_scene (a1: course-2023).
+  const std::string name = default_scene_name();
+  ASSERT_FALSE(name.empty());
+  EXPECT_EQ(name, manifest_of(linked_assignments().front()).default_scene);
+  const SceneResult by_name = resolve_scene(name, dir_);
   ASSERT_TRUE(by_name) << by_name.error->text();
   EXPECT_NE(by_name.scene->description.find("(built in)"), std::string::npos);
-  EXPECT_TRUE(resolve_scene("builtin:course-2023", dir_));
+  EXPECT_TRUE(resolve_scene("builtin:" + name, dir_));
+  EXPECT_FALSE(resolve_scene("builtin:no-such-scene", dir_));
   // The catalogue lists it first, then the folder's scenes by name.
   const auto entries = list_scenes(dir_);
   ASSERT_EQ(entries.size(), 3u);
-  EXPECT_EQ(entries[0].name, "builtin:course-2023");
+  EXPECT_EQ(entries[0].name, "builtin:" + name);
   EXPECT_EQ(entries[1].name, "a");
   EXPECT_EQ(entries[2].name, "sub/b");
+}
+
+TEST_F(SceneCatalog, TheBuiltInCopyIsTheDefaultSceneFile) {
+  const std::string name = default_scene_name();
+  const SceneResult file = resolve_scene(name, kScenes);
+  ASSERT_TRUE(file) << file.error->text();
+  EXPECT_EQ(file.scene->description.find("(built in)"), std::string::npos);
+  const std::optional<SceneResult> builtin = builtin_scene(name);
+  ASSERT_TRUE(builtin && *builtin);
+  SceneSpec copy = *builtin->scene;
+  copy.description = file.scene->description;
+  copy.source = file.scene->source;
+  EXPECT_EQ(to_toml(copy), to_toml(*file.scene));
+  // Where the folder has the file, the catalogue lists the file and no built-in copy.
+  for (const SceneEntry& e : list_scenes(kScenes)) EXPECT_NE(e.name, "builtin:" + name);
 }
 
 TEST_F(SceneCatalog, TheRepositorysScenesResolveByName) {
   const SceneResult r = resolve_scene("hard/stiff-springs", kScenes);
   ASSERT_TRUE(r) << r.error->text();
   EXPECT_EQ(r.scene->description.find("(built in)"), std::string::npos);
-  EXPECT_TRUE(resolve_scene("course-2023", kScenes));
+  EXPECT_TRUE(resolve_scene(default_scene_name(), kScenes));
 }
 
 TEST_F(SceneCatalog, AnUnknownSceneNamesWhatWasTriedAndTheKnownNames) {
@@ -75,7 +97,9 @@ TEST_F(SceneCatalog, AnUnknownSceneNamesWhatWasTriedAndTheKnownNames) {
     const std::string text = r.error->text();
     EXPECT_EQ(text.rfind(arg + ": no such scene", 0), 0u) << text;
     EXPECT_NE(text.find((dir_ / "nope.toml").string()), std::string::npos) << text;
-    EXPECT_NE(text.find("known scenes: builtin:course-2023, a, sub/b"), std::string::npos) << text;
+    EXPECT_NE(text.find("known scenes: builtin:" + default_scene_name() + ", a, sub/b"),
+              std::string::npos)
+        << text;
   }
 }
 

@@ -51,7 +51,7 @@ TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
 // A particle just above the plane y = 0 and the bottom of the probe's bowl: φ = 0.001 < ε for both.
 const Vec3 kNearBottom(0.0, 0.001, 0.0);
 
-// A1.T6–T7: a particle moving into the terrain must respond (return true or change v).
+// The collision slots: a particle moving into the terrain must respond (return true or change v).
 template <typename Shape>
 TaskStatus probe_collision(std::string id, std::string name,
                            bool (*fn)(const Shape&, const Vec3&, Vec3&), const Shape& shape,
@@ -72,7 +72,8 @@ struct ContactWords {
   const char* pressed;
 };
 
-// A1.T8–T9: a particle pressed onto the terrain must get a contact force (return true or change f).
+// The contact slots: a particle pressed onto the terrain must get a contact force (return true or
+// change f).
 template <typename Shape>
 TaskStatus probe_contact(std::string id, std::string name,
                          bool (*fn)(const Shape&, const Vec3&, const Vec3&, Vec3&),

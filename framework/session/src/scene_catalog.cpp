@@ -5,9 +5,39 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "jelly/linked_assignments.hpp"
+#include "jelly/session/assignments.hpp"
+
 namespace jelly::session {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kBuiltin = "builtin:";
+
+/// The built-in scenes: each linked assignment's default scene with its compiled-in text, by id.
+struct Builtin {
+  std::string name;
+  const LinkedAssignment* assignment;
+};
+
+std::vector<Builtin> builtins() {
+  std::vector<Builtin> out;
+  for (const LinkedAssignment& a : linked_assignments()) {
+    const std::string& name = manifest_of(a).default_scene;
+    if (name.empty() || a.default_scene_text.empty()) continue;
+    if (std::none_of(out.begin(), out.end(), [&](const Builtin& b) { return b.name == name; }))
+      out.push_back({name, &a});
+  }
+  return out;
+}
+
+std::string_view without_prefix(std::string_view name) {
+  return name.substr(0, kBuiltin.size()) == kBuiltin ? name.substr(kBuiltin.size()) : name;
+}
+
+}  // namespace
 
 fs::path default_scenes_dir() {
   if (const char* env = std::getenv("JELLY_SCENES"); env && *env) return env;
@@ -17,10 +47,21 @@ fs::path default_scenes_dir() {
   return "scenes";
 }
 
-SceneSpec builtin_course_2023() {
-  SceneSpec s = course_2023_scene();
-  s.description = "The 2023 course scene (built in): " + s.description;
-  return s;
+std::string default_scene_name() {
+  for (const LinkedAssignment& a : linked_assignments())
+    if (const std::string& name = manifest_of(a).default_scene; !name.empty()) return name;
+  return "";
+}
+
+std::optional<SceneResult> builtin_scene(std::string_view name) {
+  const std::string_view plain = without_prefix(name);
+  for (const Builtin& b : builtins()) {
+    if (b.name != plain) continue;
+    SceneResult r = parse_scene(b.assignment->default_scene_text, std::string(kBuiltin) + b.name);
+    if (r) r.scene->description = "(built in) " + r.scene->description;
+    return r;
+  }
+  return std::nullopt;
 }
 
 std::vector<SceneEntry> list_scenes(const fs::path& dir) {
@@ -36,16 +77,19 @@ std::vector<SceneEntry> list_scenes(const fs::path& dir) {
   }
   std::sort(out.begin(), out.end(),
             [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
-  const bool has_course = std::any_of(out.begin(), out.end(),
-                                      [](const SceneEntry& e) { return e.name == "course-2023"; });
-  if (!has_course) out.insert(out.begin(), SceneEntry{"builtin:course-2023", {}});
+  std::vector<SceneEntry> missing;
+  for (const Builtin& b : builtins())
+    if (std::none_of(out.begin(), out.end(), [&](const SceneEntry& e) { return e.name == b.name; }))
+      missing.push_back(SceneEntry{std::string(kBuiltin) + b.name, {}});
+  out.insert(out.begin(), missing.begin(), missing.end());
   return out;
 }
 
 SceneResult load_entry(const SceneEntry& e) {
   if (e.path.empty()) {
+    if (std::optional<SceneResult> r = builtin_scene(e.name)) return *r;
     SceneResult r;
-    r.scene = builtin_course_2023();
+    r.error = SceneError{e.name, "", 0, 0, "no built-in scene of this name"};
     return r;
   }
   return load_scene(e.path);
@@ -53,7 +97,9 @@ SceneResult load_entry(const SceneEntry& e) {
 
 SceneResult resolve_scene(std::string_view what, const fs::path& dir) {
   const std::string s(what);
-  if (s == "builtin:course-2023") return load_entry({s, {}});
+  const bool builtin = s.compare(0, kBuiltin.size(), kBuiltin) == 0;
+  if (builtin)
+    if (std::optional<SceneResult> r = builtin_scene(s)) return *r;
   std::error_code ec;
   if (fs::is_regular_file(s, ec)) return load_scene(s);
   const fs::path in_dir = dir / (s + ".toml");
@@ -61,7 +107,8 @@ SceneResult resolve_scene(std::string_view what, const fs::path& dir) {
   const bool has_suffix = s.size() > 5 && s.compare(s.size() - 5, 5, ".toml") == 0;
   const fs::path as_named = dir / s;
   if (has_suffix && fs::is_regular_file(as_named, ec)) return load_scene(as_named);
-  if (s == "course-2023") return load_entry({s, {}});  // no file yet: the built-in copy
+  if (!builtin)  // a default scene's name with no file in `dir`: the built-in copy
+    if (std::optional<SceneResult> r = builtin_scene(s)) return *r;
   if (fs::exists(s, ec)) return load_scene(s);  // e.g. a folder: load_scene says what is wrong
   std::string known;
   for (const SceneEntry& e : list_scenes(dir)) known += (known.empty() ? "" : ", ") + e.name;

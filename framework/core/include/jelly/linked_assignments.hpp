@@ -16,6 +16,10 @@ struct LinkedAssignment {
   std::string_view manifest_text;  ///< the assignment.toml the program was built with
   std::string_view manifest_path;  ///< where it was (for messages)
   TaskTable (*tasks)();            ///< the task table of the implementation JELLY_TASKS chose
+  /// The text of the manifest's default scene file as it was at build time ("" when the manifest
+  /// names none): the program's built-in copy of that scene (jelly/session/scene_catalog.hpp).
+  std::string_view default_scene_text;
+  std::string_view default_scene_path;  ///< where that file was (for messages)
 };
 
 /// Every linked assignment, sorted by id.

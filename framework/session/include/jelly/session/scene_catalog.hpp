@@ -1,8 +1,10 @@
 // Finding scenes: every *.toml under the scenes folder, by name or path, plus a built-in copy of
-// the course scene (used only while scenes/course-2023.toml is not there). No GL: the CLI uses it.
+// each linked assignment's default scene (its manifest's default_scene, compiled in: used when the
+// scenes folder lacks that file, or by name as builtin:<scene>). No GL: the CLI uses it.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,17 +20,23 @@ struct SceneEntry {
 
 /// The scenes folder: $JELLY_SCENES, else the source tree's scenes/ (compiled in), else ./scenes.
 std::filesystem::path default_scenes_dir();
-/// Every *.toml under `dir` (recursively), sorted by name; the built-in course scene is added
-/// when `dir` has no course-2023.toml.
+/// The scene a program starts with when none is named (the viewer, the smoke test): the
+/// default_scene of the first linked assignment (by id) whose manifest names one; "" when none
+/// does.
+std::string default_scene_name();
+/// Every *.toml under `dir` (recursively), sorted by name, after the built-in copy of each linked
+/// assignment's default scene that `dir` lacks ("builtin:<scene>").
 std::vector<SceneEntry> list_scenes(const std::filesystem::path& dir);
 /// The one way every command (`jelly run/check/params/study/render`, jelly-lab) finds a scene:
-/// a path to a scene file; else a name under `dir`, with or without ".toml" ("course-2023",
-/// "hard/stiff-springs"); else "builtin:course-2023" (or "course-2023" when `dir` lacks it).
-/// When nothing fits, the error names the argument, every place tried and the known names.
+/// a path to a scene file; else a name under `dir`, with or without ".toml" ("hard/stiff-springs");
+/// else "builtin:<scene>", or a default scene's plain name when `dir` lacks its file: the built-in
+/// copy. When nothing fits, the error names the argument, every place tried and the known names.
 SceneResult resolve_scene(std::string_view name_or_path, const std::filesystem::path& dir);
 /// Loads one catalogue entry.
 SceneResult load_entry(const SceneEntry& entry);
-/// The 2023 course scene built in code from the terrain presets (course-anchor.md defaults).
-SceneSpec builtin_course_2023();
+/// The built-in copy of `name` ("course-2023" or "builtin:course-2023"): the linked assignment's
+/// default scene file as it was at build time, its description marked "(built in)". nullopt when
+/// no linked assignment has a default scene of that name.
+std::optional<SceneResult> builtin_scene(std::string_view name);
 
 }  // namespace jelly::session
