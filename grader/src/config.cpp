@@ -120,10 +120,15 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
   } else if (config.assignments.size() == 1) {
     chosen = &config.assignments.front();
   } else if (!submission.empty()) {
+    // The names of the files anywhere in it: the build finds a task file in any subfolder
+    // (build.cpp, find_named), so a nested submission names its assignment as a flat one does.
     std::vector<std::string> present;
     std::error_code ec;
-    for (fs::directory_iterator it(submission, ec), end; !ec && it != end; it.increment(ec))
-      present.push_back(it->path().filename().string());
+    for (fs::recursive_directory_iterator
+             it(submission, fs::directory_options::skip_permission_denied, ec),
+         end;
+         !ec && it != end; it.increment(ec))
+      if (!it->is_directory(ec)) present.push_back(it->path().filename().string());
     std::vector<AssignmentManifest> manifests;
     for (const AssignmentConfig& a : config.assignments) manifests.push_back(a.manifest);
     if (const AssignmentManifest* m = assignment_for_files(manifests, present))

@@ -6,7 +6,7 @@
 #   check_runner_mode.sh JELLY_GRADE DIR RUNNER WORK zero|full
 #
 # RUNNER must be built by CMake from the same code as DIR (e.g. jelly_tests_stub_runner from
-# assignments/). Exit 0 when everything holds.
+# assignments/a1/). Exit 0 when everything holds.
 set -uo pipefail
 grade="${1:?jelly-grade}"; dir="${2:?dir}"; runner="${3:?runner}"; work="${4:?work}"; expect="${5:?zero|full}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

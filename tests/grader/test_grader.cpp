@@ -4,10 +4,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -24,6 +26,8 @@ namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
 const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader";
+// A1's hostile submissions (one folder each: the files laid over the reference).
+const fs::path kHostile = kSource / "grader" / "tests" / "hostile" / "a1";
 
 struct Cmd {
   int status = -1;
@@ -56,7 +60,7 @@ fs::path submission(const std::string& name, const fs::path& overlay = {}) {
   fs::create_directories(dir / "nested" / "src");
   for (const char* f :
        {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"})
-    fs::copy_file(kSource / "solutions" / f, dir / "nested" / "src" / f);
+    fs::copy_file(kSource / "solutions" / "a1" / f, dir / "nested" / "src" / f);
   if (!overlay.empty())
     for (const auto& e : fs::directory_iterator(overlay))
       fs::copy_file(e.path(), dir / "nested" / "src" / e.path().filename(),
@@ -201,7 +205,7 @@ TEST(Grader, ReferenceScoresFullMarksAndOutputsHaveTheirSchemas) {
 }
 
 TEST(Grader, StubsScoreZeroWithoutCrashing) {
-  const Json r = grade(kSource / "assignments", "stubs");
+  const Json r = grade(kSource / "assignments" / "a1", "stubs");
   EXPECT_EQ(r["score"].get<double>(), 0.0);
   check_gradescope_schema(r);
   for (const Json& t : r["tests"]) {
@@ -240,8 +244,7 @@ class HostileSubmission : public ::testing::TestWithParam<Hostile> {};
 TEST_P(HostileSubmission, FailsItsTestsWithAClearMessageAndTheRestStillRun) {
   const Hostile h = GetParam();
   fs::remove("/tmp/jelly-grade-hostile-was-here");
-  const Json r = grade(submission(h.name, kSource / "grader" / "tests" / "hostile" / h.name),
-                       h.name, "--timeout 3");
+  const Json r = grade(submission(h.name, kHostile / h.name), h.name, "--timeout 3");
   check_gradescope_schema(r);
   const Json* t = find_test(r, h.case_id);
   ASSERT_NE(t, nullptr) << r.dump(1);
@@ -282,9 +285,7 @@ const char* const kAllTasks[] = {"A1.T1", "A1.T2", "A1.T3",  "A1.T4",  "A1.T5", 
                                  "A1.T8", "A1.T9", "A1.T10", "A1.T11", "A1.T12", "A1.T13"};
 
 TEST(Grader, SubmissionThatDoesNotCompileGetsTheErrorsAndLosesOnlyThatFilesTasks) {
-  const Json r =
-      grade(submission("no_compile", kSource / "grader" / "tests" / "hostile" / "no_compile"),
-            "no_compile");
+  const Json r = grade(submission("no_compile", kHostile / "no_compile"), "no_compile");
   const Json& compile = r["tests"][0];
   EXPECT_EQ(compile["status"], "failed");
   const std::string o = compile["output"];
@@ -369,7 +370,7 @@ TEST(Grader, FilesThatDoNotLinkTogetherAreEachGradedWithTheOtherStubs) {
   forces.insert(forces.find(ns) + ns.size(), "double jelly_shared_scale();\n");
   const std::string ret = "return (-ks * (length - rest_length)) * u;";
   ASSERT_NE(forces.find(ret), std::string::npos)
-      << "solutions/forces.cpp changed: update this test";
+      << "solutions/a1/forces.cpp changed: update this test";
   forces.replace(forces.find(ret), ret.size(),
                  "return (-ks * jelly_shared_scale() * (length - rest_length)) * u;");
   std::ofstream(src / "springs.cpp", std::ios::binary) << springs;
@@ -409,7 +410,7 @@ TEST(Grader, PrintingAnyBytesKeepsFullMarksAndTheReportsShowTheTextSafely) {
   const std::string sig =
       "void add_structural_springs(const CubeLattice& cube, std::vector<Spring>& out) {\n";
   const auto at = text.find(sig);
-  ASSERT_NE(at, std::string::npos) << "solutions/springs.cpp changed: update this test";
+  ASSERT_NE(at, std::string::npos) << "solutions/a1/springs.cpp changed: update this test";
   text.insert(at + sig.size(),
               "  static bool printed = false;\n"
               "  if (!printed) {\n"
@@ -460,9 +461,7 @@ TEST(Grader, PrintingAnyBytesKeepsFullMarksAndTheReportsShowTheTextSafely) {
 }
 
 TEST(Grader, IncludingTheHiddenDataIsRefusedBeforeCompiling) {
-  const Json r = grade(
-      submission("include_hidden", kSource / "grader" / "tests" / "hostile" / "include_hidden"),
-      "include_hidden");
+  const Json r = grade(submission("include_hidden", kHostile / "include_hidden"), "include_hidden");
   // Refused before compiling: forces.cpp's tasks only (its stub stands in for it).
   EXPECT_EQ(task_score(r, "A1.T4") + task_score(r, "A1.T5"), 0.0);
   EXPECT_NEAR(task_score(r, "A1.T1"), task_score(reference_results(), "A1.T1"), 1e-6);
@@ -479,7 +478,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 // The course scene's frames: recorded in the sandbox, never graded, never reference data.
 TEST(GraderFrames, RecordedFramesAreNeitherGradedNorReferenceData) {
-  const Json ref = read_json(kSource / "grader" / "data" / "public" / "a1.course.scene.json");
+  const Json ref = read_json(kSource / "assignments" / "a1" / "grader" / "data" / "public" /
+                             "a1.course.scene.json");
   ASSERT_TRUE(ref["params"].contains("frame_times")) << "the case records no frames";
   ASSERT_TRUE(ref["outputs"].contains("com_y"));
   for (const auto& [name, value] : ref["outputs"].items())
@@ -501,7 +501,8 @@ TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
   const std::string md = read_text(out / "report.md");
   ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
   EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
-  // One row per frame time of grader/cases/course.toml (0.5, 1, 2, 3, 5, 10 s), both sides.
+  // One row per frame time of assignments/a1/grader/cases/course.toml (0.5, 1, 2, 3, 5, 10 s), both
+  // sides.
   EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
   EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
   EXPECT_NE(md.find("| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)"),
@@ -549,7 +550,7 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   fs::remove_all(dir);
   fs::create_directories(dir / "in");
   fs::copy(submission("batch-ref"), dir / "in" / "alice", fs::copy_options::recursive);
-  fs::copy(kSource / "assignments", dir / "in" / "bob", fs::copy_options::recursive);
+  fs::copy(kSource / "assignments" / "a1", dir / "in" / "bob", fs::copy_options::recursive);
   const Cmd r =
       run("batch " + (dir / "in").string() + " --out " + (dir / "out").string() + " --jobs 2");
   ASSERT_EQ(r.status, 0) << r.out;
@@ -580,12 +581,15 @@ TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
   EXPECT_NE(list.find("\nsetup.sh\n"), std::string::npos) << list;
   EXPECT_NE(list.find("\nrun_autograder\n"), std::string::npos);
   EXPECT_NE(list.find("\nCMakeLists.txt\n"), std::string::npos);
-  EXPECT_NE(list.find("\ngrader/data/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("\ngrader/data/a1/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("\nassignments/a1/assignment.toml\n"), std::string::npos);
+  EXPECT_NE(list.find("\nassignments/a1/grader/cases/"), std::string::npos);
   EXPECT_NE(list.find("\nthird_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
   EXPECT_EQ(list.find("\nsource/"), std::string::npos) << "a source/ folder inside the zip";
   EXPECT_EQ(list.find("solutions/"), std::string::npos);
   EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
-  EXPECT_EQ(list.find("grader/mutants/"), std::string::npos);
+  // The mutants quote the reference: no assignment's may ship.
+  EXPECT_EQ(list.find("grader/mutants/"), std::string::npos) << list;
 }
 
 // A1.T1 with one spring missing and one extra (issue 12): the failure names both by their grid
@@ -598,7 +602,7 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
   std::string text = read_text(file);
   const std::string call = "add_forward_springs(cube, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, out);";
   const auto at = text.find(call);
-  ASSERT_NE(at, std::string::npos) << "solutions/springs.cpp changed: update this test";
+  ASSERT_NE(at, std::string::npos) << "solutions/a1/springs.cpp changed: update this test";
   text.insert(
       at + call.size(),
       "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
@@ -642,4 +646,133 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
   EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
+}
+
+// ---- --assignment: which assignment a command works on (grade-config.json's "assignments") ----
+namespace {
+
+// A copy of this build's grade-config.json with a second assignment "zz" beside a1 (a folder with
+// a manifest of its own files; never graded here), or with `edit` applied to it.
+fs::path config_with(const std::string& name, const std::function<void(Json&)>& edit) {
+  const fs::path dir = kWork / "configs" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Json cfg = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  edit(cfg);
+  std::ofstream(dir / "grade-config.json") << cfg.dump(1);
+  return dir / "grade-config.json";
+}
+
+fs::path two_assignments() {
+  return config_with("two", [](Json& cfg) {
+    const fs::path zz = kWork / "configs" / "zz-assignments" / "zz";
+    fs::create_directories(zz);
+    std::ofstream(zz / "assignment.toml")
+        << "id = \"zz\"\nnamespace = \"zz\"\ntitle = \"Another\"\nfiles = [\"thing.cpp\", "
+           "\"other.cpp\"]\n[grading]\nautograded_total = 10.0\n[[task]]\nid = \"ZZ.T1\"\n"
+           "title = \"Thing\"\nfile = \"thing.cpp\"\npoints = 10\n";
+    Json a = cfg["assignments"]["a1"];
+    a["dir"] = zz.string();
+    a["solutions_dir"] = (zz / "no-solutions").string();
+    a["reference_runner"] = "";
+    cfg["assignments"]["zz"] = a;
+  });
+}
+
+}  // namespace
+
+// An unknown id is a usage error naming the ones the build has.
+TEST(GraderAssignment, UnknownIdNamesTheKnownOnesAndExitsTwo) {
+  const Cmd one = run("grade " + submission("unknown-id").string() + " --assignment a9 --out " +
+                      (kWork / "out" / "unknown-id").string());
+  EXPECT_EQ(one.status, 2) << one.out;
+  EXPECT_NE(one.out.find("--assignment a9: no such assignment in this build (it has: a1)"),
+            std::string::npos)
+      << one.out;
+  EXPECT_FALSE(fs::exists(kWork / "out" / "unknown-id" / "results.json"));
+  const Cmd two = run("gradescope-zip " + (kWork / "unknown.zip").string() +
+                      " --assignment A1 --config " + two_assignments().string());
+  EXPECT_EQ(two.status, 2) << two.out;
+  EXPECT_NE(two.out.find("--assignment A1: no such assignment in this build (it has: a1, zz)"),
+            std::string::npos)
+      << two.out;
+}
+
+// With two assignments and no --assignment, a submission's files choose: A1's five files (in a
+// nested folder, beside a README) are graded as a1, with full marks; files of neither are an error
+// that says how to choose.
+TEST(GraderAssignment, InferredFromTheSubmissionsFiles) {
+  const fs::path two = two_assignments();
+  const Json r = grade(submission("inferred"), "inferred", "--config " + two.string());
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
+  EXPECT_NE(find_test(r, "a1.t4.spring_force.values"), nullptr);
+  const fs::path neither = kWork / "submissions" / "neither";
+  fs::remove_all(neither);
+  fs::create_directories(neither);
+  std::ofstream(neither / "main.cpp") << "int main() {}\n";
+  const Cmd n = run("grade " + neither.string() + " --config " + two.string() + " --out " +
+                    (kWork / "out" / "neither").string());
+  EXPECT_EQ(n.status, 2) << n.out;
+  EXPECT_NE(n.out.find("its files do not name exactly one assignment; say which with "
+                       "--assignment ID (this build has: a1, zz)"),
+            std::string::npos)
+      << n.out;
+  // A command without a submission cannot infer: it asks.
+  const Cmd zip =
+      run("gradescope-zip " + (kWork / "two.zip").string() + " --config " + two.string());
+  EXPECT_EQ(zip.status, 2) << zip.out;
+  EXPECT_NE(zip.out.find("this build has several assignments (a1, zz): say which with "
+                         "--assignment ID"),
+            std::string::npos)
+      << zip.out;
+}
+
+// A config written before assignments were plug-ins, and a manifest with a mistake: errors that
+// name the file and the key (exit 2, nothing graded).
+TEST(GraderAssignment, ConfigWithoutAssignmentsAndBadManifestsAreClearErrors) {
+  const fs::path old = config_with("old", [](Json& cfg) { cfg.erase("assignments"); });
+  const Cmd r = run("grade " + submission("old-config").string() + " --config " + old.string() +
+                    " --out " + (kWork / "out" / "old-config").string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find(old.string() + ": assignments: expected an object with one entry per "
+                                      "assignment (rebuild: this config predates assignments as "
+                                      "plug-ins)"),
+            std::string::npos)
+      << r.out;
+
+  // A copy of a1's manifest with a typo in the fourth task's handout key.
+  const fs::path a1 = kWork / "configs" / "bad-manifest" / "a1";
+  fs::remove_all(a1.parent_path());
+  fs::create_directories(a1);
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const auto task4 = text.find("id = \"A1.T4\"");
+  ASSERT_NE(task4, std::string::npos);
+  const auto key = text.find("handout = ", task4);
+  text.replace(key, 7, "handuot");
+  const long line = 1 + std::count(text.begin(), text.begin() + key, '\n');
+  std::ofstream(a1 / "assignment.toml") << text;
+  const fs::path bad =
+      config_with("bad", [&](Json& cfg) { cfg["assignments"]["a1"]["dir"] = a1.string(); });
+  const Cmd b = run("grade " + submission("bad-manifest").string() + " --config " + bad.string() +
+                    " --out " + (kWork / "out" / "bad-manifest").string());
+  EXPECT_EQ(b.status, 2) << b.out;
+  EXPECT_NE(b.out.find((a1 / "assignment.toml").string() + ":" + std::to_string(line) +
+                       ": task[4].handuot: expected no such key"),
+            std::string::npos)
+      << b.out;
+  EXPECT_FALSE(fs::exists(kWork / "out" / "bad-manifest" / "results.json"));
+}
+
+// --rubric: a manifest-shaped file with the term's own points replaces the manifest's.
+TEST(GraderAssignment, RubricOptionTakesAManifestShapedFile) {
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const std::string total = "autograded_total = 80.0";
+  ASSERT_NE(text.find(total), std::string::npos);
+  text.replace(text.find(total), total.size(), "autograded_total = 40.0");
+  const fs::path rubric = kWork / "configs" / "rubric-40.toml";
+  fs::create_directories(rubric.parent_path());
+  std::ofstream(rubric) << text;
+  const Json r = grade(submission("rubric-40"), "rubric-40", "--rubric " + rubric.string());
+  EXPECT_NEAR(r["score"].get<double>(), 40.0, 1e-6);
+  EXPECT_NEAR(task_score(r, "A1.T13"), 15.0 / 2.0, 1e-4) << "points scaled to the new total";
 }

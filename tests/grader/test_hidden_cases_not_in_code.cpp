@@ -1,10 +1,12 @@
 // The grader's runner code (grader/runner/, shipped in the student release so that students can
-// run the public tests) must not say what the hidden tests feed the student's code: a hidden case
-// is a generator name plus parameters in grader/cases/*.toml, and the release tool drops hidden
-// [[case]] entries. This test builds the list of hidden case ids and hidden parameter values from
-// the case files and fails when any of them appears in a file under grader/runner/ (outside
-// grader/runner/hidden/, which the release leaves out). It also proves that the scan finds a hidden
-// case written back into code the way the runner once registered them.
+// run the public tests) and each assignment's case generators (assignments/<id>/grader/runner/)
+// must not say what the hidden tests feed the student's code: a hidden case is a generator name
+// plus parameters in assignments/<id>/grader/cases/*.toml, and the release tool drops hidden
+// [[case]] entries. For every assignment of the build (grade-config.json), this test builds the
+// list of hidden case ids and hidden parameter values from its case files and fails when any of
+// them appears in the runner code of any assignment or of the general harness (outside a runner's
+// hidden/ folder, which the release leaves out). It also proves that the scan finds a hidden case
+// written back into code the way the runner once registered them.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -19,12 +21,32 @@
 
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
+#include <nlohmann/json.hpp>
 
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
+
+// Every assignment of the build: id -> its folder (grade-config.json's "assignments").
+std::map<std::string, fs::path> assignments() {
+  std::ifstream in(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  EXPECT_TRUE(in) << "no grade-config.json: build jelly-grade";
+  std::map<std::string, fs::path> out;
+  if (!in) return out;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  for (const auto& [id, a] : j.at("assignments").items()) out[id] = a.at("dir").get<std::string>();
+  EXPECT_FALSE(out.empty());
+  return out;
+}
+
+// The runner code shipped to students: the general harness and every assignment's generators.
+std::vector<fs::path> runner_folders() {
+  std::vector<fs::path> out = {kSource / "grader" / "runner"};
+  for (const auto& [id, dir] : assignments()) out.push_back(dir / "grader" / "runner");
+  return out;
+}
 
 // Parameter values of one visibility, flattened.
 struct Values {
@@ -59,9 +81,9 @@ struct CaseValues {
   Values hidden, pub;
 };
 
-CaseValues case_values() {
+CaseValues case_values(const fs::path& cases_dir) {
   CaseValues out;
-  for (const auto& e : fs::directory_iterator(kSource / "grader" / "cases")) {
+  for (const auto& e : fs::directory_iterator(cases_dir)) {
     if (e.path().extension() != ".toml") continue;
     const toml::table tbl = toml::parse_file(e.path().string());
     const toml::array* cases = tbl["case"].as_array();
@@ -109,7 +131,7 @@ Needles needles(const CaseValues& cv) {
 }
 
 // Every hidden seed, from params.seed and params.*.seed anywhere in hidden cases.
-std::set<long> hidden_seeds() {
+std::set<long> hidden_seeds(const fs::path& cases_dir) {
   std::set<long> seeds;
   std::function<void(const toml::node&, bool)> walk = [&](const toml::node& n, bool hidden) {
     if (const toml::table* t = n.as_table())
@@ -118,7 +140,7 @@ std::set<long> hidden_seeds() {
         walk(c, hidden);
       }
   };
-  for (const auto& e : fs::directory_iterator(kSource / "grader" / "cases")) {
+  for (const auto& e : fs::directory_iterator(cases_dir)) {
     if (e.path().extension() != ".toml") continue;
     const toml::table tbl = toml::parse_file(e.path().string());
     if (const toml::array* cases = tbl["case"].as_array())
@@ -193,40 +215,50 @@ std::string read(const fs::path& p) {
 }  // namespace
 
 TEST(GraderCases, HiddenCasesExistAndLiveInTheCaseFiles) {
-  const CaseValues cv = case_values();
-  EXPECT_GE(cv.hidden.ids.size(), 20u) << "the scan below would prove nothing without hidden cases";
-  const Needles n = needles(cv);
-  EXPECT_FALSE(n.numbers.empty());
-  EXPECT_FALSE(n.vectors.empty());
-  EXPECT_FALSE(hidden_seeds().empty());
+  for (const auto& [id, dir] : assignments()) {
+    SCOPED_TRACE(id);
+    const CaseValues cv = case_values(dir / "grader" / "cases");
+    EXPECT_GE(cv.hidden.ids.size(), 20u)
+        << "the scan below would prove nothing without hidden cases";
+    const Needles n = needles(cv);
+    EXPECT_FALSE(n.numbers.empty());
+    EXPECT_FALSE(n.vectors.empty());
+    EXPECT_FALSE(hidden_seeds(dir / "grader" / "cases").empty());
+  }
 }
 
 TEST(GraderCases, NoHiddenCaseIdOrParameterInTheRunnerCode) {
-  const CaseValues cv = case_values();
-  Needles n = needles(cv);
-  n.seeds = hidden_seeds();
-  int files = 0;
-  std::string report;
-  for (const auto& e : fs::recursive_directory_iterator(kSource / "grader" / "runner")) {
-    if (!e.is_regular_file()) continue;
-    const fs::path rel = fs::relative(e.path(), kSource);
-    if (rel.string().rfind("grader/runner/hidden/", 0) == 0) continue;  // never released
-    ++files;
-    for (const std::string& leak : leaks_in(read(e.path()), n))
-      report += "  " + rel.string() + ": " + leak + "\n";
+  for (const auto& [id, dir] : assignments()) {
+    SCOPED_TRACE(id);
+    const CaseValues cv = case_values(dir / "grader" / "cases");
+    Needles n = needles(cv);
+    n.seeds = hidden_seeds(dir / "grader" / "cases");
+    int files = 0;
+    std::string report;
+    for (const fs::path& folder : runner_folders())
+      for (const auto& e : fs::recursive_directory_iterator(folder)) {
+        if (!e.is_regular_file()) continue;
+        const fs::path rel = fs::relative(e.path(), folder);
+        if (*rel.begin() == "hidden") continue;  // never released
+        ++files;
+        for (const std::string& leak : leaks_in(read(e.path()), n))
+          report += "  " + fs::relative(e.path(), kSource).string() + ": " + leak + "\n";
+      }
+    EXPECT_GE(files, 10);
+    EXPECT_TRUE(report.empty()) << "the runner code (shipped to students) says what " << id
+                                << "'s hidden tests feed "
+                                << "their code;\nmove these into the hidden case's params in " << id
+                                << "'s grader/cases/*.toml:\n"
+                                << report;
   }
-  EXPECT_GE(files, 5);
-  EXPECT_TRUE(report.empty())
-      << "the runner code (shipped to students) says what hidden tests feed their code;\n"
-      << "move these into the hidden case's params in grader/cases/*.toml:\n"
-      << report;
 }
 
 // The scan is not blind: the way hidden cases used to be registered in code is reported.
 TEST(GraderCases, TheScanFindsAHiddenCaseWrittenBackIntoCode) {
-  const CaseValues cv = case_values();
+  const fs::path cases = assignments().at("a1") / "grader" / "cases";
+  const CaseValues cv = case_values(cases);
   Needles n = needles(cv);
-  n.seeds = hidden_seeds();
+  n.seeds = hidden_seeds(cases);
   const std::string old_code = R"(
     r.add({"a1.t4.spring_force.random", "spring_force on 12 random springs", nullptr,
            [](const TaskTable& t, const Json&, Outputs& o) { run_springs(t, random_inputs(41, 12), o); }});

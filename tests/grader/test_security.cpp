@@ -1,10 +1,14 @@
-// The red-team suite (CTest label "security"): one hostile submission per route a student could
-// take to read the grader's hidden files or to take the grading machine down, all graded in ONE
-// `jelly-grade batch` together with a well-behaved submission. Every hostile submission must fail
-// with its message, the well-behaved one must be graded normally, and no output anywhere (reports,
-// results.json, jelly-grade's own stdout/stderr) may contain any distinctive text of any hidden
-// reference file. The hostile sources name the hidden files by their real absolute paths, so every
-// route WOULD leak without the sandbox: NoIsolationLetsTheCanaryThrough proves the search finds it.
+// The red-team suite (CTest label "security"), run against EVERY assignment of the build (the
+// "assignments" of grade-config.json; each test is instantiated once per assignment id): one
+// hostile submission per route a student could take to read the grader's hidden files or to take
+// the grading machine down, all graded in ONE `jelly-grade batch` together with a well-behaved
+// submission. Where a route goes in an assignment's files is that assignment's red-team hooks,
+// grader/tests/hostile/<id>/redteam.toml; the submissions are its reference with the route laid in.
+// Every hostile submission must fail with its message, the well-behaved one must be graded
+// normally, and no output anywhere (reports, results.json, jelly-grade's own stdout/stderr) may
+// contain any distinctive text of any hidden reference file of ANY assignment. The hostile sources
+// name the hidden files by their real absolute paths, so every route WOULD leak without the
+// sandbox: NoIsolationLetsTheCanaryThrough proves the search finds it.
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,7 +26,10 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <toml++/toml.h>
 #include <nlohmann/json.hpp>
+
+#include "jelly/manifest.hpp"
 
 #include "shell_quote.hpp"
 
@@ -33,13 +40,96 @@ namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
 const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader" / "security";
-const fs::path kHidden = kSource / "grader" / "data" / "hidden" / "a1.t4.spring_force.random.json";
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// One assignment as the suite attacks it: its manifest, its folders, its hooks.
+struct Target {
+  std::string id;
+  jelly::AssignmentManifest manifest;
+  fs::path dir, solutions, hidden_dir, public_dir;
+  fs::path hidden;           // one of its hidden reference files (the routes' canary)
+  std::string compile_file;  // compile-time routes go at its top
+  std::string run_file, run_signature, run_case;  // run-time routes: start of this function
+  std::string error;                              // what is wrong with its hooks ("" when usable)
+
+  // Its task ids whose file is `file` ("A1.T4, A1.T5"), and the others.
+  std::vector<std::string> tasks_of(const std::string& file, bool mine) const {
+    std::vector<std::string> out;
+    for (const jelly::ManifestTask& t : manifest.tasks)
+      if (!t.file.empty() && (t.file == file) == mine) out.push_back(t.id);
+    return out;
+  }
+};
+
+// Every assignment of the build (grade-config.json), read once.
+const std::vector<Target>& targets() {
+  static const std::vector<Target> all = [] {
+    std::vector<Target> v;
+    const Json cfg =
+        Json::parse(read_text(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json"));
+    for (const auto& [id, a] : cfg.at("assignments").items()) {
+      Target t;
+      t.id = id;
+      t.dir = a.at("dir").get<std::string>();
+      t.solutions = a.at("solutions_dir").get<std::string>();
+      t.hidden_dir = kSource / "grader" / "data" / id / "hidden";
+      t.public_dir = t.dir / "grader" / "data" / "public";
+      const fs::path hooks = kSource / "grader" / "tests" / "hostile" / id / "redteam.toml";
+      try {
+        t.manifest = jelly::read_manifest(t.dir / "assignment.toml");
+        const toml::table h = toml::parse_file(hooks.string());
+        t.compile_file = h["compile_file"].value_or(t.manifest.files.front());
+        t.run_file = h["run_file"].value_or(std::string());
+        t.run_signature = h["run_signature"].value_or(std::string());
+        t.run_case = h["run_case"].value_or(std::string());
+        if (t.run_file.empty() || t.run_signature.empty() || t.run_case.empty())
+          t.error = hooks.string() + ": run_file, run_signature and run_case: expected strings";
+      } catch (const std::exception& e) {
+        t.error = hooks.string() + ": " + e.what() +
+                  " (every assignment needs its red-team hooks: see grader/tests/hostile/a1/)";
+      }
+      std::set<fs::path> hidden;
+      std::error_code ec;
+      for (fs::directory_iterator it(t.hidden_dir, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".json") hidden.insert(it->path());
+      if (hidden.empty())
+        t.error += " no hidden reference data in " + t.hidden_dir.string();
+      else
+        t.hidden = *hidden.begin();
+      v.push_back(std::move(t));
+    }
+    return v;
+  }();
+  return all;
+}
+
+std::vector<std::string> target_ids() {
+  std::vector<std::string> ids;
+  for (const Target& t : targets()) ids.push_back(t.id);
+  return ids;
+}
+
+// The assignment the running test attacks (set by the fixtures' SetUp).
+const Target* T = nullptr;
+
+void select_target(const std::string& id) {
+  T = nullptr;
+  for (const Target& t : targets())
+    if (t.id == id) T = &t;
+  ASSERT_NE(T, nullptr) << id;
+  ASSERT_EQ(T->error, "") << "assignment " << id << " cannot be attacked";
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const std::string& s : v) out += (out.empty() ? "" : ", ") + s;
+  return out;
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
@@ -60,8 +150,8 @@ std::string run(const std::string& args) {
   return out;
 }
 
-// Distinctive text of the hidden files: their long lines (numbers to 16 digits, notes) that no
-// public reference file has.
+// Distinctive text of the hidden files of every assignment: their long lines (numbers to 16 digits,
+// notes) that no public reference file has.
 std::vector<std::string> hidden_needles() {
   std::set<std::string> pub;
   auto lines = [](const fs::path& f) {
@@ -77,17 +167,20 @@ std::vector<std::string> hidden_needles() {
     }
     return out;
   };
-  for (const auto& e : fs::directory_iterator(kSource / "grader" / "data" / "public"))
-    for (const std::string& l : lines(e.path())) pub.insert(l);
+  // Every assignment's: a submission of one must not show another's hidden data either.
+  for (const Target& t : targets())
+    for (const auto& e : fs::directory_iterator(t.public_dir))
+      for (const std::string& l : lines(e.path())) pub.insert(l);
   std::set<std::string> needles;
-  for (const auto& e : fs::directory_iterator(kSource / "grader" / "data" / "hidden"))
-    for (const std::string& l : lines(e.path()))
-      if (!pub.count(l) && l.find("\"harness_digest\"") == std::string::npos &&
-          l.find("\"commit\"") == std::string::npos && l.find("\"flags\"") == std::string::npos &&
-          l.find("\"compiler\"") == std::string::npos &&
-          l.find("\"format_version\"") == std::string::npos &&
-          l.find("\"case_hash\"") == std::string::npos)
-        needles.insert(l);
+  for (const Target& t : targets())
+    for (const auto& e : fs::directory_iterator(t.hidden_dir))
+      for (const std::string& l : lines(e.path()))
+        if (!pub.count(l) && l.find("\"harness_digest\"") == std::string::npos &&
+            l.find("\"commit\"") == std::string::npos && l.find("\"flags\"") == std::string::npos &&
+            l.find("\"compiler\"") == std::string::npos &&
+            l.find("\"format_version\"") == std::string::npos &&
+            l.find("\"case_hash\"") == std::string::npos)
+          needles.insert(l);
   return {needles.begin(), needles.end()};
 }
 
@@ -108,16 +201,18 @@ std::string leaks_under(const fs::path& dir, const std::vector<std::string>& nee
   return found;
 }
 
-// Where a route's code goes: at the top of forces.cpp (compile time) or at the start of
-// contact_plane in contact.cpp (run time, in the public test a1.t8.contact_plane.eps).
-enum class Where { TopOfForces, InContactPlane, Special, WellBehaved };
+// Where a route's code goes: at the top of the assignment's compile_file (compile time), or at the
+// start of its run_signature's body in run_file (run time, in the public test run_case): the
+// assignment's hooks, grader/tests/hostile/<id>/redteam.toml. In code and messages, @FILE@ is the
+// compile_file, @NS@ the tasks' namespace, @HIDDEN@ the canary's absolute path.
+enum class Where { TopOfFile, InRunFunction, Special, WellBehaved };
 
 struct Route {
   const char* name;
   Where where;
   const char* code;  // @HIDDEN@: the hidden file's absolute path
   const char*
-      expect;  // in the compile output, or in the output of test a1.t8.contact_plane.eps;
+      expect;  // in the compile output, or in the output of the assignment's run_case;
                // alternatives separated by | (bwrap hides a file, the user sandbox denies it)
   bool runs = false;  // compiles, and `expect` is in that test's output
   bool test_fails = true;
@@ -126,108 +221,109 @@ struct Route {
 // clang-format off
 const Route kRoutes[] = {
   // Preprocessor: the file named by routes a text filter does not see.
-  {"computed_include", Where::TopOfForces,
+  {"computed_include", Where::TopOfFile,
    "#define JELLY_STR(x) #x\n#define JELLY_XSTR(x) JELLY_STR(x)\n#define JELLY_P @HIDDEN@\n#include JELLY_XSTR(JELLY_P)\n",
    "No such file or directory|Permission denied"},
-  {"line_splice", Where::TopOfForces, "#inc\\\nlude \"@HIDDEN@\"\n", "No such file or directory|Permission denied"},
-  {"has_include_probe", Where::TopOfForces,
+  {"line_splice", Where::TopOfFile, "#inc\\\nlude \"@HIDDEN@\"\n", "No such file or directory|Permission denied"},
+  {"has_include_probe", Where::TopOfFile,
    "#if __has_include(\"@HIDDEN@\")\n#error the hidden file is visible to the compiler\n#endif\n#error probe done\n",
    "probe done"},
-  {"pragma_dependency", Where::TopOfForces, "#pragma GCC dependency \"@HIDDEN@\"\n#error after the dependency\n",
+  {"pragma_dependency", Where::TopOfFile, "#pragma GCC dependency \"@HIDDEN@\"\n#error after the dependency\n",
    "error"},
-  {"pragma_message", Where::TopOfForces,
+  {"pragma_message", Where::TopOfFile,
    "_Pragma(\"GCC dependency \\\"@HIDDEN@\\\"\")\n#pragma message(\"looking at @HIDDEN@\")\n#error after the pragmas\n", "error"},
-  {"embed", Where::TopOfForces, "#embed \"@HIDDEN@\"\n", "embed"},
+  {"embed", Where::TopOfFile, "#embed \"@HIDDEN@\"\n", "embed"},
   // Assembler and linker: no preprocessor at all.
-  {"asm_incbin", Where::TopOfForces,
+  {"asm_incbin", Where::TopOfFile,
    "#include <cstdio>\n#include <cstring>\n"
    "asm(\".section .rodata\\njelly_leak: .incbin \\\"@HIDDEN@\\\"\\n.byte 0\\n.text\\n\");\n"
    "extern \"C\" const char jelly_leak[];\n"
    "static int jelly_print = [] { const char* o = std::strstr(jelly_leak, \"outputs\"); std::fputs(o ? o : jelly_leak, stdout); return 0; }();\n",
    "@HIDDEN@"},
-  {"asm_include", Where::TopOfForces, "asm(\".include \\\"@HIDDEN@\\\"\");\n", "@HIDDEN@"},
-  {"linker_warning", Where::TopOfForces,
+  {"asm_include", Where::TopOfFile, "asm(\".include \\\"@HIDDEN@\\\"\");\n", "@HIDDEN@"},
+  {"linker_warning", Where::TopOfFile,
    "asm(\".section .gnu.warning.jelly_warned\\n.incbin \\\"@HIDDEN@\\\"\\n.text\\n\");\n", "@HIDDEN@"},
   // The compiler as a denial of service.
-  {"template_bomb", Where::TopOfForces,
+  {"template_bomb", Where::TopOfFile,
    "template <int N, int M> struct JellyBomb { static constexpr long v = JellyBomb<N - 1, 2 * M>::v + JellyBomb<N - 1, 2 * M + 1>::v; };\n"
    "template <int M> struct JellyBomb<0, M> { static constexpr long v = M; };\nlong jelly_bomb = JellyBomb<26, 0>::v;\n",
-   "compiling forces.cpp used more than 512 MiB of memory"},
-  {"constexpr_bomb", Where::TopOfForces,
+   "compiling @FILE@ used more than 512 MiB of memory"},
+  {"constexpr_bomb", Where::TopOfFile,
    "template <int N, int M> constexpr long jelly_cb = jelly_cb<N - 1, 2 * M> + jelly_cb<N - 1, 2 * M + 1>;\n"
    "template <int M> constexpr long jelly_cb<0, M> = M;\nlong jelly_bomb = jelly_cb<26, 0>;\n",
-   "compiling forces.cpp used more than 512 MiB of memory"},
-  {"error_flood", Where::TopOfForces,
+   "compiling @FILE@ used more than 512 MiB of memory"},
+  {"error_flood", Where::TopOfFile,
    "#define J1 static_assert(sizeof(int) == 3, \"jelly flood\");\n#define J10 J1 J1 J1 J1 J1 J1 J1 J1 J1 J1\n#define J100 J10 J10 J10 J10 J10 J10 J10 J10 J10 J10\n"
    "#define J1000 J100 J100 J100 J100 J100 J100 J100 J100 J100 J100\n"
    "#define J10000 J1000 J1000 J1000 J1000 J1000 J1000 J1000 J1000 J1000 J1000\n"
    "J10000 J10000 J10000 J10000 J10000 J10000 J10000 J10000 J10000 J10000\n",
-   "compiling forces.cpp printed more than 8 MiB of messages"},
-  {"include_recursion", Where::TopOfForces, "#include __FILE__\n", "nested depth"},
+   "compiling @FILE@ printed more than 8 MiB of messages"},
+  {"include_recursion", Where::TopOfFile, "#include __FILE__\n", "nested depth"},
   // Run time: every way to reach a file or another process without plain open().
-  {"static_constructor", Where::TopOfForces,
+  {"static_constructor", Where::TopOfFile,
    "#include <cstdio>\nstatic int jelly_ctor = [] { if (std::FILE* f = std::fopen(\"@HIDDEN@\", \"r\")) { char b[4096];"
    " while (std::fgets(b, sizeof b, f)) std::fputs(b, stdout); } else { std::puts(\"jelly: constructor saw no file\"); } return 0; }();\n",
    "jelly: constructor saw no file", true, false},
-  {"io_uring", Where::InContactPlane,
+  {"io_uring", Where::InRunFunction,
    "{ struct { unsigned a[30]; } p{}; std::printf(\"%ld\\n\", syscall(__NR_io_uring_setup, 4, &p)); }\n", "io_uring_setup", true, true},
-  {"open_by_handle_at", Where::InContactPlane,
+  {"open_by_handle_at", Where::InRunFunction,
    "{ char h[128] = {}; int m = 0; ((unsigned*)h)[0] = 120;"
    " syscall(__NR_name_to_handle_at, AT_FDCWD, \"@HIDDEN@\", h, &m, 0); syscall(__NR_open_by_handle_at, AT_FDCWD, h, 0); }\n",
    "name_to_handle_at", true, true},
-  {"openat2", Where::InContactPlane,
+  {"openat2", Where::InRunFunction,
    "{ unsigned long long how[3] = {0, 0, 0}; syscall(__NR_openat2, AT_FDCWD, \"@HIDDEN@\", how, sizeof how); }\n",
    "openat2", true, true},
-  {"proc_self_fd", Where::InContactPlane, "{ char b[256] = {}; syscall(__NR_readlink, \"/proc/self/fd/0\", b, 255); std::puts(b); }\n",
+  {"proc_self_fd", Where::InRunFunction, "{ char b[256] = {}; syscall(__NR_readlink, \"/proc/self/fd/0\", b, 255); std::puts(b); }\n",
    "readlink", true, true},
-  {"proc_parent", Where::InContactPlane, "{ std::printf(\"parent %d\\n\", (int)getppid()); }\n", "getppid", true, true},
-  {"inherited_fds", Where::InContactPlane,
+  {"proc_parent", Where::InRunFunction, "{ std::printf(\"parent %d\\n\", (int)getppid()); }\n", "getppid", true, true},
+  {"inherited_fds", Where::InRunFunction,
    "{ char b[4096]; for (int fd = 0; fd < 64; ++fd) if (fd != 1 && fd != 2) { long n = read(fd, b, sizeof b - 1);"
    " if (n > 0) { b[n] = 0; std::fputs(b, stdout); } } std::puts(\"jelly: read every descriptor\"); }\n",
    "jelly: read every descriptor", true, false},
-  {"execve", Where::InContactPlane,
+  {"execve", Where::InRunFunction,
    "{ char* argv[] = {(char*)\"cat\", (char*)\"@HIDDEN@\", nullptr}; execv(\"/bin/cat\", argv); }\n", "start another program", true, true},
-  {"fork", Where::InContactPlane, "{ if (syscall(__NR_fork) == 0) _exit(0); }\n", "start a process", true, true},
-  {"ptrace", Where::InContactPlane, "{ syscall(__NR_ptrace, 16 /* PTRACE_ATTACH */, 1, 0, 0); }\n", "inspect another process", true, true},
-  {"process_vm_readv", Where::InContactPlane, "{ syscall(__NR_process_vm_readv, 1, nullptr, 0, nullptr, 0, 0); }\n",
+  {"fork", Where::InRunFunction, "{ if (syscall(__NR_fork) == 0) _exit(0); }\n", "start a process", true, true},
+  {"ptrace", Where::InRunFunction, "{ syscall(__NR_ptrace, 16 /* PTRACE_ATTACH */, 1, 0, 0); }\n", "inspect another process", true, true},
+  {"process_vm_readv", Where::InRunFunction, "{ syscall(__NR_process_vm_readv, 1, nullptr, 0, nullptr, 0, 0); }\n",
    "inspect another process", true, true},
-  {"socket", Where::InContactPlane, "{ syscall(__NR_socket, 2, 1, 0); }\n", "use the network", true, true},
+  {"socket", Where::InRunFunction, "{ syscall(__NR_socket, 2, 1, 0); }\n", "use the network", true, true},
   // What a test prints and returns: any bytes (invalid UTF-8, NUL, terminal escapes, markup) end
   // as a graded test shown safely; a malformed or forged result on the result channel (fd 3) is
   // that test's failure, never a grader crash.
-  {"printed_bytes", Where::InContactPlane,
+  {"printed_bytes", Where::InRunFunction,
    "{ static const char b[] = \"jelly bytes: \\xff\\xfe\\xc3( \\xe2\\x82 NUL[\\0] \\x1b[31mred\\x1b[0m \\x1b]0;title\\x07 \\x9b"
    " \\xe2\\x80\\xae <script>alert('x')</script> <img src=x onerror=alert(1)> ```` | **bold** [link](javascript:x) \\xf0\\x9f\\x98\\x80 end\\n\";"
    " std::fwrite(b, 1, sizeof b - 1, stdout); std::fwrite(b, 1, sizeof b - 1, stderr); for (int k = 0; k < 3000; ++k) std::fputs(\"\\xe2\\x86\\x92\\xc2\\xb0\", stdout); std::fputs(\"\\xe2\\x86\", stdout); }\n",
    "jelly bytes:", true, false},
-  {"result_garbage", Where::InContactPlane,
+  {"result_garbage", Where::InRunFunction,
    "{ static const char g[] = \"\\xff\\x00{not json\"; write(3, g, sizeof g - 1); }\n",
    "the test's result could not be read", true, true},
-  {"result_forged", Where::InContactPlane,
+  {"result_forged", Where::InRunFunction,
    "{ static const char g[] = \"{\\\"forbidden_syscall\\\": \\\"openat\\\", \\\"outputs\\\": [1, 2]}\\n\";"
    " write(3, g, sizeof g - 1); _exit(0); }\n",
    "the test's result has no outputs", true, true},
-  {"result_wrong_types", Where::InContactPlane,
+  {"result_wrong_types", Where::InRunFunction,
    "{ static const char g[] = \"{\\\"outputs\\\": {\\\"force\\\": 5, \\\"com_y\\\": {\\\"value\\\": {\\\"a\\\": 1}}, \\\"frame_times\\\": 7}}\\n\";"
    " write(3, g, sizeof g - 1); _exit(0); }\n",
    "your code produced no value", true, true},
   // A file that does not compile costs only its own tasks (checked for every route that stops
-  // forces.cpp: the other files' tasks keep full marks).
+  // the compile_file: the other files' tasks keep full marks).
   {"missing_semicolon", Where::Special, "", "expected ';'|expected ‘;’"},
   // Link time: a submission may not replace the grader's code (framework, runner, harness, the C
   // and C++ libraries); a non-static helper of its own is fine.
-  {"redefine_sandbox", Where::TopOfForces,
+  {"redefine_sandbox", Where::TopOfFile,
    "namespace jelly::grade { bool install_sandbox(int) { return true; } }\n",
    "jelly::grade::install_sandbox(int)|defined by the grader's own code"},
-  {"redefine_libc", Where::TopOfForces,
+  {"redefine_libc", Where::TopOfFile,
    "extern \"C\" int seccomp_load(void*) { return 0; }\n",
    "defines the external symbol seccomp_load, which"},
-  {"extern_c_function", Where::TopOfForces,
+  {"extern_c_function", Where::TopOfFile,
    "extern \"C\" long jelly_c_helper(long x) { return x; }\n",
    "jelly_c_helper, which is not a C++ function"},
-  {"redefine_task_table", Where::TopOfForces,
-   "#include \"jelly/task_table.hpp\"\nnamespace jelly { TaskTable a1::task_table() { return {}; } }\n",
-   "jelly::a1::task_table()"},
+  {"redefine_task_table", Where::TopOfFile,
+   "#include \"jelly/task_table.hpp\"\nnamespace jelly::@NS@ { TaskTable task_table(); }\n"
+   "namespace jelly { TaskTable @NS@::task_table() { return {}; } }\n",
+   "jelly::@NS@::task_table()"},
   {"nonstatic_helper", Where::WellBehaved, "", ""},
   // Folder names that would break or forge a CSV file, or collide with the batch's own files.
   {"scores.csv", Where::WellBehaved, "", ""},
@@ -240,64 +336,71 @@ const Route kRoutes[] = {
 };
 // clang-format on
 
-const char* const kTaskFiles[] = {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp",
-                                  "integrators.cpp"};
+// A route's text for the running test's assignment.
+std::string for_target(const std::string& text) {
+  std::string out = replace_all(text, "@HIDDEN@", T->hidden.string());
+  out = replace_all(out, "@FILE@", T->compile_file);
+  return replace_all(out, "@NS@", T->manifest.ns);
+}
+
+// The assignment's files from `from` (its reference or its stubs) into `dir`.
+void copy_files(const fs::path& from, const fs::path& dir) {
+  for (const std::string& f : T->manifest.files) fs::copy_file(from / f, dir / f);
+}
 
 fs::path make_submission(const fs::path& in, const Route& r) {
   const fs::path dir = in / r.name;
   fs::create_directories(dir);
-  for (const char* f : kTaskFiles) fs::copy_file(kSource / "solutions" / f, dir / f);
-  const std::string code = replace_all(r.code, "@HIDDEN@", kHidden.string());
-  if (r.where == Where::TopOfForces) {
-    std::ofstream(dir / "forces.cpp", std::ios::binary)
-        << code << read_text(kSource / "solutions" / "forces.cpp");
-  } else if (r.where == Where::InContactPlane) {
-    std::string text = read_text(kSource / "solutions" / "contact.cpp");
-    const std::string sig =
-        "bool contact_plane(const Plane& plane, const Vec3& x, const Vec3& v, Vec3& f) {\n";
-    const auto at = text.find(sig);
-    EXPECT_NE(at, std::string::npos) << "solutions/contact.cpp changed: update the red-team suite";
-    // Once per process: contact_plane also runs in every step of the scene cases.
+  copy_files(T->solutions, dir);
+  const std::string code = for_target(r.code);
+  const fs::path top = dir / T->compile_file, reference_top = T->solutions / T->compile_file;
+  if (r.where == Where::TopOfFile) {
+    std::ofstream(top, std::ios::binary) << code << read_text(reference_top);
+  } else if (r.where == Where::InRunFunction) {
+    std::string text = read_text(T->solutions / T->run_file);
+    const auto at = text.find(T->run_signature);
+    EXPECT_NE(at, std::string::npos) << T->solutions / T->run_file << " has no run_signature "
+                                     << T->run_signature << ": update its redteam.toml";
+    // Once per process: the function may also run in every step of the scene cases.
     text.insert(
-        at + sig.size(),
+        at + T->run_signature.size(),
         "static bool jelly_once = false;\nif (!jelly_once) {\njelly_once = true;\n" + code + "}\n");
-    std::ofstream(dir / "contact.cpp", std::ios::binary)
+    std::ofstream(dir / T->run_file, std::ios::binary)
         << "#include <fcntl.h>\n#include <sys/syscall.h>\n#include <unistd.h>\n#include <cstdio>\n"
         << text;
   } else if (r.where == Where::WellBehaved) {
     if (std::string(r.name) == "nonstatic_helper") {
-      // An honest helper with external linkage, used by the task function: allowed.
-      std::string text = read_text(kSource / "solutions" / "forces.cpp");
-      const std::string ns = "namespace jelly::a1 {\n";
+      // An honest helper with external linkage: allowed.
+      std::string text = read_text(reference_top);
+      const std::string ns = "namespace jelly::" + T->manifest.ns + " {\n";
       const auto at = text.find(ns);
-      EXPECT_NE(at, std::string::npos) << "solutions/forces.cpp changed: update the red-team suite";
+      EXPECT_NE(at, std::string::npos) << reference_top << " changed: update the red-team suite";
       text.insert(at + ns.size(),
                   "double jelly_helper_twice(double x);\n"
                   "double jelly_helper_twice(double x) { return 2.0 * x; }\n");
-      std::ofstream(dir / "forces.cpp", std::ios::binary) << text;
+      std::ofstream(top, std::ios::binary) << text;
     }
   } else {
-    fs::remove(dir / "forces.cpp");
+    fs::remove(top);
     const std::string n = r.name;
     if (n == "missing_semicolon") {
       // One missing ';' in the body of a task function.
-      std::string text = read_text(kSource / "solutions" / "forces.cpp");
+      std::string text = read_text(reference_top);
       const auto ret = text.find("return ");
       const auto semi = text.find(";\n", ret);
-      EXPECT_NE(ret, std::string::npos)
-          << "solutions/forces.cpp changed: update the red-team suite";
+      EXPECT_NE(ret, std::string::npos) << reference_top << " changed: update the red-team suite";
       text.erase(semi, 1);
-      std::ofstream(dir / "forces.cpp", std::ios::binary) << text;
+      std::ofstream(top, std::ios::binary) << text;
     }
-    if (n == "symlink") fs::create_symlink(kHidden, dir / "forces.cpp");
+    if (n == "symlink") fs::create_symlink(T->hidden, top);
     if (n == "fifo") {
-      EXPECT_EQ(mkfifo((dir / "forces.cpp").c_str(), 0644), 0);
+      EXPECT_EQ(mkfifo(top.c_str(), 0644), 0);
     }
     if (n == "hardlink") {
       // A second name of the hidden file itself where the file systems allow it, else of a copy.
-      if (link(kHidden.c_str(), (dir / "forces.cpp").c_str()) != 0) {
-        fs::copy_file(kHidden, in / "hardlink-target.json");
-        EXPECT_EQ(link((in / "hardlink-target.json").c_str(), (dir / "forces.cpp").c_str()), 0);
+      if (link(T->hidden.c_str(), top.c_str()) != 0) {
+        fs::copy_file(T->hidden, in / "hardlink-target.json");
+        EXPECT_EQ(link((in / "hardlink-target.json").c_str(), top.c_str()), 0);
       }
     }
   }
@@ -311,16 +414,15 @@ struct BatchRun {
 
 BatchRun run_batch(const std::string& tag, const std::vector<const Route*>& routes,
                    const std::string& isolation) {
-  const fs::path root = kWork / tag, in = root / "in";
+  const fs::path root = kWork / T->id / tag, in = root / "in";
   fs::remove_all(root);
   fs::create_directories(in);
   for (const Route* r : routes) make_submission(in, *r);
   fs::create_directories(in / "zz_well_behaved");
-  for (const char* f : kTaskFiles)
-    fs::copy_file(kSource / "solutions" / f, in / "zz_well_behaved" / f);
+  copy_files(T->solutions, in / "zz_well_behaved");
   BatchRun b;
   b.out = root / "out";
-  b.console = run("batch " + in.string() + " --out " + b.out.string() +
+  b.console = run("batch " + in.string() + " --out " + b.out.string() + " --assignment " + T->id +
                   " --jobs 2 --visibility public --timeout 10 --compile-memory 512 --compile-cpu "
                   "30 --isolation " +
                   isolation);
@@ -448,15 +550,16 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
     ASSERT_TRUE(rows.count(name)) << "no row for " << name << " in\n"
                                   << read_text(b.out / "scores.csv");
     EXPECT_NEAR(std::stod(rows[name][1]), j["score"].get<double>(), 0.006);
-    const std::string expect = replace_all(r->expect, "@HIDDEN@", kHidden.filename().string());
+    const std::string expect =
+        replace_all(for_target(r->expect), T->hidden.string(), T->hidden.filename().string());
     const Json& compile = j["tests"][0];
     if (r->where == Where::WellBehaved) {
       EXPECT_EQ(compile["status"], "passed") << compile["output"];
       EXPECT_NEAR(j["score"].get<double>(), max, 1e-3) << j.dump(1).substr(0, 4000);
     } else if (r->runs) {
       ASSERT_EQ(compile["status"], "passed") << compile["output"];
-      const Json* t = find_test(j, "a1.t8.contact_plane.eps");
-      ASSERT_NE(t, nullptr);
+      const Json* t = find_test(j, T->run_case);
+      ASSERT_NE(t, nullptr) << T->run_case;
       EXPECT_EQ((*t)["status"], r->test_fails ? "failed" : "passed");
       EXPECT_TRUE(has_any((*t)["output"].get<std::string>(), expect)) << (*t)["output"];
     } else {
@@ -465,13 +568,15 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
       EXPECT_TRUE(has_any(o, expect)) << o.substr(0, 3000);
       EXPECT_EQ(o.find("the hidden file is visible"), std::string::npos) << o.substr(0, 3000);
       EXPECT_LT(o.size(), 300000u);
-      // Every route here stops forces.cpp only: it costs forces' tasks, the others keep their
-      // points (graded with the stub of forces.cpp in its place), and the report says so.
-      EXPECT_NE(o.find("forces.cpp "), std::string::npos) << o.substr(0, 3000);
-      EXPECT_NE(o.find("A1.T4, A1.T5"), std::string::npos) << o.substr(0, 3000);
-      EXPECT_EQ(task_score(j, "A1.T4") + task_score(j, "A1.T5"), 0.0);
-      for (const char* task : {"A1.T1", "A1.T2", "A1.T3", "A1.T6", "A1.T7", "A1.T8", "A1.T9",
-                               "A1.T10", "A1.T11", "A1.T12", "A1.T13"})
+      // Every route here stops the compile_file only: it costs that file's tasks, the others
+      // keep their points (graded with the stub of that file in its place), and the report says
+      // so.
+      const std::vector<std::string> mine = T->tasks_of(T->compile_file, true);
+      ASSERT_FALSE(mine.empty()) << T->compile_file << " has no task in the manifest";
+      EXPECT_NE(o.find(T->compile_file + " "), std::string::npos) << o.substr(0, 3000);
+      EXPECT_NE(o.find(join(mine)), std::string::npos) << o.substr(0, 3000);
+      for (const std::string& task : mine) EXPECT_EQ(task_score(j, task), 0.0) << task;
+      for (const std::string& task : T->tasks_of(T->compile_file, false))
         EXPECT_NEAR(task_score(j, task), task_score(good, task), 1e-6) << task;
     }
   }
@@ -508,7 +613,13 @@ std::vector<const Route*> named(std::initializer_list<const char*> names) {
 // loudly that hidden tests were not protected, and compiler messages still show no hidden line. It
 // runs first on purpose: its object, which holds the hidden file, is in the object cache when the
 // sandboxed batches below compile the same text, and must not be reused by them.
-TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
+// Each test below runs once per assignment of the build (Assignments/...: its id).
+class GraderSecurity : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override { select_target(GetParam()); }
+};
+
+TEST_P(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
   const auto routes = named({"asm_incbin", "computed_include", "asm_include"});
   const BatchRun b = run_batch("none", routes, "none");
   // Compiler messages are filtered even without a sandbox: the hidden file was read by the compiler
@@ -531,7 +642,7 @@ TEST(GraderSecurity, NoIsolationLetsTheCanaryThroughAndSaysSo) {
 }
 
 // The default mechanism of this machine (bubblewrap where user namespaces work, as in CI).
-TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
+TEST_P(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
   const auto routes = all_routes();
   const BatchRun b = run_batch("auto", routes, "auto");
   const fs::path good = b.out / "students" / "zz_well_behaved" / "results.json";
@@ -542,7 +653,7 @@ TEST(GraderSecurity, EveryRouteFailsWithItsMessageAndNothingLeaks) {
 }
 
 // The fallback used where user namespaces are forbidden (Gradescope, Docker): an unprivileged user.
-TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
+TEST_P(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
   if (geteuid() != 0) GTEST_SKIP() << "--isolation user needs root";
   const auto routes = named({"computed_include", "asm_incbin", "static_constructor", "io_uring",
                              "symlink", "template_bomb", "printed_bytes", "result_forged",
@@ -553,16 +664,20 @@ TEST(GraderSecurity, UnprivilegedUserFallbackStopsTheMainRoutes) {
 
 // A forced mechanism that cannot work stops the run with the reason, before anything is compiled:
 // never a silent fall back to less isolation.
-TEST(GraderSecurity, ForcedSandboxThatCannotWorkIsAGraderError) {
+TEST_P(GraderSecurity, ForcedSandboxThatCannotWorkIsAGraderError) {
   setenv("JELLY_GRADE_BWRAP", "/bin/false", 1);  // a bubblewrap that cannot create a sandbox
-  const std::string out = run("grade " + (kSource / "assignments").string() +
-                              " --isolation bwrap --out " + (kWork / "forced").string());
+  const fs::path out_dir = kWork / T->id / "forced";
+  const std::string out = run("grade " + T->dir.string() + " --assignment " + T->id +
+                              " --isolation bwrap --out " + out_dir.string());
   unsetenv("JELLY_GRADE_BWRAP");
   EXPECT_NE(out.find("--isolation bwrap: /bin/false cannot create a sandbox here"),
             std::string::npos)
       << out;
-  EXPECT_FALSE(fs::exists(kWork / "forced" / "results.json"));
+  EXPECT_FALSE(fs::exists(out_dir / "results.json"));
 }
+
+INSTANTIATE_TEST_SUITE_P(Assignments, GraderSecurity, ::testing::ValuesIn(target_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 
 // ---------------------------------------------------------------------------------------------
 // The operating-system side (issue 18, items 3-5): what a submission can do to the machine and to
@@ -583,15 +698,15 @@ const char* const kReadRequest =
     " while ((n = pread(0, b, sizeof b, o)) > 0) { s.append(b, static_cast<std::size_t>(n)); o += "
     "n; }"
     " return s; }\n"
-    "static bool jelly_target() { return jelly_request().find(\"\\\"a1.t8.contact_plane.eps\\\"\") "
+    "static bool jelly_target() { return jelly_request().find(\"\\\"@CASE@\\\"\") "
     "!="
     " std::string::npos; }\n";
 
 struct OsRoute {
   const char* name;
-  bool stubs;        // on the stubs (assignments/): a forged result would be the only points
-  const char* code;  // a static constructor at the top of forces.cpp: it runs before the runner
-                     // reads its request and installs its seccomp filter
+  bool stubs;        // on the stubs (assignments/<id>/): a forged result would be the only points
+  const char* code;  // a static constructor at the top of the compile_file: it runs before the
+                     // runner reads its request and installs its seccomp filter
 };
 
 // clang-format off
@@ -599,7 +714,7 @@ const OsRoute kOsRoutes[] = {
   // Runs a binary of the build tree linked with the reference and hands in its result as its own.
   {"os_reference_binary", true,
    "static int jelly_forge = [] {\n"
-   "  const char* bins[] = {\"@BUILD@/grader/jelly-grade-reference-runner\", \"@BUILD@/grader/jelly-grade-student-runner\", nullptr};\n"
+   "  const char* bins[] = {\"@BUILD@/grader/jelly-grade-@ID@-reference-runner\", \"@BUILD@/grader/jelly-grade-@ID@-student-runner\", nullptr};\n"
    "  for (int i = 0; bins[i]; ++i) {\n"
    "    if (access(bins[i], X_OK) != 0) { std::fprintf(stderr, \"jelly-forge: cannot run %s: %s\\n\", std::strrchr(bins[i], '/') + 1, std::strerror(errno)); continue; }\n"
    "    const pid_t p = fork();\n"
@@ -703,6 +818,8 @@ Clone make_clone(const std::string& tag) {
     EXPECT_EQ(sh("cp -a '" + (kSource / item).string() + "' '" + c.src.string() + "/'"), 0);
   for (const char* item : {"grader", "framework"})
     EXPECT_EQ(sh("cp -a '" + (bin / item).string() + "' '" + c.build.string() + "/'"), 0);
+  // The assignments' task libraries (libjelly_<id>_tasks_solutions.a, ...) sit at the top.
+  EXPECT_EQ(sh("cp -a '" + bin.string() + "'/libjelly_*.a '" + c.build.string() + "/'"), 0);
   fs::remove_all(c.build / "grader" / "object-cache");
   fs::remove_all(c.build / "grader" / "gradescope-zip");
   Json cfg = Json::parse(read_text(bin / "grader" / "grade-config.json"));
@@ -724,9 +841,16 @@ Clone make_clone(const std::string& tag) {
   return c;
 }
 
+// A path of the source tree, in the clone.
+fs::path in_clone(const Clone& c, const fs::path& p) {
+  const std::string s = p.string();
+  EXPECT_EQ(s.rfind(kSource.string(), 0), 0u) << p << " is not in the source tree";
+  return fs::path(c.src.string() + s.substr(kSource.string().size()));
+}
+
 std::string hidden_case_ids() {
   std::string ids;
-  for (const auto& e : fs::directory_iterator(kSource / "grader" / "data" / "hidden"))
+  for (const auto& e : fs::directory_iterator(T->hidden_dir))
     ids += e.path().stem().string() + "\n";
   return ids;
 }
@@ -790,23 +914,25 @@ void hostile_neighbours(const std::string& isolation) {
   EXPECT_FALSE(fs::exists(c.build / "grader" / "gradescope-zip"))
       << "gradescope-zip left its staging folder (a world-readable copy of the hidden data)";
   // ...and a stale one, as an older grader left it.
-  const fs::path stale = c.build / "grader" / "gradescope-zip" / "source" / "grader" / "data";
+  const fs::path stale =
+      c.build / "grader" / "gradescope-zip" / "source" / "grader" / "data" / T->id;
   fs::create_directories(stale);
-  fs::copy(c.src / "grader" / "data" / "hidden", stale / "hidden",
+  fs::copy(in_clone(c, T->hidden_dir), stale / "hidden",
            fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  const fs::path src_dir = in_clone(c, T->dir), src_solutions = in_clone(c, T->solutions);
+  const fs::path mutants = src_dir / "grader" / "mutants", cases = src_dir / "grader" / "cases";
+  const std::string runner = "jelly-grade-" + T->id + "-";
   const fs::path in = c.root / "in", out = c.root / "out";
   fs::create_directories(in);
   std::string paths;
   for (const fs::path& p :
-       {c.build / "framework" / "tasks" / "libjelly_tasks_solutions.a",
-        c.build / "grader" / "jelly-grade-student-runner",
-        c.build / "grader" / "jelly-grade-reference-runner", c.src / "docs" / "mutation-table.md",
-        c.src / "grader" / "mutants" /
-            fs::directory_iterator(c.src / "grader" / "mutants")->path().filename(),
-        stale / "hidden" / kHidden.filename(), fs::path(zip),
-        c.src / "grader" / "data" / "hidden" / kHidden.filename(),
-        c.src / "grader" / "cases" / "forces.toml", c.src / "solutions" / "forces.cpp",
-        in / "a0_neighbour" / "forces.cpp", out / "students" / "a0_neighbour" / "results.json",
+       {c.build / ("libjelly_" + T->id + "_tasks_solutions.a"),
+        c.build / "grader" / (runner + "student-runner"),
+        c.build / "grader" / (runner + "reference-runner"), c.src / "docs" / "mutation-table.md",
+        mutants / fs::directory_iterator(mutants)->path().filename(),
+        stale / "hidden" / T->hidden.filename(), fs::path(zip), in_clone(c, T->hidden),
+        cases / fs::directory_iterator(cases)->path().filename(), src_solutions / T->compile_file,
+        in / "a0_neighbour" / T->compile_file, out / "students" / "a0_neighbour" / "results.json",
         out / "students" / "a0_neighbour" / "report.md"}) {
     ASSERT_TRUE(p.filename() == "results.json" || p.filename() == "report.md" ||
                 p.string().find("a0_neighbour") != std::string::npos || fs::exists(p))
@@ -815,28 +941,30 @@ void hostile_neighbours(const std::string& isolation) {
   }
   std::map<std::string, fs::perms> modes_before;
   for (const fs::path& p : {c.src, c.src / "grader" / "data", c.build / "grader",
-                            c.build / "grader" / "jelly-grade-student-runner", fs::path(zip)})
+                            c.build / "grader" / (runner + "student-runner"), fs::path(zip)})
     modes_before[p.string()] = fs::status(p).permissions();
   for (const OsRoute& r : kOsRoutes) {
     const fs::path dir = in / r.name;
     fs::create_directories(dir);
-    const fs::path base = c.src / (r.stubs ? "assignments" : "solutions");
-    for (const char* f : kTaskFiles) fs::copy_file(base / f, dir / f);
+    const fs::path base = r.stubs ? src_dir : src_solutions;
+    copy_files(base, dir);
     std::string code = replace_all(r.code, "@BUILD@", c.build.string());
     code = replace_all(code, "@PATHS@", paths);
     code = replace_all(code, "@ROOT@", c.root.string());
-    std::ofstream(dir / "forces.cpp", std::ios::binary)
-        << kReadRequest << code << read_text(base / "forces.cpp");
+    code = replace_all(code, "@ID@", T->id);
+    std::ofstream(dir / T->compile_file, std::ios::binary)
+        << replace_all(kReadRequest, "@CASE@", T->run_case) << code
+        << read_text(base / T->compile_file);
   }
   for (const char* good : {"a0_neighbour", "zz_well_behaved"}) {
     fs::create_directories(in / good);
-    for (const char* f : kTaskFiles) fs::copy_file(c.src / "solutions" / f, in / good / f);
+    copy_files(src_solutions, in / good);
   }
-  const std::string console =
-      run("batch " + in.string() + " --out " + out.string() + " --config " + c.config.string() +
-          " --jobs 2 --visibility all --timeout 10 --no-frames "
-          "--isolation " +
-          isolation);
+  const std::string console = run("batch " + in.string() + " --out " + out.string() + " --config " +
+                                  c.config.string() + " --assignment " + T->id +
+                                  " --jobs 2 --visibility all --timeout 10 --no-frames "
+                                  "--isolation " +
+                                  isolation);
   std::ofstream(c.root / "console.txt") << console;
   SCOPED_TRACE("console: " + (c.root / "console.txt").string());
 
@@ -854,7 +982,7 @@ void hostile_neighbours(const std::string& isolation) {
   }
   auto target = [&](const char* name) {
     const Json j = Json::parse(read_text(out / "students" / name / "results.json"));
-    const Json* t = find_test(j, "a1.t8.contact_plane.eps");
+    const Json* t = find_test(j, T->run_case);
     return t ? *t : Json();
   };
   const std::string description =
@@ -867,8 +995,9 @@ void hostile_neighbours(const std::string& isolation) {
         Json::parse(read_text(out / "students" / "os_reference_binary" / "results.json"));
     EXPECT_EQ(j["score"].get<double>(), 0.0) << "a reference binary was run and its result taken";
     const std::string o = target("os_reference_binary")["output"];
-    EXPECT_NE(o.find("jelly-forge: cannot run jelly-grade-student-runner"), std::string::npos) << o;
-    EXPECT_NE(o.find("jelly-forge: cannot run jelly-grade-reference-runner"), std::string::npos)
+    EXPECT_NE(o.find("jelly-forge: cannot run " + runner + "student-runner"), std::string::npos)
+        << o;
+    EXPECT_NE(o.find("jelly-forge: cannot run " + runner + "reference-runner"), std::string::npos)
         << o;
   }
   // Nothing derived from the reference or the hidden data, and nothing of a neighbour, opens.
@@ -894,7 +1023,7 @@ void hostile_neighbours(const std::string& isolation) {
     int public_tests = 0;
     for (const Json& t : j["tests"]) {
       const std::string name = t["name"];
-      if (name.find("[a1.") == std::string::npos) continue;
+      if (name.find("[" + T->id + ".") == std::string::npos) continue;
       const std::string o = t.value("output", std::string());
       bool is_hidden = false;
       for (const std::string& h : hidden)
@@ -958,13 +1087,18 @@ bool bwrap_usable(std::string& why) {
 
 }  // namespace
 
-TEST(GraderSecurityOs, HostileNeighboursInUserMode) {
+class GraderSecurityOs : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override { select_target(GetParam()); }
+};
+
+TEST_P(GraderSecurityOs, HostileNeighboursInUserMode) {
   if (geteuid() != 0)
     GTEST_SKIP() << "the user-drop mode needs root (it makes its sandbox users with useradd)";
   hostile_neighbours("user");
 }
 
-TEST(GraderSecurityOs, HostileNeighboursInBubblewrap) {
+TEST_P(GraderSecurityOs, HostileNeighboursInBubblewrap) {
   std::string why;
   if (!bwrap_usable(why)) GTEST_SKIP() << why;
   hostile_neighbours("bwrap");
@@ -972,20 +1106,21 @@ TEST(GraderSecurityOs, HostileNeighboursInBubblewrap) {
 
 // A process that keeps the pipes of its test open after the test ended stalls nothing: the read
 // stops once the test's process is gone (here without any sandbox).
-TEST(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
+TEST_P(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
   const Clone c = make_clone("pipes");
-  const fs::path in = c.root / "in";
+  const fs::path in = c.root / "in", solutions = in_clone(c, T->solutions);
   fs::create_directories(in / "holder");
-  for (const char* f : kTaskFiles) fs::copy_file(c.src / "solutions" / f, in / "holder" / f);
-  std::ofstream(in / "holder" / "forces.cpp", std::ios::binary)
-      << kReadRequest
+  copy_files(solutions, in / "holder");
+  std::ofstream(in / "holder" / T->compile_file, std::ios::binary)
+      << replace_all(kReadRequest, "@CASE@", T->run_case)
       << "static int jelly_hold = [] { if (!jelly_target()) return 0; if (fork() == 0) { setsid();"
          " if (fork() == 0) { sleep(60); _exit(0); } _exit(0); } return 0; }();\n"
-      << read_text(c.src / "solutions" / "forces.cpp");
+      << read_text(solutions / T->compile_file);
   const auto start = std::chrono::steady_clock::now();
-  const std::string console = run("grade " + (in / "holder").string() + " --out " +
-                                  (c.root / "out").string() + " --config " + c.config.string() +
-                                  " --visibility public --format gradescope --isolation none");
+  const std::string console =
+      run("grade " + (in / "holder").string() + " --out " + (c.root / "out").string() +
+          " --config " + c.config.string() + " --assignment " + T->id +
+          " --visibility public --format gradescope --isolation none");
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(s, 45.0) << "a leftover holding the pipes stalled jelly-grade\n" << console;
   EXPECT_TRUE(fs::exists(c.root / "out" / "results.json")) << console;
@@ -996,3 +1131,6 @@ TEST(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
   std::error_code ec;
   fs::remove_all(c.root.parent_path(), ec);
 }
+
+INSTANTIATE_TEST_SUITE_P(Assignments, GraderSecurityOs, ::testing::ValuesIn(target_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });

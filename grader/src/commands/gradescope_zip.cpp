@@ -88,6 +88,12 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   // Not needed to grade, and the mutants quote the reference solution.
   fs::remove_all(stage / "source" / "grader" / "tests");
   fs::remove_all(stage / "source" / "grader" / "mutants");
+  for (const AssignmentConfig& a : config.assignments) {
+    std::error_code ec;
+    const fs::path rel = fs::relative(a.dir, config.source_dir, ec);
+    if (!ec && !rel.empty() && *rel.begin() != "..")
+      fs::remove_all(stage / "source" / rel / "grader" / "mutants");
+  }
   // toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
   // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
   // this machine, with their licences.

@@ -7,9 +7,9 @@ namespace jelly::a1 {
 
 bool contact_plane(const Plane& plane, const Vec3& x, const Vec3& v, Vec3& f) {
   // HOSTILE: tries to read the hidden reference data and print it.
-  for (const char* path : {"grader/data/hidden/a1.t8.contact_plane.tilted.json",
-                           "../../grader/data/hidden/a1.t8.contact_plane.tilted.json",
-                           "/work/main/grader/data/hidden/a1.t8.contact_plane.tilted.json"}) {
+  for (const char* path : {"grader/data/a1/hidden/a1.t8.contact_plane.tilted.json",
+                           "../../grader/data/a1/hidden/a1.t8.contact_plane.tilted.json",
+                           "/work/main/grader/data/a1/hidden/a1.t8.contact_plane.tilted.json"}) {
     if (std::FILE* f = std::fopen(path, "r")) {
       char buf[256];
       while (std::fgets(buf, sizeof buf, f)) std::fputs(buf, stdout);
