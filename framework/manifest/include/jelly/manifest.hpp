@@ -68,7 +68,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
 AssignmentManifest read_manifest(const std::filesystem::path& file);
 
 /// Every assignment under `assignments_root` (each subfolder with an assignment.toml), sorted by
-/// id. Throws ManifestError on the first bad manifest, or when two share a namespace (ids are folder names, so unique).
+/// id. Throws ManifestError on the first bad manifest, or when two share a namespace (ids are
+/// folder names, so unique).
 std::vector<AssignmentManifest> find_assignments(const std::filesystem::path& assignments_root);
 
 /// The one assignment whose `files` are exactly `present` (file names, any order); nullptr if none
