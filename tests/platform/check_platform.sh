@@ -9,8 +9,9 @@
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
 #                     under wine; also runs the unit tests that exist on Windows (stubs, session,
 #                     render on the null backend, the process launcher) under wine,
-#                     and the self-check (jelly-grade.exe --runner, the `selfcheck` target): 0 points
-#                     for the stubs, full public marks for solutions/, and the same report lines as
+#                     and the self-check of every assignment (jelly-grade.exe --runner, the
+#                     `selfcheck` target): 0 points for assignments/ID/'s stubs, full public marks
+#                     for solutions/ID/, and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
 #             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
 #             aarch64 ARM64 Linux: g++-aarch64-linux-gnu cross-build (cmake/toolchains/aarch64-linux-gnu.cmake),
@@ -37,6 +38,18 @@ work="$(cd "$work" && pwd)"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 timer() { local t0=$1; echo $(( $(date +%s) - t0 ))s; }
+# The assignments (assignments/ID/assignment.toml) and their runners: per assignment the student
+# runner, the stub runner (tests/platform/CMakeLists.txt) and, where solutions/ID/ is, the reference's.
+ids=()
+for m in "$src"/assignments/*/assignment.toml; do [ -f "$m" ] && ids+=("$(basename "$(dirname "$m")")"); done
+[ "${#ids[@]}" -gt 0 ] || die "no assignment in $src/assignments (a folder with an assignment.toml)"
+runner_targets() {
+  local id
+  for id in "${ids[@]}"; do
+    printf '%s\n' "jelly-grade-$id-student-runner" "jelly_tests_${id}_stub_runner"
+    [ -d "$src/solutions/$id" ] && printf '%s\n' "jelly-grade-$id-reference-runner"
+  done
+}
 
 # ---- the compiler and how to run what it builds ---------------------------------------------
 run=()
@@ -60,8 +73,7 @@ case "$platform" in
     exe=.exe
     toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/mingw-w64-x86_64.cmake")
     targets=(jelly jelly_tests_stubs jelly_tests_session jelly_tests_process_win jelly-grade
-             jelly-grade-student-runner jelly_tests_stub_runner)
-    [ -f "$src/solutions/forces.cpp" ] && targets+=(jelly-grade-reference-runner)
+             $(runner_targets))
     viewer=OFF
     if command -v xvfb-run >/dev/null; then viewer=ON; targets+=(jelly-lab jelly_tests_render)
     else say "no xvfb-run (Debian package xvfb): jelly-lab.exe is not built nor opened"; fi
@@ -89,12 +101,9 @@ int main() { return std::vector<int>{1}.size() == 1 ? 0 : 1; }' >"$work/probe.cp
     run=("$qemu" -L "$sysroot")
     exe=""
     toolchain=(-DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchains/aarch64-linux-gnu.cmake" -DJELLY_GRADER_SECCOMP=OFF)
-    targets=(jelly jelly_tests_stubs jelly_tests_session jelly-grade jelly-grade-student-runner
-             jelly_tests_stub_runner)
-    if [ -f "$src/solutions/forces.cpp" ]; then
-      targets+=(jelly-grade-reference-runner)
-      [ "$tasks" = solutions ] && [ -n "$host_hash" ] && targets+=(jelly_hash_clones)
-    fi
+    targets=(jelly jelly_tests_stubs jelly_tests_session jelly-grade $(runner_targets))
+    [ "$tasks" = solutions ] && [ -n "$host_hash" ] && [ -d "$src/solutions/${ids[0]}" ] &&
+      targets+=(jelly_hash_clones)
     viewer=OFF  # GLFW would need the X11 libraries for arm64 (multiarch): the viewer is not cross-built
     ;;
   *) die "unknown platform '$platform' (mingw, libcxx or aarch64)" ;;
@@ -217,8 +226,8 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   fi
 fi
 # ---- the self-check under wine or qemu ------------------------------------------------------------
-# The grader's case book, points and messages on runners CMake built for the target: the stubs must
-# score 0, solutions/ full public marks, and each report must read as the Linux grader's on the
+# The grader's case book, points and messages on runners CMake built for the target, per assignment:
+# the stubs must score 0, solutions/ID/ full public marks, and each report must read as the Linux grader's on the
 # same code (sandbox line and timings aside). On Windows the `selfcheck` target itself is run too
 # (wine is the toolchain's CMAKE_CROSSCOMPILING_EMULATOR): its exit status is pass/fail. On
 # aarch64, jelly-grade runs under qemu and starts each runner through a two-line script that runs
@@ -226,22 +235,17 @@ fi
 if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   t0=$(date +%s)
   grade_exe="$(find "$build" -name "jelly-grade$exe" -type f | head -1)"
-  stub_runner="$(find "$build" -name "jelly_tests_stub_runner$exe" -type f | head -1)"
-  ref_runner="$(find "$build" -name "jelly-grade-reference-runner$exe" -type f | head -1)"
-  if [ "$platform" = aarch64 ]; then
-    through_qemu() {  # RUNNER NAME: prints the path of a script that runs RUNNER under qemu
-      [ -n "$1" ] || return 0
-      printf '#!/bin/sh\nexec %q -L %q %q "$@"\n' "$qemu" "$sysroot" "$1" >"$out/$2.sh"
-      chmod +x "$out/$2.sh"
-      echo "$out/$2.sh"
-    }
-    stub_runner="$(through_qemu "$stub_runner" stub-runner)"
-    ref_runner="$(through_qemu "$ref_runner" reference-runner)"
-  fi
-  selfcheck_case() {  # NAME DIR RUNNER zero|full
-    local name=$1 dir=$2 runner=$3 expect=$4 rc total
+  through_qemu() {  # RUNNER NAME: prints the path of a script that runs RUNNER under qemu (aarch64)
+    [ -n "$1" ] || return 0
+    [ "$platform" = aarch64 ] || { echo "$1"; return 0; }
+    printf '#!/bin/sh\nexec %q -L %q %q "$@"\n' "$qemu" "$sysroot" "$1" >"$out/$2.sh"
+    chmod +x "$out/$2.sh"
+    echo "$out/$2.sh"
+  }
+  selfcheck_case() {  # NAME ID DIR RUNNER zero|full
+    local name=$1 id=$2 dir=$3 runner=$4 expect=$5 rc total
     [ -n "$runner" ] || { say "FAILED: no runner for the self-check on $name"; failed=1; return; }
-    (cd "$src" && "${run[@]}" "$grade_exe" grade "$dir" --runner "$runner" --visibility public --format terminal        --out "$out/selfcheck-$name" --strict) >"$out/selfcheck-$name.txt" 2>&1
+    (cd "$src" && "${run[@]}" "$grade_exe" grade "$dir" --assignment "$id" --runner "$runner" --visibility public --format terminal        --out "$out/selfcheck-$name" --strict) >"$out/selfcheck-$name.txt" 2>&1
     rc=$?
     total="$(sed -n 's#^Total: \([0-9.]*\) / \([0-9.]*\).*#\1 / \2#p' "$out/selfcheck-$name.txt")"
     if ! grep -q '^  sandbox: none — your own code on your own machine: no sandbox' "$out/selfcheck-$name.txt"; then
@@ -253,7 +257,7 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
     esac || { cat "$out/selfcheck-$name.txt"; say "FAILED: self-check on $name: $total (exit $rc), expected $expect"; failed=1; return; }
     say "self-check $where on $name: $total (exit $rc), as expected ($expect)"
     if [ -n "$host_grade" ]; then
-      "$host_grade" grade "$dir" --visibility public --format terminal --out "$out/grader-$name" \
+      "$host_grade" grade "$dir" --assignment "$id" --visibility public --format terminal --out "$out/grader-$name" \
         >"$out/grader-$name.txt" 2>&1
       if bash "$src/tests/grader/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
         say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check $where on $name"
@@ -264,8 +268,14 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   }
   if [ -z "$grade_exe" ]; then say "FAILED: no jelly-grade$exe"; failed=1
   else
-    selfcheck_case stubs "$src/assignments" "$stub_runner" zero
-    [ -f "$src/solutions/forces.cpp" ] && selfcheck_case solutions "$src/solutions" "$ref_runner" full
+    for id in "${ids[@]}"; do
+      stub_runner="$(through_qemu "$(find "$build" -name "jelly_tests_${id}_stub_runner$exe" -type f | head -1)" "$id-stub-runner")"
+      selfcheck_case "$id-stubs" "$id" "$src/assignments/$id" "$stub_runner" zero
+      if [ -d "$src/solutions/$id" ]; then
+        ref_runner="$(through_qemu "$(find "$build" -name "jelly-grade-$id-reference-runner$exe" -type f | head -1)" "$id-reference-runner")"
+        selfcheck_case "$id-solutions" "$id" "$src/solutions/$id" "$ref_runner" full
+      fi
+    done
   fi
   if [ -n "$grade_exe" ] && [ "$platform" = mingw ]; then
     # The target students use (cmake --build --preset ... --target selfcheck), on JELLY_TASKS.

@@ -10,15 +10,30 @@ failures=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi; }
 
 rm -rf "$work"; mkdir -p "$work"
-"$tool" "$work/out" --no-verify >"$work/make.log" 2>&1
+# The first assignment of the tree (its folder has the manifest; its reference is solutions/ID/).
+id="$(basename "$(dirname "$(ls "$src"/assignments/*/assignment.toml | head -1)")")"
+asg="assignments/$id"
+files="$(awk '/^[ \t]*\[/ { exit } /^files[ \t]*=/ { v = $0; while (match(v, /"[^"]*"/)) { print substr(v, RSTART + 1, RLENGTH - 2); v = substr(v, RSTART + RLENGTH) } }' "$src/$asg/assignment.toml")"
+check "the manifest $asg/assignment.toml lists the student's files" '[ -n "$files" ]'
+
+"$tool" "$work/out" --assignments no-such-assignment --no-verify >"$work/bad.log" 2>&1
+check "an unknown --assignments id is a usage error naming it" '[ $? -eq 2 ] && grep -q "no assignment .no-such-assignment." "$work/bad.log"'
+
+"$tool" "$work/out" --assignments "$id" --no-verify >"$work/make.log" 2>&1
 check "the release is made and its scan is clean" '[ $? -eq 0 ] || { cat "$work/make.log"; false; }'
 rel="$work/out/jelly-lab-student"
 check "no solutions/ in the release" '[ ! -e "$rel/solutions" ]'
-check "the stubs are in the release" '[ -f "$rel/assignments/forces.cpp" ]'
-if [ -d "$src/grader/cases" ]; then
-  check "no hidden case entry left in grader/cases" '! grep -rqs "visibility *= *\"hidden\"" "$rel/grader/cases"'
-  pub_src=$(cat "$src"/grader/cases/*.toml 2>/dev/null | grep -c 'visibility *= *"public"')
-  pub_rel=$(cat "$rel"/grader/cases/*.toml 2>/dev/null | grep -c 'visibility *= *"public"')
+check "no hidden data in the release" '[ ! -e "$rel/grader/data/$id" ]'
+check "no mutants in the release" '[ ! -e "$rel/$asg/grader/mutants" ]'
+for f in $files; do
+  check "the stub $asg/$f is in the release" '[ -f "$rel/$asg/$f" ]'
+done
+check "the front page is the handout's overview, its links made relative to the top" \
+  'grep -q "](assignments/$id/handout/" "$rel/README.md" && [ -f "$rel/docs/project-readme.md" ]'
+if [ -d "$src/$asg/grader/cases" ]; then
+  check "no hidden case entry left in $asg/grader/cases" '! grep -rqs "visibility *= *\"hidden\"" "$rel/$asg/grader/cases"'
+  pub_src=$(cat "$src/$asg"/grader/cases/*.toml 2>/dev/null | grep -c 'visibility *= *"public"')
+  pub_rel=$(cat "$rel/$asg"/grader/cases/*.toml 2>/dev/null | grep -c 'visibility *= *"public"')
   check "every public case kept ($pub_src)" '[ "$pub_src" = "$pub_rel" ]'
 fi
 
@@ -35,23 +50,32 @@ plant() {  # plant NAME COMMAND-THAT-MODIFIES-$copy EXPECTED-TEXT
   check "scan fails on $what" '[ $rc -ne 0 ] && grep -qF -- "$want" "$work/scan.log" || { cat "$work/scan.log"; false; }'
 }
 
-# 1. One line of the reference (the longest code line of solutions/forces.cpp not in the stub).
-line="$(grep -vxFf "$src/assignments/forces.cpp" "$src/solutions/forces.cpp" | grep -v '^ *//' |
-        awk '{ if (length($0) > length(best)) best = $0 } END { print best }')"
+# 1. One line of the reference (the longest code line of a solutions/ID/ file not in its stub: the
+# first of the manifest's files that has one).
+line="" ; stub=""
+for f in $files; do
+  line="$(grep -vxFf "$src/$asg/$f" "$src/solutions/$id/$f" | grep -v '^ *//' |
+          awk '{ if (length($0) > length(best)) best = $0 } END { print best }')"
+  [ -n "$line" ] && { stub="$f"; break; }
+done
 check "found a reference line to plant" '[ -n "$line" ]'
 plant "one solution line pasted into a stub" \
-  'printf "%s\n" "$line" >>"$copy/assignments/forces.cpp"' "assignments/forces.cpp"
+  'printf "%s\n" "$line" >>"$copy/$asg/$stub"' "$asg/$stub"
 # 2. A whole solution file under another name, with different indentation.
+last="$(printf '%s\n' $files | tail -1)"
 plant "a re-indented solution file under another name" \
-  'sed "s/^  /\t/" "$src/solutions/integrators.cpp" >"$copy/docs/notes.txt"' "docs/notes.txt"
+  'sed "s/^  /\t/" "$src/solutions/$id/$last" >"$copy/docs/notes.txt"' "docs/notes.txt"
 # 3. A solutions/ folder.
-plant "a solutions/ folder" 'mkdir -p "$copy/solutions" && cp "$src/assignments/forces.cpp" "$copy/solutions/"' "solutions"
-# 4. A hidden case id and a hidden data file (when the grader has them).
-hidden_id="$(cat "$src"/grader/cases/*.toml 2>/dev/null | awk '/^\[\[case\]\]/ { id = "" } /^id *=/ { id = $0 } /visibility *= *"hidden"/ && id != "" { print id; exit }' | sed 's/^[^"]*"//; s/".*//')"
+plant "a solutions/ folder" 'mkdir -p "$copy/solutions/$id" && cp "$src/$asg/$stub" "$copy/solutions/$id/"' "solutions"
+# 4. A hidden case id and a hidden data file (when the grader has them), and the mutants.
+hidden_id="$(cat "$src/$asg"/grader/cases/*.toml 2>/dev/null | awk '/^\[\[case\]\]/ { id = "" } /^id *=/ { id = $0 } /visibility *= *"hidden"/ && id != "" { print id; exit }' | sed 's/^[^"]*"//; s/".*//')"
 if [ -n "$hidden_id" ]; then
-  plant "a hidden case id" 'printf "# %s\n" "$hidden_id" >>"$copy/docs/handout/README.md"' "$hidden_id"
+  plant "a hidden case id" 'printf "# %s\n" "$hidden_id" >>"$copy/$asg/handout/README.md"' "$hidden_id"
 fi
-hidden_file="$(find "$src/grader/data/hidden" -type f 2>/dev/null | head -1)"
+if [ -d "$src/$asg/grader/mutants" ]; then
+  plant "the mutants folder" 'mkdir -p "$copy/$asg/grader/mutants"' "$asg/grader/mutants/ is in the release"
+fi
+hidden_file="$(find "$src/grader/data/$id/hidden" -type f 2>/dev/null | head -1)"
 if [ -n "$hidden_file" ]; then
   plant "a hidden data file" 'cp "$hidden_file" "$copy/docs/data.json"' "docs/data.json"
 fi
@@ -62,7 +86,7 @@ lines=$(wc -l <"$rel/docs/viewer.md")
 plant "an instructor-only build command in a doc" \
   'printf "Build the reference: cmake -S . -B build -DJELLY_TASKS=solutions\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
 plant "the threat model's undefended list in a doc" \
-  'printf "**Not defended**: timing side channels\n" >>"$copy/docs/handout/README.md"' "docs/handout/README.md:"
+  'printf "**Not defended**: timing side channels\n" >>"$copy/$asg/handout/README.md"' "$asg/handout/README.md:"
 plant "the release tool named in the front page" \
   'printf "Made with tools/make-student-release.\n" >>"$copy/README.md"' "README.md:"
 check "the release's grader.md has the student's sandbox section, not the threat model" \

@@ -10,13 +10,15 @@ namespace jelly::grade {
 
 std::string sandbox_setup_lines(const std::string& source) {
   // One sandbox user per core: each concurrent compile or test runs as a user of its own, so that
-  // killing what one run left behind never touches another (isolation.hpp).
+  // killing what one run left behind never touches another (isolation.hpp). The secrets: the
+  // hidden data (grader/data/<id>/hidden) and the case files, which list the hidden cases, of
+  // every assignment the tree holds (a shell pattern: the zip holds one).
   const std::string user = std::string(kSandboxUser) + "-$i";
+  const std::string secrets = source + "/grader/data " + source + "/assignments/*/grader/cases";
   return std::string("for i in $(seq 0 $(( $(nproc) - 1 ))); do id -u ") + user +
          " >/dev/null 2>&1 || useradd --system --no-create-home --user-group --shell " +
-         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + source + "/grader/data " +
-         source + "/grader/cases\n" + "chmod 0700 " + source + "/grader/data " + source +
-         "/grader/cases\n" + "if [ -d " + source +
+         "/usr/sbin/nologin " + user + "; done\n" + "chown root:root " + secrets + "\n" +
+         "chmod 0700 " + secrets + "\n" + "if [ -d " + source +
          "/build/grader/object-cache ]; then chmod 0700 " + source +
          "/build/grader/object-cache; fi\n";
 }
@@ -47,10 +49,12 @@ bool bundle_headers(const fs::path& stage, const std::string& name, const fs::pa
   return true;
 }
 
-/// `text` with its placeholder line "@SANDBOX_SETUP_LINES@" replaced by `lines`. A template without
-/// that line is a grader bug (grader/templates/ edited by hand): said so, and nothing is written.
+/// `text` with its placeholder line "@SANDBOX_SETUP_LINES@" replaced by `lines` and every
+/// "@ASSIGNMENT@" by the assignment's id (the scripts grade that one assignment). A template
+/// without either is a grader bug (grader/templates/ edited by hand): said so, and nothing is
+/// written.
 std::string with_sandbox_setup(std::string_view text, const std::string& lines,
-                               const char* template_name) {
+                               const std::string& assignment, const char* template_name) {
   const std::string placeholder = "@SANDBOX_SETUP_LINES@\n";
   std::string out(text);
   const auto at = out.find(placeholder);
@@ -58,6 +62,13 @@ std::string with_sandbox_setup(std::string_view text, const std::string& lines,
     throw std::logic_error(std::string("grader/templates/") + template_name + " has no line " +
                            placeholder.substr(0, placeholder.size() - 1));
   out.replace(at, placeholder.size(), lines);
+  const std::string id_placeholder = "@ASSIGNMENT@";
+  if (out.find(id_placeholder) == std::string::npos)
+    throw std::logic_error(std::string("grader/templates/") + template_name + " never names " +
+                           id_placeholder + " (the assignment it grades)");
+  for (auto pos = out.find(id_placeholder); pos != std::string::npos;
+       pos = out.find(id_placeholder, pos + assignment.size()))
+    out.replace(pos, id_placeholder.size(), assignment);
   return out;
 }
 
@@ -76,24 +87,30 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
     }
   } remove_stage{stage};
   fs::create_directories(stage / "source");
-  // The framework as a student release has it, plus the grader's hidden data; never solutions/.
+  // The framework as a student release has it, with ONE assignment (the selected one: its folder
+  // with its manifest, cases, runner and public data) plus its hidden data; never solutions/.
   // Everything, setup.sh and run_autograder included, sits at the zip's top level: Gradescope
   // extracts the zip into /autograder/source, where both scripts expect the framework's
   // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
-  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "assignments", "grader"}) {
+  const AssignmentConfig& assignment = config.assignment();
+  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "grader"}) {
     const fs::path from = config.source_dir / item;
     if (!fs::exists(from)) continue;
     fs::copy(from, stage / "source" / item, fs::copy_options::recursive);
   }
-  // Not needed to grade, and the mutants quote the reference solution.
+  const fs::path assignments = stage / "source" / "assignments";
+  fs::create_directories(assignments);
+  fs::copy(assignment.dir, assignments / assignment.id, fs::copy_options::recursive);
+  // Not needed to grade: the grader's own tests, the other assignments' hidden data; and never
+  // anything derived from a reference: solutions/, every assignment's mutants (they quote it).
   fs::remove_all(stage / "source" / "grader" / "tests");
-  fs::remove_all(stage / "source" / "grader" / "mutants");
-  for (const AssignmentConfig& a : config.assignments) {
-    std::error_code ec;
-    const fs::path rel = fs::relative(a.dir, config.source_dir, ec);
-    if (!ec && !rel.empty() && *rel.begin() != "..")
-      fs::remove_all(stage / "source" / rel / "grader" / "mutants");
-  }
+  const fs::path data = stage / "source" / "grader" / "data";
+  if (fs::is_directory(data))
+    for (const fs::directory_entry& e : fs::directory_iterator(data))
+      if (e.path().filename() != assignment.id) fs::remove_all(e.path());
+  fs::remove_all(stage / "source" / "solutions");
+  for (const fs::directory_entry& e : fs::directory_iterator(assignments))
+    fs::remove_all(e.path() / "grader" / "mutants");
   // toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
   // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
   // this machine, with their licences.
@@ -113,9 +130,10 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   // installs g++-11 where the archive has it, else it stops naming what to choose. The compiler it
   // settles on is exported as CXX for CMake.
   const std::string sandbox = sandbox_setup_lines("/autograder/source");
-  const std::string setup = with_sandbox_setup(gradescope_setup_template(), sandbox, "setup.sh.in");
-  const std::string run =
-      with_sandbox_setup(gradescope_run_autograder_template(), sandbox, "run_autograder.in");
+  const std::string setup =
+      with_sandbox_setup(gradescope_setup_template(), sandbox, assignment.id, "setup.sh.in");
+  const std::string run = with_sandbox_setup(gradescope_run_autograder_template(), sandbox,
+                                             assignment.id, "run_autograder.in");
   std::ofstream(stage / "source" / "setup.sh", std::ios::binary) << setup;
   std::ofstream(stage / "source" / "run_autograder", std::ios::binary) << run;
   fs::permissions(stage / "source" / "setup.sh",
@@ -131,7 +149,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
     std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
     return 2;
   }
-  std::cout << "jelly-grade: wrote " << zip.string()
+  std::cout << "jelly-grade: wrote " << zip.string() << " for assignment " << assignment.id
             << " (setup.sh, run_autograder and the framework without solutions/, all at the top: "
                "Gradescope extracts it into /autograder/source)\n";
   return 0;
