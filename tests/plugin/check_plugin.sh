@@ -132,22 +132,6 @@ read -r a1_score a1_max < <(score_of "$work/a1/results.json")
 [[ $a1_score == 80 && $a1_max == 80 ]] ||
   fail "A1's reference scores $a1_score / $a1_max beside $id, expected 80 / 80 ($work/a1.log)"
 
-if "$tree/tools/make-student-release" --help 2>&1 | grep -q -- --assignments; then
-  step "make-student-release --assignments $id"
-  release=$work/release
-  "$tree/tools/make-student-release" "$release" --assignments "$id" --no-verify \
-    >"$work/release.log" 2>&1 || {
-    tail -30 "$work/release.log"
-    fail "make-student-release --assignments $id"
-  }
-  [[ -f $release/assignments/$id/assignment.toml ]] || fail "the release has no assignments/$id"
-  [[ ! -e $release/solutions ]] || fail "the release holds solutions/"
-  [[ ! -e $release/assignments/a1 ]] || fail "the release holds A1 (assignments/a1)"
-  [[ ! -e $release/grader/data/$id/hidden ]] || fail "the release holds $id's hidden data"
-else
-  step "SKIPPED the release step: tools/make-student-release has no --assignments yet"
-fi
-
 step "no tracked file changed"
 changed=$(git -C "$tree" status --porcelain --untracked-files=all |
   grep -v -E "^\?\? (assignments/$id/|solutions/$id/|grader/data/$id/hidden/)" || true)
@@ -156,6 +140,27 @@ if [[ -n $changed ]]; then
   fail "the plug-in needed changes outside its own folders (above)"
 fi
 git -C "$tree" diff --quiet HEAD || fail "git diff of the tree is not empty"
+
+if "$tree/tools/make-student-release" --help 2>&1 | grep -q -- --assignments; then
+  step "make-student-release --assignments $id"
+  release=$work/release
+  # The instructor commits the new folders (the release ships what git tracks).
+  git -C "$tree" add "assignments/$id" "solutions/$id" "grader/data/$id"
+  git -C "$tree" -c user.name=plugin -c user.email=plugin@invalid commit -q -m "add $id"
+  "$tree/tools/make-student-release" "$release" --assignments "$id" --no-verify \
+    >"$work/release.log" 2>&1 || {
+    tail -30 "$work/release.log"
+    fail "make-student-release --assignments $id"
+  }
+  release=$release/jelly-lab-student
+  [[ -f $release/assignments/$id/assignment.toml ]] || fail "the release has no assignments/$id"
+  [[ ! -e $release/solutions ]] || fail "the release holds solutions/"
+  [[ ! -e $release/assignments/a1 ]] || fail "the release holds A1 (assignments/a1)"
+  [[ ! -e $release/grader/data/$id/hidden ]] || fail "the release holds $id's hidden data"
+  [[ ! -e $release/grader/data/a1 ]] || fail "the release holds A1's grader data"
+else
+  step "SKIPPED the release step: tools/make-student-release has no --assignments yet"
+fi
 
 step "PASSED: $id built, graded ($ref_score/$ref_max reference, $stub_score stubs), mutants caught, self-checked; A1 $a1_score/$a1_max"
 echo "plugin: wall time $((SECONDS - start)) s"
