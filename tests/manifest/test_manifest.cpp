@@ -118,10 +118,9 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
       // A typo in a task's key (line 13: "functoins").
       {replaced("functions = [\"launch\"]", "functoins = [\"launch\"]"),
        f + "13: task[1].functoins: expected no such key (see docs/new-assignment.md)"},
-      // A typo in a required key: the key it expected is named (the table has no line of it).
+      // A typo in a required key: reported as the unknown key at its line, not as a missing one.
       {replaced("points = 4", "pionts = 4"),
-       "assignments/p1/assignment.toml: task[1].points: expected a number of points ≥ 0 (the key "
-       "is missing)"},
+       f + "14: task[1].pionts: expected no such key (see docs/new-assignment.md)"},
       // An unknown top-level key.
       {replaced("title = \"A projectile\"", "title = \"A projectile\"\nhandin = \"x\""),
        f + "4: handin: expected no such key"},
@@ -132,8 +131,11 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
       {replaced("[grading]\nautograded_total = 10.0\n", ""),
        "assignments/p1/assignment.toml: grading: expected a [grading] table with autograded_total "
        "(the key is missing)"},
-      // [grading] without its total.
+      // [grading] with its total misspelled: the unknown key, at its line.
       {replaced("autograded_total = 10.0", "total = 10.0"),
+       f + "7: grading.total: expected no such key (see docs/new-assignment.md)"},
+      // [grading] without its total.
+      {replaced("autograded_total = 10.0\n", ""),
        "assignments/p1/assignment.toml: grading.autograded_total: expected a number of points ≥ 0 "
        "(the key is missing)"},
       {replaced("autograded_total = 10.0",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <sstream>
@@ -105,6 +106,17 @@ class Reader {
     return t_.get(k);
   }
 
+  // Checked first: a key not in `known` is a typo, reported at its line before a required key it
+  // may have been meant as is reported missing.
+  void only_keys(std::initializer_list<const char*> known) const {
+    for (const auto& [k, v] : t_) {
+      bool ok = false;
+      for (const char* name : known) ok = ok || k.str() == name;
+      if (!ok)
+        fail(source_, &v, key(std::string(k.str())), "no such key (see docs/new-assignment.md)");
+    }
+  }
+
   // Every key the reader did not ask for is a mistake (a typo would otherwise be ignored).
   void no_unknown_keys() const {
     for (const auto& [k, v] : t_)
@@ -167,6 +179,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   }
   AssignmentManifest m;
   Reader r(root, source, "");
+  r.only_keys({"id", "namespace", "title", "files", "reference_files", "bodies", "default_scene",
+               "handout", "studies", "grading", "task"});
   m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"a1\"");
   if (!is_name(m.id, true))
     fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
@@ -189,6 +203,7 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     const auto* t = n->as_table();
     if (!t) fail(source, n, "studies", "a table");
     Reader s(*t, source, "studies.");
+    s.only_keys({"measures"});
     m.study_measures = s.strings("measures", false, "a list of measure names");
     s.no_unknown_keys();
   }
@@ -196,6 +211,7 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     const auto* t = n->as_table();
     if (!t) fail(source, n, "grading", "a table");
     Reader g(*t, source, "grading.");
+    g.only_keys({"autograded_total", "hidden_visibility"});
     m.autograded_total = g.number("autograded_total", true, 0.0, "a number of points ≥ 0");
     const std::string vis = g.string("hidden_visibility", false,
                                      "\"hidden\", \"after_due_date\" or \"after_published\"");
@@ -221,6 +237,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     const std::string prefix = "task[" + std::to_string(i + 1) + "].";
     if (!t) fail(source, &e, "task[" + std::to_string(i + 1) + "]", "a table");
     Reader tr(*t, source, prefix);
+    tr.only_keys(
+        {"id", "title", "short", "category", "file", "functions", "points", "handout", "probe"});
     ManifestTask task;
     task.id = tr.string("id", true, "a task id such as \"A1.T4\"");
     if (!ids.insert(task.id).second)
