@@ -87,13 +87,14 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
     }
   } remove_stage{stage};
   fs::create_directories(stage / "source");
-  // The framework as a student release has it, with ONE assignment (the selected one: its folder
-  // with its manifest, cases, runner and public data) plus its hidden data; never solutions/.
-  // Everything, setup.sh and run_autograder included, sits at the zip's top level: Gradescope
-  // extracts the zip into /autograder/source, where both scripts expect the framework's
+  // The framework as a student release has it (scenes included), with ONE assignment (the selected
+  // one: its folder with its manifest, cases, runner and public data) plus its hidden data; never
+  // solutions/. Everything, setup.sh and run_autograder included, sits at the zip's top level:
+  // Gradescope extracts the zip into /autograder/source, where both scripts expect the framework's
   // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
   const AssignmentConfig& assignment = config.assignment();
-  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "grader"}) {
+  // scenes/: the assignment's default scene is compiled into the programs (the report's frames).
+  for (const char* item : {"CMakeLists.txt", "cmake", "framework", "grader", "scenes"}) {
     const fs::path from = config.source_dir / item;
     if (!fs::exists(from)) continue;
     fs::copy(from, stage / "source" / item, fs::copy_options::recursive);
