@@ -301,7 +301,8 @@ class SubmissionBuild {
     fs::create_directories(config.cache_dir());
   }
 
-  // 1. Take exactly the five task files, and the stubs (assignments/) that stand in for a file
+  // 1. Take exactly the manifest's task files, and the stubs (assignments/<id>/) that stand in for
+  // a file
   //    that cannot be used.
   void take_files(BuildResult& r) {
     for (const std::string& name : files_) {

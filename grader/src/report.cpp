@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <sstream>
 
 #include "files.hpp"
@@ -162,6 +164,21 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
   return o.str();
 }
 
+namespace {
+
+// "five" for A1's five files: the number of distinct files the rubric's tasks are in, in words up
+// to twelve.
+std::string task_file_count(const CaseBook& book) {
+  std::set<std::string> files;
+  for (const TaskSpec& t : book.rubric.tasks)
+    if (!t.file.empty()) files.insert(t.file);
+  static const char* const words[] = {"no",    "one",   "two",  "three", "four",   "five",  "six",
+                                      "seven", "eight", "nine", "ten",   "eleven", "twelve"};
+  return files.size() < std::size(words) ? words[files.size()] : std::to_string(files.size());
+}
+
+}  // namespace
+
 Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   Json j;
   j["score"] = r.score;
@@ -175,7 +192,7 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
                      {"isolation_description", r.isolation_description}};
   Json tests = Json::array();
   Json compile;
-  compile["name"] = "Compilation of your five task files";
+  compile["name"] = "Compilation of your " + task_file_count(book) + " task files";
   compile["status"] = r.compiled ? "passed" : "failed";
   compile["output"] = compile_summary(r);
   compile["visibility"] = "visible";
