@@ -22,6 +22,7 @@ std::string_view body_name(BodyKind kind) {
   switch (kind) {
     case BodyKind::Cube: return "cube";
     case BodyKind::Particles: return "particles";
+    case BodyKind::Cloth: return "cloth";
   }
   return "unknown";
 }

@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "jelly/cloth.hpp"
 #include "jelly/cube.hpp"
 #include "jelly/integrator.hpp"
+#include "jelly/spheres.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/terrain.hpp"
 
@@ -32,7 +34,7 @@ struct ParticleBodySpec {
   SpringType spring_type = SpringType::Structural;  ///< whose coefficients they use
 };
 
-enum class BodyKind { Cube, Particles };
+enum class BodyKind { Cube, Particles, Cloth };
 
 /// Everything a scene file says, validated.
 struct SceneSpec {
@@ -50,13 +52,17 @@ struct SceneSpec {
   BodyKind body_kind = BodyKind::Cube;
   CubeSpec cube;               ///< when body_kind == Cube
   ParticleBodySpec particles;  ///< when body_kind == Particles
+  ClothSpec cloth;             ///< when body_kind == Cloth (assignment A2)
 
   SpringSettings structural;  ///< springs.structural
   SpringSettings shear;       ///< springs.shear (face and body diagonals)
   SpringSettings shear_body;  ///< springs.shear_body: when enabled, body diagonals use these
   SpringSettings bending;     ///< springs.bending
 
-  std::vector<Terrain> terrains;  ///< in scene order
+  std::vector<Terrain> terrains;  ///< in scene order (none in a cloth scene)
+
+  std::vector<SphereSpec> spheres;    ///< cloth scenes: in scene order (it is part of the result)
+  ClothCollisionSettings collisions;  ///< cloth scenes: e_cloth, e_sphere, ε, μ, β
 };
 
 /// A scene input error: the file, the key (dotted path) and line where known, and what was

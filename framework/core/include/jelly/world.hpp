@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "jelly/cloth.hpp"
 #include "jelly/cube.hpp"
 #include "jelly/jacobian.hpp"
+#include "jelly/spheres.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/task_table.hpp"
 #include "jelly/terrain.hpp"
@@ -31,6 +33,13 @@ struct EffectCounters {
   std::vector<std::int64_t> contacts;           ///< per terrain: contact forces applied
   std::vector<std::int64_t>
       broadphase_skips;  ///< per terrain: passes skipped whole by the bounding box
+  // Cloth scenes (cloth contract §4, §5); all stay 0 in a scene without the effect.
+  std::int64_t drag_applications = 0;      ///< evaluations that added air drag
+  std::int64_t sphere_pair_tests = 0;      ///< sphere–sphere pairs examined
+  std::int64_t particle_sphere_tests = 0;  ///< cloth particle–sphere pairs examined
+  std::int64_t impulses = 0;               ///< normal impulses applied (both kinds of pair)
+  std::int64_t friction_impulses = 0;      ///< calls of the friction task
+  std::int64_t push_outs = 0;              ///< particles moved by push-out
 };
 
 /// Energy of a state (contract §8) [J].
@@ -65,6 +74,43 @@ class World : public JacobianSystem {
   /// Lets the spring pass use up to `threads` threads (default 1). Results do not depend on it.
   void set_force_threads(int threads);
   int force_threads() const { return threads_; }
+
+  // ----- cloth scenes (assignment A2, cloth contract) -----
+  /// Adds the particles of a cloth: pinned ones (resolve_pins) get inverse mass 0 and stay at
+  /// rest, the others spec.velocity. Returns its index in cloths(). A world with a cloth
+  /// evaluates a = g + w·Σf per particle (decision 3), and its drag is spec.air_drag.
+  int add_cloth(const ClothSpec& spec);
+  /// Builds the springs of `type` (Structural, Shear or Bending) of cloth `cloth` with the
+  /// student's grid builder (through the task table) and adds them as a group.
+  void build_cloth_springs(int cloth, SpringType type, double ks, double kd);
+  /// Adds a sphere, after every cloth. A dynamic sphere is one more particle of the integrated
+  /// state (mass from the spec, else 1000·r³; no drag); a kinematic one is not. Returns its index.
+  int add_sphere(const SphereSpec& spec);
+  /// The coefficients of cloth–sphere and sphere–sphere pairs (defaults: decision 10).
+  void set_cloth_collisions(const ClothCollisionSettings& settings);
+  /// Before step n (cloth contract §5): every kinematic sphere takes its velocity u(t_n),
+  /// t_n = n·h, from its schedule (or from drive_sphere()). No-op without kinematic spheres.
+  void begin_step(long step, double h);
+  /// After the integrator (step 3): every kinematic sphere moves by h·u(t_n).
+  void end_step(double h);
+  /// From now on kinematic sphere `sphere` moves at `velocity`, its schedule ignored (the
+  /// viewer's arrow keys). Throws std::out_of_range when it is not a kinematic sphere.
+  void drive_sphere(int sphere, const Vec3& velocity);
+
+  const std::vector<ClothGrid>& cloths() const { return cloths_; }
+  /// Number of spheres, dynamic and kinematic, in scene order.
+  int sphere_count() const { return static_cast<int>(spheres_.size()); }
+  /// Sphere `i` now: centre, velocity, radius and inverse mass (0 when kinematic).
+  SphereBody sphere(int i) const;
+  bool sphere_is_kinematic(int i) const;
+  /// The state column of dynamic sphere `i`; −1 for a kinematic one.
+  int sphere_particle(int i) const;
+  /// Number of cloth particles (the state's first columns; dynamic spheres follow them).
+  Eigen::Index cloth_particle_count() const { return cloth_particles_; }
+  /// Work done on the system by kinematic spheres so far: the kinetic-energy change of their
+  /// impulses (decision 11) [J].
+  double kinematic_work() const { return kinematic_work_; }
+  const ClothCollisionSettings& cloth_collisions() const { return collisions_; }
 
   // ----- the System interface -----
   void acceleration(const State& s, Vec3Array& a) override;
@@ -118,6 +164,21 @@ class World : public JacobianSystem {
   // Jacobian pattern: pair index of every spring, per group (built on first use).
   mutable std::vector<std::pair<int, int>> pairs_;
   mutable std::vector<std::vector<int>> pair_of_spring_;
+  // Cloth scenes.
+  struct SphereSlot {
+    SphereSpec spec;
+    int particle = -1;             // state column of a dynamic sphere
+    Vec3 center{0.0, 0.0, 0.0};    // a kinematic sphere's centre
+    Vec3 velocity{0.0, 0.0, 0.0};  // a kinematic sphere's u(t_n)
+    bool driven = false;           // drive_sphere() replaced the schedule
+  };
+  std::vector<ClothGrid> cloths_;
+  std::vector<SphereSlot> spheres_;
+  ClothCollisionSettings collisions_;
+  Eigen::Index cloth_particles_ = 0;
+  double air_drag_ = 0.0;
+  double kinematic_work_ = 0.0;
+  bool inverse_mass_form_ = false;  // a = g + w·Σf (cloth worlds); A1 worlds divide by m
 };
 
 }  // namespace jelly
