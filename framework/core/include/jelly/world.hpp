@@ -97,6 +97,12 @@ class World : public JacobianSystem {
   /// viewer's arrow keys). Throws std::out_of_range when it is not a kinematic sphere.
   void drive_sphere(int sphere, const Vec3& velocity);
 
+  /// Pins (inverse mass 0, velocity 0 from now on) or frees (inverse mass 1/m) cloth particle
+  /// `particle`: the viewer's keys 1–4 toggle the corners. Throws std::out_of_range for a
+  /// particle that is not a cloth's.
+  void set_pinned(int particle, bool pinned);
+  bool is_pinned(int particle) const { return inv_mass_[particle] == 0.0; }
+
   const std::vector<ClothGrid>& cloths() const { return cloths_; }
   /// Number of spheres, dynamic and kinematic, in scene order.
   int sphere_count() const { return static_cast<int>(spheres_.size()); }
