@@ -196,6 +196,51 @@ TEST(ClothWorld, KinematicSphereFollowsItsScheduleAndTheViewersDrive) {
   EXPECT_THROW(sim.world().set_pinned(625, true), std::out_of_range);
 }
 
+TEST(ClothWorld, PinsToggledByTheViewerHoldOrFreeTheirParticle) {
+  ClothSpec spec;
+  spec.n = 5;
+  Simulator sim(cloth_world(spec, 25000.0, 750.0), Simulator::Options(IntegratorKind::RK4, 1e-4));
+  World& w = sim.world();
+  w.set_pinned(0, false);  // a corner let go: it falls
+  w.set_pinned(12, true);  // the middle held where it is
+  const Vec3 corner = w.state().x.col(0), middle = w.state().x.col(12);
+  ASSERT_EQ(sim.run_until(0.05), StepResult::Ok);
+  EXPECT_LT(w.state().x(1, 0), corner.y() - 1e-3);
+  EXPECT_EQ(Vec3(w.state().x.col(12)), middle);
+  EXPECT_EQ(w.inverse_masses()[0], 1.0);
+  // Pinning a moving particle stops it at once.
+  w.set_pinned(0, true);
+  EXPECT_EQ(Vec3(w.state().v.col(0)), Vec3::Zero());
+  const Vec3 held = w.state().x.col(0);
+  ASSERT_EQ(sim.run_until(0.1), StepResult::Ok);
+  EXPECT_EQ(Vec3(w.state().x.col(0)), held);
+}
+
+TEST(ClothWorld, AClothWorldHoldsClothsThenSpheresOnly) {
+  World cube_world(a2::task_table());
+  cube_world.add_particles(Vec3Array::Zero(3, 1), Vec3Array::Zero(3, 1), 1.0);
+  EXPECT_THROW(cube_world.add_cloth(ClothSpec{}), std::logic_error);
+  EXPECT_THROW(cube_world.add_sphere(SphereSpec{}), std::logic_error);
+  World w(a2::task_table());
+  w.add_cloth(ClothSpec{});
+  EXPECT_THROW(w.add_terrain(Terrain{}), std::logic_error);
+  w.add_sphere(SphereSpec{});
+  EXPECT_THROW(w.add_cloth(ClothSpec{}), std::logic_error);  // cloths come first
+  EXPECT_THROW(w.build_cloth_springs(0, SpringType::ShearBody, 1.0, 0.0), std::invalid_argument);
+  ClothCollisionSettings bad;
+  bad.push_out = 1.5;
+  EXPECT_THROW(w.set_cloth_collisions(bad), std::invalid_argument);
+  // A table without the grid builders (A1's) cannot build a cloth's springs: a clear error.
+  World empty{TaskTable{}};
+  empty.add_cloth(ClothSpec{});
+  try {
+    empty.build_cloth_springs(0, SpringType::Structural, 1.0, 0.0);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("add_grid_structural_springs"), std::string::npos);
+  }
+}
+
 TEST(Schedule, EdgeCases) {
   const std::vector<ScheduleEntry> s = {{0.5, Vec3(2.0, 0.0, 0.0)}, {1.0, Vec3(-2.0, 0.0, 0.0)}};
   const double h = 1e-4;
