@@ -244,15 +244,13 @@ void World::cloth_acceleration(const State& s, Vec3Array& a) {
         accumulate_spring_forces(g, s, force_, tasks_.spring_force, tasks_.damper_force);
     }
   }
-  double* f = force_.data();
+  // ... plus air drag −k_air·v on the cloth's particles only (spheres feel none), when named;
+  // then a = g + w·Σf for w > 0 and exactly 0 for w = 0 (decision 3). One pass over the particles.
+  const double* f = force_.data();
   const double* v = s.v.data();
-  // ... and air drag −k_air·v on the cloth's particles only (spheres feel none), when named.
-  if (air_drag_ > 0.0) {
-    ++counters_.drag_applications;
-    const double k = air_drag_;
-    for (Eigen::Index i = 0; i < 3 * cloth_particles_; ++i) f[i] -= k * v[i];
-  }
-  // a = g + w·Σf for w > 0, and exactly 0 for w = 0 (decision 3).
+  const double k = air_drag_;
+  const Eigen::Index dragged = k > 0.0 ? cloth_particles_ : 0;
+  if (dragged > 0) ++counters_.drag_applications;
   Vec3 g = Vec3::Zero();
   if (gravity_) {
     ++counters_.gravity_applications;
@@ -262,12 +260,15 @@ void World::cloth_acceleration(const State& s, Vec3Array& a) {
   double* out = a.data();
   const double* w = inv_mass_.data();
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (w[i] > 0.0) {
-      out[3 * i] = g[0] + w[i] * f[3 * i];
-      out[3 * i + 1] = g[1] + w[i] * f[3 * i + 1];
-      out[3 * i + 2] = g[2] + w[i] * f[3 * i + 2];
-    } else {
+    const double wi = w[i];
+    if (!(wi > 0.0)) {
       out[3 * i] = out[3 * i + 1] = out[3 * i + 2] = 0.0;
+      continue;
+    }
+    for (int d = 0; d < 3; ++d) {
+      double fi = f[3 * i + d];
+      if (i < dragged) fi -= k * v[3 * i + d];
+      out[3 * i + d] = g[d] + wi * fi;
     }
   }
 }
