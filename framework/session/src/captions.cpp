@@ -24,6 +24,15 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
   if (sc.body_kind == BodyKind::Cube) {
     out += "\ncube: n = " + std::to_string(sc.cube.n) + ", L = " + fmt("%.3g m", sc.cube.edge) +
            ", m = " + fmt("%.3g kg", sc.cube.mass) + "\n";
+  } else if (sc.body_kind == BodyKind::Cloth) {
+    const ClothSpec& c = sc.cloth;
+    out += "\ncloth: n = " + std::to_string(c.n) + ", L = " + fmt("%.3g m", c.size) +
+           ", m = " + fmt("%.3g kg", c.mass) + ", k_air " + fmt("%g", c.air_drag) + ", pins ";
+    std::string pins;
+    for (const std::string& set : c.pin_sets) pins += (pins.empty() ? "" : "+") + set;
+    if (!c.pins.empty())
+      pins += (pins.empty() ? "" : "+") + std::to_string(c.pins.size()) + " listed";
+    out += (pins.empty() ? std::string("none") : pins) + "\n";
   } else {
     out += "\nparticles: " + std::to_string(sc.particles.positions.cols()) +
            ", m = " + fmt("%.3g kg", sc.particles.mass) + "\n";
@@ -44,16 +53,28 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
              fmt("%g", p.friction) + "   ";
     }
   }
+  if (sc.body_kind == BodyKind::Cloth) {
+    int kinematic = 0;
+    for (const SphereSpec& sp : sc.spheres) kinematic += sp.kinematic ? 1 : 0;
+    const int dynamic = static_cast<int>(sc.spheres.size()) - kinematic;
+    out += "\nspheres: " + std::to_string(dynamic) + " dynamic, " + std::to_string(kinematic) +
+           " kinematic   e_cloth " + fmt("%g", sc.collisions.cloth_restitution) + " e_sphere " +
+           fmt("%g", sc.collisions.sphere_restitution) + " eps " +
+           fmt("%g", sc.collisions.tolerance);
+    if (sc.collisions.friction > 0.0) out += " mu " + fmt("%g", sc.collisions.friction);
+    if (sc.collisions.push_out > 0.0) out += " beta " + fmt("%g", sc.collisions.push_out);
+    out += "   ";
+  }
   if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
   return out;
 }
 
 std::string run_label(const SimulationRun& run) {
   const int evals = evaluations_per_step(run.setup().integrator);
-  std::string out = std::string(display_name(run.setup().integrator)) + "  (" +
-                    std::to_string(evals) + (evals == 1 ? " eval/step)" : " evals/step)") +
-                    "\nh = " + step_text(run.step());
-  if (run.ms_per_step() > 0.0) out += "  " + fmt("%.3f ms/step", run.ms_per_step());
+  std::string out = std::string(display_name(run.setup().integrator)) +
+                    "   h = " + step_text(run.step()) + "   " + std::to_string(evals) +
+                    (evals == 1 ? " eval/step" : " evals/step");
+  if (run.ms_per_step() > 0.0) out += "   " + fmt("%.3f ms/step", run.ms_per_step());
   if (!run.setup().overrides.empty()) out += "\n" + run.setup().overrides;
   return out;
 }
