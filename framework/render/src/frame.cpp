@@ -61,7 +61,7 @@ std::vector<Viewport> comparison_layout(int count, int w, int h) {
 namespace {
 /// Lines of text the bands hold, and the shares of the frame's text scale they use.
 constexpr int kLabelLines = 2, kCaptionLines = 4;
-constexpr float kLabelShare = 0.75f, kCaptionShare = 0.6f;
+constexpr float kLabelShare = 0.75f, kCaptionShare = 0.7f;
 /// stb_easy_font's line height [px] at scale 1.
 constexpr int kLineHeight = 12;
 int pad_of(float scale) { return static_cast<int>(8 * scale); }
@@ -113,17 +113,36 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
     const Viewport& vp = vps[i];
     if (run.ok()) renderer.draw(*drawable_of(run), run.simulator()->world(), camera, o.draw, vp);
     if (bands.label > 0) {
-      // The view's own label in its strip above it, shrunk to the strip's width.
+      // The view's own label in its strip above it: the run's label (its own parameters on the
+      // second line) and, in red after them, why it stopped; shrunk to the strip's width.
       const int top = vp.y - bands.label;
       renderer.draw_rect(vp.x, top, vp.width, bands.label, {0.06f, 0.07f, 0.10f, 1.0f});
       const float ls = bands.label_scale;
       const int lpad = pad_of(ls) / 2;
-      const std::string text = session::run_label(run);
+      const std::string label = session::run_label(run);
+      const std::size_t nl = label.find('\n');
+      const std::string first = label.substr(0, nl);
+      const std::string own = nl == std::string::npos ? "" : label.substr(nl + 1) + "   ";
+      std::string alarm;
+      if (!run.ok()) {
+        alarm = "cannot run: " + run.error();
+      } else if (const auto& r = run.simulator()->instability()) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "UNSTABLE at t = %.3f s (step %ld); stable h <= %.3g s",
+                      r->time, r->step, r->critical_step);
+        alarm = buf;
+      }
+      const int w1 = Renderer::text_size(first, ls).x();
+      const int w2 = Renderer::text_size(own + alarm, ls).x();
       const float fit_scale =
-          std::min(ls, ls * (vp.width - 2 * lpad) /
-                           std::max(1.0f, float(Renderer::text_size(text, ls).x())));
-      renderer.draw_text(text, vp.x + lpad, top + lpad, fit_scale, {1.0f, 0.95f, 0.75f, 1.0f},
-                         false);
+          std::min(ls, ls * (vp.width - 2 * lpad) / std::max(1.0f, float(std::max(w1, w2))));
+      const Eigen::Vector4f light{1.0f, 0.95f, 0.75f, 1.0f};
+      renderer.draw_text(first, vp.x + lpad, top + lpad, fit_scale, light, false);
+      const int y2 = top + lpad + static_cast<int>(std::lround(kLineHeight * fit_scale));
+      if (!own.empty()) renderer.draw_text(own, vp.x + lpad, y2, fit_scale, light, false);
+      if (!alarm.empty())
+        renderer.draw_text(alarm, vp.x + lpad + Renderer::text_size(own, fit_scale).x(), y2,
+                           fit_scale, {1.0f, 0.45f, 0.40f, 1.0f}, false);
     }
     int y = vp.y + pad;
     // Text scaled down to fit the viewport's width.
@@ -140,7 +159,9 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
     };
     if (i == 0)
       for (const std::string& hint : o.hints) put(hint, {1.0f, 0.85f, 0.3f, 1.0f});
-    if (!run.ok()) {
+    if (bands.label > 0) {
+      // Comparison mode: the label strip said it.
+    } else if (!run.ok()) {
       put("cannot run: " + run.error(), {1.0f, 0.5f, 0.4f, 1.0f});
     } else if (const auto& r = run.simulator()->instability()) {
       char buf[256];
@@ -165,8 +186,8 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
                        {0.06f, 0.07f, 0.10f, 1.0f});
     const float cs0 = bands.caption_scale;
     const int cpad = pad_of(cs0) / 2;
-    const std::string text = wrap_text(raw, width - o.left_margin - 2 * cpad, cs0);
-    // Shrink when wrapping made more lines than the strip holds, or a word is still too wide.
+    const std::string& text = raw;
+    // Shrink when a line is wider than the frame (or, from a longer caption, the strip too low).
     const Eigen::Vector2i size0 = Renderer::text_size(text, cs0);
     const float cs =
         std::min({cs0, cs0 * (bands.caption - cpad) / std::max(1.0f, float(size0.y())),
