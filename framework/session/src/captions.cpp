@@ -26,13 +26,12 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
            ", m = " + fmt("%.3g kg", sc.cube.mass) + "\n";
   } else if (sc.body_kind == BodyKind::Cloth) {
     const ClothSpec& c = sc.cloth;
-    out += "\ncloth: n = " + std::to_string(c.n) + ", L = " + fmt("%.3g m", c.size) +
-           ", m = " + fmt("%.3g kg", c.mass) + ", k_air " + fmt("%g", c.air_drag) + ", pins ";
     std::string pins;
-    for (const std::string& set : c.pin_sets) pins += (pins.empty() ? "" : "+") + set;
-    if (!c.pins.empty())
-      pins += (pins.empty() ? "" : "+") + std::to_string(c.pins.size()) + " listed";
-    out += (pins.empty() ? std::string("none") : pins) + "\n";
+    for (const std::string& p : c.pin_sets) pins += (pins.empty() ? "" : "+") + p;
+    if (!c.pins.empty()) pins += (pins.empty() ? "" : "+") + std::to_string(c.pins.size());
+    out += "\ncloth: n = " + std::to_string(c.n) + ", L = " + fmt("%.3g m", c.size) +
+           ", m = " + fmt("%.3g kg", c.mass) + ", pins " + (pins.empty() ? "none" : pins) +
+           (c.air_drag > 0.0 ? ", k_air " + fmt("%g", c.air_drag) : std::string()) + "\n";
   } else {
     out += "\nparticles: " + std::to_string(sc.particles.positions.cols()) +
            ", m = " + fmt("%.3g kg", sc.particles.mass) + "\n";
@@ -54,16 +53,13 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
     }
   }
   if (sc.body_kind == BodyKind::Cloth) {
-    int kinematic = 0;
+    const ClothCollisionSettings& k = sc.collisions;
+    std::size_t kinematic = 0;
     for (const SphereSpec& sp : sc.spheres) kinematic += sp.kinematic ? 1 : 0;
-    const int dynamic = static_cast<int>(sc.spheres.size()) - kinematic;
-    out += "\nspheres: " + std::to_string(dynamic) + " dynamic, " + std::to_string(kinematic) +
-           " kinematic   e_cloth " + fmt("%g", sc.collisions.cloth_restitution) + " e_sphere " +
-           fmt("%g", sc.collisions.sphere_restitution) + " eps " +
-           fmt("%g", sc.collisions.tolerance);
-    if (sc.collisions.friction > 0.0) out += " mu " + fmt("%g", sc.collisions.friction);
-    if (sc.collisions.push_out > 0.0) out += " beta " + fmt("%g", sc.collisions.push_out);
-    out += "   ";
+    out += "\n" + std::to_string(sc.spheres.size()) + " spheres (" + std::to_string(kinematic) +
+           " kinematic): e_cloth " + fmt("%g", k.cloth_restitution) + " e_sphere " +
+           fmt("%g", k.sphere_restitution) + " eps " + fmt("%g", k.tolerance) + " mu " +
+           fmt("%g", k.friction) + " beta " + fmt("%g", k.push_out) + "   ";
   }
   if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
   return out;
