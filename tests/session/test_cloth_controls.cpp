@@ -52,8 +52,11 @@ TEST(ClothControls, PinKeysFlipEachCornerAndOnlyIt) {
     ASSERT_TRUE(w->is_pinned(p)) << "the scene pins the corners";
     EXPECT_EQ(toggle_corner_pin(*w, corner), std::optional<bool>(false));
     EXPECT_FALSE(w->is_pinned(p));
-    for (int other = 0; other < 4; ++other)
-      if (other != corner) EXPECT_TRUE(w->is_pinned(corner_particle(grid, other)));
+    for (int other = 0; other < 4; ++other) {
+      if (other != corner) {
+        EXPECT_TRUE(w->is_pinned(corner_particle(grid, other)));
+      }
+    }
     EXPECT_EQ(toggle_corner_pin(*w, corner), std::optional<bool>(true));
     EXPECT_TRUE(w->is_pinned(p));
   }

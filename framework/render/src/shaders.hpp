@@ -85,6 +85,7 @@ void main() {
   float hemi = 0.5 + 0.5 * n.y;
   vec3 ambient = mix(vec3(0.20, 0.19, 0.18), vec3(0.36, 0.39, 0.45), hemi);
   vec3 c = base * (ambient + 0.78 * max(dot(n, key), 0.0) + 0.22 * max(dot(n, fill), 0.0));
+  if (u_two_tone == 1) c += base * 0.45 * max(-n.y, 0.0);  // light bounced up onto a cloth's underside
   vec3 h = normalize(key + v);
   c += u_specular * pow(max(dot(n, h), 0.0), u_shininess) * vec3(1.0);
   float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0);

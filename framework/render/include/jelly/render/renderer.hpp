@@ -45,8 +45,8 @@ inline const Eigen::Vector3f kSkyHorizon{0.42f, 0.47f, 0.56f};
 inline const Eigen::Vector3f kParticle{0.12f, 0.10f, 0.12f};
 /// Cloth scenes (assignment A2): the cloth's front (+y side when flat) and back, its pins, and
 /// the spheres (dynamic ones are integrated, kinematic ones follow a schedule or the arrow keys).
-inline const Eigen::Vector3f kClothFront{0.95f, 0.78f, 0.28f};
-inline const Eigen::Vector3f kClothBack{0.42f, 0.32f, 0.72f};
+inline const Eigen::Vector3f kClothFront{0.80f, 0.62f, 0.20f};
+inline const Eigen::Vector3f kClothBack{0.52f, 0.38f, 0.86f};
 inline const Eigen::Vector3f kPin{0.95f, 0.12f, 0.10f};
 inline const Eigen::Vector3f kDynamicSphere{0.80f, 0.33f, 0.60f};
 inline const Eigen::Vector3f kKinematicSphere{0.30f, 0.72f, 0.50f};
