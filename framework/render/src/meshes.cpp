@@ -253,6 +253,14 @@ Bounds scene_bounds(const World& world) {
       grow(c.initial_positions().col(i));
   if (world.cubes().empty())
     for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
+  // A cloth where it was built, and room below it for its sag (half its side).
+  for (const ClothGrid& c : world.cloths()) {
+    const double sag = 0.5 * c.spacing() * (c.n() - 1);
+    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) {
+      grow(c.initial_positions().col(i));
+      grow(c.initial_positions().col(i) - Vec3(0.0, sag, 0.0));
+    }
+  }
   for (int i = 0; i < world.sphere_count(); ++i) {  // cloth scenes
     const SphereBody sb = world.sphere(i);
     grow(sb.center - Vec3::Constant(sb.radius));
