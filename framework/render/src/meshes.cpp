@@ -253,12 +253,15 @@ Bounds scene_bounds(const World& world) {
       grow(c.initial_positions().col(i));
   if (world.cubes().empty())
     for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
-  // A cloth where it was built, and room below it for its sag (half its side).
+  // A cloth where it was built, with room below it for its sag (half its side) and around it for
+  // its swing (a tenth of its side).
   for (const ClothGrid& c : world.cloths()) {
-    const double sag = 0.5 * c.spacing() * (c.n() - 1);
+    const double side = c.spacing() * (c.n() - 1);
+    const Vec3 swing = Vec3::Constant(0.1 * side);
     for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) {
-      grow(c.initial_positions().col(i));
-      grow(c.initial_positions().col(i) - Vec3(0.0, sag, 0.0));
+      const Vec3 p = c.initial_positions().col(i);
+      grow(p + swing);
+      grow(p - swing - Vec3(0.0, 0.5 * side, 0.0));
     }
   }
   for (int i = 0; i < world.sphere_count(); ++i) {  // cloth scenes

@@ -93,7 +93,7 @@ class MovingSphere {
 /// What a scene shows: the cubes as built (or the current particles when there is no cube) plus
 /// each terrain's extent (a plane's hole, the bowl's cap, the sphere; a plane without a hole adds
 /// only its point) and, in a cloth scene, the cloth as built with room below it for its sag (half
-/// its side) and every sphere where it is now.
+/// its side) and around it for its swing (a tenth), and every sphere where it is now.
 Bounds scene_bounds(const World& world);
 
 /// Half-size of the drawn square of a plane [m] for a world whose other content is in `b`.
