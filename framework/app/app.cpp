@@ -65,6 +65,48 @@ void rebuild_runs(AppState& s) {
         std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt, {}}, tasks));
   }
   s.clock.restart();
+  s.driving = false;  // new worlds: the spheres follow their schedules again
+  s.drive = Vec3::Zero();
+}
+
+bool has_cloth(const AppState& s) {
+  return !s.runs.empty() && s.runs.front()->ok() &&
+         !s.runs.front()->simulator()->world().cloths().empty();
+}
+
+bool has_kinematic_sphere(const AppState& s) {
+  return !s.runs.empty() && s.runs.front()->ok() &&
+         first_kinematic_sphere(s.runs.front()->simulator()->world()) >= 0;
+}
+
+bool toggle_pin(AppState& s, int corner) {
+  bool any = false;
+  for (const auto& r : s.runs)
+    if (r->ok()) any = toggle_corner_pin(r->simulator()->world(), corner).has_value() || any;
+  return any;
+}
+
+namespace {
+bool drive_all(AppState& s, const Vec3& velocity) {
+  bool any = false;
+  for (const auto& r : s.runs)
+    if (r->ok()) any = drive_first_kinematic_sphere(r->simulator()->world(), velocity) || any;
+  if (any) {
+    s.driving = true;
+    s.drive = velocity;
+  }
+  return any;
+}
+}  // namespace
+
+bool press_arrow(AppState& s, Arrow arrow) {
+  if (!has_kinematic_sphere(s)) return false;
+  return drive_all(s, arrow_drive(s.drive, arrow, s.camera.yaw_degrees));
+}
+
+bool stop_sphere(AppState& s) {
+  if (!has_kinematic_sphere(s)) return false;
+  return drive_all(s, Vec3::Zero());
 }
 
 int run_app(const AppOptions& opt) {

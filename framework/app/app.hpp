@@ -12,6 +12,7 @@
 #include "jelly/render/frame.hpp"
 #include "jelly/render/window_backend.hpp"
 #include "jelly/session/assignments.hpp"
+#include "jelly/session/cloth_controls.hpp"
 #include "jelly/session/real_time_clock.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
@@ -72,6 +73,9 @@ struct AppState {
   bool reset_requested = false;
   session::RealTimeClock clock;
   std::vector<std::unique_ptr<session::SimulationRun>> runs;
+  // cloth scenes: the arrow keys' drive of the first kinematic sphere (zero and off after a reset)
+  bool driving = false;
+  Vec3 drive{0.0, 0.0, 0.0};
   // comparison
   bool comparing = false;
   std::vector<CompareSlot> slots;
@@ -101,6 +105,18 @@ bool load_scene_into(AppState& state, int index, const std::string& path = {});
 void rebuild_runs(AppState& state);
 /// Starts or stops recording PNG frames (and an MP4 when ffmpeg is installed).
 void toggle_recording(AppState& state);
+/// Cloth scenes (keys 1–4, arrows, S): pins or frees corner `corner` (0–3) of the cloth in every
+/// run; false when the scene has no cloth.
+bool toggle_pin(AppState& state, int corner);
+/// Arrow key: the first kinematic sphere of every run moves at the new drive velocity
+/// (session::arrow_drive, relative to the camera); false when there is none.
+bool press_arrow(AppState& state, session::Arrow arrow);
+/// S: the driven sphere stops (velocity zero; its schedule stays off until a reset).
+bool stop_sphere(AppState& state);
+/// Whether the runs' world has a cloth / a kinematic sphere (what the keys need).
+bool has_cloth(const AppState& state);
+bool has_kinematic_sphere(const AppState& state);
+
 /// Draws the ImGui side panel.
 void draw_panels(AppState& state, double fps);
 

@@ -25,7 +25,7 @@ int init_state(AppState& state, const AppOptions& options);
 // ---- input (input.cpp) ----
 
 /// Keys and mouse outside ImGui's windows: play/pause, step, reset, camera, screenshot, orbit,
-/// zoom.
+/// zoom; in cloth scenes the corner pins (1–4) and the kinematic sphere's drive (arrows, S).
 class ViewInput {
  public:
   /// Applies this frame's keys and mouse to `state`; true when Esc asked to quit.
@@ -39,7 +39,8 @@ class ViewInput {
 // ---- the smoke test (smoke_script.cpp) ----
 
 /// --smoke-test: every integrator for 2 s of simulated time (0.25 s per frame, no wall clock, so
-/// reproducible), then every scene for 3 frames, then the course scene at 1.5 s for the screenshot.
+/// reproducible), then every scene for 3 frames (in cloth scenes, with the pin and arrow keys),
+/// then the course scene at 1.5 s for the screenshot.
 class SmokeScript {
  public:
   /// Starts on the first integrator, comparison off.
@@ -50,6 +51,9 @@ class SmokeScript {
   int failures() const { return failures_; }
 
  private:
+  /// In a cloth scene: keys 1–4 flip each corner's pin (and back), the right arrow moves the
+  /// kinematic sphere by speed × time, S stops it. A failure is counted and printed.
+  void check_cloth_keys(AppState& state);
   std::vector<IntegratorKind> integrators_{kAllIntegrators.begin(), kAllIntegrators.end()};
   std::size_t integrator_ = 0;
   std::size_t scene_ = 0;

@@ -51,7 +51,7 @@ void prepare_view(AppState& s, Renderer& renderer, int w, int h) {
   const std::vector<SimulationRun*> current = s.run_pointers();
   ensure_drawables(renderer, current);
   if (s.camera_reset_requested && !current.empty() && drawable_of(*current.front())) {
-    const auto vps = frame_viewports(static_cast<int>(current.size()), w, h, s.frame.left_margin);
+    const auto vps = frame_viewports(static_cast<int>(current.size()), w, h, s.frame);
     s.camera = OrbitCamera{};
     s.camera.frame(drawable_of(*current.front())->bounds(), vps.front().aspect());
     s.camera_reset_requested = false;

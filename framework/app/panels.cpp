@@ -368,14 +368,40 @@ void parameters_section(AppState& s) {
   }
 }
 
+/// Cloth: the corner pins (keys 1–4) and the kinematic sphere's drive (arrows, S), shown only in
+/// a cloth scene.
+void cloth_section(AppState& s) {
+  if (!has_cloth(s) || !header(s, "Cloth", "cloth", true)) return;
+  World& world = s.runs.front()->simulator()->world();
+  const ClothGrid& grid = world.cloths().front();
+  ImGui::TextUnformatted("pinned corners (keys 1-4):");
+  static const char* corners[4] = {"1 (0,0)", "2 (0,n-1)", "3 (n-1,0)", "4 (n-1,n-1)"};
+  for (int corner = 0; corner < 4; ++corner) {
+    bool pinned = world.is_pinned(session::corner_particle(grid, corner));
+    if (corner > 0) ImGui::SameLine();
+    if (ImGui::Checkbox(corners[corner], &pinned)) toggle_pin(s, corner);
+  }
+  if (!has_kinematic_sphere(s)) return;
+  ImGui::Text("arrows: drive the sphere (%.3g m/s along x/z), S: stop", session::kDriveSpeed);
+  if (s.driving)
+    ImGui::Text("driven at (%.3g, %.3g, %.3g) m/s; Reset (R) restores its schedule", s.drive.x(),
+                s.drive.y(), s.drive.z());
+  else
+    ImGui::TextDisabled("following the scene's schedule");
+  if (ImGui::Button("Stop sphere (S)")) stop_sphere(s);
+}
+
 /// Draw: what the frame shows (each spring type in its colour).
 void draw_section(AppState& s) {
   if (!header(s, "Draw", "draw", false)) return;
-  ImGui::Checkbox("jelly surface", &s.frame.draw.surface);
+  const bool cloth = has_cloth(s);
+  ImGui::Checkbox(cloth ? "cloth surface" : "jelly surface", &s.frame.draw.surface);
   ImGui::Checkbox("particles", &s.frame.draw.particles);
+  if (cloth) ImGui::Checkbox("pinned particles", &s.frame.draw.pins);
   static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear",
                                  "bending springs"};
   for (int i = 0; i < 4; ++i) {
+    if (cloth && static_cast<SpringType>(i) == SpringType::ShearBody) continue;  // a 3D lattice's
     const auto& c = colors::kSprings[i];
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
     ImGui::Checkbox(names[i], &s.frame.draw.springs[i]);
@@ -425,6 +451,7 @@ void draw_panels(AppState& s, double fps) {
   scene_section(s);  // may load another scene, which rebuilds the runs: take them after it
   const std::vector<SimulationRun*> runs = s.run_pointers();
   simulation_section(s, runs, fps);
+  cloth_section(s);
   comparison_section(s);
   parameters_section(s);
   draw_section(s);

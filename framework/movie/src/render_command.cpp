@@ -300,7 +300,7 @@ int render_command(int argc, char** argv) {
 
   OrbitCamera camera;
   ensure_drawables(renderer, run_ptrs);
-  const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, 0);
+  const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, fo);
   camera.frame(drawable_of(*runs.front())->bounds(), vps.front().aspect());
   if (!a.camera.empty() && !apply_camera(a.camera, camera)) return 2;
 

@@ -1,6 +1,7 @@
 #include "jelly/render/frame.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace jelly::render {
@@ -57,10 +58,45 @@ std::vector<Viewport> comparison_layout(int count, int w, int h) {
   return out;
 }
 
-std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin) {
-  auto vps = comparison_layout(count, width - left_margin, height);
-  for (Viewport& v : vps) v.x += left_margin;
+namespace {
+/// Lines of text the bands hold, and the shares of the frame's text scale they use.
+constexpr int kLabelLines = 2, kCaptionLines = 4;
+constexpr float kLabelShare = 0.75f, kCaptionShare = 0.7f;
+/// stb_easy_font's line height [px] at scale 1.
+constexpr int kLineHeight = 12;
+int pad_of(float scale) { return static_cast<int>(8 * scale); }
+}  // namespace
+
+FrameBands frame_bands(int count, int height, const FrameOptions& o) {
+  FrameBands b;
+  if (count < 2) return b;
+  const float s = text_scale(height);
+  b.label_scale = std::max(1.0f, kLabelShare * s);
+  b.caption_scale = std::max(1.0f, kCaptionShare * s);
+  if (o.labels)
+    b.label = static_cast<int>(std::ceil(kLabelLines * kLineHeight * b.label_scale)) +
+              pad_of(b.label_scale);
+  if (o.caption)
+    b.caption = static_cast<int>(std::ceil(kCaptionLines * kLineHeight * b.caption_scale)) +
+                pad_of(b.caption_scale);
+  return b;
+}
+
+std::vector<Viewport> frame_viewports(int count, int width, int height, const FrameOptions& o) {
+  const FrameBands b = frame_bands(count, height, o);
+  auto vps = comparison_layout(count, width - o.left_margin, height - b.caption);
+  for (Viewport& v : vps) {
+    v.x += o.left_margin;
+    v.y += b.label;
+    v.height = std::max(1, v.height - b.label);
+  }
   return vps;
+}
+
+std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin) {
+  FrameOptions o;
+  o.left_margin = left_margin;
+  return frame_viewports(count, width, height, o);
 }
 
 void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs,
@@ -68,12 +104,46 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
   ensure_drawables(renderer, runs);
   renderer.begin_frame(width, height);
   const float s = text_scale(height);
-  const auto vps = frame_viewports(static_cast<int>(runs.size()), width, height, o.left_margin);
+  const int count = static_cast<int>(runs.size());
+  const auto vps = frame_viewports(count, width, height, o);
+  const FrameBands bands = frame_bands(count, height, o);
   const int pad = static_cast<int>(8 * s);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     session::SimulationRun& run = *runs[i];
     const Viewport& vp = vps[i];
     if (run.ok()) renderer.draw(*drawable_of(run), run.simulator()->world(), camera, o.draw, vp);
+    if (bands.label > 0) {
+      // The view's own label in its strip above it: the run's label (its own parameters on the
+      // second line) and, in red after them, why it stopped; shrunk to the strip's width.
+      const int top = vp.y - bands.label;
+      renderer.draw_rect(vp.x, top, vp.width, bands.label, {0.06f, 0.07f, 0.10f, 1.0f});
+      const float ls = bands.label_scale;
+      const int lpad = pad_of(ls) / 2;
+      const std::string label = session::run_label(run);
+      const std::size_t nl = label.find('\n');
+      const std::string first = label.substr(0, nl);
+      const std::string own = nl == std::string::npos ? "" : label.substr(nl + 1) + "   ";
+      std::string alarm;
+      if (!run.ok()) {
+        alarm = "cannot run: " + run.error();
+      } else if (const auto& r = run.simulator()->instability()) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "UNSTABLE at t = %.3f s (step %ld); stable h <= %.3g s",
+                      r->time, r->step, r->critical_step);
+        alarm = buf;
+      }
+      const int w1 = Renderer::text_size(first, ls).x();
+      const int w2 = Renderer::text_size(own + alarm, ls).x();
+      const float fit_scale =
+          std::min(ls, ls * (vp.width - 2 * lpad) / std::max(1.0f, float(std::max(w1, w2))));
+      const Eigen::Vector4f light{1.0f, 0.95f, 0.75f, 1.0f};
+      renderer.draw_text(first, vp.x + lpad, top + lpad, fit_scale, light, false);
+      const int y2 = top + lpad + static_cast<int>(std::lround(kLineHeight * fit_scale));
+      if (!own.empty()) renderer.draw_text(own, vp.x + lpad, y2, fit_scale, light, false);
+      if (!alarm.empty())
+        renderer.draw_text(alarm, vp.x + lpad + Renderer::text_size(own, fit_scale).x(), y2,
+                           fit_scale, {1.0f, 0.45f, 0.40f, 1.0f}, false);
+    }
     int y = vp.y + pad;
     // Text scaled down to fit the viewport's width.
     const auto fit = [&](const std::string& text) {
@@ -87,10 +157,11 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
       renderer.draw_text(text, vp.x + pad, y, ts, color);
       y += Renderer::text_size(text, ts).y() + pad;
     };
-    if (o.labels && runs.size() > 1) put(session::run_label(run), {1.0f, 0.95f, 0.75f, 1.0f});
     if (i == 0)
       for (const std::string& hint : o.hints) put(hint, {1.0f, 0.85f, 0.3f, 1.0f});
-    if (!run.ok()) {
+    if (bands.label > 0) {
+      // Comparison mode: the label strip said it.
+    } else if (!run.ok()) {
       put("cannot run: " + run.error(), {1.0f, 0.5f, 0.4f, 1.0f});
     } else if (const auto& r = run.simulator()->instability()) {
       char buf[256];
@@ -101,9 +172,29 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
                     r->step_size, r->reason.c_str(), r->critical_step, r->recommended_step);
       put(buf, {1.0f, 0.42f, 0.38f, 1.0f}, runs.size() > 1 ? 0.75f : 1.0f);
     }
-    if (i > 0) renderer.draw_rect(vp.x - 1, vp.y, 2, vp.height, {0.05f, 0.05f, 0.07f, 1.0f});
+    if (i > 0)
+      renderer.draw_rect(vp.x - 1, vp.y - bands.label, 2, vp.height + bands.label,
+                         {0.05f, 0.05f, 0.07f, 1.0f});
   }
-  if (o.caption && !runs.empty()) {
+  if (o.caption && bands.caption > 0) {
+    // Comparison mode: the shared parameters in their own strip below every view.
+    double t = 0.0;
+    for (session::SimulationRun* r : runs) t = std::max(t, r->time());
+    const std::string raw = session::caption(runs.front()->setup(), t, false);
+    const int top = height - bands.caption;
+    renderer.draw_rect(o.left_margin, top, width - o.left_margin, bands.caption,
+                       {0.06f, 0.07f, 0.10f, 1.0f});
+    const float cs0 = bands.caption_scale;
+    const int cpad = pad_of(cs0) / 2;
+    const std::string& text = raw;
+    // Shrink when a line is wider than the frame (or, from a longer caption, the strip too low).
+    const Eigen::Vector2i size0 = Renderer::text_size(text, cs0);
+    const float cs =
+        std::min({cs0, cs0 * (bands.caption - cpad) / std::max(1.0f, float(size0.y())),
+                  cs0 * (width - o.left_margin - 2 * cpad) / std::max(1.0f, float(size0.x()))});
+    renderer.draw_text(text, o.left_margin + cpad, top + cpad, cs, {0.92f, 0.94f, 1.0f, 1.0f},
+                       false);
+  } else if (o.caption && !runs.empty()) {
     double t = 0.0;  // the furthest run (a stopped run stays behind)
     for (session::SimulationRun* r : runs) t = std::max(t, r->time());
     const std::string text = session::caption(runs.front()->setup(), t, runs.size() == 1);

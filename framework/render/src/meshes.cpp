@@ -178,6 +178,63 @@ void JellySurface::update(const Vec3Array& x) {
   }
 }
 
+ClothSurface::ClothSurface(int n, int first_index) : n_(n), first_(first_index) {
+  const auto count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  mesh_.positions.assign(count, Eigen::Vector3f::Zero());
+  mesh_.normals.assign(count, Eigen::Vector3f::UnitY());
+  const auto at = [n](int i, int k) { return static_cast<std::uint32_t>(i * n + k); };
+  // Cell (i, k): (i,k), (i,k+1), (i+1,k+1), (i+1,k). For the flat cloth, +z × +x = +y: the
+  // triangles wind counter-clockwise seen from above.
+  for (int i = 0; i + 1 < n; ++i)
+    for (int k = 0; k + 1 < n; ++k)
+      add_quad(mesh_, at(i, k), at(i, k + 1), at(i + 1, k + 1), at(i + 1, k));
+}
+
+void ClothSurface::update(const Vec3Array& x) {
+  for (std::size_t v = 0; v < mesh_.positions.size(); ++v) {
+    mesh_.positions[v] = x.col(first_ + static_cast<Eigen::Index>(v)).cast<float>();
+    mesh_.normals[v].setZero();
+  }
+  for (std::size_t t = 0; t + 2 < mesh_.indices.size(); t += 3) {
+    const std::uint32_t a = mesh_.indices[t], b = mesh_.indices[t + 1], c = mesh_.indices[t + 2];
+    const Eigen::Vector3f nrm =
+        (mesh_.positions[b] - mesh_.positions[a]).cross(mesh_.positions[c] - mesh_.positions[a]);
+    mesh_.normals[a] += nrm;
+    mesh_.normals[b] += nrm;
+    mesh_.normals[c] += nrm;
+  }
+  for (auto& nrm : mesh_.normals) {
+    const float len = nrm.norm();
+    nrm = len > 0.0f && std::isfinite(len) ? Eigen::Vector3f(nrm / len) : Eigen::Vector3f::UnitY();
+  }
+}
+
+MovingSphere::MovingSphere() {
+  constexpr int kRings = 24, kSegments = 48;
+  for (int ring = 0; ring <= kRings; ++ring) {
+    const double phi = kPi * ring / kRings;
+    for (int k = 0; k <= kSegments; ++k) {
+      const double a = 2.0 * kPi * k / kSegments;
+      directions_.emplace_back(
+          Vec3(std::sin(phi) * std::cos(a), -std::cos(phi), std::sin(phi) * std::sin(a))
+              .cast<float>());
+    }
+  }
+  for (int ring = 0; ring < kRings; ++ring)
+    for (int k = 0; k < kSegments; ++k) {
+      const auto i = static_cast<std::uint32_t>(ring * (kSegments + 1) + k);
+      add_quad(mesh_, i, i + kSegments + 1, i + kSegments + 2, i + 1);
+    }
+  mesh_.normals = directions_;
+  mesh_.positions = directions_;
+}
+
+void MovingSphere::update(const Vec3& center, double radius) {
+  const Eigen::Vector3f c = center.cast<float>();
+  const auto r = static_cast<float>(radius);
+  for (std::size_t v = 0; v < directions_.size(); ++v) mesh_.positions[v] = c + r * directions_[v];
+}
+
 Bounds scene_bounds(const World& world) {
   Bounds b;
   const Vec3Array& x = world.state().x;
@@ -196,6 +253,22 @@ Bounds scene_bounds(const World& world) {
       grow(c.initial_positions().col(i));
   if (world.cubes().empty())
     for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
+  // A cloth where it was built, with room below it for its sag (half its side) and around it for
+  // its swing (a tenth of its side).
+  for (const ClothGrid& c : world.cloths()) {
+    const double side = c.spacing() * (c.n() - 1);
+    const Vec3 swing = Vec3::Constant(0.1 * side);
+    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) {
+      const Vec3 p = c.initial_positions().col(i);
+      grow(p + swing);
+      grow(p - swing - Vec3(0.0, 0.5 * side, 0.0));
+    }
+  }
+  for (int i = 0; i < world.sphere_count(); ++i) {  // cloth scenes
+    const SphereBody sb = world.sphere(i);
+    grow(sb.center - Vec3::Constant(sb.radius));
+    grow(sb.center + Vec3::Constant(sb.radius));
+  }
   for (const Terrain& t : world.terrains()) {
     if (const auto* bowl = std::get_if<Bowl>(&t.shape)) {
       const double rr = bowl->rim_radius();

@@ -33,6 +33,11 @@ struct Material {
 constexpr Material kGroundMaterial{0.08f, 24.0f};  ///< planes and spheres: nearly matte
 constexpr Material kBowlMaterial{0.25f, 40.0f};    ///< the bowl: a glazed dish
 constexpr Material kJellyMaterial{0.45f, 48.0f};   ///< the jelly: wet and glossy
+constexpr Material kClothMaterial{0.12f, 20.0f};   ///< the cloth: fabric, a soft sheen
+constexpr Material kSphereMaterial{0.35f, 40.0f};  ///< the spheres of a cloth scene
+/// Pinned particles: this many times the particle dot size, never below the minimum.
+constexpr float kPinSizeFactor = 2.2f;
+constexpr float kMinPinSize = 6.0f;
 /// Opacity of spring lines (the surface and other springs show through a little).
 constexpr float kSpringAlpha = 0.85f;
 /// Particle dots: `point_size` is in pixels at this viewport height, and never below the minimum.
@@ -136,6 +141,10 @@ struct SceneDrawable::Gpu {
   const Gl* gl = nullptr;
   std::vector<GpuMesh> terrains;
   std::vector<GpuMesh> surfaces;
+  std::vector<GpuMesh> cloths;
+  std::vector<GpuMesh> spheres;
+  GpuMesh pins;  // indices of the pinned particles into `particles`
+  std::vector<std::uint32_t> pin_indices;
   GpuMesh particles;                  // positions of every particle (points)
   std::vector<GpuMesh> spring_lines;  // per spring group: particle positions + pair indices
   std::vector<SpringType> spring_types;
@@ -143,6 +152,9 @@ struct SceneDrawable::Gpu {
   ~Gpu() {
     for (auto& m : terrains) m.destroy(*gl);
     for (auto& m : surfaces) m.destroy(*gl);
+    for (auto& m : cloths) m.destroy(*gl);
+    for (auto& m : spheres) m.destroy(*gl);
+    pins.destroy(*gl);
     particles.destroy(*gl);
     for (auto& m : spring_lines) m.destroy(*gl);
   }
@@ -207,6 +219,8 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
       d->terrain_meshes_.push_back(sphere_mesh(std::get<Sphere>(t.shape)));
   }
   for (const CubeLattice& c : world.cubes()) d->surfaces_.emplace_back(c);
+  for (const ClothGrid& c : world.cloths()) d->cloth_surfaces_.emplace_back(c);
+  d->spheres_.resize(static_cast<std::size_t>(world.sphere_count()));
   if (!gl_) return d;
 
   const Gl& g = *gl_;
@@ -225,7 +239,30 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
     gm.upload_indices(g, s.mesh().indices);
     d->gpu_->surfaces.push_back(gm);
   }
+  for (const ClothSurface& c : d->cloth_surfaces_) {
+    GpuMesh gm;
+    gm.create(g, true, true);
+    gm.upload_indices(g, c.mesh().indices);
+    d->gpu_->cloths.push_back(gm);
+  }
+  for (const MovingSphere& sphere : d->spheres_) {
+    GpuMesh gm;
+    gm.create(g, true, true);
+    gm.upload_indices(g, sphere.mesh().indices);
+    d->gpu_->spheres.push_back(gm);
+  }
   d->gpu_->particles.create(g, false, false);
+  if (!world.cloths().empty()) {
+    // Pin markers read the particle positions buffer, as the springs do.
+    GpuMesh& gm = d->gpu_->pins;
+    gm.create(g, false, true);
+    g.BindVertexArray(gm.vao);
+    g.DeleteBuffers(1, &gm.positions);
+    gm.positions = 0;
+    g.BindBuffer(GL_ARRAY_BUFFER, d->gpu_->particles.positions);
+    g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    g.BindVertexArray(0);
+  }
   for (const SpringGroup& group : world.spring_groups()) {
     GpuMesh gm;
     gm.create(g, false, true);
@@ -308,8 +345,14 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
                     const DrawOptions& opt, const Viewport& vp) {
   // CPU side first (also with the null backend): follow the particles.
   const Vec3Array& x = world.state().x;
-  if (opt.surface)
+  if (opt.surface) {
     for (JellySurface& s : d.surfaces_) s.update(x);
+    for (ClothSurface& c : d.cloth_surfaces_) c.update(x);
+  }
+  for (std::size_t i = 0; i < d.spheres_.size(); ++i) {
+    const SphereBody sb = world.sphere(static_cast<int>(i));
+    d.spheres_[i].update(sb.center, sb.radius);
+  }
   if (!gl_ || !d.gpu_) return;
   const Gl& g = *gl_;
   SceneDrawable::Gpu& gpu = *d.gpu_;
@@ -392,10 +435,45 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     g.Disable(GL_POLYGON_OFFSET_FILL);
   }
 
-  // Particles and springs share one position buffer.
+  // Cloth scenes: the cloth's two sides and the spheres.
+  if (opt.surface && !d.cloth_surfaces_.empty()) {
+    g.Uniform1i(loc(sp, "u_plane"), 0);
+    g.Uniform1i(loc(sp, "u_has_hole"), 0);
+    g.Uniform1i(loc(sp, "u_two_tone"), 1);
+    set3(sp, "u_color", colors::kClothFront);
+    set3(sp, "u_back_color", colors::kClothBack);
+    set_material(kClothMaterial);
+    g.Enable(GL_POLYGON_OFFSET_FILL);
+    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
+    for (std::size_t i = 0; i < d.cloth_surfaces_.size(); ++i) {
+      const Mesh& m = d.cloth_surfaces_[i].mesh();
+      gpu.cloths[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
+      g.BindVertexArray(gpu.cloths[i].vao);
+      g.DrawElements(GL_TRIANGLES, gpu.cloths[i].index_count, GL_UNSIGNED_INT, nullptr);
+    }
+    g.Disable(GL_POLYGON_OFFSET_FILL);
+    g.Uniform1i(loc(sp, "u_two_tone"), 0);
+  }
+  if (!d.spheres_.empty()) {
+    g.Uniform1i(loc(sp, "u_plane"), 0);
+    g.Uniform1i(loc(sp, "u_has_hole"), 0);
+    set_material(kSphereMaterial);
+    for (std::size_t i = 0; i < d.spheres_.size(); ++i) {
+      set3(sp, "u_color",
+           world.sphere_is_kinematic(static_cast<int>(i)) ? colors::kKinematicSphere
+                                                          : colors::kDynamicSphere);
+      const Mesh& m = d.spheres_[i].mesh();
+      gpu.spheres[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
+      g.BindVertexArray(gpu.spheres[i].vao);
+      g.DrawElements(GL_TRIANGLES, gpu.spheres[i].index_count, GL_UNSIGNED_INT, nullptr);
+    }
+  }
+
+  // Particles, springs and pin markers share one position buffer.
   const bool any_springs =
       std::any_of(opt.springs.begin(), opt.springs.end(), [](bool b) { return b; });
-  if (opt.particles || any_springs) {
+  const bool pins = opt.pins && !d.cloth_surfaces_.empty();
+  if (opt.particles || any_springs || pins) {
     gpu.scratch.resize(static_cast<std::size_t>(x.cols()));
     for (Eigen::Index i = 0; i < x.cols(); ++i) gpu.scratch[i] = x.col(i).cast<float>();
     gpu.particles.upload_vertices(g, gpu.scratch, nullptr, GL_STREAM_DRAW);
@@ -422,8 +500,30 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
       const Eigen::Vector3f& c = colors::kParticle;
       g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 1.0f);
       g.BindVertexArray(gpu.particles.vao);
-      g.DrawArrays(GL_POINTS, 0, gpu.particles.vertex_count);
+      // A cloth scene's dynamic spheres are particles of the state too: only the cloth's are dots.
+      const auto count = d.cloth_surfaces_.empty()
+                             ? gpu.particles.vertex_count
+                             : static_cast<GLsizei>(world.cloth_particle_count());
+      g.DrawArrays(GL_POINTS, 0, count);
       g.Disable(GL_PROGRAM_POINT_SIZE);
+    }
+    if (pins) {
+      gpu.pin_indices.clear();
+      for (const ClothGrid& c : world.cloths())
+        for (int p = c.first_index(); p < c.first_index() + c.particle_count(); ++p)
+          if (world.is_pinned(p)) gpu.pin_indices.push_back(static_cast<std::uint32_t>(p));
+      if (!gpu.pin_indices.empty()) {
+        g.Enable(GL_PROGRAM_POINT_SIZE);
+        g.Uniform1i(loc(fp, "u_round"), 1);
+        const float dot = opt.point_size * vp.height / kPointSizeReferenceHeight;
+        g.Uniform1f(loc(fp, "u_point_size"), std::max(kMinPinSize, kPinSizeFactor * dot));
+        const Eigen::Vector3f& c = colors::kPin;
+        g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 1.0f);
+        gpu.pins.upload_indices(g, gpu.pin_indices);
+        g.BindVertexArray(gpu.pins.vao);
+        g.DrawElements(GL_POINTS, gpu.pins.index_count, GL_UNSIGNED_INT, nullptr);
+        g.Disable(GL_PROGRAM_POINT_SIZE);
+      }
     }
   }
   g.BindVertexArray(0);

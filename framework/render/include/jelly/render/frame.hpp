@@ -39,7 +39,21 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
 /// Two to four viewports side by side (1×n; 2×2 for four) filling a w×h frame.
 std::vector<Viewport> comparison_layout(int count, int width, int height);
 
-/// The viewports draw_frame uses for `count` runs.
+/// Comparison mode's text bands [px], so no text covers a view: a label strip above each view (its
+/// integrator, step, cost and own parameters, two lines) and the shared caption's strip below all
+/// views (four lines). Both 0 for a single run, whose caption stays printed over its view.
+struct FrameBands {
+  int label = 0;    ///< height of each view's label strip
+  int caption = 0;  ///< height of the caption strip at the bottom of the frame
+  float label_scale = 1.0f, caption_scale = 1.0f;  ///< text scales in the strips
+};
+FrameBands frame_bands(int count, int height, const FrameOptions& options);
+
+/// The viewports draw_frame draws `count` runs' scenes into (below their label strips, above the
+/// caption strip in comparison mode).
+std::vector<Viewport> frame_viewports(int count, int width, int height,
+                                      const FrameOptions& options);
+/// The same with captions and labels on.
 std::vector<Viewport> frame_viewports(int count, int width, int height, int left_margin);
 
 }  // namespace jelly::render

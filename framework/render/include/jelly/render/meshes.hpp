@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "jelly/cloth.hpp"
 #include "jelly/cube.hpp"
 #include "jelly/render/camera.hpp"
 #include "jelly/terrain.hpp"
@@ -54,9 +55,45 @@ class JellySurface {
   std::vector<int> particle_of_vertex_;
 };
 
+/// The surface of one cloth (assignment A2): two triangles per grid cell, one vertex per particle
+/// (vertex i·n + k follows particle first + i·n + k). Front faces wind counter-clockwise seen
+/// from +y for a cloth built flat (rotation 0), so the renderer tints the side towards +y as the
+/// front and the other as the back. update() copies the positions and recomputes area-weighted
+/// vertex normals (those of the front side).
+class ClothSurface {
+ public:
+  /// A cloth of n×n particles whose first particle is column `first_index` of the state.
+  ClothSurface(int n, int first_index);
+  explicit ClothSurface(const ClothGrid& grid) : ClothSurface(grid.n(), grid.first_index()) {}
+  /// Positions from state x (3×N over the whole world).
+  void update(const Vec3Array& x);
+  const Mesh& mesh() const { return mesh_; }
+  int n() const { return n_; }
+  int first_index() const { return first_; }
+
+ private:
+  int n_;
+  int first_;
+  Mesh mesh_;
+};
+
+/// A sphere of a cloth scene drawn where it is now: a unit sphere's directions, moved and scaled
+/// by update(). Coarser than sphere_mesh() (it is re-uploaded every frame).
+class MovingSphere {
+ public:
+  MovingSphere();
+  void update(const Vec3& center, double radius);
+  const Mesh& mesh() const { return mesh_; }
+
+ private:
+  std::vector<Eigen::Vector3f> directions_;
+  Mesh mesh_;
+};
+
 /// What a scene shows: the cubes as built (or the current particles when there is no cube) plus
 /// each terrain's extent (a plane's hole, the bowl's cap, the sphere; a plane without a hole adds
-/// only its point).
+/// only its point) and, in a cloth scene, the cloth as built with room below it for its sag (half
+/// its side) and around it for its swing (a tenth), and every sphere where it is now.
 Bounds scene_bounds(const World& world);
 
 /// Half-size of the drawn square of a plane [m] for a world whose other content is in `b`.

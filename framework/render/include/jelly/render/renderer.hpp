@@ -1,6 +1,6 @@
-// The renderer: draws a World (terrains, jelly surface, particles, springs, ground grid) and text
-// into a frame. The same code draws into the window and into OSMesa's memory; with no GL (the null
-// backend) it still builds and updates every draw proxy but issues no GL call.
+// The renderer: draws a World (terrains, jelly or cloth surface, spheres, particles, springs, pins,
+// ground grid) and text into a frame. The same code draws into the window and into OSMesa's memory;
+// with no GL (the null backend) it still builds and updates every draw proxy but issues no GL call.
 #pragma once
 
 #include <array>
@@ -20,9 +20,10 @@ namespace jelly::render {
 
 /// What to draw of a world.
 struct DrawOptions {
-  bool surface = true;            ///< the jelly's outer faces, shaded
-  bool particles = false;         ///< every particle as a dot
+  bool surface = true;            ///< the jelly's outer faces, the cloth's two sides, shaded
+  bool particles = false;         ///< every particle (of a cloth: every cloth particle) as a dot
   std::array<bool, 4> springs{};  ///< per SpringType (structural, shear, shear_body, bending)
+  bool pins = true;               ///< cloth scenes: the pinned particles as larger marked dots
   bool grid = true;               ///< grid lines on planes (1 m, stronger every 5 m)
   float point_size = 5.0f;        ///< [px] at 720 p, scaled with the viewport height
 };
@@ -42,6 +43,13 @@ inline const Eigen::Vector3f kSphere{0.55f, 0.62f, 0.52f};
 inline const Eigen::Vector3f kSkyTop{0.13f, 0.16f, 0.23f};
 inline const Eigen::Vector3f kSkyHorizon{0.42f, 0.47f, 0.56f};
 inline const Eigen::Vector3f kParticle{0.12f, 0.10f, 0.12f};
+/// Cloth scenes (assignment A2): the cloth's front (+y side when flat) and back, its pins, and
+/// the spheres (dynamic ones are integrated, kinematic ones follow a schedule or the arrow keys).
+inline const Eigen::Vector3f kClothFront{0.80f, 0.62f, 0.20f};
+inline const Eigen::Vector3f kClothBack{0.52f, 0.38f, 0.86f};
+inline const Eigen::Vector3f kPin{0.95f, 0.12f, 0.10f};
+inline const Eigen::Vector3f kDynamicSphere{0.80f, 0.33f, 0.60f};
+inline const Eigen::Vector3f kKinematicSphere{0.30f, 0.72f, 0.50f};
 /// Per SpringType: structural blue, shear green, body-diagonal shear teal, bending orange.
 inline const std::array<Eigen::Vector3f, 4> kSprings{
     Eigen::Vector3f{0.20f, 0.42f, 0.95f}, Eigen::Vector3f{0.15f, 0.75f, 0.30f},
@@ -50,9 +58,10 @@ inline const std::array<Eigen::Vector3f, 4> kSprings{
 
 class Renderer;
 
-/// The draw proxies of one World: terrain meshes (static), jelly surfaces, particles and springs
-/// (updated from the state each frame). Make a new one when the world is rebuilt: a run holds it
-/// as its attachment, which the run drops when it rebuilds its world.
+/// The draw proxies of one World: terrain meshes (static), jelly and cloth surfaces, the spheres
+/// of a cloth scene, particles and springs (updated from the state each frame). Make a new one when
+/// the world is rebuilt: a run holds it as its attachment, which the run drops when it rebuilds its
+/// world.
 class SceneDrawable : public session::RunAttachment {
  public:
   ~SceneDrawable() override;
@@ -61,14 +70,19 @@ class SceneDrawable : public session::RunAttachment {
   const Bounds& bounds() const { return bounds_; }
   const std::vector<JellySurface>& surfaces() const { return surfaces_; }
   const std::vector<Mesh>& terrain_meshes() const { return terrain_meshes_; }
+  const std::vector<ClothSurface>& cloth_surfaces() const { return cloth_surfaces_; }
+  /// One per World sphere (cloth scenes), in World::sphere() order.
+  const std::vector<MovingSphere>& spheres() const { return spheres_; }
 
  private:
   friend class Renderer;
   struct Gpu;
   SceneDrawable() = default;
   Bounds bounds_;
-  std::vector<Mesh> terrain_meshes_;    // one per terrain, in World::terrains() order
-  std::vector<JellySurface> surfaces_;  // one per cube
+  std::vector<Mesh> terrain_meshes_;          // one per terrain, in World::terrains() order
+  std::vector<JellySurface> surfaces_;        // one per cube
+  std::vector<ClothSurface> cloth_surfaces_;  // one per cloth
+  std::vector<MovingSphere> spheres_;         // one per sphere of a cloth scene
   std::unique_ptr<Gpu> gpu_;
 };
 

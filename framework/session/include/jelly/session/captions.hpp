@@ -7,11 +7,13 @@
 
 namespace jelly::session {
 
-/// The parameters a frame is printed with: scene, integrator, step, time, cube and springs,
-/// surface coefficients. Several lines. Without the integrator in comparison mode (each viewport
+/// The parameters a frame is printed with: scene, integrator, step, time, cube (or cloth: n, L, m,
+/// drag, pins) and springs, surface coefficients (or the spheres and their restitution). Four
+/// lines. Without the integrator in comparison mode (each viewport
 /// has its own label).
 std::string caption(const RunSetup& setup, double time, bool with_integrator = true);
-/// Short label for comparison mode: "RK4  h = 1 ms  0.84 ms/step".
+/// Compact label of one view in comparison mode: "RK4   h = 1 ms   4 evals/step   0.84 ms/step"
+/// on one line, and the run's own parameters (`key=value; …`) on a second line when it has any.
 std::string run_label(const SimulationRun& run);
 
 }  // namespace jelly::session
