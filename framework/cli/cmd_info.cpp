@@ -89,11 +89,29 @@ int check_command(int argc, char** argv) {
   for (const SpringGroup& g : world->spring_groups())
     std::printf(", %zu %s (ks %g, kd %g)", g.springs.size(), std::string(to_string(g.type)).c_str(),
                 g.ks, g.kd);
-  std::printf("; gravity %s; %zu terrains", scene->gravity ? "on" : "off",
-              world->terrains().size());
-  for (const Terrain& t : world->terrains())
-    std::printf(" [%s%s%s]", t.name.c_str(), t.collision ? " collision" : "",
-                t.contact ? " contact" : "");
+  const bool cloth = scene->body_kind == BodyKind::Cloth;
+  if (cloth) {
+    // Cloth contract §1, §3: the pinned particles and the spheres, in scene order.
+    long long pinned = 0;
+    for (Eigen::Index i = 0; i < world->cloth_particle_count(); ++i)
+      pinned += world->is_pinned(static_cast<int>(i)) ? 1 : 0;
+    std::printf(" (%lld pinned); gravity %s; %d spheres", pinned, scene->gravity ? "on" : "off",
+                world->sphere_count());
+    for (int k = 0; k < world->sphere_count(); ++k) {
+      const SphereBody b = world->sphere(k);
+      if (world->sphere_is_kinematic(k)) {
+        std::printf(" [%d kinematic r %g]", k, b.radius);
+      } else {
+        std::printf(" [%d dynamic r %g, %g kg]", k, b.radius, 1.0 / b.inverse_mass);
+      }
+    }
+  } else {
+    std::printf("; gravity %s; %zu terrains", scene->gravity ? "on" : "off",
+                world->terrains().size());
+    for (const Terrain& t : world->terrains())
+      std::printf(" [%s%s%s]", t.name.c_str(), t.collision ? " collision" : "",
+                  t.contact ? " contact" : "");
+  }
   std::printf("\n");
   const StabilityEstimate e = estimate_stability(*world, world->state());
   std::printf(
@@ -115,9 +133,11 @@ int check_command(int argc, char** argv) {
     std::printf("%-18s %-14s %-14s %g: %s\n", std::string(to_string(k)).c_str(), fmt(crit).c_str(),
                 fmt(rec).c_str(), scene->dt, verdict);
   }
-  std::printf(
-      "(limit: the linearised rest state's modes leave the stability region; recommended: "
-      "half of it, since contact stiffens the cube)\n");
+  std::printf(cloth ? "(limit: the linearised rest state's modes leave the stability region; "
+                      "recommended: half of it, since the cloth stretches as it sags and hits "
+                      "spheres)\n"
+                    : "(limit: the linearised rest state's modes leave the stability region; "
+                      "recommended: half of it, since contact stiffens the cube)\n");
   return kExitOk;
 }
 

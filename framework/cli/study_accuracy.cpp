@@ -61,9 +61,10 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
   StabilityMonitor monitor(options.monitor);
   monitor.start(sim.energy().total());
   const long evaluations0 = sim.evaluations();
-  auto collisions = [&] {
-    const auto& c = sim.world().counters().collisions;
-    return std::accumulate(c.begin(), c.end(), 0L);
+  auto collisions = [&] {  // terrain responses (A1), or impulses of a cloth scene (A2)
+    const auto& c = sim.world().counters();
+    return std::accumulate(c.collisions.begin(), c.collisions.end(), 0L) +
+           static_cast<long>(c.impulses);
   };
   if (keep) out.samples.push_back(sim.state().x);
 

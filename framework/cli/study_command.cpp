@@ -71,13 +71,21 @@ against the value) and PREFIX-time.svg/.png (each run over time), with their .gp
   at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
                which every particle is slower than --rest-speed [s]; "never" otherwise
   energy lost  E(0) - E(T), E = kinetic + gravitational + spring energy [J] (and % of E(0))
+  sag          a cloth: largest drop of its centre of mass (pins included) below its start [m];
+               sag at end: the drop at T. In a cloth scene the centre of mass, speeds and rest
+               are the cloth's (the spheres are not part of them)
+  swing        a cloth: largest distance of its centre of mass across g from its start [m]
+  sink         a cloth: largest depth r - |x - c| of an unpinned particle inside a sphere [cm];
+               sink at end: the same at T
   stable       whether the stability detector (contract §8) fired; the run stops there, is
                marked, and its measures cover the time before (at rest: never)
   cost         wall time of the steps per simulated second (median of --repeats runs), force
                (acceleration) evaluations and backward Euler's CG iterations
-  Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain.
-  Which of impact, bounce, cave-in, at rest and energy are measured and written is the scene's
-  assignment's choice: its manifest's [studies] measures (impact, bounce, cave_in, rest, energy).
+  Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain (or, in a
+  cloth scene, no impulse acted).
+  Which of these are measured and written is the scene's assignment's choice: its manifest's
+  [studies] measures (impact, bounce, cave_in, rest, energy, sag, swing, sink; A1 lists the
+  first five, A2 sag, swing, sink and energy).
 
 options:
   --param KEY         the parameter to sweep, as `jelly params SCENE` lists it; '*' stands for

@@ -133,31 +133,50 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
                       ? Vec3(-world.gravity()->normalized())
                       : Vec3(0.0, 1.0, 0.0);
   const Eigen::VectorXd& mass = world.masses();
-  const double total_mass = mass.sum();
+  // A cloth scene measures the cloth (cloth contract decision 12), not the dynamic spheres that
+  // follow it in the state; an A1 scene every particle.
+  const bool cloth = !world.cloths().empty();
+  const Eigen::Index body = cloth ? world.cloth_particle_count() : world.particle_count();
+  const double total_mass = mass.head(body).sum();
   const CubeLattice* cube =
       !o.measures.cave_in || world.cubes().empty() ? nullptr : &world.cubes().front();
   row.rest_volume = cube ? cube_volume(*cube, sim.state().x) : kNaN;
   const auto touches = [&] {
     const auto& c = world.counters();
     return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
-           std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0});
+           std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0}) + c.impulses;
   };
   struct Look {
     Vec3 com_v;
     double height, max_speed;
+    Vec3 com;
   };
   const auto look = [&](const State& s) {
-    Look l{Vec3::Zero(), 0.0, 0.0};
-    Vec3 com = Vec3::Zero();
-    for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
-      com += mass[i] * s.x.col(i);
+    Look l{Vec3::Zero(), 0.0, 0.0, Vec3::Zero()};
+    for (Eigen::Index i = 0; i < body; ++i) {
+      l.com += mass[i] * s.x.col(i);
       l.com_v += mass[i] * s.v.col(i);
       l.max_speed = std::max(l.max_speed, s.v.col(i).norm());
     }
-    l.height = up.dot(com) / total_mass;
+    l.com /= total_mass;
+    l.height = up.dot(l.com);
     l.com_v /= total_mass;
     return l;
   };
+  // The deepest unpinned cloth particle inside a sphere (r − |x − c|), 0 when none is inside.
+  const auto sink_depth = [&](const State& s) {
+    double deepest = 0.0;
+    for (int k = 0; k < world.sphere_count(); ++k) {
+      const int p = world.sphere_particle(k);
+      const Vec3 c = p >= 0 ? Vec3(s.x.col(p)) : world.sphere(k).center;
+      const double r = world.sphere(k).radius;
+      for (Eigen::Index i = 0; i < body; ++i)
+        if (!world.is_pinned(static_cast<int>(i)))
+          deepest = std::max(deepest, r - (s.x.col(i) - c).norm());
+    }
+    return deepest;
+  };
+  const bool sinks = cloth && world.sphere_count() > 0 && o.measures.sink;
 
   const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
   row.contact_time = row.impact_speed = row.turn_time = kNaN;
@@ -174,6 +193,9 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     next_sample += o.series_dt;
   };
   Look before = look(sim.state());
+  const Look start = before;
+  row.sag = row.sag_final = row.swing = cloth ? 0.0 : kNaN;
+  row.sink = row.sink_final = sinks ? sink_depth(sim.state()) : kNaN;
   sample(before);
   row.cave_in = 0.0;
   bool contact = false, turned = false;
@@ -209,6 +231,16 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     if (turned) {
       row.peak_speed = std::max(row.peak_speed, now.com_v.norm());
       row.com_apex = std::max(row.com_apex, now.height);
+    }
+    if (cloth) {
+      row.sag_final = start.height - now.height;
+      row.sag = std::max(row.sag, row.sag_final);
+      const Vec3 d = now.com - start.com;
+      row.swing = std::max(row.swing, (d - up.dot(d) * up).norm());
+    }
+    if (sinks) {
+      row.sink_final = sink_depth(s);
+      row.sink = std::max(row.sink, row.sink_final);
     }
     if (cube) {
       volume = cube_volume(*cube, s.x);
@@ -259,8 +291,8 @@ double time_again(const SceneSpec& scene, IntegratorKind kind, long steps) {
 }  // namespace
 
 Measures measures_from(const std::vector<std::string>& names, const std::string& manifest) {
-  Measures m{false, false, false, false, false};
-  bool* flags[] = {&m.impact, &m.bounce, &m.cave_in, &m.rest, &m.energy};
+  Measures m{false, false, false, false, false, false, false, false};
+  bool* flags[] = {&m.impact, &m.bounce, &m.cave_in, &m.rest, &m.energy, &m.sag, &m.swing, &m.sink};
   for (const std::string& name : names) {
     const auto it = std::find(kKnownMeasures.begin(), kKnownMeasures.end(), name);
     if (it == kKnownMeasures.end()) {
@@ -360,6 +392,9 @@ EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::
         std::string seen = row.stable ? "stable," : "UNSTABLE,";
         if (o.measures.cave_in) seen += " cave-in " + fmt("%.3g", 100.0 * row.cave_in) + " %,";
         if (o.measures.bounce) seen += " bounce " + fmt("%.3g", row.bounce) + " m,";
+        if (o.measures.sag) seen += " sag " + fmt("%.3g", row.sag) + " m,";
+        if (o.measures.swing) seen += " swing " + fmt("%.3g", row.swing) + " m,";
+        if (o.measures.sink) seen += " sink " + fmt("%.3g", 100.0 * row.sink) + " cm,";
         if (o.measures.rest)
           seen += " rest " +
                   (std::isnan(row.rest_time) ? "never" : fmt("%.3g", row.rest_time) + " s") + ",";

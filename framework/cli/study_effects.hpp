@@ -18,8 +18,8 @@ namespace jelly::cli::study {
 /// The measures the framework knows, by the names an assignment's manifest lists under
 /// [studies] measures (docs/parameters.md, "What is measured"). The cost and the stability of
 /// every run are always reported.
-inline constexpr std::array<std::string_view, 5> kKnownMeasures = {"impact", "bounce", "cave_in",
-                                                                   "rest", "energy"};
+inline constexpr std::array<std::string_view, 8> kKnownMeasures = {
+    "impact", "bounce", "cave_in", "rest", "energy", "sag", "swing", "sink"};
 
 /// Which measures a study computes and reports.
 struct Measures {
@@ -28,6 +28,10 @@ struct Measures {
   bool cave_in = true;  ///< the volume inside a cube body's outer surface, against its rest volume
   bool rest = true;     ///< when the body comes to rest
   bool energy = true;   ///< energy at start and end, and what was lost
+  // Cloth scenes (assignment A2); NaN in a scene without a cloth (or without spheres: sink).
+  bool sag = false;    ///< how far the cloth's centre of mass drops below its start
+  bool swing = false;  ///< how far it moves sideways (across g) from its start
+  bool sink = false;   ///< how deep cloth particles get inside the spheres
 };
 
 /// The measures `names` lists (a manifest's [studies] measures; `manifest` names the file in
@@ -37,8 +41,9 @@ Measures measures_from(const std::vector<std::string>& names, const std::string&
 /// What to sweep and how to measure it (plain data: the command line only fills it in).
 struct EffectsOptions {
   /// The swept key as `jelly params` lists it; '*' stands for one dotted part
-  /// ("springs.*.ks" sets every spring type the scene has), and ".x"/".y"/".z" after a vector key
-  /// sets one component ("body.center.y" is the drop height). Empty: only integrators are swept.
+  /// ("springs.*.ks" sets every spring type the scene has; "sphere.*.radius" every sphere), and
+  /// ".x"/".y"/".z" after a vector key sets one component ("body.center.y" is the drop height).
+  /// Empty: only integrators are swept.
   std::string key;
   std::vector<std::string> values;          ///< the key's values, as text (set_parameter's forms)
   std::vector<IntegratorKind> integrators;  ///< one run per integrator and value (integrator-major)
@@ -68,7 +73,12 @@ struct EffectsRow {
   double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction; cube bodies)
   double cave_in_final = 0.0;  ///< 1 − V(T)/V(0)
   double rest_time =
-      0.0;  ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
+      0.0;           ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
+  double sag = 0.0;  ///< cloth: largest drop of its centre of mass below t = 0 [m]
+  double sag_final = 0.0;     ///< cloth: the drop at the end [m]
+  double swing = 0.0;         ///< cloth: largest distance of its centre of mass across g [m]
+  double sink = 0.0;          ///< cloth: largest depth of an unpinned particle in a sphere [m]
+  double sink_final = 0.0;    ///< cloth: the same at the end [m]
   double energy_start = 0.0;  ///< kinetic + gravitational + spring at t = 0 [J]
   double energy_end = 0.0;    ///< the same at the end [J]
   bool stable = true;         ///< the §8 detector never fired (the run stops when it does)

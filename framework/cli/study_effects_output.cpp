@@ -83,7 +83,9 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,"
       << (m.impact ? "contact_time,impact_speed," : "")
       << (m.bounce ? "turn_time,peak_speed_after_impact,com_apex,bounce_height," : "")
-      << (m.cave_in ? "rest_volume,cave_in_max,cave_in_final," : "") << (m.rest ? "rest_time," : "")
+      << (m.cave_in ? "rest_volume,cave_in_max,cave_in_final," : "")
+      << (m.sag ? "sag_max,sag_final," : "") << (m.swing ? "swing_max," : "")
+      << (m.sink ? "sink_max,sink_final," : "") << (m.rest ? "rest_time," : "")
       << (m.energy ? "energy_start,energy_end,energy_dissipated,dissipated_fraction," : "")
       << "sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,reason\n";
   for (const EffectsRow& row : r.rows) {
@@ -98,6 +100,9 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     if (m.cave_in)
       csv << num(row.rest_volume) << ',' << num(row.cave_in) << ',' << num(row.cave_in_final)
           << ',';
+    if (m.sag) csv << num(row.sag) << ',' << num(row.sag_final) << ',';
+    if (m.swing) csv << num(row.swing) << ',';
+    if (m.sink) csv << num(row.sink) << ',' << num(row.sink_final) << ',';
     if (m.rest) csv << num(row.rest_time) << ',';
     if (m.energy)
       csv << num(row.energy_start) << ',' << num(row.energy_end) << ',' << num(row.dissipated())
@@ -130,10 +135,13 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
      << (m.impact ? " impact speed [m/s] |" : "")
      << (m.bounce ? " peak speed after [m/s] | bounce [m] |" : "")
      << (m.cave_in ? " cave-in max | cave-in at end |" : "")
+     << (m.sag ? " sag max [m] | sag at end [m] |" : "") << (m.swing ? " swing [m] |" : "")
+     << (m.sink ? " sink max [cm] | sink at end [cm] |" : "")
      << (m.rest ? " at rest from [s] |" : "") << (m.energy ? " energy lost |" : "")
      << " wall s / sim s | force evals / sim s |\n";
   md << "|---|" << (o.key.empty() ? "" : "---|") << "---|---|" << (m.impact ? "---|" : "")
-     << (m.bounce ? "---|---|" : "") << (m.cave_in ? "---|---|" : "") << (m.rest ? "---|" : "")
+     << (m.bounce ? "---|---|" : "") << (m.cave_in ? "---|---|" : "") << (m.sag ? "---|---|" : "")
+     << (m.swing ? "---|" : "") << (m.sink ? "---|---|" : "") << (m.rest ? "---|" : "")
      << (m.energy ? "---|" : "") << "---|---|\n";
   for (const EffectsRow& row : r.rows) {
     std::string stable = row.stable ? "yes" : "**no**";
@@ -147,6 +155,10 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     if (m.cave_in)
       md << fmt("%.1f %%", 100.0 * row.cave_in) << " | "
          << fmt("%.1f %%", 100.0 * row.cave_in_final) << " | ";
+    if (m.sag) md << fmt("%.4f", row.sag) << " | " << fmt("%.4f", row.sag_final) << " | ";
+    if (m.swing) md << fmt("%.4f", row.swing) << " | ";
+    if (m.sink)
+      md << fmt("%.2f", 100.0 * row.sink) << " | " << fmt("%.2f", 100.0 * row.sink_final) << " | ";
     if (m.rest)
       md << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time))
          << " | ";
@@ -172,7 +184,10 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   const std::size_t per_block = o.key.empty() ? r.rows.size() : o.values.size();
   const std::size_t blocks = per_block ? r.rows.size() / per_block : 0;
   std::ostringstream dat;
-  dat << "# x stable peak_speed bounce cave_in_% rest_time dissipated_% wall_per_sim label\n";
+  // A cloth's measures follow the label (an A1 study's file stays as it was).
+  const bool cloth_columns = m.sag || m.swing || m.sink;
+  dat << "# x stable peak_speed bounce cave_in_% rest_time dissipated_% wall_per_sim label"
+      << (cloth_columns ? " sag swing sink_cm" : "") << '\n';
   for (std::size_t b = 0; b < blocks; ++b) {
     if (b) dat << "\n\n";
     dat << "# "
@@ -185,7 +200,10 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
           << num(row.peak_speed) << ' ' << num(row.bounce) << ' ' << num(100.0 * row.cave_in) << ' '
           << num(row.rest_time) << ' '
           << num(row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0) << ' '
-          << num(row.wall_per_sim()) << " \"" << label << "\"\n";
+          << num(row.wall_per_sim()) << " \"" << label << "\"";
+      if (cloth_columns)
+        dat << ' ' << num(row.sag) << ' ' << num(row.swing) << ' ' << num(100.0 * row.sink);
+      dat << '\n';
     }
   }
   write_file(with(".dat"), dat.str());
@@ -194,26 +212,32 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   const std::string dat_name = with(".dat").filename().string();
   const std::string xlabel = o.key.empty() ? "integrator" : o.key;
   // The panels of the measures the scene's assignment reports, then the cost.
-  const char* panels[6][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
-                              {"4", "bounce height of the centre of mass [m]"},
-                              {"5", "cave-in: largest volume loss [%]"},
-                              {"6", "at rest from [s] (none: never)"},
-                              {"7", "energy dissipated [% of the start]"},
-                              {"8", "wall time per simulated second [s]"}};
-  const bool shown[6] = {m.bounce, m.bounce, m.cave_in, m.rest, m.energy, true};
+  constexpr int kPanels = 9;
+  const char* panels[kPanels][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
+                                    {"4", "bounce height of the centre of mass [m]"},
+                                    {"5", "cave-in: largest volume loss [%]"},
+                                    {"10", "sag: largest drop of the cloth [m]"},
+                                    {"11", "swing: largest sideways move of the cloth [m]"},
+                                    {"12", "sink: deepest particle in a sphere [cm]"},
+                                    {"6", "at rest from [s] (none: never)"},
+                                    {"7", "energy dissipated [% of the start]"},
+                                    {"8", "wall time per simulated second [s]"}};
+  const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
+                               m.sink,   m.rest,   m.energy,  true};
   std::ostringstream body;
-  body << multiplot_layout(static_cast<int>(std::count(shown, shown + 6, true)), title);
+  body << multiplot_layout(static_cast<int>(std::count(shown, shown + kPanels, true)), title);
   // Which measure has any finite value (gnuplot refuses a panel without one).
   const auto measure = [](const EffectsRow& row, int p) {
-    const double v[6] = {row.peak_speed, row.bounce,       row.cave_in,
-                         row.rest_time,  row.dissipated(), row.wall_per_sim()};
+    const double v[kPanels] = {row.peak_speed, row.bounce,       row.cave_in,
+                               row.sag,        row.swing,        100.0 * row.sink,
+                               row.rest_time,  row.dissipated(), row.wall_per_sim()};
     return v[p];
   };
   bool cross_titled = false;
-  for (int p = 0; p < 6; ++p) {
+  for (int p = 0; p < kPanels; ++p) {
     if (!shown[p]) continue;
     body << "set ylabel '" << panels[p][1] << "' font ',9'\n";
-    body << (p == 5 ? "set logscale y\n" : "unset logscale y\n");
+    body << (p == kPanels - 1 ? "set logscale y\n" : "unset logscale y\n");
     const bool any = std::any_of(r.rows.begin(), r.rows.end(), [&](const EffectsRow& row) {
       return std::isfinite(measure(row, p));
     });

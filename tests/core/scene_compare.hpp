@@ -35,6 +35,44 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
     JELLY_CMP(a.cube.velocity, b.cube.velocity, "cube.velocity", v3);
     JELLY_CMP(a.cube.rotation_axis, b.cube.rotation_axis, "cube.rotation_axis", v3);
     JELLY_CMP(a.cube.rotation_degrees, b.cube.rotation_degrees, "cube.rotation_degrees", num);
+  } else if (a.body_kind == BodyKind::Cloth) {
+    const ClothSpec& c = a.cloth;
+    const ClothSpec& d = b.cloth;
+    JELLY_CMP(c.n, d.n, "cloth.n", i);
+    JELLY_CMP(c.size, d.size, "cloth.size", num);
+    JELLY_CMP(c.mass, d.mass, "cloth.mass", num);
+    JELLY_CMP(c.center, d.center, "cloth.center", v3);
+    JELLY_CMP(c.velocity, d.velocity, "cloth.velocity", v3);
+    JELLY_CMP(c.rotation_axis, d.rotation_axis, "cloth.rotation_axis", v3);
+    JELLY_CMP(c.rotation_degrees, d.rotation_degrees, "cloth.rotation_degrees", num);
+    JELLY_CMP(c.air_drag, d.air_drag, "cloth.air_drag", num);
+    if (c.pin_sets != d.pin_sets) return "cloth.pin_sets differ";
+    if (c.pins != d.pins) return "cloth.pins differ";
+    const ClothCollisionSettings& e = a.collisions;
+    const ClothCollisionSettings& f = b.collisions;
+    JELLY_CMP(e.cloth_restitution, f.cloth_restitution, "collision.cloth_restitution", num);
+    JELLY_CMP(e.sphere_restitution, f.sphere_restitution, "collision.sphere_restitution", num);
+    JELLY_CMP(e.tolerance, f.tolerance, "collision.tolerance", num);
+    JELLY_CMP(e.friction, f.friction, "collision.friction", num);
+    JELLY_CMP(e.push_out, f.push_out, "collision.push_out", num);
+    JELLY_CMP(a.spheres.size(), b.spheres.size(), "sphere count", i);
+    for (std::size_t k = 0; k < a.spheres.size(); ++k) {
+      const SphereSpec& p = a.spheres[k];
+      const SphereSpec& q = b.spheres[k];
+      const std::string at = "spheres[" + std::to_string(k) + "]";
+      JELLY_CMP(p.center, q.center, at + ".center", v3);
+      JELLY_CMP(p.radius, q.radius, at + ".radius", num);
+      JELLY_CMP(p.kinematic, q.kinematic, at + ".kinematic", i);
+      // The mass the sphere has (a mass given equal to 1000·r³ means the same sphere).
+      JELLY_CMP(p.mass.value_or(default_sphere_mass(p.radius)),
+                q.mass.value_or(default_sphere_mass(q.radius)), at + ".mass", num);
+      if (!p.kinematic) JELLY_CMP(p.velocity, q.velocity, at + ".velocity", v3);
+      JELLY_CMP(p.schedule.size(), q.schedule.size(), at + ".schedule size", i);
+      for (std::size_t m = 0; m < p.schedule.size(); ++m) {
+        JELLY_CMP(p.schedule[m].time, q.schedule[m].time, at + ".schedule.time", num);
+        JELLY_CMP(p.schedule[m].velocity, q.schedule[m].velocity, at + ".schedule.velocity", v3);
+      }
+    }
   } else {
     const ParticleBodySpec& p = a.particles;
     const ParticleBodySpec& q = b.particles;

@@ -15,6 +15,7 @@ std::string scope_text(const params_detail::Bound& b) {
     case Scope::GravityOn: return "with gravity";
     case Scope::Cube: return "cube body";
     case Scope::Particles: return "particles body";
+    case Scope::Cloth: return "cloth body";
     case Scope::Element:
       return "every " + std::string(b.collection ? b.collection->noun : "element");
     case Scope::SpringOn: return "present spring types";
@@ -22,6 +23,8 @@ std::string scope_text(const params_detail::Bound& b) {
     case Scope::PlaneHole: return "plane with a hole";
     case Scope::Bowl: return "bowl";
     case Scope::Sphere: return "sphere";
+    case Scope::DynamicSphere: return "dynamic spheres";
+    case Scope::KinematicSphere: return "kinematic spheres";
   }
   return "";
 }
@@ -38,6 +41,9 @@ std::string_view kind_text(params_detail::ValueKind k) {
     case ValueKind::Vec3List: return "list of points";
     case ValueKind::IndexPairList: return "list of index pairs";
     case ValueKind::RealList: return "list of reals";
+    case ValueKind::NameList: return "list of names";
+    case ValueKind::GridList: return "list of grid coordinates";
+    case ValueKind::Schedule: return "schedule";
   }
   return "";
 }
@@ -45,13 +51,15 @@ std::string_view kind_text(params_detail::ValueKind k) {
 std::string range_text(const params_detail::Decl& d) {
   using params_detail::format_double;
   using params_detail::ValueKind;
-  if (d.kind == ValueKind::Choice) {
+  if (d.kind == ValueKind::Choice || d.kind == ValueKind::NameList) {
     std::string s;
     for (std::string_view c : d.choices) s += (s.empty() ? "" : ", ") + std::string(c);
     return s;
   }
   if (d.nonzero) return "non-zero length";
   if (d.kind == ValueKind::IndexPairList) return "indices of positions, a ≠ b";
+  if (d.kind == ValueKind::GridList) return "0 ≤ i, k < n";
+  if (d.kind == ValueKind::Schedule) return "times strictly increasing";
   if (!d.bounded) {
     return d.kind == ValueKind::Bool || d.kind == ValueKind::Text ? "" : "finite";
   }

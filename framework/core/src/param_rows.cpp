@@ -37,6 +37,7 @@ constexpr Range kPositive{true, 0.0, kInf, false, true};
 constexpr Range kNonNegative{true, 0.0, kInf, true, true};
 constexpr Range kUnitInterval{true, 0.0, 1.0, true, true};
 constexpr Range kCubeN{true, 2.0, 64.0, true, true};
+constexpr Range kClothN{true, 2.0, 200.0, true, true};
 
 using Getter = Value (*)(const SceneSpec&, const Ctx&);
 using Setter = void (*)(SceneSpec&, const Ctx&, const Value&);
@@ -72,6 +73,11 @@ Decl presence(Decl d) {
   d.presence = true;
   return d;
 }
+/// A row the writer writes only when `when` holds.
+Decl written_if(Decl d, bool (*when)(const SceneSpec&, const Ctx&)) {
+  d.written = when;
+  return d;
+}
 /// A row with its own check against the rest of the scene.
 Decl checked(Decl d, RowCheck check) {
   d.check = check;
@@ -80,7 +86,8 @@ Decl checked(Decl d, RowCheck check) {
 
 // ----- accessors shared by several rows -----
 
-SpringType spring_type(const Ctx& c) { return kSpringTypes[c.index]; }
+SphereSpec& sphere_spec(SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
+const SphereSpec& sphere_spec(const SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
 
 Terrain& terrain(SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
 const Terrain& terrain(const SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
@@ -136,6 +143,8 @@ SceneSpec defaults_scene(Scope scope) {
   if (scope == Scope::Bowl) t.shape = Bowl{};
   if (scope == Scope::Sphere) t.shape = Sphere{};
   s.terrains.push_back(std::move(t));
+  s.spheres.emplace_back();
+  if (scope == Scope::KinematicSphere) s.spheres.back().kinematic = true;
   return s;
 }
 
@@ -216,14 +225,16 @@ const std::vector<Decl>& global_decls() {
       // [body]
       make(
           "body.type", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
-          "The body: a jelly cube, or particles given one by one",
+          "The body: a jelly cube, particles given one by one, or a cloth (assignment A2)",
           [](const SceneSpec& s, const Ctx&) -> Value {
-            return std::string(s.body_kind == BodyKind::Cube ? "cube" : "particles");
+            return std::string(body_kind_name(s.body_kind));
           },
           [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.body_kind = text(v) == "cube" ? BodyKind::Cube : BodyKind::Particles;
+            s.body_kind = text(v) == "cube"        ? BodyKind::Cube
+                          : text(v) == "particles" ? BodyKind::Particles
+                                                   : BodyKind::Cloth;
           },
-          {"cube", "particles"}),
+          {"cube", "particles", "cloth"}),
       make(
           "body.n", Scope::Cube, ValueKind::Integer, "", Default::Yes, kCubeN,
           "Particles per cube edge (n³ particles)",
@@ -339,6 +350,104 @@ const std::vector<Decl>& global_decls() {
             s.particles.spring_type = *spring_type_from_string(text(v));
           },
           {"structural", "shear", "shear_body", "bending"}),
+      // [body] of a cloth (cloth contract §1)
+      make(
+          "body.n", Scope::Cloth, ValueKind::Integer, "", Default::Yes, kClothN,
+          "Particles per cloth edge (n² particles)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return static_cast<long long>(s.cloth.n); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.cloth.n = static_cast<int>(std::get<long long>(v));
+          }),
+      make(
+          "body.size", Scope::Cloth, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Side L of the square cloth; spacing L/(n-1)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.size; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.size = real(v); }),
+      make(
+          "body.mass", Scope::Cloth, ValueKind::Real, "kg", Default::Yes, kPositive,
+          "Mass of every cloth particle",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.mass; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.mass = real(v); }),
+      make(
+          "body.center", Scope::Cloth, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "Centre c0; the horizontal square grid is centred exactly on it",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.center; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.center = vec(v); }),
+      make(
+          "body.velocity", Scope::Cloth, ValueKind::Vector3, "m/s", Default::Yes, kAny,
+          "Initial velocity of every unpinned particle (not rotated)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.velocity; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.velocity = vec(v); }),
+      make(
+          "body.rotation_axis", Scope::Cloth, ValueKind::Vector3, "", Default::Yes, kAny,
+          "Axis of the initial rotation about c0 (normalised when used)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_axis; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.rotation_axis = vec(v); }, {},
+          /*nonzero=*/true),
+      make(
+          "body.rotation_degrees", Scope::Cloth, ValueKind::Real, "deg", Default::Yes, kAny,
+          "Initial rotation angle about rotation_axis (90 about x: a curtain; 90 about z: a flag)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_degrees; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.rotation_degrees = real(v); }),
+      make(
+          "body.pins", Scope::Cloth, ValueKind::NameList, "", Default::Yes, kAny,
+          "Named sets of pinned particles: corners (the four), edge (the row k = 0); [] for none",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.pin_sets; },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.cloth.pin_sets = std::get<std::vector<std::string>>(v);
+          },
+          {kPinSets.begin(), kPinSets.end()}),
+      written_if(
+          checked(make(
+                      "body.pin_points", Scope::Cloth, ValueKind::GridList, "", Default::Yes, kAny,
+                      "Further pinned particles by grid coordinates [[i, k], ...]",
+                      [](const SceneSpec& s, const Ctx&) -> Value {
+                        std::vector<IndexPair> out;
+                        for (const GridCoord& p : s.cloth.pins) out.push_back({p[0], p[1]});
+                        return out;
+                      },
+                      [](SceneSpec& s, const Ctx&, const Value& v) {
+                        s.cloth.pins.clear();
+                        for (const IndexPair& p : std::get<std::vector<IndexPair>>(v))
+                          s.cloth.pins.push_back({static_cast<int>(p[0]), static_cast<int>(p[1])});
+                      }),
+                  check_pin_points),
+          [](const SceneSpec& s, const Ctx&) { return !s.cloth.pins.empty(); }),
+      make(
+          "body.air_drag", Scope::Cloth, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
+          "Air drag k_air: force -k_air v on every cloth particle (the course: 3.4e-4)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.air_drag; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.air_drag = real(v); }),
+      // [collision] of a cloth scene (cloth contract §4)
+      make(
+          "collision.cloth_restitution", Scope::Cloth, ValueKind::Real, "", Default::Yes,
+          kUnitInterval, "Restitution e_cloth of cloth-sphere impulses (the course: 0)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.cloth_restitution; },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.collisions.cloth_restitution = real(v);
+          }),
+      make(
+          "collision.sphere_restitution", Scope::Cloth, ValueKind::Real, "", Default::Yes,
+          kUnitInterval, "Restitution e_sphere of sphere-sphere impulses",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.sphere_restitution; },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            s.collisions.sphere_restitution = real(v);
+          }),
+      make(
+          "collision.tolerance", Scope::Cloth, ValueKind::Real, "m", Default::Yes, kNonNegative,
+          "Tolerance ε: a pair collides when its gap φ < ε and it approaches (both kinds of pair)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.tolerance; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.tolerance = real(v); }),
+      make(
+          "collision.friction", Scope::Cloth, ValueKind::Real, "", Default::Yes, kNonNegative,
+          "Coulomb friction μ of every pair's impulse (the course's bonus; 0: none)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.friction; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.friction = real(v); }),
+      make(
+          "collision.push_out", Scope::Cloth, ValueKind::Real, "", Default::Yes, kUnitInterval,
+          "Push-out β: a particle inside a sphere moves the share β of its depth out (0: none)",
+          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.push_out; },
+          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.push_out = real(v); }),
   });
   return table;
 }
@@ -352,31 +461,35 @@ std::vector<Decl> spring_rows() {
           "Whether springs of this type are built (the table is present); true adds them with "
           "the default coefficients",
           [](const SceneSpec& s, const Ctx& c) -> Value {
-            return spring_settings(s, spring_type(c)).enabled;
+            return spring_settings(s, spring_type_at(s, c.index)).enabled;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            SpringSettings& st = spring_settings(s, spring_type(c));
+            SpringSettings& st = spring_settings(s, spring_type_at(s, c.index));
             if (flag(v) == st.enabled) return;
             st = SpringSettings{};  // on: defaults; off: back to the normal form of an absent table
             st.enabled = flag(v);
+            if (st.enabled && s.body_kind == BodyKind::Cloth) {
+              st.ks = kClothDefaultKs;  // cloth contract decision 10
+              st.kd = kClothDefaultKd;
+            }
           })),
       make(
           "springs.*.ks", Scope::SpringOn, ValueKind::Real, "N/m", Default::Yes, kNonNegative,
           "Stiffness of every spring of this type",
           [](const SceneSpec& s, const Ctx& c) -> Value {
-            return spring_settings(s, spring_type(c)).ks;
+            return spring_settings(s, spring_type_at(s, c.index)).ks;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            spring_settings(s, spring_type(c)).ks = real(v);
+            spring_settings(s, spring_type_at(s, c.index)).ks = real(v);
           }),
       make(
           "springs.*.kd", Scope::SpringOn, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
           "Damping along every spring of this type",
           [](const SceneSpec& s, const Ctx& c) -> Value {
-            return spring_settings(s, spring_type(c)).kd;
+            return spring_settings(s, spring_type_at(s, c.index)).kd;
           },
           [](SceneSpec& s, const Ctx& c, const Value& v) {
-            spring_settings(s, spring_type(c)).kd = real(v);
+            spring_settings(s, spring_type_at(s, c.index)).kd = real(v);
           }),
   });
 }
@@ -491,9 +604,67 @@ std::vector<Decl> terrain_rows() {
   });
 }
 
-std::vector<std::string> spring_type_names(const SceneSpec&) {
+std::vector<Decl> sphere_rows() {
+  return with_defaults({
+      make(
+          "sphere.*.center", Scope::Element, ValueKind::Vector3, "m", Default::Yes, kAny,
+          "Initial centre c",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).center; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).center = vec(v); }),
+      make(
+          "sphere.*.radius", Scope::Element, ValueKind::Real, "m", Default::Yes, kPositive,
+          "Radius r",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).radius; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).radius = real(v); }),
+      make(
+          "sphere.*.kinematic", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
+          "Moved by its schedule with inverse mass 0 (true), or by gravity and impulses (false)",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).kinematic; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) {
+            sphere_spec(s, c).kinematic = flag(v);
+          }),
+      written_if(
+          make(
+              "sphere.*.mass", Scope::DynamicSphere, ValueKind::Real, "kg", Default::None,
+              kPositive, "Mass M; when not given 1000 r^3 (the course's formula)",
+              [](const SceneSpec& s, const Ctx& c) -> Value {
+                const SphereSpec& sp = sphere_spec(s, c);
+                return sp.mass.value_or(default_sphere_mass(sp.radius));
+              },
+              [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).mass = real(v); }),
+          [](const SceneSpec& s, const Ctx& c) { return sphere_spec(s, c).mass.has_value(); }),
+      make(
+          "sphere.*.velocity", Scope::DynamicSphere, ValueKind::Vector3, "m/s", Default::Yes, kAny,
+          "Initial velocity u",
+          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).velocity; },
+          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).velocity = vec(v); }),
+      checked(
+          make(
+              "sphere.*.schedule", Scope::KinematicSphere, ValueKind::Schedule, "s: m/s",
+              Default::Yes, kAny,
+              "From each time on, the velocity it moves at (zero before the first entry); "
+              "TOML [{ time = t, velocity = [x, y, z] }, ...]",
+              [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).schedule; },
+              [](SceneSpec& s, const Ctx& c, const Value& v) {
+                sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
+              }),
+          check_schedule),
+  });
+}
+
+std::vector<std::string> spring_type_names(const SceneSpec& s) {
   std::vector<std::string> out;
-  for (SpringType t : kSpringTypes) out.emplace_back(to_string(t));
+  if (s.body_kind == BodyKind::Cloth) {
+    for (SpringType t : kClothSpringTypes) out.emplace_back(to_string(t));
+  } else {
+    for (SpringType t : kSpringTypes) out.emplace_back(to_string(t));
+  }
+  return out;
+}
+
+std::vector<std::string> sphere_names(const SceneSpec& s) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < s.spheres.size(); ++i) out.push_back(std::to_string(i));
   return out;
 }
 
@@ -529,6 +700,9 @@ const std::vector<Collection>& collections() {
     // [[terrain]]: the scene's terrains, each named by its `name` key.
     out.push_back(collection("terrain", "<name>", "terrain", Layout::ArrayOfTables, terrain_names,
                              terrain_rows()));
+    // [[sphere]]: a cloth scene's spheres, named by their position: sphere.0.radius.
+    out.push_back(
+        collection("sphere", "<i>", "sphere", Layout::Indexed, sphere_names, sphere_rows()));
     return out;
   }();
   return list;
@@ -543,6 +717,20 @@ const Decl* find_decl(std::string_view pattern) {
     for (const Decl& d : c.rows)
       if (d.pattern == pattern) return &d;
   return nullptr;
+}
+
+SpringType spring_type_at(const SceneSpec& s, std::size_t index) {
+  if (s.body_kind == BodyKind::Cloth) return kClothSpringTypes[std::min<std::size_t>(index, 2)];
+  return kSpringTypes[index];
+}
+
+std::string_view body_kind_name(BodyKind k) {
+  switch (k) {
+    case BodyKind::Cube: return "cube";
+    case BodyKind::Particles: return "particles";
+    case BodyKind::Cloth: return "cloth";
+  }
+  return "cube";
 }
 
 SpringSettings& spring_settings(SceneSpec& s, SpringType t) {
@@ -590,8 +778,11 @@ bool applies(const Decl& d, const SceneSpec& s, const Ctx& c) {
     case Scope::GravityOn: return s.gravity.has_value();
     case Scope::Cube: return s.body_kind == BodyKind::Cube;
     case Scope::Particles: return s.body_kind == BodyKind::Particles;
+    case Scope::Cloth: return s.body_kind == BodyKind::Cloth;
+    case Scope::DynamicSphere: return c.index < s.spheres.size() && !s.spheres[c.index].kinematic;
+    case Scope::KinematicSphere: return c.index < s.spheres.size() && s.spheres[c.index].kinematic;
     case Scope::Element: return true;  // walk_keys visits only the elements a scene has
-    case Scope::SpringOn: return spring_settings(s, spring_type(c)).enabled;
+    case Scope::SpringOn: return spring_settings(s, spring_type_at(s, c.index)).enabled;
     case Scope::Plane:
       return has_terrain && std::holds_alternative<Plane>(s.terrains[c.index].shape);
     case Scope::PlaneHole:
@@ -665,6 +856,9 @@ std::optional<Bound> resolve_any(const SceneSpec& s, std::string_view key) {
 
 std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
   const std::string local(key_local(b.decl->pattern));
+  const std::string body = s.body_kind == BodyKind::Cube        ? "a cube"
+                           : s.body_kind == BodyKind::Particles ? "particles"
+                                                                : "a cloth";
   const auto terrain_label = [&] {
     const Terrain& t = s.terrains[b.ctx.index];
     return "terrain \"" + t.name + "\" is a " + std::string(terrain_type_name(t));
@@ -672,11 +866,20 @@ std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
   switch (b.decl->scope) {
     case Scope::GravityOn:
       return "the scene has no gravity (no [gravity] table); turn it on with gravity.enabled=true";
-    case Scope::Cube: return local + " is a key of a cube body, and this scene's body is particles";
+    case Scope::Cube: return local + " is a key of a cube body, and this scene's body is " + body;
     case Scope::Particles:
-      return local + " is a key of a particles body, and this scene's body is a cube";
+      return local + " is a key of a particles body, and this scene's body is " + body;
+    case Scope::Cloth:
+      return b.key +
+             " is a key of cloth scenes (body.type = \"cloth\"), and this scene's body is " + body;
+    case Scope::DynamicSphere:
+      return local + " is a key of a dynamic sphere, and sphere " + std::to_string(b.ctx.index) +
+             " is kinematic (kinematic = true: it moves by its schedule)";
+    case Scope::KinematicSphere:
+      return local + " is a key of a kinematic sphere (kinematic = true), and sphere " +
+             std::to_string(b.ctx.index) + " is dynamic";
     case Scope::SpringOn: {
-      const std::string type(to_string(spring_type(b.ctx)));
+      const std::string type(to_string(spring_type_at(s, b.ctx.index)));
       return "the scene has no [springs." + type + "] table; add it with springs." + type +
              ".enabled=true";
     }

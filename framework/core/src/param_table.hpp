@@ -33,30 +33,38 @@ enum class ValueKind {
   Text,
   Vec3List,
   IndexPairList,
-  RealList
+  RealList,
+  NameList,  ///< names from `choices` ("corners, edge"; body.pins)
+  GridList,  ///< cloth grid coordinates "i,k; i,k" (body.pin_points), stored as IndexPair
+  Schedule   ///< a kinematic sphere's velocity schedule "t: x,y,z; t: x,y,z"
 };
 
 using IndexPair = std::array<long long, 2>;
 /// A typed value: double (Real), long long (Integer), bool, Vec3, string (Choice, Text), or a list.
 using Value = std::variant<double, long long, bool, Vec3, std::string, std::vector<Vec3>,
-                           std::vector<IndexPair>, std::vector<double>>;
+                           std::vector<IndexPair>, std::vector<double>, std::vector<std::string>,
+                           std::vector<ScheduleEntry>>;
 
 /// When a declared key belongs to a scene.
 enum class Scope {
-  Always,     ///< every scene
-  GravityOn,  ///< scenes with gravity
-  Cube,       ///< body.type = cube
-  Particles,  ///< body.type = particles
-  Element,    ///< every element of the row's collection ("every spring type", "every terrain")
-  SpringOn,   ///< springs.<type>.*, only when that type is in the scene
-  Plane,      ///< plane terrains
-  PlaneHole,  ///< plane terrains with a hole
-  Bowl,       ///< bowl terrains
-  Sphere,     ///< sphere terrains
+  Always,         ///< every scene
+  GravityOn,      ///< scenes with gravity
+  Cube,           ///< body.type = cube
+  Particles,      ///< body.type = particles
+  Cloth,          ///< body.type = cloth (assignment A2)
+  Element,        ///< every element of the row's collection ("every spring type", "every terrain")
+  SpringOn,       ///< springs.<type>.*, only when that type is in the scene
+  Plane,          ///< plane terrains
+  PlaneHole,      ///< plane terrains with a hole
+  Bowl,           ///< bowl terrains
+  Sphere,         ///< sphere terrains
+  DynamicSphere,  ///< cloth scenes' spheres that are not kinematic
+  KinematicSphere,  ///< cloth scenes' kinematic spheres
 };
 
 /// Which element of its collection a row's key refers to: the position in the collection's
-/// elements (kSpringTypes for springs, SceneSpec::terrains for terrain); 0 for global rows.
+/// elements (the scene's spring types for springs, SceneSpec::terrains for terrain,
+/// SceneSpec::spheres for sphere); 0 for global rows.
 struct Ctx {
   std::size_t index = 0;
 };
@@ -89,12 +97,16 @@ struct Decl {
   Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
   void (*set)(SceneSpec&, const Ctx&, const Value&) = nullptr;
   RowCheck check = nullptr;  ///< the row's own check against the scene (after the range check)
+  /// Whether the writer writes the key (nullptr: always when it applies). A key whose value is
+  /// derived from others unless given (sphere.<i>.mass: 1000·r³) is written only when given.
+  bool (*written)(const SceneSpec&, const Ctx&) = nullptr;
 };
 
 /// How a collection's elements are written in a scene file.
 enum class Layout {
   Tables,         ///< one table per element, named by it: [springs.shear]
   ArrayOfTables,  ///< an array of tables whose `name` key names the element: [[terrain]]
+  Indexed,        ///< an array of tables named by their position 0, 1, ...: [[sphere]]
 };
 
 /// A named collection of keys: "<name>.<element>.<row>" for each element a scene has.
@@ -144,6 +156,15 @@ std::string_view key_local(std::string_view key);
 /// The spring types in the order scenes list them, and their key names.
 inline constexpr std::array<SpringType, 4> kSpringTypes = {
     SpringType::Structural, SpringType::Shear, SpringType::ShearBody, SpringType::Bending};
+/// A cloth has no body diagonals (cloth contract §2): its spring types.
+inline constexpr std::array<SpringType, 3> kClothSpringTypes = {
+    SpringType::Structural, SpringType::Shear, SpringType::Bending};
+/// A cloth scene's spring table without ks or kd: cloth contract decision 10 (A1's are the
+/// SpringSettings defaults).
+inline constexpr double kClothDefaultKs = 25000.0;
+inline constexpr double kClothDefaultKd = 750.0;
+/// The spring type of element `index` of the springs collection in scene `s`.
+SpringType spring_type_at(const SceneSpec& s, std::size_t index);
 SpringSettings& spring_settings(SceneSpec& s, SpringType t);
 const SpringSettings& spring_settings(const SceneSpec& s, SpringType t);
 std::optional<SpringType> spring_type_from_string(std::string_view name);
@@ -162,6 +183,16 @@ std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s,
                                                 const Value& v);
 std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
                                                    const Value& v);
+/// The row checks of body.pin_points (inside the grid) and sphere.<i>.schedule (strictly
+/// increasing times) (scene_checks.cpp).
+std::optional<std::string> check_pin_points(const Decl&, const SceneSpec& s, const Ctx&,
+                                            const Value& v);
+std::optional<std::string> check_schedule(const Decl&, const SceneSpec& s, const Ctx&,
+                                          const Value& v);
+/// The named pin sets a cloth scene may list (cloth contract §1, decision 8).
+inline constexpr std::array<std::string_view, 2> kPinSets = {"corners", "edge"};
+/// "body.type" as a scene writes it: "cube", "particles" or "cloth".
+std::string_view body_kind_name(BodyKind k);
 
 /// Whether a declaration applies to the scene in context ctx.
 bool applies(const Decl& d, const SceneSpec& s, const Ctx& ctx);

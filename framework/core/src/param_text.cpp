@@ -151,6 +151,14 @@ std::string expected_text(const Decl& d) {
     case ValueKind::Vec3List: return "a list of points \"x,y,z; x,y,z\"";
     case ValueKind::IndexPairList: return "a list of index pairs \"a,b; a,b\"";
     case ValueKind::RealList: return "a list of numbers \"r,r\"";
+    case ValueKind::NameList: {
+      std::string s = "a list of names from ";
+      for (std::size_t i = 0; i < d.choices.size(); ++i)
+        s += (i ? ", " : "") + std::string(d.choices[i]);
+      return s + " (\"name,name\"; empty for none)";
+    }
+    case ValueKind::GridList: return "a list of grid coordinates \"i,k; i,k\"";
+    case ValueKind::Schedule: return "a schedule \"time: x,y,z; time: x,y,z\"";
   }
   return "a value";
 }
@@ -189,6 +197,32 @@ std::variant<Value, std::string> parse_text(const Decl& d, std::string_view raw)
         }
       return Value{std::move(out)};
     }
+    case ValueKind::NameList: {
+      std::vector<std::string> out;
+      const std::string_view inner = strip_brackets(t);
+      if (!inner.empty())
+        for (std::string_view item : split(inner, ',')) {
+          if (item.size() >= 2 && item.front() == '"' && item.back() == '"')
+            item = item.substr(1, item.size() - 2);
+          if (item.empty()) return bad;
+          out.emplace_back(item);
+        }
+      return Value{std::move(out)};
+    }
+    case ValueKind::Schedule: {
+      std::vector<ScheduleEntry> out;
+      if (!t.empty())
+        for (std::string_view item : split(t, ';')) {
+          const std::size_t colon = item.find(':');
+          if (colon == std::string_view::npos) return bad;
+          const auto time = parse_double(item.substr(0, colon));
+          const auto velocity = parse_vec3(item.substr(colon + 1));
+          if (!time || !velocity) return bad;
+          out.push_back(ScheduleEntry{*time, *velocity});
+        }
+      return Value{std::move(out)};
+    }
+    case ValueKind::GridList:
     case ValueKind::IndexPairList: {
       std::vector<IndexPair> out;
       if (!t.empty())
@@ -233,6 +267,19 @@ std::string format_text(ValueKind kind, const Value& v) {
       for (const Vec3& p : std::get<std::vector<Vec3>>(v)) s += (s.empty() ? "" : "; ") + vec3(p);
       return s;
     }
+    case ValueKind::NameList: {
+      std::string s;
+      for (const std::string& name : std::get<std::vector<std::string>>(v))
+        s += (s.empty() ? "" : ",") + name;
+      return s;
+    }
+    case ValueKind::Schedule: {
+      std::string s;
+      for (const ScheduleEntry& e : std::get<std::vector<ScheduleEntry>>(v))
+        s += (s.empty() ? "" : "; ") + format_double(e.time) + ": " + vec3(e.velocity);
+      return s;
+    }
+    case ValueKind::GridList:
     case ValueKind::IndexPairList: {
       std::string s;
       for (const IndexPair& p : std::get<std::vector<IndexPair>>(v))

@@ -89,6 +89,37 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
           return "element " + std::to_string(i) + ": " + *e;
       return std::nullopt;
     }
+    case ValueKind::NameList: {
+      const auto& list = std::get<std::vector<std::string>>(v);
+      std::vector<std::string> options(d.choices.begin(), d.choices.end());
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        if (std::find(options.begin(), options.end(), list[i]) != options.end()) {
+          if (std::find(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i), list[i]) !=
+              list.begin() + static_cast<std::ptrdiff_t>(i))
+            return "element " + std::to_string(i) + ": " + in_quotes(list[i]) + " is listed twice";
+          continue;
+        }
+        std::string msg = "element " + std::to_string(i) + ": must be one of ";
+        for (std::size_t k = 0; k < options.size(); ++k) msg += (k ? ", " : "") + options[k];
+        msg += ", got " + in_quotes(list[i]);
+        const std::string near = closest(list[i], options);
+        if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
+        return msg;
+      }
+      return std::nullopt;
+    }
+    case ValueKind::GridList: return std::nullopt;  // against the grid: check_pin_points
+    case ValueKind::Schedule: {
+      const auto& list = std::get<std::vector<ScheduleEntry>>(v);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        if (!std::isfinite(list[i].time))
+          return "entry " + std::to_string(i) + ": time must be a finite number, got " +
+                 format_double(list[i].time);
+        if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": velocity "))
+          return e;
+      }
+      return std::nullopt;
+    }
   }
   return std::nullopt;
 }
@@ -143,6 +174,40 @@ std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s,
   return std::nullopt;
 }
 
+namespace {
+
+std::string pin_message(std::size_t i, long long a, long long b, int n) {
+  return "pin " + std::to_string(i) + " at (" + std::to_string(a) + ", " + std::to_string(b) +
+         ") is outside the " + std::to_string(n) + "×" + std::to_string(n) +
+         " grid; expected 0 ≤ i, k ≤ " + std::to_string(n - 1);
+}
+
+std::optional<std::string> schedule_order(const std::vector<ScheduleEntry>& list) {
+  for (std::size_t i = 1; i < list.size(); ++i)
+    if (!(list[i].time > list[i - 1].time))
+      return "times must increase strictly (cloth contract decision 5): entry " +
+             std::to_string(i) + " has time " + format_double(list[i].time) + " s after " +
+             format_double(list[i - 1].time) + " s";
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> check_pin_points(const Decl&, const SceneSpec& s, const Ctx&,
+                                            const Value& v) {
+  const auto& pins = std::get<std::vector<IndexPair>>(v);
+  const int n = s.cloth.n;
+  for (std::size_t i = 0; i < pins.size(); ++i)
+    if (pins[i][0] < 0 || pins[i][1] < 0 || pins[i][0] >= n || pins[i][1] >= n)
+      return pin_message(i, pins[i][0], pins[i][1], n);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_schedule(const Decl&, const SceneSpec&, const Ctx&,
+                                          const Value& v) {
+  return schedule_order(std::get<std::vector<ScheduleEntry>>(v));
+}
+
 std::optional<std::string> check_row(const Bound& b, const SceneSpec& s, const Value& v) {
   if (auto msg = check_value(*b.decl, v)) return msg;
   if (b.decl->check) return b.decl->check(*b.decl, s, b.ctx, v);
@@ -189,6 +254,29 @@ std::optional<CrossError> check_scene(const SceneSpec& s) {
                                                 "] coefficients, but the scene has no [springs." +
                                                 type + "] table"};
     }
+  }
+  if (s.body_kind == BodyKind::Cloth) {
+    const ClothSpec& c = s.cloth;
+    for (std::size_t i = 0; i < c.pins.size(); ++i)
+      if (c.pins[i][0] < 0 || c.pins[i][1] < 0 || c.pins[i][0] >= c.n || c.pins[i][1] >= c.n)
+        return CrossError{"body.pin_points", pin_message(i, c.pins[i][0], c.pins[i][1], c.n)};
+    if (!s.terrains.empty())
+      return CrossError{"terrain",
+                        "a cloth scene has no terrains (cloth contract §6); got terrain " +
+                            in_quotes(s.terrains.front().name) +
+                            " (the cloth meets spheres: [[sphere]])"};
+    if (s.shear_body.enabled)
+      return CrossError{"springs.shear_body",
+                        "a cloth has no body diagonals; its spring types are structural, shear "
+                        "and bending"};
+    for (std::size_t i = 0; i < s.spheres.size(); ++i)
+      if (auto msg = schedule_order(s.spheres[i].schedule))
+        return CrossError{"sphere." + std::to_string(i) + ".schedule", *msg};
+  } else if (!s.spheres.empty()) {
+    return CrossError{"sphere",
+                      "spheres ([[sphere]]) belong to cloth scenes (body.type = "
+                      "\"cloth\"), and this scene's body is " +
+                          std::string(body_kind_name(s.body_kind))};
   }
   for (std::size_t i = 0; i < s.terrains.size(); ++i) {
     const Terrain& t = s.terrains[i];

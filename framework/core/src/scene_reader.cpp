@@ -63,6 +63,10 @@ std::string toml_expected(const Decl& d) {
     case ValueKind::Vec3List: return "an array of points [[x, y, z], ...]";
     case ValueKind::IndexPairList: return "an array of index pairs [[a, b], ...]";
     case ValueKind::RealList: return "an array of numbers [r, ...]";
+    case ValueKind::NameList: return "an array of strings [\"name\", ...], " + expected_text(d);
+    case ValueKind::GridList: return "an array of grid coordinates [[i, k], ...]";
+    case ValueKind::Schedule:
+      return "an array of { time = t, velocity = [x, y, z] } tables, times in s";
   }
   return "a value";
 }
@@ -279,6 +283,80 @@ class Loader {
         }
         return Value{std::move(out)};
       }
+      case ValueKind::NameList: {
+        const toml::array* a = n.as_array();
+        if (!a) return wrong(n);
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < a->size(); ++i) {
+          const auto* name = a->get(i)->as_string();
+          if (!name) return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
+          out.emplace_back(name->get());
+        }
+        return Value{std::move(out)};
+      }
+      case ValueKind::GridList: {
+        const toml::array* a = n.as_array();
+        if (!a) return wrong(n);
+        std::vector<IndexPair> out;
+        for (std::size_t i = 0; i < a->size(); ++i) {
+          const toml::array* pair = a->get(i)->as_array();
+          if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() ||
+              !pair->get(1)->is_integer())
+            return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
+          out.push_back({pair->get(0)->as_integer()->get(), pair->get(1)->as_integer()->get()});
+        }
+        return Value{std::move(out)};
+      }
+      case ValueKind::Schedule: {
+        const toml::array* a = n.as_array();
+        if (!a) return wrong(n);
+        std::vector<ScheduleEntry> out;
+        for (std::size_t i = 0; i < a->size(); ++i) {
+          const toml::node& item = *a->get(i);
+          const std::string at = "entry " + std::to_string(i) + ": ";
+          const toml::table* e = item.as_table();
+          if (!e) return wrong(item, at);
+          for (auto&& [k, v] : *e) {
+            if (k.str() != "time" && k.str() != "velocity") {
+              const std::string near = closest(k.str(), {"time", "velocity"});
+              error(key, pos_of_key(k, v),
+                    at + "unknown key " + in_quotes(k.str()) +
+                        (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
+                        "; expected time and velocity");
+              return std::nullopt;
+            }
+          }
+          const toml::node* time = e->get("time");
+          const toml::node* velocity = e->get("velocity");
+          if (!time || !velocity) {
+            error(key, pos_of(item),
+                  at + "needs both time (s) and velocity [x, y, z] (m/s); " +
+                      (time ? "velocity" : "time") + " is missing");
+            return std::nullopt;
+          }
+          const auto t = number_of(*time);
+          if (!t) {
+            error(key, pos_of(*time), at + "time must be a number (s), got " + describe(*time));
+            return std::nullopt;
+          }
+          const auto u = vec3_of(*velocity);
+          if (!u) {
+            error(key, pos_of(*velocity),
+                  at + "velocity must be an array of 3 numbers [x, y, z], got " +
+                      describe(*velocity));
+            return std::nullopt;
+          }
+          if (!out.empty() && !(*t > out.back().time)) {
+            error(key, pos_of(*time),
+                  "times must increase strictly (cloth contract decision 5): entry " +
+                      std::to_string(i) + " has time " + format_double(*t) + " s after " +
+                      format_double(out.back().time) + " s");
+            return std::nullopt;
+          }
+          out.push_back(ScheduleEntry{*t, *u});
+        }
+        return Value{std::move(out)};
+      }
       case ValueKind::RealList: {
         const toml::array* a = n.as_array();
         if (!a) return wrong(n);
@@ -333,6 +411,9 @@ class Loader {
       const std::string key = prefix + "." + std::string(local);
       if (auto b = resolve(spec_, key)) {
         found.emplace_back(std::move(*b), &node);
+      } else if (const auto any =
+                     explain_inapplicable(prefix) ? resolve_any(spec_, key) : std::nullopt) {
+        error(key, pos_of_key(k, node), inapplicable_reason(*any, spec_));
       } else {
         unknown_key(key, local, pos_of_key(k, node), candidates, context);
       }
@@ -341,6 +422,12 @@ class Loader {
       return a.first.decl < b.first.decl;  // rows of one table are contiguous in memory
     });
     for (const auto& [b, node] : found) apply(b, *node);
+  }
+
+  /// Whether a declared key that does not apply in table `prefix` is reported with the reason
+  /// (a cloth's body, a sphere) rather than as unknown (A1's cube and particles, as before).
+  bool explain_inapplicable(const std::string& prefix) const {
+    return spec_.body_kind == BodyKind::Cloth || prefix.rfind("sphere.", 0) == 0;
   }
 
   /// The keys that apply in the table `prefix` ("body", "springs.shear", "terrain.floor"), as
@@ -390,8 +477,12 @@ class Loader {
       const toml::node* node = root.get(name);
       if (!node) continue;
       where_[name] = pos_of(*node);
+      if (auto why = section_not_here(name)) {
+        error(name, pos_of(*node), *why);
+        continue;
+      }
       const Collection* collection = find_collection(name);
-      if (collection && collection->layout == Layout::ArrayOfTables) {
+      if (collection && collection->layout != Layout::Tables) {
         read_array(*collection, *node);
         continue;
       }
@@ -412,6 +503,22 @@ class Loader {
     }
   }
 
+  /// Why a section may not be in this scene: [collision] and [[sphere]] belong to cloth scenes,
+  /// [[terrain]] to the others (cloth contract §6). nullopt when it may.
+  std::optional<std::string> section_not_here(const std::string& name) const {
+    const bool cloth = spec_.body_kind == BodyKind::Cloth;
+    const std::string body = "this scene's body is " + std::string(body_kind_name(spec_.body_kind));
+    if (name == "collision" && !cloth)
+      return "[collision] is a table of cloth scenes (body.type = \"cloth\"), and " + body;
+    if (name == "sphere" && !cloth)
+      return "[[sphere]] belongs to cloth scenes (body.type = \"cloth\"), and " + body +
+             " (a cube meets spheres as terrains: [[terrain]] type = \"sphere\")";
+    if (name == "terrain" && cloth)
+      return "a cloth scene has no terrains (cloth contract §6): the cloth meets spheres, "
+             "[[sphere]]";
+    return std::nullopt;
+  }
+
   /// [gravity] present: gravity on with the default acceleration, then the keys; enabled = false
   /// turns it off again.
   void read_gravity(const toml::table& t) {
@@ -427,7 +534,7 @@ class Loader {
     if (const toml::node* type = t.get("type")) {
       if (auto b = resolve(spec_, "body.type"); b && !apply(*b, *type)) return;
     }
-    const std::string kind = spec_.body_kind == BodyKind::Cube ? "cube" : "particles";
+    const std::string kind(body_kind_name(spec_.body_kind));
     apply_table(t, "body", "for a " + kind + " body", local_keys("body"), {"type"});
   }
 
@@ -496,9 +603,13 @@ class Loader {
         error(label, pos_of(entry), "must be a table [[" + name + "]], got " + describe(entry));
         continue;
       }
-      // Making an element from its entry is the terrain's own step (preset, type, hole): the only
-      // array collection so far. Another one adds its step here.
-      read_terrain(*t, label);
+      // Making an element from its entry is the collection's own step: the terrain's (preset,
+      // type, hole), the sphere's (kinematic first). Another collection adds its step here.
+      if (c.layout == Layout::Indexed) {
+        read_sphere(*t, i);
+      } else {
+        read_terrain(*t, label);
+      }
     }
   }
 
@@ -510,6 +621,18 @@ class Loader {
     if (auto s = n->as_string()) return std::string(s->get());
     error(label + "." + std::string(key), pos_of(*n), "must be a string, got " + describe(*n));
     return std::nullopt;
+  }
+
+  /// One [[sphere]] entry: kinematic is read first, since it decides which keys apply (velocity
+  /// and mass for a dynamic sphere, schedule for a kinematic one).
+  void read_sphere(const toml::table& t, std::size_t index) {
+    const std::string prefix = "sphere." + std::to_string(index);
+    where_[prefix] = pos_of(t);
+    spec_.spheres.emplace_back();
+    if (const toml::node* k = t.get("kinematic")) {
+      if (auto b = resolve(spec_, prefix + ".kinematic")) apply(*b, *k);
+    }
+    apply_table(t, prefix, "for a sphere", local_keys(prefix), {"kinematic"});
   }
 
   void read_terrain(const toml::table& t, const std::string& label) {

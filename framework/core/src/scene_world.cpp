@@ -95,6 +95,23 @@ SceneSpec course_2023_scene() {
 
 std::unique_ptr<World> build_world(const SceneSpec& scene, const TaskTable& tasks) {
   auto world = std::make_unique<World>(tasks);
+  if (scene.body_kind == BodyKind::Cloth) {
+    // Cloth contract §1–§4: the cloth, its springs type by type (structural, shear, bending:
+    // decision 9's order), the spheres in scene order (it is part of the result), the collision
+    // coefficients and gravity. A cloth scene has no terrains (the reader refuses them).
+    const int cloth = world->add_cloth(scene.cloth);
+    if (scene.structural.enabled)
+      world->build_cloth_springs(cloth, SpringType::Structural, scene.structural.ks,
+                                 scene.structural.kd);
+    if (scene.shear.enabled)
+      world->build_cloth_springs(cloth, SpringType::Shear, scene.shear.ks, scene.shear.kd);
+    if (scene.bending.enabled)
+      world->build_cloth_springs(cloth, SpringType::Bending, scene.bending.ks, scene.bending.kd);
+    for (const SphereSpec& sphere : scene.spheres) world->add_sphere(sphere);
+    world->set_cloth_collisions(scene.collisions);
+    world->set_gravity(scene.gravity);
+    return world;
+  }
   if (scene.body_kind == BodyKind::Cube) {
     const int cube = world->add_cube(scene.cube);
     if (scene.structural.enabled)

@@ -86,6 +86,21 @@ std::string toml_value(ValueKind kind, const Value& v) {
              "]";
       return s + "]";
     }
+    case ValueKind::NameList: {
+      std::string s = "[";
+      const auto& list = std::get<std::vector<std::string>>(v);
+      for (std::size_t i = 0; i < list.size(); ++i) s += (i ? ", " : "") + toml_string(list[i]);
+      return s + "]";
+    }
+    case ValueKind::GridList: return toml_value(ValueKind::IndexPairList, v);
+    case ValueKind::Schedule: {
+      const auto& list = std::get<std::vector<ScheduleEntry>>(v);
+      std::string s = "[";
+      for (const ScheduleEntry& e : list)
+        s +=
+            "\n  { time = " + toml_double(e.time) + ", velocity = " + toml_vec3(e.velocity) + " },";
+      return s + (list.empty() ? "]" : "\n]");
+    }
     case ValueKind::RealList: {
       std::string s = "[";
       const auto& list = std::get<std::vector<double>>(v);
@@ -101,6 +116,8 @@ std::string toml_value(ValueKind kind, const Value& v) {
 std::string table_header(const Bound& b) {
   const std::string table(key_table(b.key));
   if (!b.collection || b.collection->layout == Layout::Tables) return "[" + table + "]\n";
+  if (b.collection->layout == Layout::Indexed)
+    return "[[" + std::string(b.collection->name) + "]]\n";
   const std::string name(b.collection->name);
   return "[[" + name + "]]\nname = " + toml_string(table.substr(name.size() + 1)) + "\n";
 }
@@ -112,6 +129,7 @@ std::string to_toml(const SceneSpec& scene) {
   std::string table;  // the table written last
   walk_keys(&scene, Walk::Applicable, [&](const Bound& b) {
     if (b.decl->presence) return false;
+    if (b.decl->written && !b.decl->written(scene, b.ctx)) return false;
     if (key_table(b.key) != table) {
       table = std::string(key_table(b.key));
       out += "\n" + table_header(b);

@@ -24,6 +24,14 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
   if (sc.body_kind == BodyKind::Cube) {
     out += "\ncube: n = " + std::to_string(sc.cube.n) + ", L = " + fmt("%.3g m", sc.cube.edge) +
            ", m = " + fmt("%.3g kg", sc.cube.mass) + "\n";
+  } else if (sc.body_kind == BodyKind::Cloth) {
+    const ClothSpec& c = sc.cloth;
+    std::string pins;
+    for (const std::string& p : c.pin_sets) pins += (pins.empty() ? "" : "+") + p;
+    if (!c.pins.empty()) pins += (pins.empty() ? "" : "+") + std::to_string(c.pins.size());
+    out += "\ncloth: n = " + std::to_string(c.n) + ", L = " + fmt("%.3g m", c.size) +
+           ", m = " + fmt("%.3g kg", c.mass) + ", pins " + (pins.empty() ? "none" : pins) +
+           (c.air_drag > 0.0 ? ", k_air " + fmt("%g", c.air_drag) : std::string()) + "\n";
   } else {
     out += "\nparticles: " + std::to_string(sc.particles.positions.cols()) +
            ", m = " + fmt("%.3g kg", sc.particles.mass) + "\n";
@@ -43,6 +51,15 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
       out += t.name + ": eps " + fmt("%g", p.epsilon) + " kr " + fmt("%g", p.restitution) + " kf " +
              fmt("%g", p.friction) + "   ";
     }
+  }
+  if (sc.body_kind == BodyKind::Cloth) {
+    const ClothCollisionSettings& k = sc.collisions;
+    std::size_t kinematic = 0;
+    for (const SphereSpec& sp : sc.spheres) kinematic += sp.kinematic ? 1 : 0;
+    out += "\n" + std::to_string(sc.spheres.size()) + " spheres (" + std::to_string(kinematic) +
+           " kinematic): e_cloth " + fmt("%g", k.cloth_restitution) + " e_sphere " +
+           fmt("%g", k.sphere_restitution) + " eps " + fmt("%g", k.tolerance) + " mu " +
+           fmt("%g", k.friction) + " beta " + fmt("%g", k.push_out) + "   ";
   }
   if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
   return out;
