@@ -182,7 +182,7 @@ runs_a2=(
   "cloth-2022-explicit-trajectory|run $c2022 --integrator explicit_euler --duration 0.8 --every 2000 --out @/cloth-2022-explicit.csv"
   "cloth-2022-implicit-summary|run $c2022 --integrator implicit_euler --duration 0.8 --summary @/cloth-2022-implicit.csv"
   "cloth-2024-midpoint-trajectory|run $c2024 --integrator midpoint --duration 1.2 --every 2000 --out @/cloth-2024-midpoint.csv"
-  "cloth-2024-summary|run $c2024 --duration 1.2 --summary @/cloth-2024.csv"
+  "cloth-2024-summary|run $c2024 --duration 2 --summary @/cloth-2024.csv"
   "cloth-2022-check|check $c2022"
 )
 runs=()
