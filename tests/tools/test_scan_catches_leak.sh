@@ -37,6 +37,38 @@ if [ -d "$src/$asg/grader/cases" ]; then
   check "every public case kept ($pub_src)" '[ "$pub_src" = "$pub_rel" ]'
 fi
 
+# The scenes follow the assignments: a release ships exactly the scenes whose body kind ([body] type,
+# "cube" when absent) one of its assignments simulates (its manifest's `bodies`), so that an A1
+# release has no cloth scene and an A2 release no cube. check_scenes RELEASE ID...
+bodies_of() { awk '/^[ \t]*\[/ { exit } /^bodies[ \t]*=/ { v = $0; while (match(v, /"[^"]*"/)) { print substr(v, RSTART + 1, RLENGTH - 2); v = substr(v, RSTART + RLENGTH) } }' "$src/assignments/$1/assignment.toml"; }
+kind_of() { awk '/^[ \t]*\[/ { body = ($0 ~ /^[ \t]*\[body\]/); next } body && /^[ \t]*type[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); k = v } END { print (k == "" ? "cube" : k) }' "$1"; }
+check_scenes() {
+  local r="$1" kinds="" i f rel_path want kept=0 left=0; shift
+  for i in "$@"; do kinds="$kinds $(bodies_of "$i" | tr '\n' ' ')"; done
+  check "the manifests of $* name their bodies ($kinds)" '[ -n "${kinds// /}" ]'
+  while IFS= read -r f; do
+    rel_path="${f#"$src"/}"
+    want=0; case " $kinds " in *" $(kind_of "$f") "*) want=1 ;; esac
+    if [ "$want" -eq 1 ]; then kept=$((kept + 1)); check "$rel_path ($(kind_of "$f")) is in the release of $*" '[ -f "$r/$rel_path" ]'
+    else left=$((left + 1)); check "$rel_path ($(kind_of "$f")) is not in the release of $*" '[ ! -e "$r/$rel_path" ]'; fi
+  done < <(cd "$src" && git ls-files -- 'scenes/*.toml' | sed "s|^|$src/|")
+  check "the release of $* ships some scenes ($kept kept, $left left out)" '[ "$kept" -gt 0 ]'
+}
+check_scenes "$rel" "$id"
+# Every other assignment on its own: its folder and scenes only, none of the others' folders, and a
+# clean scan (A2 on its own: the cloth scenes and assignments/a2/ only).
+for m in "$src"/assignments/*/assignment.toml; do
+  other="$(basename "$(dirname "$m")")"
+  [ "$other" != "$id" ] || continue
+  "$tool" "$work/out-$other" --assignments "$other" --no-verify >"$work/make-$other.log" 2>&1
+  check "the release of $other alone is made and its scan is clean" '[ $? -eq 0 ] || { cat "$work/make-$other.log"; false; }'
+  r="$work/out-$other/jelly-lab-student"
+  check "the release of $other has assignments/$other/ and not assignments/$id/" '[ -d "$r/assignments/$other" ] && [ ! -e "$r/assignments/$id" ]'
+  check "the release of $other has no solutions/" '[ ! -e "$r/solutions" ]'
+  check_scenes "$r" "$other"
+  rm -rf "$work/out-$other"
+done
+
 # A planted leak must fail the scan; the copy is restored after each.
 plant() {  # plant NAME COMMAND-THAT-MODIFIES-$copy EXPECTED-TEXT
   local copy="$work/copy" what="$1" want="$3"
