@@ -7,6 +7,7 @@
 #include "jelly/a2/forces.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/integrators.hpp"
+#include "jelly/a2/spring_engine.hpp"
 #include "jelly/a2/springs.hpp"
 
 #ifndef JELLY_TASKS_ORIGIN
@@ -22,6 +23,9 @@ TaskTable task_table() {
   t.add_grid_bending_springs = &add_bending_springs;
   t.spring_force = &spring_force;
   t.damper_force = &damper_force;
+#if JELLY_TASKS_REFERENCE  // set by the build for the reference library: it has a spring engine
+  t.make_spring_group_pass = &make_spring_group_pass;
+#endif
   t.collide_particle_sphere = &collide_particle_sphere;
   t.collide_spheres = &collide_spheres;
   t.friction_impulse = &friction_impulse;

@@ -111,6 +111,30 @@ void BackwardEulerSolver::step(JacobianSystem& system, State& s, double h) {
   for (Eigen::Index i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) b_[3 * i + d] = h * (force_(d, i) + h * dfdx_v_(d, i));
 
+  // Fixed particles (pinned cloth particles, w = 0) keep Δv = 0: their rows and columns become
+  // the identity's and their right-hand side zero, so the free particles see them as walls.
+  bool any_fixed = false;
+  for (Eigen::Index i = 0; i < n && !any_fixed; ++i) any_fixed = system.is_fixed(i);
+  if (any_fixed) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!system.is_fixed(i)) continue;
+      for (int r = 0; r < 3; ++r) {
+        double* row = values + diag_offset_[static_cast<std::size_t>(3 * i + r)];
+        for (int c = 0; c < 3; ++c) row[c] = r == c ? 1.0 : 0.0;
+        b_[3 * i + r] = 0.0;
+      }
+    }
+    for (std::size_t p = 0; p < jac_.pairs.size(); ++p) {
+      const auto [i, j] = jac_.pairs[p];
+      if (!system.is_fixed(i) && !system.is_fixed(j)) continue;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+          values[off_ij_[3 * p + r] + c] = 0.0;
+          values[off_ji_[3 * p + r] + c] = 0.0;
+        }
+    }
+  }
+
   // Jacobi-preconditioned conjugate gradient from Δv = 0.
   for (Eigen::Index k = 0; k < 3 * n; ++k) {
     const double diag = values[diag_offset_[static_cast<std::size_t>(k)] + k % 3];

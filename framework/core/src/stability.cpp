@@ -18,10 +18,15 @@ using Complex = std::complex<double>;
 
 // Largest eigenvalue of the symmetric M^{-1/2} J M^{-1/2} (J = −∂f/∂x or −∂f/∂v) by power
 // iteration with a Rayleigh quotient; deterministic start vector.
-double power_iteration(const ForceJacobians& jac, bool stiffness, const Eigen::VectorXd& mass,
+double power_iteration(const ForceJacobians& jac, bool stiffness, const JacobianSystem& system,
                        int max_iterations, int& used) {
+  const Eigen::VectorXd& mass = system.masses();
   const Eigen::Index n = mass.size();
   Eigen::VectorXd inv_sqrt_m = mass.cwiseSqrt().cwiseInverse();
+  // A fixed particle (a pin, inverse mass 0) has no mode of its own: the estimate is the free
+  // particles'.
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (system.is_fixed(i)) inv_sqrt_m[i] = 0.0;
   Vec3Array y(3, n), t(3, n), out(3, n);
   std::uint64_t seed = 0x9E3779B97F4A7C15ull;
   for (Eigen::Index i = 0; i < n; ++i)
@@ -146,8 +151,8 @@ StabilityEstimate estimate_stability(JacobianSystem& system, const State& at) {
   jac.reset(system.particle_count(), system.jacobian_pattern());
   system.force_jacobians(at, jac);
   int used_k = 0, used_c = 0;
-  const double omega2 = power_iteration(jac, true, system.masses(), 2000, used_k);
-  e.damping_max = power_iteration(jac, false, system.masses(), 2000, used_c);
+  const double omega2 = power_iteration(jac, true, system, 2000, used_k);
+  e.damping_max = power_iteration(jac, false, system, 2000, used_c);
   e.power_iterations = used_k + used_c;
   e.omega_max = std::sqrt(omega2);
   e.tau = omega2 > 0.0 ? e.damping_max / omega2 : 0.0;

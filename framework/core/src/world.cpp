@@ -134,7 +134,11 @@ int World::add_particles(const Vec3Array& positions, const Vec3Array& velocities
   m.head(first) = mass_;
   m.tail(count).setConstant(mass);
   mass_ = std::move(m);
-  inv_mass_ = mass_.cwiseInverse();
+  // Particles already there keep their inverse mass (a pinned cloth particle's is 0).
+  Eigen::VectorXd w(first + count);
+  w.head(first) = inv_mass_;
+  w.tail(count) = mass_.tail(count).cwiseInverse();
+  inv_mass_ = std::move(w);
   for (Eigen::Index i = 0; i < count; ++i)
     lowest_initial_height_ = (first == 0 && i == 0)
                                  ? positions(1, i)
@@ -217,6 +221,8 @@ void World::set_force_threads(int threads) {
 }
 
 void World::add_terrain(Terrain terrain) {
+  if (inverse_mass_form_)
+    throw std::logic_error("a cloth world has no terrain (cloth contract §6)");
   terrains_.push_back(std::move(terrain));
   const std::size_t n = terrains_.size();
   counters_.collision_queries.resize(n, 0);
@@ -243,6 +249,10 @@ void World::reset_counters() {
 }
 
 void World::acceleration(const State& s, Vec3Array& a) {
+  if (inverse_mass_form_) {
+    cloth_acceleration(s, a);
+    return;
+  }
   ++counters_.acceleration_evaluations;
   const Eigen::Index n = s.size();
   force_.resize(3, n);
@@ -318,6 +328,10 @@ void World::contact_pass(const State& s, Vec3Array& f) {
 }
 
 void World::apply_collisions(State& s) {
+  if (inverse_mass_form_) {
+    apply_cloth_collisions(s);
+    return;
+  }
   if (terrains_.empty()) return;
   ++counters_.collision_passes;
   const Eigen::Index n = s.size();

@@ -124,6 +124,11 @@ class World : public JacobianSystem {
   const Eigen::VectorXd& masses() const override { return mass_; }
   std::vector<std::pair<int, int>> jacobian_pattern() const override;
   void force_jacobians(const State& s, ForceJacobians& jac) override;
+  /// Pinned cloth particles (inverse mass 0) are fixed; an A1 world has none.
+  bool is_fixed(Eigen::Index i) const override { return inverse_mass_form_ && inv_mass_[i] == 0.0; }
+  /// True for a world with a cloth: accelerations are a = g + w·Σf (cloth decision 3), the
+  /// collision response is that of the cloth contract §4 and energy follows decision 11.
+  bool has_cloth() const { return inverse_mass_form_; }
 
   /// Step 1 of contract §6: the velocity response of every terrain with collision on, in order
   /// (then its optional projection). Changes `s.v` (and `s.x` only for projecting terrains).
@@ -152,6 +157,11 @@ class World : public JacobianSystem {
 
  private:
   void contact_pass(const State& s, Vec3Array& f);
+  // Cloth worlds (world_cloth.cpp).
+  void cloth_acceleration(const State& s, Vec3Array& a);
+  void apply_cloth_collisions(State& s);
+  SphereBody sphere_body(const State& s, std::size_t i) const;
+  void store_sphere_velocity(State& s, std::size_t i, const Vec3& velocity);
   void pattern_cache() const;
 
   TaskTable tasks_;
