@@ -15,6 +15,7 @@ void register_force_cases(Registry& r);
 void register_collision_cases(Registry& r);
 void register_friction_cases(Registry& r);
 void register_integrator_cases(Registry& r);
+void register_scene_cases(Registry& r);
 
 /// A cloth from a parameter table: n, size, center, rotation_axis, rotation_degrees (the last
 /// three optional: (0,0,0), (1,0,0), 0); no pins unless `pins` lists grid coordinates [[i, k],

@@ -10,6 +10,7 @@ void register_assignment_cases(Registry& r) {
   register_collision_cases(r);
   register_friction_cases(r);
   register_integrator_cases(r);
+  register_scene_cases(r);
 }
 
 TaskTable assignment_task_table() { return a2::task_table(); }
