@@ -143,7 +143,7 @@ std::vector<ParticleSpherePair> particle_sphere_pairs(const Params& params) {
 }
 
 std::string particle_words(const ParticleSpherePair& p) {
-  char buf[400];
+  char buf[512];
   std::snprintf(buf, sizeof buf, "pair '%s' (particle x=%s v=%s w=%g; sphere c=%s u=%s r=%g w=%g)",
                 p.label.c_str(), vec_text(p.particle.position).c_str(),
                 vec_text(p.particle.velocity).c_str(), p.particle.inverse_mass,
@@ -212,8 +212,8 @@ std::vector<SpherePair> sphere_pairs(const Params& params) {
   if (params.has("random")) {
     // random = { seed, count, radius, gap, speed, kinematic_every }: sphere b at U with radius
     // radius·(1.5 + U)/2, sphere a at distance r_a + r_b + gap·U in a random direction,
-    // velocities speed·U, masses 1000 r³·(1 + U)/… ; every kinematic_every-th pair has a
-    // kinematic a (and every 2·kinematic_every-th a kinematic b as well).
+    // velocities speed·U, masses default_sphere_mass(r)·(1.5 + U/2); every kinematic_every-th pair
+    // has a kinematic a (and every 2·kinematic_every-th a kinematic b as well).
     const Params r = params.table("random");
     Sequence s(static_cast<std::uint64_t>(r.integer("seed")));
     const long count = r.integer("count"), kin_every = r.integer("kinematic_every");
@@ -257,7 +257,7 @@ std::vector<SpherePair> sphere_pairs(const Params& params) {
 }
 
 std::string sphere_words(const SpherePair& p) {
-  char buf[400];
+  char buf[512];
   std::snprintf(buf, sizeof buf,
                 "pair '%s' (sphere a c=%s u=%s r=%g w=%g; sphere b c=%s u=%s r=%g w=%g)",
                 p.label.c_str(), vec_text(p.a.center).c_str(), vec_text(p.a.velocity).c_str(),
