@@ -106,7 +106,8 @@ const Rule CaseSpec::rule_for(const std::string& output) const {
 
 double Rubric::raw_total() const {
   double t = 0.0;
-  for (const TaskSpec& s : tasks) t += s.points;
+  for (const TaskSpec& s : tasks)
+    if (!s.bonus) t += s.points;
   return t;
 }
 
@@ -148,6 +149,11 @@ AssignmentManifest read_rubric(const std::string& path) {
       throw std::runtime_error(where(path, n, "task") +
                                ": every [[task]] needs an id and points ≥ 0");
     s.points = *pts;
+    if (const toml::node* b = t->get("bonus")) {
+      if (!b->as_boolean())
+        throw std::runtime_error(where(path, *b, "bonus") + ": expected true or false");
+      s.bonus = b->as_boolean()->get();
+    }
     m.tasks.push_back(s);
   }
   return m;
@@ -174,6 +180,7 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
     s.functions = t.functions_text();
     s.file = t.file;
     s.points = t.points;
+    s.bonus = t.bonus;
     book.rubric.tasks.push_back(s);
   }
   // Tolerances, then cases.

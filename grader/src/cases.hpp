@@ -57,13 +57,17 @@ struct TaskSpec {
   std::string functions;  ///< the student's functions, for crash messages
   std::string file;       ///< the file that holds them ("" for the whole submission)
   double points = 0.0;    ///< rubric points (before scaling)
+  bool bonus = false;     ///< its points come on top of autograded_total (manifest `bonus`)
 };
 
 struct Rubric {
   double autograded_total = 80.0;                    ///< the points the score is scaled to
   std::string hidden_visibility = "after_due_date";  ///< Gradescope visibility of hidden tests
   std::vector<TaskSpec> tasks;                       ///< in report order
+  /// The raw points of the tasks that are not bonus tasks (what autograded_total stands for).
   double raw_total() const;
+  /// Raw points → scaled points, for every task (a bonus task's too: its points are on the same
+  /// scale as the others', on top of autograded_total).
   double scale() const { return raw_total() > 0 ? autograded_total / raw_total() : 0.0; }
   const TaskSpec* find(const std::string& id) const;
 };

@@ -523,18 +523,20 @@ void run_cases(const std::vector<std::optional<Json>>& refs, const CaseBook& boo
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// 6. The task and total scores, sums of the cases' scaled shares.
+// 6. The task and total scores, sums of the cases' scaled shares; a bonus task's apart.
 void add_up(GradeReport& rep) {
   for (TaskResult& t : rep.tasks) {
     for (CaseResult* c : t.cases) t.score += c->score;
-    rep.score += t.score;
-    rep.max_score += t.max_score;
+    (t.spec->bonus ? rep.bonus_score : rep.score) += t.score;
+    (t.spec->bonus ? rep.bonus_max : rep.max_score) += t.max_score;
   }
   // Sums of scaled shares: round to 1e-9 so that full marks print as full marks.
   auto tidy = [](double v) { return std::round(v * 1e9) / 1e9; };
   for (TaskResult& t : rep.tasks) t.score = tidy(t.score), t.max_score = tidy(t.max_score);
   rep.score = tidy(rep.score);
   rep.max_score = tidy(rep.max_score);
+  rep.bonus_score = tidy(rep.bonus_score);
+  rep.bonus_max = tidy(rep.bonus_max);
 }
 
 }  // namespace

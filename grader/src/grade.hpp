@@ -66,9 +66,12 @@ struct GradeReport {
   std::vector<FileFailure> failed_files;  ///< files replaced by their stubs, in task-file order
   bool prebuilt_runner = false;           ///< --runner: built by CMake, not compiled by the grader
   BuildResult build;
-  std::vector<CaseResult> cases;  ///< in case-book order
-  std::vector<TaskResult> tasks;  ///< in rubric order
-  double score = 0.0, max_score = 0.0;
+  std::vector<CaseResult> cases;        ///< in case-book order
+  std::vector<TaskResult> tasks;        ///< in rubric order
+  double score = 0.0, max_score = 0.0;  ///< the tasks that are not bonus tasks
+  /// Bonus tasks (manifest `bonus = true`): on top of score / max_score, never part of them.
+  double bonus_score = 0.0, bonus_max = 0.0;
+  bool has_bonus() const { return bonus_max > 0.0; }
   std::vector<std::string> notes;
   double grading_seconds = 0.0;  ///< running the cases (not compiling)
   std::string visibility;        ///< "public" or "all"

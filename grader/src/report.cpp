@@ -21,6 +21,20 @@ std::string pts(double v) {
   return b;
 }
 
+// "72.50 / 80.00", and with a bonus task "72.50 / 80.00 + bonus 5.00 / 5.00": the bonus is never
+// part of the total it is added to (an assignment without one reads as before).
+std::string total_text(const GradeReport& r) {
+  std::string t = pts(r.score) + " / " + pts(r.max_score);
+  if (r.has_bonus()) t += " + bonus " + pts(r.bonus_score) + " / " + pts(r.bonus_max);
+  return t;
+}
+
+// A bonus task's points in a table: "+5.00 / 5.00 bonus".
+std::string task_points(const TaskResult& t) {
+  if (t.spec->bonus) return "+" + pts(t.score) + " / " + pts(t.max_score) + " bonus";
+  return pts(t.score) + " / " + pts(t.max_score);
+}
+
 std::string case_name(const CaseResult& c, const TaskSpec* t) {
   return c.spec->task + (t ? " " + t->title : std::string()) + ": " + c.spec->title + " [" +
          c.spec->id + "]";
@@ -127,8 +141,8 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
     const bool full = t.score >= t.max_score - 1e-9;
     char line[200];
     std::snprintf(line, sizeof line, "%-8s %-34s %6s / %-6s %s (%zu/%zu tests)\n",
-                  t.spec->id.c_str(), t.spec->title.c_str(), pts(t.score).c_str(),
-                  pts(t.max_score).c_str(),
+                  t.spec->id.c_str(), t.spec->title.c_str(),
+                  ((t.spec->bonus ? "+" : "") + pts(t.score)).c_str(), pts(t.max_score).c_str(),
                   t.max_score == 0 ? (passed == run ? "ok  " : "FAIL")
                   : full           ? "PASS"
                                    : "FAIL",
@@ -150,7 +164,7 @@ std::string terminal_summary(const GradeReport& r, bool verbose) {
       }
     }
   }
-  o << "\nTotal: " << pts(r.score) << " / " << pts(r.max_score);
+  o << "\nTotal: " << total_text(r);
   if (r.build.ok) {
     char t[64];
     if (r.prebuilt_runner)
@@ -181,15 +195,19 @@ std::string task_file_count(const CaseBook& book) {
 
 Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   Json j;
-  j["score"] = r.score;
+  // Gradescope's total is the assignment's points (max scores add up to autograded_total); a
+  // bonus test has max_score 0 and its score on top, so the score may exceed the total.
+  j["score"] = r.has_bonus() ? std::round((r.score + r.bonus_score) * 1e9) / 1e9 : r.score;
   j["execution_time"] = static_cast<long>(std::lround(r.grading_seconds + r.build.seconds));
-  std::string out = "Jelly Lab autograder: " + pts(r.score) + " / " + pts(r.max_score) + "\n";
+  std::string out = "Jelly Lab autograder: " + total_text(r) + "\n";
   out += "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   j["output"] = out;
   j["stdout_visibility"] = "hidden";
   j["extra_data"] = {{"isolation", r.isolation},
                      {"isolation_description", r.isolation_description}};
+  if (r.has_bonus())
+    j["extra_data"]["bonus_score"] = r.bonus_score, j["extra_data"]["bonus_max"] = r.bonus_max;
   Json tests = Json::array();
   Json compile;
   compile["name"] = "Compilation of your " + task_file_count(book) + " task files";
@@ -200,9 +218,10 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   for (const CaseResult& c : r.cases) {
     if (c.status == "skipped") continue;
     Json t;
-    t["name"] = case_name(c, task_of(r, c));
+    const bool bonus = task_of(r, c) && task_of(r, c)->bonus;
+    t["name"] = case_name(c, task_of(r, c)) + (bonus ? " (bonus: " + pts(c.max_score) + ")" : "");
     t["score"] = std::round(c.score * 1e6) / 1e6;
-    t["max_score"] = std::round(c.max_score * 1e6) / 1e6;
+    t["max_score"] = bonus ? 0.0 : std::round(c.max_score * 1e6) / 1e6;
     t["status"] = c.status;
     t["output"] = case_output(c);
     t["visibility"] = c.spec->hidden ? book.rubric.hidden_visibility : std::string("visible");
@@ -218,8 +237,9 @@ Json prairielearn_results(const GradeReport& r) {
   Json j;
   j["gradable"] = r.build.ok;
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
-  j["message"] = r.build.ok ? "Graded " + pts(r.score) + " / " + pts(r.max_score)
-                            : std::string("Your code did not compile.");
+  // PrairieLearn's score is a fraction of the question's points; the bonus is named in the
+  // message and per test (max_points 0), not folded into the fraction.
+  j["message"] = r.build.ok ? "Graded " + total_text(r) : std::string("Your code did not compile.");
   std::string out = "Sandbox: " + r.isolation + "\n";
   for (const std::string& n : r.notes) out += "Note: " + n + "\n";
   if (!r.compiled) out += compile_summary(r);
@@ -229,10 +249,11 @@ Json prairielearn_results(const GradeReport& r) {
   for (const CaseResult& c : r.cases) {
     if (c.status == "skipped") continue;
     Json t;
-    t["name"] = case_name(c, task_of(r, c));
+    const bool bonus = task_of(r, c) && task_of(r, c)->bonus;
+    t["name"] = case_name(c, task_of(r, c)) + (bonus ? " (bonus: " + pts(c.max_score) + ")" : "");
     t["description"] = c.spec->title;
     t["points"] = std::round(c.score * 1e6) / 1e6;
-    t["max_points"] = std::round(c.max_score * 1e6) / 1e6;
+    t["max_points"] = bonus ? 0.0 : std::round(c.max_score * 1e6) / 1e6;
     t["message"] = c.status == "passed"
                        ? std::string("Passed")
                        : (c.failures.empty() ? std::string("Failed") : c.failures.front());
@@ -307,9 +328,8 @@ std::string com_plot_svg(const GradeReport& r) {
 std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
   std::ostringstream o;
   o << "# Jelly Lab grading report\n\nSubmission: " << markdown_inline(r.submission) << " — **"
-    << pts(r.score) << " / " << pts(r.max_score) << "** (" << r.visibility
-    << " tests)\n\nSandbox: `" << r.isolation << "` — " << markdown_inline(r.isolation_description)
-    << "\n\n";
+    << total_text(r) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation << "` — "
+    << markdown_inline(r.isolation_description) << "\n\n";
   for (const std::string& n : r.notes) o << "> " << markdown_inline(n) << "\n\n";
   if (!r.compiled) {
     for (const FileFailure& f : r.failed_files)
@@ -328,8 +348,8 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames) {
     for (const CaseResult* c : t.cases)
       if (c->status != "skipped") ++n, p += c->status == "passed";
     if (n)
-      o << "| " << t.spec->id << " " << t.spec->title << " | " << pts(t.score) << " / "
-        << pts(t.max_score) << " | " << p << "/" << n << " |\n";
+      o << "| " << t.spec->id << " " << t.spec->title << " | " << task_points(t) << " | " << p
+        << "/" << n << " |\n";
   }
   o << "\n## Failed tests\n\n";
   for (const CaseResult& c : r.cases)
@@ -382,9 +402,9 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
   o << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab grading report</title>"
        "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
        ".fail{color:#b00}.pass{color:#070}</style></head><body>\n";
-  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>" << pts(r.score)
-    << " / " << pts(r.max_score) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation)
-    << "</code> — " << xml_escape(r.isolation_description) << "</p>\n";
+  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>"
+    << total_text(r) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation) << "</code> — "
+    << xml_escape(r.isolation_description) << "</p>\n";
   for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
   if (!r.compiled) {
     for (const FileFailure& f : r.failed_files)
@@ -402,7 +422,8 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
     for (const CaseResult* c : t.cases) {
       if (c->status == "skipped") continue;
       o << "<tr><td>" << xml_escape(t.spec->id + " " + t.spec->title) << "</td><td>"
-        << pts(c->score) << " / " << pts(c->max_score) << "</td><td>" << xml_escape(c->spec->title)
+        << (t.spec->bonus ? "+" : "") << pts(c->score) << " / " << pts(c->max_score)
+        << (t.spec->bonus ? " bonus" : "") << "</td><td>" << xml_escape(c->spec->title)
         << "</td><td class=\"" << (c->status == "passed" ? "pass\">passed" : "fail\">failed");
       for (const std::string& f : c->failures)
         o << (f.find('\n') == std::string::npos ? "<br>" + xml_escape(f)

@@ -23,10 +23,13 @@ grep -qx '  sandbox: none — your own code on your own machine: no sandbox' "$w
   fail "the --runner report does not say that it ran without a sandbox"
 total="$(sed -n 's#^Total: \([0-9.]*\) / \([0-9.]*\).*#\1 \2#p' "$work/runner.txt")"
 [ -n "$total" ] || fail "no Total line"
-set -- $total
+# An assignment with a bonus task: "Total: S / M + bonus B / BM"; its bonus must be 0 or full too.
+bonus="$(sed -n 's#^Total: .* + bonus \([0-9.]*\) / \([0-9.]*\).*#\1 \2#p' "$work/runner.txt")"
+[ -n "$bonus" ] || bonus="0.00 0.00"
+set -- $total $bonus
 case "$expect" in
-  zero) [ "$1" = 0.00 ] && [ "$2" != 0.00 ] && [ "$rc" -eq 1 ] || fail "expected 0 of $2 points and --strict status 1, got $1 (status $rc)" ;;
-  full) [ "$1" = "$2" ] && [ "$2" != 0.00 ] && [ "$rc" -eq 0 ] || fail "expected full marks and --strict status 0, got $1 / $2 (status $rc)" ;;
+  zero) [ "$1" = 0.00 ] && [ "$2" != 0.00 ] && [ "$3" = 0.00 ] && [ "$rc" -eq 1 ] || fail "expected 0 of $2 points, no bonus and --strict status 1, got $1 + bonus $3 (status $rc)" ;;
+  full) [ "$1" = "$2" ] && [ "$2" != 0.00 ] && [ "$3" = "$4" ] && [ "$rc" -eq 0 ] || fail "expected full marks (and the whole bonus) and --strict status 0, got $1 / $2 + bonus $3 / $4 (status $rc)" ;;
   *) fail "expect zero or full" ;;
 esac
 bash "$here/same_report.sh" "$work/compiled.txt" "$work/runner.txt" || fail "the --runner report differs from the compile path's"

@@ -85,6 +85,19 @@ TEST(Manifest, TheSmallManifestReadsWithItsTasksAndGrading) {
   EXPECT_EQ(m.find_task("P1.T3"), nullptr);
 }
 
+// `bonus = true` marks a task whose points come on top of autograded_total; absent, false.
+TEST(Manifest, ABonusTaskIsMarked) {
+  const jelly::AssignmentManifest plain = jelly::parse_manifest(kGood, "p1.toml");
+  EXPECT_FALSE(plain.tasks[0].bonus);
+  EXPECT_FALSE(plain.tasks[1].bonus);
+  const jelly::AssignmentManifest m =
+      jelly::parse_manifest(replaced("points = 6", "points = 6\nbonus = true"), "p1.toml");
+  EXPECT_FALSE(m.tasks[0].bonus);
+  EXPECT_TRUE(m.tasks[1].bonus);
+  EXPECT_DOUBLE_EQ(m.tasks[1].points, 6.0);
+  EXPECT_EQ(error_of(replaced("points = 6", "points = 6\nbonus = false")), "");
+}
+
 // Every assignment of the tree reads, from its folder, and its tasks' points and files agree.
 TEST(Manifest, EveryShippedManifestReads) {
   const std::vector<jelly::AssignmentManifest> all =
@@ -106,6 +119,18 @@ TEST(Manifest, EveryShippedManifestReads) {
   double points = 0;
   for (const jelly::ManifestTask& t : a1->tasks) points += t.points;
   EXPECT_DOUBLE_EQ(points, 80.0) << "A1's raw points are the course's 2023 weights";
+  for (const jelly::ManifestTask& t : a1->tasks) EXPECT_FALSE(t.bonus) << t.id;
+  const auto a2 = std::find_if(all.begin(), all.end(),
+                               [](const jelly::AssignmentManifest& m) { return m.id == "a2"; });
+  if (a2 != all.end()) {
+    // The course's 2024 weights: 80 autograded, friction's bonus on top.
+    double regular = 0, bonus = 0;
+    for (const jelly::ManifestTask& t : a2->tasks) (t.bonus ? bonus : regular) += t.points;
+    EXPECT_DOUBLE_EQ(regular, 80.0);
+    EXPECT_DOUBLE_EQ(bonus, 5.0);
+    ASSERT_NE(a2->find_task("A2.T12"), nullptr);
+    EXPECT_TRUE(a2->find_task("A2.T12")->bonus);
+  }
 }
 
 // Each mistake names file:line, the key and what was expected.
@@ -155,6 +180,17 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
        "assignments/p1/assignment.toml: id: expected the assignment's "
        "id, a lower-case name such as \"a1\" (the key is missing)"},
       {replaced("points = 4", "points = = 4"), f + "14: not valid TOML: "},
+      // A bonus flag that is not a boolean (line 22, after points).
+      {replaced("points = 6", "points = 6\nbonus = \"yes\""),
+       f + "22: task[2].bonus: expected true or false (true: its points come on top of "
+           "grading.autograded_total)"},
+      // A bonus worth nothing.
+      {replaced("points = 6", "points = 0\nbonus = true"),
+       f + "21: task[2].points: expected a number of points > 0 for a bonus task"},
+      // Every task a bonus: nothing for autograded_total to be made of.
+      {replaced("points = 6", "points = 6\nbonus = true")
+           .replace(kGood.find("points = 4"), 10, "points = 4\nbonus = true"),
+       f + "9: task: expected at least one task that is not a bonus with points > 0"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.text);

@@ -101,6 +101,15 @@ class Reader {
     return v;
   }
 
+  bool boolean(const std::string& k, const std::string& expected) {
+    seen_.insert(k);
+    const toml::node* n = t_.get(k);
+    if (!n) return false;
+    const auto* b = n->as_boolean();
+    if (!b) fail(source_, n, key(k), expected);
+    return b->get();
+  }
+
   const toml::node* node(const std::string& k) {
     seen_.insert(k);
     return t_.get(k);
@@ -237,8 +246,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     const std::string prefix = "task[" + std::to_string(i + 1) + "].";
     if (!t) fail(source, &e, "task[" + std::to_string(i + 1) + "]", "a table");
     Reader tr(*t, source, prefix);
-    tr.only_keys(
-        {"id", "title", "short", "category", "file", "functions", "points", "handout", "probe"});
+    tr.only_keys({"id", "title", "short", "category", "file", "functions", "points", "handout",
+                  "probe", "bonus"});
     ManifestTask task;
     task.id = tr.string("id", true, "a task id such as \"A1.T4\"");
     if (!ids.insert(task.id).second)
@@ -257,9 +266,26 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     if (!task.handout.empty() && !is_relative_path(task.handout))
       fail(source, tr.node("handout"), prefix + "handout", "a path inside the assignment's folder");
     task.probe = tr.string("probe", false, "the name of a TaskTable slot");
+    task.bonus = tr.boolean("bonus",
+                            "true or false (true: its points come on top of "
+                            "grading.autograded_total)");
+    if (task.bonus && !(task.points > 0.0))
+      fail(source, tr.node("points"), prefix + "points",
+           "a number of points > 0 for a bonus task (bonus = true)");
+    if (task.bonus && task.functions.empty())
+      fail(source, tr.node("bonus"), prefix + "bonus",
+           "false for a task with no function of its own (a bonus task is graded on its "
+           "functions)");
     tr.no_unknown_keys();
     m.tasks.push_back(std::move(task));
   }
+  double regular = 0.0;
+  for (const ManifestTask& t : m.tasks)
+    if (!t.bonus) regular += t.points;
+  if (m.autograded_total > 0.0 && !(regular > 0.0))
+    fail(source, tasks, "task",
+         "at least one task that is not a bonus with points > 0 (the bonus points come on top of "
+         "grading.autograded_total, which the other tasks' points are scaled to)");
   r.no_unknown_keys();
   return m;
 }

@@ -69,12 +69,19 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
     std::cerr << "\r[" << done << "/" << subs.size() << "] " << safe_text(name) << ": "
-              << (errors[i].empty() ? pts(reports[i].score) + " / " + pts(reports[i].max_score)
-                                    : "grader error")
+              << (errors[i].empty()
+                      ? pts(reports[i].score) + " / " + pts(reports[i].max_score) +
+                            (reports[i].has_bonus() ? " + bonus " + pts(reports[i].bonus_score)
+                                                    : "")
+                      : "grader error")
               << "            " << std::flush;
   });
   std::cerr << "\n";
+  // A bonus column only for an assignment with a bonus task (A1's file is as it always was).
+  bool bonus = false;
+  for (const TaskSpec& t : book.rubric.tasks) bonus = bonus || t.bonus;
   std::vector<std::string> header = {"student", "score", "max_score", "compiled"};
+  if (bonus) header.insert(header.begin() + 3, "bonus");
   for (const TaskSpec& t : book.rubric.tasks) header.push_back(csv_field(t.id));
   header.push_back("error");
   std::string csv = csv_row(header);
@@ -82,12 +89,14 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   for (std::size_t i = 0; i < subs.size(); ++i) {
     std::vector<std::string> row = {csv_field(safe_text(subs[i].filename().string()))};
     if (!errors[i].empty()) {
-      for (std::size_t k = 0; k < 3 + book.rubric.tasks.size(); ++k) row.push_back("");
+      for (std::size_t k = 0; k < (bonus ? 4 : 3) + book.rubric.tasks.size(); ++k)
+        row.push_back("");
       row.push_back(csv_field(safe_text(errors[i])));
       status = 1;
     } else {
       row.push_back(pts(reports[i].score));
       row.push_back(pts(reports[i].max_score));
+      if (bonus) row.push_back(pts(reports[i].bonus_score));
       row.push_back(reports[i].compiled ? "1" : "0");
       for (const TaskResult& t : reports[i].tasks) row.push_back(pts(t.score));
       row.push_back("");

@@ -20,7 +20,9 @@ int grade_one(const GradeConfig& config, const CaseBook& book, const GradeOneArg
   // such as the tolerance measurements of docs/tolerances.md.
   if (!std::getenv("JELLY_GRADE_KEEP_WORK")) fs::remove_all(work);
   if (args.formats.count("terminal")) std::cout << terminal_summary(r, args.verbose);
-  return args.strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9)
+  // Full marks include a bonus task's (every public test passed).
+  return args.strict && !(r.compiled && r.max_score > 0 && r.score >= r.max_score - 1e-9 &&
+                          r.bonus_score >= r.bonus_max - 1e-9)
              ? cli::kExitFailure
              : cli::kExitOk;
 }

@@ -142,15 +142,18 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     bool ok = m.error.empty();
     if (!ok) verdict = "grader error: " + m.error;
     if (ok && i == 0) {
-      ok = r.compiled && std::abs(r.score - r.max_score) < 1e-9;
-      own = pts(r.score) + " / " + pts(r.max_score);
+      ok = r.compiled && std::abs(r.score - r.max_score) < 1e-9 &&
+           std::abs(r.bonus_score - r.bonus_max) < 1e-9;
+      own = pts(r.score) + " / " + pts(r.max_score) +
+            (r.has_bonus() ? " + bonus " + pts(r.bonus_score) + " / " + pts(r.bonus_max) : "");
       verdict = ok ? "full marks ✓" : "NOT full marks ✗";
       if (!ok)
         for (const CaseResult& c : r.cases)
           if (c.status == "failed") caught += c.spec->id + " ";
     } else if (ok && i == 1) {
-      ok = r.compiled && r.score == 0.0;
-      own = pts(r.score) + " / " + pts(r.max_score);
+      ok = r.compiled && r.score == 0.0 && r.bonus_score == 0.0;
+      own = pts(r.score) + " / " + pts(r.max_score) +
+            (r.has_bonus() ? " + bonus " + pts(r.bonus_score) : "");
       verdict = ok ? "zero ✓" : "NOT zero ✗";
       for (const CaseResult& c : r.cases)
         if (c.status == "passed" && c.max_score > 0) caught += c.spec->id + " (passed!) ";

@@ -4,7 +4,14 @@
 
 namespace jelly::grade {
 
-void register_assignment_cases(Registry& r) { (void)r; }
+void register_assignment_cases(Registry& r) {
+  register_grid_spring_cases(r);
+  register_force_cases(r);
+  register_collision_cases(r);
+  register_friction_cases(r);
+  register_integrator_cases(r);
+  register_scene_cases(r);
+}
 
 TaskTable assignment_task_table() { return a2::task_table(); }
 

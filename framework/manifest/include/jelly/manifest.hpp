@@ -33,6 +33,10 @@ struct ManifestTask {
   double points = 0.0;                 ///< raw points (scaled to grading.autograded_total)
   std::string handout;                 ///< "handout/T4-spring-force.md", relative to the folder
   std::string probe;                   ///< the TaskTable slot the probe smoke-tests; "" = none
+  /// A bonus task (`bonus = true`): its points come on top of grading.autograded_total; they
+  /// are scaled as the other tasks' points are but are not part of the total the score is
+  /// scaled to, and reports show them apart ("+ bonus 5.00 / 5.00").
+  bool bonus = false;
 
   /// "spring_force (forces.cpp)", or "your code" for a task with no function of its own.
   std::string functions_text() const;

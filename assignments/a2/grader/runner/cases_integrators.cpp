@@ -1,0 +1,220 @@
+// A2.T8–T11 cases: each course integrator stepped on framework-provided systems only (free fall,
+// the linear two-particle spring, and a small cloth linearised about its rest shape with some of
+// its particles pinned, inverse mass 0): no student force, spring or collision code runs, so a
+// wrong spring sign cannot fail an integrator test. The pinned cloth also proves that a pin stays
+// bitwise where it was under the student's integrator (cloth contract §1, §7).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "cases.hpp"
+#include "jelly/test_systems.hpp"
+#include "jelly/world.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+struct Method {
+  const char* key;   // params.method
+  const char* name;  // the student's function
+  StepFunction TaskTable::*member;
+};
+
+const Method kMethods[] = {
+    {"explicit_euler", "explicit_euler_step", &TaskTable::explicit_euler_step},
+    {"implicit_euler", "implicit_euler_step", &TaskTable::implicit_euler_step},
+    {"midpoint", "midpoint_step", &TaskTable::midpoint_step},
+    {"rk4", "rk4_step", &TaskTable::rk4_step},
+};
+
+const Method& method(const Params& params) {
+  const std::string key = params.text("method");
+  for (const Method& m : kMethods)
+    if (key == m.key) return m;
+  throw std::runtime_error(
+      "params.method: expected explicit_euler, implicit_euler, midpoint or rk4, got " + key);
+}
+
+void step_n(StepFunction fn, System& system, State& s, double h, long n) {
+  Workspace w;
+  for (long i = 0; i < n; ++i) {
+    w.resize(system.particle_count());
+    fn(system, s, h, w);
+  }
+}
+
+// Free fall of three particles (physics contract §9, which the cloth keeps: cloth contract §7).
+void run_free_fall(const TaskTable& t, const Params& params, Outputs& out) {
+  const Method& m = method(params);
+  const double h = params.number("h");
+  const long steps = params.integer("steps");
+  FreeFallSystem system(3, Vec3(0.0, -9.8, 0.0));
+  State s;
+  s.resize(3);
+  s.x << -2.0, 0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 0.5, -0.5;
+  s.v << 0.0, 0.5, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0;
+  step_n(t.*(m.member), system, s, h, steps);
+  char what[160];
+  std::snprintf(what, sizeof what,
+                "after %ld steps of %g s of a cloth particle dropped from rest at y = 1 m [m]",
+                steps, h);
+  out.value("y0", s.x(1, 0), std::string("height ") + what);
+  out.array("x", s.x, "positions of three falling particles at the end [m]");
+  out.array("v", s.v, "velocities of three falling particles at the end [m/s]");
+}
+
+// Observed order on the linear two-particle spring, damping params.damping, one run to t = 1 s
+// per step size in params.h (at least two).
+void run_convergence(const TaskTable& t, const Params& params, Outputs& out) {
+  const Method& m = method(params);
+  const double damping = params.number("damping");
+  std::vector<double> hs = params.numbers("h");
+  if (hs.size() < 2) throw std::runtime_error("params.h: expected at least two step sizes");
+  std::vector<double> errors;
+  std::string list;
+  for (double h : hs) {
+    auto system = make_linear_two_particle_spring(damping);
+    State s = TwoParticleSpring::initial_state(damping);
+    step_n(t.*(m.member), *system, s, h, std::lround(1.0 / h));
+    const double exact = TwoParticleSpring::exact_x1(1.0, damping);
+    const double e = std::max(std::abs(s.x(0, 1) - exact), std::abs(s.x(0, 0) + exact));
+    errors.push_back(e);
+    char b[32];
+    std::snprintf(b, sizeof b, "%s%g", list.empty() ? "" : ", ", h);
+    list += b;
+  }
+  const std::size_t k = errors.size();
+  out.values(
+      "errors", errors,
+      "largest position error at t = 1 s on the two-particle spring for h = " + list + " [m]");
+  out.value("order", std::log2(errors[k - 2] / errors[k - 1]),
+            "observed order of accuracy from the last two step sizes (log2 of the error ratio)");
+}
+
+// prepare(): the REFERENCE springs of the cloth params.cloth, per type, into input["springs"].
+void prepare_cloth_springs(const TaskTable& reference, const Params& params, Json& input) {
+  const ClothGrid cloth(cloth_from_params(params.table("cloth")), 0);
+  std::vector<Spring> structural, shear, bending;
+  reference.add_grid_structural_springs(cloth, structural);
+  reference.add_grid_shear_springs(cloth, shear);
+  reference.add_grid_bending_springs(cloth, bending);
+  input["springs"] = {{"structural", springs_to_json(structural)},
+                      {"shear", springs_to_json(shear)},
+                      {"bending", springs_to_json(bending)}};
+}
+
+// A System whose pinned particles have inverse mass 0: their acceleration is exactly zero
+// (cloth contract decision 3), whatever the linear springs would give them.
+class PinnedSystem : public System {
+ public:
+  PinnedSystem(std::unique_ptr<LinearSystem> inner, std::vector<int> pinned)
+      : inner_(std::move(inner)), pinned_(std::move(pinned)) {}
+  void acceleration(const State& s, Vec3Array& a) override {
+    inner_->acceleration(s, a);
+    for (int p : pinned_) a.col(p).setZero();
+  }
+  Eigen::Index particle_count() const override { return inner_->particle_count(); }
+
+ private:
+  std::unique_ptr<LinearSystem> inner_;
+  std::vector<int> pinned_;
+};
+
+// The cloth params.cloth (pins = [[i, k], ...]) with the prepared reference springs, stiffness
+// params.ks, dampers params.kd, gravity params.gravity, linearised about its rest shape; its
+// state perturbed by params.dx·U (positions) and params.dv·U (velocities) except at the pins;
+// params.steps steps (default 1) of params.h with the student's integrator.
+void run_cloth_steps(const TaskTable& t, const Params& params, const Json& input, Outputs& out) {
+  const Method& m = method(params);
+  const double h = params.number("h");
+  const long steps = params.integer("steps", 1);
+  const ClothSpec spec = cloth_from_params(params.table("cloth"));
+  const ClothGrid cloth(spec, 0);
+  World world{TaskTable{}};
+  const Vec3Array rest = cloth.initial_positions();
+  world.add_particles(rest, Vec3Array::Zero(3, rest.cols()), 1.0);
+  const std::pair<const char*, SpringType> types[] = {{"structural", SpringType::Structural},
+                                                      {"shear", SpringType::Shear},
+                                                      {"bending", SpringType::Bending}};
+  for (const auto& [key, type] : types) {
+    SpringGroup g;
+    g.type = type;
+    g.ks = params.number("ks");
+    g.kd = params.number("kd");
+    g.degenerate_length = degenerate_length_for(cloth.spacing());
+    g.springs = springs_from_json(input.at("springs").at(key));
+    world.add_spring_group(std::move(g));
+  }
+  world.set_gravity(params.vec("gravity", Vec3::Zero()));
+  std::vector<int> pins;
+  for (const GridCoord& p : spec.pins) pins.push_back(cloth.index(p[0], p[1]));
+  PinnedSystem system(std::make_unique<LinearSystem>(world, rest), pins);
+  State s;
+  s.resize(rest.cols());
+  s.x = rest;
+  s.v.setZero();
+  Sequence r(static_cast<std::uint64_t>(params.integer("seed")));
+  const double dx = params.number("dx"), dv = params.number("dv");
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
+    const Vec3 ddx = dx * r.next3();
+    const Vec3 ddv = dv * r.next3();
+    if (std::find(pins.begin(), pins.end(), static_cast<int>(i)) != pins.end()) continue;
+    s.x.col(i) += ddx;
+    s.v.col(i) = ddv;
+  }
+  const State start = s;
+  step_n(t.*(m.member), system, s, h, steps);
+  char what[160];
+  std::snprintf(what, sizeof what,
+                "after %ld step(s) of h = %g s of a damped linear %d×%d cloth with %zu pinned "
+                "particles",
+                steps, h, spec.n, spec.n, pins.size());
+  out.array("x", s.x, std::string("positions ") + what + " [m]");
+  out.array("v", s.v, std::string("velocities ") + what + " [m/s]");
+  // A pin's position and velocity must be bitwise what they were: x + h·0 is x.
+  int moved = 0;
+  std::string text;
+  for (std::size_t k = 0; k < pins.size(); ++k) {
+    const int p = pins[k];
+    const bool same = (s.x.col(p).array() == start.x.col(p).array()).all() &&
+                      (s.v.col(p).array() == start.v.col(p).array()).all();
+    if (!same && moved++ < 2) {
+      char b[200];
+      std::snprintf(b, sizeof b, "%spinned particle %s moved by %.3g m", text.empty() ? "" : "; ",
+                    grid_name(spec.pins[k][0], spec.pins[k][1]).c_str(),
+                    (s.x.col(p) - start.x.col(p)).norm());
+      text += b;
+    }
+  }
+  out.value("pinned_moved", moved,
+            std::string("pinned particles (inverse mass 0, acceleration 0) not bitwise where ") +
+                "they started " + what);
+  out.detail("pinned_moved", "", moved > 0 ? "yours: " + text : "");
+}
+
+}  // namespace
+
+// Every generator takes params.method (explicit_euler, implicit_euler, midpoint, rk4).
+void register_integrator_cases(Registry& r) {
+  r.add({"integrator_free_fall", "one integrator on three particles in free fall", nullptr,
+         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_free_fall(t, p, o);
+         }});
+  r.add({"integrator_convergence", "one integrator's order of accuracy on the two-particle spring",
+         nullptr, [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
+           run_convergence(t, p, o);
+         }});
+  r.add({"integrator_cloth_steps",
+         "steps of one integrator on a damped linear cloth with pinned particles",
+         &prepare_cloth_springs,
+         [](const TaskTable& t, const Params& p, const Json& in, Outputs& o) {
+           run_cloth_steps(t, p, in, o);
+         }});
+}
+
+}  // namespace jelly::grade
