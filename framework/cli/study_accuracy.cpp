@@ -58,8 +58,8 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
   Simulator::Options options(kind, h);
   options.detect_instability = false;  // watched below, so that the run is not stopped
   Simulator sim(build_world(scene, session::tasks_for(scene)), options);
-  StabilityMonitor monitor(options.monitor);
-  monitor.start(sim.energy().total());
+  StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
+  monitor.start(sim.detector_energy());
   const long evaluations0 = sim.evaluations();
   auto collisions = [&] {  // terrain responses (A1), or impulses of a cloth scene (A2)
     const auto& c = sim.world().counters();
@@ -97,7 +97,7 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
         break;
       }
       if (row.stable && monitor.wants_sample(step)) {
-        if (auto reason = monitor.check(sim.energy().total(), true)) {
+        if (auto reason = monitor.check(sim.detector_energy(), true)) {
           row.stable = false;
           row.reason = *reason;
           row.detected_at = sim.time();

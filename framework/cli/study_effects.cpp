@@ -124,9 +124,9 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   options.detect_instability = false;  // watched below (the same detector, every 10 steps)
   Simulator sim(build_world(scene, session::tasks_for(scene)), options);
   const World& world = sim.world();
-  StabilityMonitor monitor(options.monitor);
+  StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
   row.energy_start = sim.energy().total();
-  monitor.start(row.energy_start);
+  monitor.start(sim.detector_energy());
   row.particles = static_cast<long>(world.particle_count());
   row.springs = static_cast<long>(world.spring_count());
   const Vec3 up = world.gravity() && world.gravity()->norm() > 0.0
@@ -252,7 +252,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
       rest_since = sim.time();
     bool fired = false;
     if (monitor.wants_sample(step))
-      if (auto reason = monitor.check(sim.energy().total(), true)) {
+      if (auto reason = monitor.check(sim.detector_energy(), true)) {
         row.stable = false;
         row.reason = *reason;
         row.detected_at = sim.time();

@@ -135,7 +135,7 @@ TEST_F(CliCloth, TheDetectorCatchesImplicitEulerAboveItsLimitAndNotBelow) {
   EXPECT_EQ(ok.code, 0) << ok.output;
   const Result blown = jelly(base + " --dt 1.5e-4");
   EXPECT_EQ(blown.code, 3) << blown.output;
-  EXPECT_TRUE(has(blown.output, "implicit_euler")) << blown.output;
+  EXPECT_TRUE(has(blown.output, "unstable: Implicit Euler")) << blown.output;
 }
 
 }  // namespace

@@ -28,6 +28,29 @@ void check_valid(const jelly::SceneSpec& s) {
   if (s.body_kind == jelly::BodyKind::Cube) {
     if (s.cube.n < 2 || s.cube.n > 64 || !(s.cube.mass > 0.0) || !(s.cube.edge > 0.0))
       fail("accepted a bad cube", std::to_string(s.cube.n));
+  } else if (s.body_kind == jelly::BodyKind::Cloth) {
+    const jelly::ClothSpec& c = s.cloth;
+    if (c.n < 2 || c.n > 200 || !(c.mass > 0.0) || !(c.size > 0.0) || !(c.air_drag >= 0.0))
+      fail("accepted a bad cloth", std::to_string(c.n));
+    for (const std::string& set : c.pin_sets)
+      if (set != "corners" && set != "edge") fail("accepted an unknown pin set", set);
+    for (const jelly::GridCoord& p : c.pins)
+      if (p[0] < 0 || p[1] < 0 || p[0] >= c.n || p[1] >= c.n)
+        fail("accepted a pin outside the grid", std::to_string(p[0]) + "," + std::to_string(p[1]));
+    if (!s.terrains.empty()) fail("accepted a terrain in a cloth scene", "");
+    if (s.shear_body.enabled) fail("accepted body diagonals in a cloth", "");
+    const jelly::ClothCollisionSettings& k = s.collisions;
+    if (!(k.cloth_restitution >= 0.0 && k.cloth_restitution <= 1.0) ||
+        !(k.sphere_restitution >= 0.0 && k.sphere_restitution <= 1.0) || !(k.tolerance >= 0.0) ||
+        !(k.friction >= 0.0) || !(k.push_out >= 0.0 && k.push_out <= 1.0))
+      fail("accepted bad collision settings", "");
+    for (const jelly::SphereSpec& sp : s.spheres) {
+      if (!(sp.radius > 0.0) || (sp.mass && !(*sp.mass > 0.0)))
+        fail("accepted a bad sphere", std::to_string(sp.radius));
+      for (std::size_t i = 1; i < sp.schedule.size(); ++i)
+        if (!(sp.schedule[i].time > sp.schedule[i - 1].time))
+          fail("accepted a schedule whose times do not increase", "");
+    }
   } else {
     const auto n = s.particles.positions.cols();
     if (n < 1 || s.particles.velocities.cols() != n || !(s.particles.mass > 0.0))
@@ -36,6 +59,8 @@ void check_valid(const jelly::SceneSpec& s) {
       if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b || !(sp.rest_length > 0.0))
         fail("accepted a bad spring", std::to_string(sp.a) + "," + std::to_string(sp.b));
   }
+  if (s.body_kind != jelly::BodyKind::Cloth && !s.spheres.empty())
+    fail("accepted spheres in a scene without a cloth", "");
   for (const jelly::Terrain& t : s.terrains) {
     if (const auto* p = std::get_if<jelly::Plane>(&t.shape)) {
       if (std::abs(p->normal.norm() - 1.0) > 1e-12) fail("plane normal not unit", t.name);

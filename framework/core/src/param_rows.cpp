@@ -631,7 +631,16 @@ std::vector<Decl> sphere_rows() {
                 const SphereSpec& sp = sphere_spec(s, c);
                 return sp.mass.value_or(default_sphere_mass(sp.radius));
               },
-              [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).mass = real(v); }),
+              [](SceneSpec& s, const Ctx& c, const Value& v) {
+                // 1000·r³ is the mass not given: it keeps following the radius (and `jelly params`
+                // text set back leaves the scene as it was).
+                SphereSpec& sp = sphere_spec(s, c);
+                if (real(v) == default_sphere_mass(sp.radius)) {
+                  sp.mass.reset();
+                } else {
+                  sp.mass = real(v);
+                }
+              }),
           [](const SceneSpec& s, const Ctx& c) { return sphere_spec(s, c).mass.has_value(); }),
       make(
           "sphere.*.velocity", Scope::DynamicSphere, ValueKind::Vector3, "m/s", Default::Yes, kAny,

@@ -65,6 +65,13 @@ class Simulator {
   const std::optional<InstabilityReport>& instability() const { return instability_; }
   /// Energy of the current state.
   Energy energy() const { return world_->energy(world_->state()); }
+  /// What the detector compares with its start: the energy, less the kinematic spheres' work in a
+  /// cloth world (cloth decision 11). For a study that watches a run with its own monitor.
+  double detector_energy() const {
+    return energy().total() - (world_->has_cloth() ? world_->kinematic_work() : 0.0);
+  }
+  /// The detector's settings for this world (a cloth world's floor: decision 11).
+  const StabilityMonitor::Config& detector_config() const { return monitor_.config(); }
   /// Acceleration evaluations so far.
   long evaluations() const { return world_->counters().acceleration_evaluations; }
   /// Backward Euler's solver statistics (iterations, caps hit); null for other integrators.
