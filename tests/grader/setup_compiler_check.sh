@@ -13,7 +13,7 @@
 set -uo pipefail
 grade="${1:?jelly-grade}"; work="${2:?work dir}"
 rm -rf "$work"; mkdir -p "$work"
-"$grade" gradescope-zip "$work/autograder.zip" >"$work/zip.log" 2>&1 || { cat "$work/zip.log"; exit 1; }
+"$grade" gradescope-zip "$work/autograder.zip" --assignment a1 >"$work/zip.log" 2>&1 || { cat "$work/zip.log"; exit 1; }
 (cd "$work" && unzip -q -o autograder.zip setup.sh) || { echo "no setup.sh in the zip"; exit 1; }
 sed -n '/^# BEGIN compiler check/,/^# END compiler check/p' "$work/setup.sh" >"$work/block.sh"
 grep -q '^# END compiler check' "$work/block.sh" || { echo "setup.sh has no compiler check block:"; cat "$work/setup.sh"; exit 1; }
