@@ -46,7 +46,10 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   for (const auto& e : fs::directory_iterator(config.mutants_dir()))
     if (e.path().extension() == ".toml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  const fs::path root = work.empty() ? config.binary_dir / "grader" / "mutants" : fs::path(work);
+  // One folder per assignment: the A1 and A2 runs (two CTest tests) may run at once.
+  const fs::path root = work.empty()
+                            ? config.binary_dir / "grader" / "mutants" / config.assignment().id
+                            : fs::path(work);
   fs::remove_all(root);
   // Entry 0: the reference; entry 1: the stubs; then the mutants.
   list.push_back({"reference",
