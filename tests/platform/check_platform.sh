@@ -161,9 +161,10 @@ jelly="$(find "$build" -name "jelly$exe" -type f | head -1)"
 out="$work/out"
 rm -rf "$out"
 mkdir -p "$out/host" "$out/$platform"
-scene="$src/scenes/course-2023.toml"
-corner="$src/scenes/hard/corner-first.toml"
-# Each assignment's runs, "name|jelly arguments[|exit status]" (@ is the output folder; the host
+scene="%S/scenes/course-2023.toml"
+corner="%S/scenes/hard/corner-first.toml"
+# Each assignment's runs, "name|jelly arguments[|exit status]" (@ is the output folder and %S the
+# source folder, put in after the arguments are split: either path may hold a space; the host
 # run must end with that status, 0 unless given: two runs that fail alike prove nothing). A1's are
 # the same as before A2 existed (its implicit Euler run blows up at t = 1.5 s by design: 3); A2's run the course's cloth scenes with every course integrator (explicit
 # Euler on cloth-2022 is chaotic at the collisions, decision 14: the same bits there are the
@@ -175,8 +176,8 @@ runs_a1=(
   "corner-first-trajectory|run $corner --duration 1.5 --every 500 --out @/corner-first.csv"
   "course-check|check $scene"
 )
-c2022="$src/scenes/cloth-2022.toml"
-c2024="$src/scenes/cloth-2024.toml"
+c2022="%S/scenes/cloth-2022.toml"
+c2024="%S/scenes/cloth-2024.toml"
 runs_a2=(
   "cloth-2022-rk4-summary|run $c2022 --integrator rk4 --duration 1 --summary @/cloth-2022-rk4.csv"
   "cloth-2022-explicit-trajectory|run $c2022 --integrator explicit_euler --duration 0.8 --every 2000 --out @/cloth-2022-explicit.csv"
@@ -194,7 +195,7 @@ for id in "${ids[@]}"; do
     # An assignment with no runs of its own here: its default scene for one second.
     default="$(awk '/^[ \t]*\[/ { exit } /^default_scene[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); print v }' "$src/assignments/$id/assignment.toml")"
     [ -n "$default" ] || die "assignments/$id/assignment.toml has no default_scene and check_platform.sh no runs for $id"
-    runs+=("$id-default-summary|run $src/scenes/$default.toml --duration 1 --summary @/$id-default.csv")
+    runs+=("$id-default-summary|run %S/scenes/$default.toml --duration 1 --summary @/$id-default.csv")
   fi
 done
 t0=$(date +%s)
@@ -204,14 +205,15 @@ for entry in "${runs[@]}"; do
   want="${want:-0}"
   for side in host "$platform"; do
     dir="$out/$side"
-    # shellcheck disable=SC2086
-    set -- ${args//@/$dir}
+    read -r -a words <<<"$args"
+    set --
+    for w in "${words[@]}"; do w="${w//@/$dir}"; set -- "$@" "${w//%S/$src}"; done
     if [ "$side" = host ]; then "$host_jelly" "$@" >"$dir/$name.stdout" 2>&1
     else "${run[@]}" "$jelly" "$@" >"$dir/$name.stdout" 2>&1; fi
     rc=$?
     echo "exit $rc" >>"$dir/$name.stdout"
     if [ "$side" = host ] && [ "$rc" -ne "$want" ]; then
-      tail -5 "$dir/$name.stdout"; say "FAILED: the host run $name ended with exit $rc, not $want (jelly $args)"; failed=1
+      tail -5 "$dir/$name.stdout"; say "FAILED: the host run $name ended with exit $rc, not $want (jelly ${args//%S/$src})"; failed=1
     fi
   done
 done
