@@ -9,11 +9,16 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <string>
+#include <vector>
 
+#include <stb_image.h>
 #include <Eigen/Geometry>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/meshes.hpp"
@@ -367,6 +372,92 @@ TEST_F(HeadlessCloth, TheKinematicSphereHasItsOwnColour) {
   EXPECT_EQ(
       hue_at(below, camera_, s.center + 0.9 * s.radius * (camera_.eye() - s.center).normalized()),
       Hue::Kinematic);
+}
+
+// ---------------------------------------------------------------------------------------------
+// `jelly render --replay` on a cloth scene (the grader's frames of cloth-2024): the recorded
+// cloth, and the kinematic sphere at the centre recorded after the particles.
+
+TEST(ClothReplay, TheKinematicSphereIsDrawnWhereItWasRecorded) {
+  constexpr int w = 640, h = 360;
+  const SceneResult scene =
+      session::resolve_scene("builtin:cloth-2024", session::default_scenes_dir());
+  ASSERT_TRUE(scene) << scene.error->text();
+  OrbitCamera camera;
+  Vec3Array start;
+  double radius = 0.0;
+  {
+    BackendOptions bo;
+    bo.name = "offscreen";
+    bo.width = w;
+    bo.height = h;
+    auto created = create_backend(bo);
+    ASSERT_TRUE(created.backend) << created.error;
+    Renderer renderer(created.backend->gl(), 0);
+    const std::unique_ptr<World> world =
+        build_world(*scene.scene, session::tasks_for(*scene.scene));
+    ASSERT_EQ(world->sphere_count(), 1);
+    ASSERT_TRUE(world->sphere_is_kinematic(0));
+    start = world->state().x;
+    radius = world->sphere(0).radius;
+    camera.frame(renderer.make_drawable(*world)->bounds(), double(w) / h);
+  }
+  // Frame 0: the sphere where the scene starts it (under the cloth); frame 1: lifted above it.
+  const Vec3 under = Vec3::Zero(), above(0.8, 2.8, 0.0);
+  fs::create_directories(kArtifacts / "replay");
+  const fs::path csv = kArtifacts / "replay" / "cloth-2024.csv";
+  {
+    std::ofstream out(csv);
+    out << "frame,time,particle,x,y,z\n";
+    int f = 0;
+    for (const Vec3& c : {under, above}) {
+      for (Eigen::Index i = 0; i <= start.cols(); ++i) {
+        const Vec3 x = i < start.cols() ? Vec3(start.col(i)) : c;
+        out << f << "," << 0.5 * f << "," << i << "," << x.x() << "," << x.y() << "," << x.z()
+            << "\n";
+      }
+      ++f;
+    }
+  }
+  const fs::path dir = kArtifacts / "replay" / "cloth-2024";
+  fs::remove_all(dir);
+  std::vector<std::string> args = {
+      "render",      "builtin:cloth-2024", "--replay", csv.string(),      "--frames",  dir.string(),
+      "--width",     std::to_string(w),    "--height", std::to_string(h), "--samples", "0",
+      "--no-caption"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  ASSERT_EQ(movie::render_command(static_cast<int>(argv.size()), argv.data()), 0);
+  const auto load = [&](const char* name) {
+    int iw = 0, ih = 0, n = 0;
+    unsigned char* data = stbi_load((dir / name).string().c_str(), &iw, &ih, &n, 4);
+    Image img;
+    if (!data) return img;
+    img.width = iw;
+    img.height = ih;
+    img.rgba.assign(data, data + static_cast<std::size_t>(iw) * ih * 4);
+    stbi_image_free(data);
+    return img;
+  };
+  const Image a = load("frame_00000.png"), b = load("frame_00001.png");
+  ASSERT_EQ(a.width, w);
+  ASSERT_EQ(b.width, w);
+  // The sphere's point nearest the eye, lifted: kinematic green in frame 1 only.
+  const Vec3 front = above + 0.8 * radius * (camera.eye() - above).normalized();
+  EXPECT_EQ(hue_at(b, camera, front), Hue::Kinematic) << pixel_at(b, camera, front);
+  EXPECT_NE(hue_at(a, camera, front), Hue::Kinematic) << pixel_at(a, camera, front);
+  // A frame with neither the state's particle count nor that plus the kinematic spheres: exit 2.
+  const fs::path bad = kArtifacts / "replay" / "cloth-2024-bad.csv";
+  {
+    std::ofstream out(bad);
+    out << "frame,time,particle,x,y,z\n";
+    for (Eigen::Index i = 0; i < start.cols() + 2; ++i) out << "0,0," << i << ",0,0,0\n";
+  }
+  args[3] = bad.string();
+  args[5] = (kArtifacts / "replay" / "unused").string();
+  argv.clear();
+  for (auto& x : args) argv.push_back(x.data());
+  EXPECT_EQ(movie::render_command(static_cast<int>(argv.size()), argv.data()), 2);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -182,6 +182,14 @@ void World::drive_sphere(int sphere, const Vec3& velocity) {
   s.driven = true;
 }
 
+void World::place_sphere(int sphere, const Vec3& center) {
+  if (sphere < 0 || sphere >= sphere_count() ||
+      !spheres_[static_cast<std::size_t>(sphere)].spec.kinematic)
+    throw std::out_of_range("place_sphere: sphere " + std::to_string(sphere) +
+                            " is not a kinematic sphere of this world");
+  spheres_[static_cast<std::size_t>(sphere)].center = center;
+}
+
 void World::set_pinned(int particle, bool pinned) {
   if (particle < 0 || particle >= cloth_particles_)
     throw std::out_of_range("set_pinned: particle " + std::to_string(particle) +

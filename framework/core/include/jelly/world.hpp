@@ -96,6 +96,10 @@ class World : public JacobianSystem {
   /// From now on kinematic sphere `sphere` moves at `velocity`, its schedule ignored (the
   /// viewer's arrow keys). Throws std::out_of_range when it is not a kinematic sphere.
   void drive_sphere(int sphere, const Vec3& velocity);
+  /// Puts kinematic sphere `sphere` at `center`, as recorded elsewhere (`jelly render --replay`
+  /// draws a graded run's frames with it). Throws std::out_of_range when it is not a kinematic
+  /// sphere.
+  void place_sphere(int sphere, const Vec3& center);
 
   /// Pins (inverse mass 0, velocity 0 from now on) or frees (inverse mass 1/m) cloth particle
   /// `particle`: the viewer's keys 1–4 toggle the corners. Throws std::out_of_range for a
