@@ -522,6 +522,40 @@ TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
   EXPECT_NE(html.find("<th>yours</th><th>reference</th>"), std::string::npos);
 }
 
+// A2's frames: cloth-2024 (the manifest's default scene) at the times of its course case, the
+// driven sphere drawn where the run had it; the recorded outputs are not reference data either.
+TEST(GraderFrames, A2ReportShowsTheClothFramesBesideTheReferences) {
+  const Json ref = read_json(kSource / "assignments" / "a2" / "grader" / "data" / "public" /
+                             "a2.course.cloth2024.json");
+  ASSERT_TRUE(ref["params"].contains("frame_times")) << "the case records no frames";
+  for (const auto& [name, value] : ref["outputs"].items())
+    EXPECT_NE(name.rfind("frame_", 0), 0u) << name << " stored as reference data";
+#if !JELLY_GRADE_HAS_RENDER
+  GTEST_SKIP() << "built without the viewer: the report has no frames";
+#endif
+  const Json r = grade(kSource / "solutions" / "a2", "frames-a2", "--assignment a2");
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 85.0) << "80 and the bonus's 5";
+  EXPECT_EQ(r.dump().find("frame_"), std::string::npos) << "frames in results.json";
+  const fs::path out = kWork / "out" / "frames-a2";
+  const std::string md = read_text(out / "report.md");
+  ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
+  // assignments/a2/grader/cases/course.toml: 0.25, 0.5, 0.75, 1, 1.25 and 1.6 s, both sides.
+  EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
+  EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
+  EXPECT_NE(md.find("| 1.60 | ![yours at t = 1.60 s](frames/yours/frame_00005.png)"),
+            std::string::npos)
+      << md;
+  for (const char* side : {"yours", "reference"})
+    for (int k = 0; k < 6; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05d.png", k);
+      const std::string png = read_text(out / "frames" / side / name);
+      ASSERT_GT(png.size(), 1000u) << side << "/" << name;
+      EXPECT_EQ(png.substr(1, 3), "PNG") << side << "/" << name;
+    }
+}
+
 TEST(GraderFrames, WithoutARendererTheReportSaysWhyAndGradingIsUnchanged) {
   const fs::path sub = submission("frames-none");
   const Json with = grade(sub, "frames-default", "--no-frames");
