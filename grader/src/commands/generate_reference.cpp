@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace jelly::grade {
 
@@ -21,6 +23,21 @@ std::string git_commit(const fs::path& dir) {
   std::string s = run_text({"/usr/bin/git", "-C", dir.string(), "rev-parse", "HEAD"});
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
   return s.empty() ? "unknown" : s;
+}
+
+// Whether `path` holds `data` already, but for its "commit" field.
+bool same_but_commit(const fs::path& path, const Json& data) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  try {
+    Json old = Json::parse(in);
+    Json now = data;
+    old.erase("commit");
+    now.erase("commit");
+    return old == now;
+  } catch (const std::exception&) {
+    return false;  // unreadable: write it again
+  }
 }
 
 }  // namespace
@@ -45,6 +62,8 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
   const fs::path work = config.binary_dir / "grader" / "generate";
   fs::create_directories(work);
   std::set<fs::path> written;
+  std::vector<std::string> rewritten, removed;
+  std::size_t unchanged = 0;
   for (const CaseSpec& c : book.cases) {
     if (!descriptions.count(c.generator)) {
       std::cerr << "jelly-grade: " << c.source << ": case " << c.id
@@ -107,19 +126,43 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     if (!input.empty()) data["input"] = input;
     data["outputs"] = outputs;
     const fs::path p = reference_path(config, c);
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << data.dump(1) << "\n";
     written.insert(p);
+    // A file whose data is the same but for the commit it was made at stays as it is, so that the
+    // diff of a regeneration shows only the cases that changed.
+    if (same_but_commit(p, data)) {
+      ++unchanged;
+      continue;
+    }
+    fs::create_directories(p.parent_path());
+    // Whole or not at all: a stopped run leaves the old file, never half of the new one.
+    const fs::path tmp = p.string() + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::binary);
+      out << data.dump(1) << "\n";
+      if (!out.flush()) {
+        std::cerr << "jelly-grade: cannot write " << tmp.string() << "\n";
+        return 2;
+      }
+    }
+    fs::rename(tmp, p);
+    rewritten.push_back(p.filename().string());
   }
   // Remove data of cases that no longer exist.
   for (const char* vis : {"public", "hidden"}) {
     const fs::path dir = config.data_dir(vis);
     if (!fs::exists(dir)) continue;
     for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().extension() == ".json" && !written.count(e.path())) fs::remove(e.path());
+      if (e.path().extension() == ".json" && !written.count(e.path())) {
+        removed.push_back(e.path().filename().string());
+        fs::remove(e.path());
+      }
   }
-  std::cout << "jelly-grade: wrote reference data for " << written.size() << " cases (commit "
-            << commit << ")\n";
+  for (const std::string& name : rewritten) std::cout << "  rewrote " << name << "\n";
+  for (const std::string& name : removed)
+    std::cout << "  removed " << name << " (no such case any more)\n";
+  std::cout << "jelly-grade: reference data for " << written.size()
+            << " cases: " << rewritten.size() << " rewritten, " << unchanged << " unchanged, "
+            << removed.size() << " removed (commit " << commit << ")\n";
   return 0;
 }
 
