@@ -322,6 +322,15 @@ namespace {
 
 // The steps of grade_submission, in the order it takes them.
 
+// Whether this copy of the grader has hidden reference data for the assignment (any file).
+bool has_hidden_data(const GradeConfig& config) {
+  std::error_code ec;
+  for (fs::directory_iterator it(config.data_dir("hidden"), ec), end; !ec && it != end;
+       it.increment(ec))
+    if (it->path().extension() == ".json") return true;
+  return false;
+}
+
 // 1. Selects the cases (rep.cases, in case-book order) and loads their reference data, one entry
 //    per case (none for a skipped one). Grader errors (missing or stale data) throw here, before
 //    anything is compiled.
@@ -338,9 +347,14 @@ std::vector<std::optional<Json>> select_cases(const GradeConfig& config, const C
     } else {
       ref = load_reference(config, c);
       if (!ref) {
-        if (!c.hidden)
-          throw std::runtime_error("reference data " + reference_path(config, c).string() +
-                                   " is missing; run `jelly-grade generate-reference`");
+        // A public case's data always ships. A hidden case's is missing from a copy of the grader
+        // without hidden data (the note below says so); beside other hidden cases' data it is an
+        // instructor's case whose data was never generated: an error, not a silent skip.
+        if (!c.hidden || has_hidden_data(config))
+          throw std::runtime_error(
+              "reference data " + reference_path(config, c).string() + " is missing" +
+              (c.hidden ? " (the other hidden cases have theirs)" : "") +
+              "; run `jelly-grade generate-reference --assignment " + config.assignment().id + "`");
         r.status = "skipped";
       } else if (ref->value("format_version", 0) != kReferenceFormat) {
         throw std::runtime_error(reference_path(config, c).string() + ": format_version " +

@@ -96,6 +96,31 @@ n_hidden=$(find "$tree/grader/data/$id/hidden" -name '*.json' | wc -l)
 [[ $n_public -eq 2 && $n_hidden -eq 2 ]] ||
   fail "expected 2 public and 2 hidden reference files, found $n_public and $n_hidden"
 
+step "generate-reference again: only the files whose data changed are rewritten"
+data_files() { find "$tree/assignments/$id/grader/data/public" "$tree/grader/data/$id/hidden" -name '*.json'; }
+touch "$work/generated.stamp"
+sleep 1
+"$grade" generate-reference --assignment "$id" >"$work/generate-again.log" 2>&1 ||
+  fail "generate-reference (again): $(cat "$work/generate-again.log")"
+grep -q "4 cases: 0 rewritten, 4 unchanged, 0 removed" "$work/generate-again.log" ||
+  fail "an unchanged regeneration should rewrite nothing: $(cat "$work/generate-again.log")"
+[[ -z $(data_files | xargs -r -I{} find {} -newer "$work/generated.stamp") ]] ||
+  fail "an unchanged regeneration touched a data file"
+# One case's parameter changed: that case's file alone is rewritten, and named.
+cases_file=$tree/assignments/$id/grader/cases/step.toml
+cp "$cases_file" "$work/step.toml.orig"
+sed -i 's/h = 0.1, steps = 5/h = 0.05, steps = 5/' "$cases_file"
+"$grade" generate-reference --assignment "$id" >"$work/generate-changed.log" 2>&1 ||
+  fail "generate-reference (one case changed): $(cat "$work/generate-changed.log")"
+grep -q "4 cases: 1 rewritten, 3 unchanged, 0 removed" "$work/generate-changed.log" &&
+  grep -q "rewrote projectile.t2.step.throw.json" "$work/generate-changed.log" ||
+  fail "one changed case should rewrite its file alone: $(cat "$work/generate-changed.log")"
+[[ $(data_files | xargs -r -I{} find {} -newer "$work/generated.stamp" | wc -l) -eq 1 ]] ||
+  fail "a regeneration after one case changed touched other data files"
+cp "$work/step.toml.orig" "$cases_file"
+"$grade" generate-reference --assignment "$id" >"$work/generate-restored.log" 2>&1 ||
+  fail "generate-reference (restored): $(cat "$work/generate-restored.log")"
+
 step "grading the reference (full marks) and the stubs (0)"
 "$grade" grade "$tree/solutions/$id" --assignment "$id" --visibility all --format gradescope \
   --out "$work/reference" >"$work/reference.log" 2>&1 || true
@@ -108,6 +133,17 @@ read -r ref_score ref_max < <(score_of "$work/reference/results.json")
 read -r stub_score stub_max < <(score_of "$work/stubs/results.json")
 [[ $stub_score == 0 && $stub_max == 20 ]] ||
   fail "the stubs score $stub_score / $stub_max, expected 0 / 20 ($work/stubs.log)"
+
+step "a hidden case without reference data beside the others' is an error, not a silent skip"
+hidden_file=$tree/grader/data/$id/hidden/projectile.t1.drag.random.json
+mv "$hidden_file" "$work/hidden-aside.json"
+rc=0
+"$grade" grade "$tree/solutions/$id" --assignment "$id" --visibility all --format gradescope \
+  --out "$work/hidden-missing" >"$work/hidden-missing.log" 2>&1 || rc=$?
+mv "$work/hidden-aside.json" "$hidden_file"
+[[ $rc -eq 2 ]] && grep -q "projectile.t1.drag.random.json is missing (the other hidden cases have theirs)" "$work/hidden-missing.log" ||
+  fail "grading with one hidden case's data missing: exit $rc, expected 2 naming the file: $(cat "$work/hidden-missing.log")"
+[[ ! -e $work/hidden-missing/results.json ]] || fail "a grader error still wrote results.json"
 
 step "mutants --assignment $id"
 "$grade" mutants --assignment "$id" --jobs "$jobs" --out "$work/mutants" >"$work/mutants.log" 2>&1 || {
