@@ -107,6 +107,41 @@ std::vector<fs::path> find_named(const fs::path& root, const std::string& name) 
   return hits;
 }
 
+// A task file under the name a learning-management system's bulk download gives it: Canvas
+// prefixes the student and two numbers (`dave_12345_67890_forces.cpp`, `dave_LATE_12345_67890_…`)
+// and numbers a resubmission (`…_forces-1.cpp`). Returns the file to grade, the latest
+// resubmission of the shallowest ones, or an empty path.
+fs::path find_lms_named(const fs::path& root, const std::string& name) {
+  const fs::path p(name);
+  const auto escape = [](const std::string& t) {
+    static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+    return std::regex_replace(t, special, R"(\$&)");
+  };
+  const std::regex lms("^.+_(?:LATE_)?[0-9]+_[0-9]+_" + escape(p.stem().string()) +
+                       "(?:-([0-9]+))?" + escape(p.extension().string()) + "$");
+  fs::path best;
+  long best_depth = 0, best_number = -1;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(
+           root, fs::directory_options::skip_permission_denied, ec);
+       it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    std::smatch m;
+    const std::string file = it->path().filename().string();
+    if (it->is_directory(ec) || !std::regex_match(file, m, lms)) continue;
+    const long depth = std::distance(it->path().begin(), it->path().end());
+    const long number = m[1].matched ? std::stol(m[1].str()) : 0;
+    if (best.empty() || depth < best_depth ||
+        (depth == best_depth &&
+         (number > best_number || (number == best_number && it->path() < best)))) {
+      best = it->path();
+      best_depth = depth;
+      best_number = number;
+    }
+  }
+  return best;
+}
+
 // Includes that name files outside the framework headers by a plain path are refused before
 // compiling, with a clearer message than "file not found". A courtesy, not the defence: C++ has
 // many other ways to name a file; the sandbox (isolation.hpp) is what keeps grader files
@@ -309,6 +344,12 @@ class SubmissionBuild {
       std::vector<fs::path> hits =
           fs::is_directory(submission_) ? find_named(submission_, name) : std::vector<fs::path>{};
       fs::path from;
+      if (hits.empty() && fs::is_directory(submission_))
+        if (const fs::path lms = find_lms_named(submission_, name); !lms.empty()) {
+          hits.push_back(lms);
+          r.notes.push_back(fs::relative(lms, submission_).generic_string() + " was graded as " +
+                            name + " (a learning-management system's bulk-download name)");
+        }
       if (hits.empty()) {
         from = config_.assignments_dir() / name;
         r.used[name] = "stub";

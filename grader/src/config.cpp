@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -128,7 +129,15 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
              it(submission, fs::directory_options::skip_permission_denied, ec),
          end;
          !ec && it != end; it.increment(ec))
-      if (!it->is_directory(ec)) present.push_back(it->path().filename().string());
+      if (!it->is_directory(ec)) {
+        const std::string file = it->path().filename().string();
+        present.push_back(file);
+        // A learning-management system's bulk-download name (build.cpp, find_lms_named) names
+        // the file it stands for: dave_12345_67890_forces-1.cpp is forces.cpp.
+        static const std::regex lms(R"(^.+_(?:LATE_)?[0-9]+_[0-9]+_(.+?)(?:-[0-9]+)?(\.[^.]+)$)");
+        std::smatch m;
+        if (std::regex_match(file, m, lms)) present.push_back(m[1].str() + m[2].str());
+      }
     std::vector<AssignmentManifest> manifests;
     for (const AssignmentConfig& a : config.assignments) manifests.push_back(a.manifest);
     if (const AssignmentManifest* m = assignment_for_files(manifests, present))
