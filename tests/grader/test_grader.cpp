@@ -585,18 +585,53 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   fs::create_directories(dir / "in");
   fs::copy(submission("batch-ref"), dir / "in" / "alice", fs::copy_options::recursive);
   fs::copy(kSource / "assignments" / "a1", dir / "in" / "bob", fs::copy_options::recursive);
-  const Cmd r =
-      run("batch " + (dir / "in").string() + " --out " + (dir / "out").string() + " --jobs 2");
+  // carol's files as a Canvas bulk download names them, forces.cpp resubmitted (-1: the later);
+  // dave handed in no task file.
+  const std::vector<std::string> files = {"springs.cpp", "forces.cpp", "collision.cpp",
+                                          "contact.cpp", "integrators.cpp"};
+  fs::create_directories(dir / "in" / "carol");
+  for (const std::string& f : files)
+    fs::copy_file(kSource / "solutions" / "a1" / f, dir / "in" / "carol" / ("carol_123_456_" + f));
+  fs::copy_file(kSource / "assignments" / "a1" / "forces.cpp",
+                dir / "in" / "carol" / "carol_123_456_forces.cpp",
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(kSource / "solutions" / "a1" / "forces.cpp",
+                dir / "in" / "carol" / "carol_123_456_forces-1.cpp");
+  fs::create_directories(dir / "in" / "dave");
+  std::ofstream(dir / "in" / "dave" / "notes.txt") << "I ran out of time\n";
+  const Cmd r = run("batch " + (dir / "in").string() + " --assignment a1 --out " +
+                    (dir / "out").string() + " --jobs 2");
   ASSERT_EQ(r.status, 0) << r.out;
   std::ifstream csv(dir / "out" / "scores.csv");
-  std::string header, alice, bob;
+  std::string header, alice, bob, carol, dave;
   std::getline(csv, header);
   std::getline(csv, alice);
   std::getline(csv, bob);
+  std::getline(csv, carol);
+  std::getline(csv, dave);
+  for (std::string* row : {&header, &alice, &bob, &carol, &dave})
+    if (!row->empty() && row->back() == '\r') row->pop_back();  // RFC 4180 line ends
   EXPECT_EQ(header.rfind("student,score,max_score,compiled,A1.T1", 0), 0u) << header;
+  EXPECT_NE(header.find(",A1.COURSE,missing_files,error"), std::string::npos) << header;
   EXPECT_EQ(alice.rfind("alice,80.00,80.00,1", 0), 0u) << alice;
   EXPECT_EQ(bob.rfind("bob,0.00,80.00,1", 0), 0u) << bob;
+  EXPECT_EQ(bob.substr(bob.size() - 2), ",,") << "bob's stubs are all there: " << bob;
+  EXPECT_EQ(carol.rfind("carol,80.00,80.00,1", 0), 0u) << carol;
+  EXPECT_EQ(dave.rfind("dave,0.00,80.00,1", 0), 0u) << dave;
+  EXPECT_NE(dave.find(",springs.cpp forces.cpp collision.cpp contact.cpp integrators.cpp,"),
+            std::string::npos)
+      << dave;
+  const std::string said =
+      read_json(dir / "out" / "students" / "carol" / "results.json")["output"].get<std::string>();
+  EXPECT_NE(said.find("Note: carol_123_456_forces-1.cpp was graded as forces.cpp (a "
+                      "learning-management system's bulk-download name)"),
+            std::string::npos)
+      << said;
   EXPECT_TRUE(fs::exists(dir / "out" / "students" / "alice" / "results.json"));
+  // Not a terminal: one progress line per submission.
+  for (const char* who : {"alice", "bob", "carol", "dave"})
+    EXPECT_NE(r.out.find("] " + std::string(who) + ": "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << "carriage returns in a log";
 }
 
 TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {

@@ -4,6 +4,14 @@
 #include <iostream>
 #include <mutex>
 
+#ifdef _WIN32
+#include <io.h>
+#define JELLY_STDERR_IS_TTY() (_isatty(2) != 0)
+#else
+#include <unistd.h>
+#define JELLY_STDERR_IS_TTY() (isatty(2) != 0)
+#endif
+
 #include "commands/common.hpp"
 #include "csv.hpp"
 #include "parallel.hpp"
@@ -48,6 +56,9 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   std::vector<std::string> errors(subs.size());
   std::size_t done = 0;
   std::mutex mutex;
+  // On a terminal one progress line is rewritten in place; into a file or a pipe (a log, CI) each
+  // submission gets its own line.
+  const bool tty = JELLY_STDERR_IS_TTY();
   GradeOptions per = options;
   per.jobs = 1;  // parallel across students, serial within one
   parallel_for(subs.size(), jobs, [&](std::size_t i) {
@@ -68,28 +79,32 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
     }
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
-    std::cerr << "\r[" << done << "/" << subs.size() << "] " << safe_text(name) << ": "
+    std::cerr << (tty ? "\r[" : "[") << done << "/" << subs.size() << "] " << safe_text(name)
+              << ": "
               << (errors[i].empty()
                       ? pts(reports[i].score) + " / " + pts(reports[i].max_score) +
                             (reports[i].has_bonus() ? " + bonus " + pts(reports[i].bonus_score)
                                                     : "")
                       : "grader error")
-              << "            " << std::flush;
+              << (tty ? "            " : "\n") << std::flush;
   });
-  std::cerr << "\n";
+  if (tty) std::cerr << "\n";
   // A bonus column only for an assignment with a bonus task (A1's file is as it always was).
   bool bonus = false;
   for (const TaskSpec& t : book.rubric.tasks) bonus = bonus || t.bonus;
   std::vector<std::string> header = {"student", "score", "max_score", "compiled"};
   if (bonus) header.insert(header.begin() + 3, "bonus");
   for (const TaskSpec& t : book.rubric.tasks) header.push_back(csv_field(t.id));
+  // The task files not found in the submission (graded as the unchanged stubs): a student who
+  // submitted nothing usable shows here, not only inside their own report.
+  header.push_back("missing_files");
   header.push_back("error");
   std::string csv = csv_row(header);
   int status = 0;
   for (std::size_t i = 0; i < subs.size(); ++i) {
     std::vector<std::string> row = {csv_field(safe_text(subs[i].filename().string()))};
     if (!errors[i].empty()) {
-      for (std::size_t k = 0; k < (bonus ? 4 : 3) + book.rubric.tasks.size(); ++k)
+      for (std::size_t k = 0; k < (bonus ? 5 : 4) + book.rubric.tasks.size(); ++k)
         row.push_back("");
       row.push_back(csv_field(safe_text(errors[i])));
       status = 1;
@@ -99,6 +114,12 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
       if (bonus) row.push_back(pts(reports[i].bonus_score));
       row.push_back(reports[i].compiled ? "1" : "0");
       for (const TaskResult& t : reports[i].tasks) row.push_back(pts(t.score));
+      std::string missing;
+      for (const std::string& file : config.task_files())
+        if (const auto u = reports[i].build.used.find(file);
+            u != reports[i].build.used.end() && u->second == "stub")
+          missing += (missing.empty() ? "" : " ") + file;
+      row.push_back(csv_field(missing));
       row.push_back("");
     }
     csv += csv_row(row);
