@@ -20,13 +20,16 @@
 // Exit status (jelly/cli_common/exit_codes.hpp): 0 when grading ran, whatever the score (1 with
 // --strict when it is not full); 1 when a self-test (mutants) fails or a batch had a grader error;
 // 2 on grader errors (bad arguments, missing or stale reference data).
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "commands/common.hpp"
 #include "jelly/cli_common/command_line.hpp"
 
 #ifdef _WIN32
@@ -145,6 +148,21 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   }
   select_assignment(config, o.assignment, submission);
   const CaseBook book = load_case_book(config, o.rubric_path);
+  if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
+    // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
+    // one is worth now, so that changing one task's points cannot silently move the others.
+    std::ostringstream say;
+    say << "jelly-grade: "
+        << (o.rubric_path.empty() ? config.rubric_path().string() : o.rubric_path)
+        << ": the tasks' points add up to " << pts(book.rubric.raw_total())
+        << ", not autograded_total = " << pts(book.rubric.autograded_total)
+        << ", so every task is scaled by " << pts(book.rubric.autograded_total) << "/"
+        << pts(book.rubric.raw_total()) << ". Each task is graded out of:";
+    for (const TaskSpec& t : book.rubric.tasks)
+      say << "\n  " << t.id << " " << pts(t.points * scale) << " (written " << pts(t.points)
+          << (t.bonus ? ", bonus" : "") << ")";
+    std::cerr << say.str() << "\n";
+  }
   GradeOptions options;
   options.include_hidden = o.visibility == "all";
   options.timeout_s = o.timeout;

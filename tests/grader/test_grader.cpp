@@ -848,6 +848,33 @@ TEST(GraderAssignment, ConfigWithoutAssignmentsAndBadManifestsAreClearErrors) {
   EXPECT_FALSE(fs::exists(kWork / "out" / "bad-manifest" / "results.json"));
 }
 
+// A rubric whose points no longer add up to autograded_total scales every task: the grader says
+// what each task is now worth (one task raised from 5 to 10 moves every other one).
+TEST(GraderAssignment, AScaledRubricStatesEveryTasksNewPoints) {
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const auto task1 = text.find("id = \"A1.T1\"");
+  ASSERT_NE(task1, std::string::npos);
+  const auto key = text.find("points = 5\n", task1);
+  ASSERT_NE(key, std::string::npos);
+  text.replace(key, 10, "points = 10");
+  const fs::path rubric = kWork / "configs" / "rubric-t1-10.toml";
+  fs::create_directories(rubric.parent_path());
+  std::ofstream(rubric) << text;
+  const fs::path out = kWork / "out" / "rubric-t1-10";
+  const Cmd r = run("grade " + submission("rubric-t1-10").string() + " --assignment a1 --rubric " +
+                    rubric.string() + " --out " + out.string() + " --format gradescope");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("the tasks' points add up to 85.00, not autograded_total = 80.00"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("A1.T1 9.41 (written 10.00)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("A1.T2 4.71 (written 5.00)"), std::string::npos) << r.out;
+  // The manifest as it is adds up: nothing is said.
+  const Cmd plain = run("grade " + submission("rubric-plain").string() + " --assignment a1 --out " +
+                        (kWork / "out" / "rubric-plain").string() + " --format gradescope");
+  EXPECT_EQ(plain.out.find("add up to"), std::string::npos) << plain.out;
+}
+
 // --rubric: a manifest-shaped file with the term's own points replaces the manifest's.
 TEST(GraderAssignment, RubricOptionTakesAManifestShapedFile) {
   std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");

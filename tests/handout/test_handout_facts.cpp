@@ -67,6 +67,17 @@ std::string show(double v) {
   return o.str();
 }
 
+// Points are quoted as the grader shows them: to the cent, whatever digits the text gives. A
+// rubric change that scales every task (5 becoming 5.33) fails here, where rounding to the digits
+// quoted ("5") would let it through.
+Fact points_value(std::function<double()> f) {
+  return {false, [f](double quoted, int) {
+            const double v = f();
+            return std::abs(v - quoted) <= 0.005 + 1e-9 ? std::string()
+                                                        : "the rubric gives " + show(v);
+          }};
+}
+
 // The quoted number is the code's value rounded to the digits the text gives.
 Fact value(std::function<double()> f) {
   return {false, [f](double quoted, int decimals) {
@@ -228,16 +239,17 @@ std::map<std::string, Fact> a1_facts() {
         return value([&] { return sim.time(); }).check(quoted, decimals);
       }};
   f["rk4.real_interval"] = value([] { return -rk4_real_interval(); });
-  f["points.autograded"] = value([] { return rubric().total; });
-  f["points.report"] = value([] { return 100.0 - rubric().total; });
+  f["points.autograded"] = points_value([] { return rubric().total; });
+  f["points.report"] = points_value([] { return 100.0 - rubric().total; });
   for (const char* c : {"springs", "forces", "collision", "integrators"})
-    f[std::string("points.") + c] = value([c = std::string(c)] { return rubric().category.at(c); });
+    f[std::string("points.") + c] =
+        points_value([c = std::string(c)] { return rubric().category.at(c); });
   for (int t = 1; t <= 13; ++t) {
     const std::string id = "A1.T" + std::to_string(t);
-    f["points." + id] = value([id] { return rubric().task.at(id); });
+    f["points." + id] = points_value([id] { return rubric().task.at(id); });
   }
   f["points.A1.T11+T12"] =
-      value([] { return rubric().task.at("A1.T11") + rubric().task.at("A1.T12"); });
+      points_value([] { return rubric().task.at("A1.T11") + rubric().task.at("A1.T12"); });
   return f;
 }
 
@@ -576,17 +588,17 @@ std::map<std::string, Fact> a2_facts() {
       });
 
   const Rubric r = rubric_of("a2");
-  f["points.autograded"] = value([] { return rubric_of("a2").total; });
-  f["points.report"] = value([] { return 100.0 - rubric_of("a2").total; });
+  f["points.autograded"] = points_value([] { return rubric_of("a2").total; });
+  f["points.report"] = points_value([] { return 100.0 - rubric_of("a2").total; });
   for (const char* c : {"springs", "forces", "collision", "integrators"})
     f[std::string("points.") + c] =
-        value([c = std::string(c)] { return rubric_of("a2").category.at(c); });
-  f["points.bonus"] = value([] { return rubric_of("a2").bonus; });
+        points_value([c = std::string(c)] { return rubric_of("a2").category.at(c); });
+  f["points.bonus"] = points_value([] { return rubric_of("a2").bonus; });
   for (const auto& [id, points] : r.task)
     if (id != "A2.COURSE")
-      f["points." + id] = value([id = id] { return rubric_of("a2").task.at(id); });
-  f["points.A2.T9+T10"] =
-      value([] { return rubric_of("a2").task.at("A2.T9") + rubric_of("a2").task.at("A2.T10"); });
+      f["points." + id] = points_value([id = id] { return rubric_of("a2").task.at(id); });
+  f["points.A2.T9+T10"] = points_value(
+      [] { return rubric_of("a2").task.at("A2.T9") + rubric_of("a2").task.at("A2.T10"); });
   return f;
 }
 
@@ -720,6 +732,18 @@ TEST(HandoutFacts, CheckYourselfSectionsAndThePointsTableQuoteOnlyTaggedNumbers)
                         << " has no <!-- fact: ... --> tag (docs/instructor-guide.md §4a): " << l;
       }
     }
+}
+
+// Points are checked to the cent: the old rule (the digits the text gives) let a rubric change that
+// turned every quoted "5" into 5.33 through.
+TEST(HandoutFacts, APointsFactFailsWhenARubricChangeScalesTheTask) {
+  const double scaled = 5.0 * 80.0 / 85.0;  // one other task's points raised by 5
+  EXPECT_EQ(value([=] { return scaled; }).check(5.0, 0), "") << "the rounding rule's blind spot";
+  EXPECT_NE(points_value([=] { return scaled; }).check(5.0, 0), "");
+  EXPECT_EQ(points_value([] { return 5.0; }).check(5.0, 0), "");
+  EXPECT_EQ(points_value([] { return 7.5; }).check(7.5, 1), "");
+  EXPECT_EQ(points_value([] { return 10.0 / 3.0; }).check(3.33, 2), "") << "quoted to the cent";
+  EXPECT_NE(points_value([] { return 10.0 / 3.0; }).check(3.3, 1), "");
 }
 
 TEST(HandoutFacts, TheUntaggedNumberRuleFindsQuantitiesAndSparesNames) {
