@@ -109,7 +109,9 @@ std::vector<fs::path> find_named(const fs::path& root, const std::string& name) 
 
 // A task file under the name a learning-management system's bulk download gives it: Canvas
 // prefixes the student and two numbers (`dave_12345_67890_forces.cpp`, `dave_LATE_12345_67890_…`)
-// and numbers a resubmission (`…_forces-1.cpp`). Returns the file to grade, the latest
+// and numbers a resubmission (`…_forces-1.cpp`); Moodle, downloading without folders, the
+// student's name, id and `assignsubmission_file` (`Dave
+// Smith_12345_assignsubmission_file_forces.cpp`). Returns the file to grade, the latest
 // resubmission of the shallowest ones, or an empty path.
 fs::path find_lms_named(const fs::path& root, const std::string& name) {
   const fs::path p(name);
@@ -117,8 +119,9 @@ fs::path find_lms_named(const fs::path& root, const std::string& name) {
     static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
     return std::regex_replace(t, special, R"(\$&)");
   };
-  const std::regex lms("^.+_(?:LATE_)?[0-9]+_[0-9]+_" + escape(p.stem().string()) +
-                       "(?:-([0-9]+))?" + escape(p.extension().string()) + "$");
+  const std::regex lms("^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_" +
+                       escape(p.stem().string()) + "(?:-([0-9]+))?" +
+                       escape(p.extension().string()) + "$");
   fs::path best;
   long best_depth = 0, best_number = -1;
   std::error_code ec;

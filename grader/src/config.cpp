@@ -134,7 +134,8 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
         present.push_back(file);
         // A learning-management system's bulk-download name (build.cpp, find_lms_named) names
         // the file it stands for: dave_12345_67890_forces-1.cpp is forces.cpp.
-        static const std::regex lms(R"(^.+_(?:LATE_)?[0-9]+_[0-9]+_(.+?)(?:-[0-9]+)?(\.[^.]+)$)");
+        static const std::regex lms(
+            R"(^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_(.+?)(?:-[0-9]+)?(\.[^.]+)$)");
         std::smatch m;
         if (std::regex_match(file, m, lms)) present.push_back(m[1].str() + m[2].str());
       }

@@ -597,6 +597,9 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
                 fs::copy_options::overwrite_existing);
   fs::copy_file(kSource / "solutions" / "a1" / "forces.cpp",
                 dir / "in" / "carol" / "carol_123_456_forces-1.cpp");
+  // ... and contact.cpp as Moodle names a file it downloads without folders.
+  fs::rename(dir / "in" / "carol" / "carol_123_456_contact.cpp",
+             dir / "in" / "carol" / "Carol Smith_123_assignsubmission_file_contact.cpp");
   fs::create_directories(dir / "in" / "dave");
   std::ofstream(dir / "in" / "dave" / "notes.txt") << "I ran out of time\n";
   const Cmd r = run("batch " + (dir / "in").string() + " --assignment a1 --out " +
@@ -627,7 +630,12 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
                       "learning-management system's bulk-download name)"),
             std::string::npos)
       << said;
-  EXPECT_TRUE(fs::exists(dir / "out" / "students" / "alice" / "results.json"));
+  EXPECT_NE(said.find("Note: Carol Smith_123_assignsubmission_file_contact.cpp was graded as "
+                      "contact.cpp"),
+            std::string::npos)
+      << said;
+  for (const char* report : {"results.json", "report.md", "report.html"})
+    EXPECT_TRUE(fs::exists(dir / "out" / "students" / "alice" / report)) << report;
   // Not a terminal: one progress line per submission.
   for (const char* who : {"alice", "bob", "carol", "dave"})
     EXPECT_NE(r.out.find("] " + std::string(who) + ": "), std::string::npos) << r.out;

@@ -65,7 +65,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
     const std::string name = subs[i].filename().string();
     try {
       reports[i] = grade_submission(config, book, subs[i], students / name / "work", per);
-      write_reports(reports[i], book, students / name, {"gradescope", "markdown"},
+      write_reports(reports[i], book, students / name, {"gradescope", "markdown", "html"},
                     frames ? &config : nullptr);
       fs::remove_all(students / name / "work");
     } catch (const std::exception& e) {
