@@ -270,7 +270,8 @@ class Loader {
         }
         return Value{std::move(out)};
       }
-      case ValueKind::IndexPairList: {
+      case ValueKind::IndexPairList:
+      case ValueKind::GridList: {  // both read as [[a, b], ...] of integers
         const toml::array* a = n.as_array();
         if (!a) return wrong(n);
         std::vector<IndexPair> out;
@@ -291,19 +292,6 @@ class Loader {
           const auto* name = a->get(i)->as_string();
           if (!name) return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
           out.emplace_back(name->get());
-        }
-        return Value{std::move(out)};
-      }
-      case ValueKind::GridList: {
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<IndexPair> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          const toml::array* pair = a->get(i)->as_array();
-          if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() ||
-              !pair->get(1)->is_integer())
-            return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
-          out.push_back({pair->get(0)->as_integer()->get(), pair->get(1)->as_integer()->get()});
         }
         return Value{std::move(out)};
       }
