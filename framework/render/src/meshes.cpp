@@ -18,6 +18,23 @@ void add_quad(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::u
   m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
 }
 
+// Vertex normals from the triangles (area-weighted sum of their normals, normalised; +y where a
+// vertex's sum vanishes). The normals must be zero on entry.
+void smooth_normals(Mesh& m) {
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+    const Eigen::Vector3f nrm =
+        (m.positions[b] - m.positions[a]).cross(m.positions[c] - m.positions[a]);
+    m.normals[a] += nrm;
+    m.normals[b] += nrm;
+    m.normals[c] += nrm;
+  }
+  for (auto& nrm : m.normals) {
+    const float len = nrm.norm();
+    nrm = len > 0.0f && std::isfinite(len) ? Eigen::Vector3f(nrm / len) : Eigen::Vector3f::UnitY();
+  }
+}
+
 }  // namespace
 
 void plane_basis(const Vec3& n, Vec3& u, Vec3& w) {
@@ -164,18 +181,7 @@ void JellySurface::update(const Vec3Array& x) {
     mesh_.positions[v] = x.col(particle_of_vertex_[v]).cast<float>();
     mesh_.normals[v].setZero();
   }
-  for (std::size_t t = 0; t + 2 < mesh_.indices.size(); t += 3) {
-    const std::uint32_t a = mesh_.indices[t], b = mesh_.indices[t + 1], c = mesh_.indices[t + 2];
-    const Eigen::Vector3f nrm =
-        (mesh_.positions[b] - mesh_.positions[a]).cross(mesh_.positions[c] - mesh_.positions[a]);
-    mesh_.normals[a] += nrm;
-    mesh_.normals[b] += nrm;
-    mesh_.normals[c] += nrm;
-  }
-  for (auto& nrm : mesh_.normals) {
-    const float len = nrm.norm();
-    nrm = len > 0.0f && std::isfinite(len) ? Eigen::Vector3f(nrm / len) : Eigen::Vector3f::UnitY();
-  }
+  smooth_normals(mesh_);
 }
 
 ClothSurface::ClothSurface(int n, int first_index) : n_(n), first_(first_index) {
@@ -195,18 +201,7 @@ void ClothSurface::update(const Vec3Array& x) {
     mesh_.positions[v] = x.col(first_ + static_cast<Eigen::Index>(v)).cast<float>();
     mesh_.normals[v].setZero();
   }
-  for (std::size_t t = 0; t + 2 < mesh_.indices.size(); t += 3) {
-    const std::uint32_t a = mesh_.indices[t], b = mesh_.indices[t + 1], c = mesh_.indices[t + 2];
-    const Eigen::Vector3f nrm =
-        (mesh_.positions[b] - mesh_.positions[a]).cross(mesh_.positions[c] - mesh_.positions[a]);
-    mesh_.normals[a] += nrm;
-    mesh_.normals[b] += nrm;
-    mesh_.normals[c] += nrm;
-  }
-  for (auto& nrm : mesh_.normals) {
-    const float len = nrm.norm();
-    nrm = len > 0.0f && std::isfinite(len) ? Eigen::Vector3f(nrm / len) : Eigen::Vector3f::UnitY();
-  }
+  smooth_normals(mesh_);
 }
 
 MovingSphere::MovingSphere() {

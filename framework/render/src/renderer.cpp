@@ -416,6 +416,20 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     g.DrawElements(GL_TRIANGLES, gpu.terrains[i].index_count, GL_UNSIGNED_INT, nullptr);
   }
 
+  // The moving surfaces (jelly, cloth): uploaded every frame, pushed back a little so that lines
+  // drawn on them (springs) stay visible.
+  const auto draw_moving = [&](const auto& surfaces, auto& buffers) {
+    g.Enable(GL_POLYGON_OFFSET_FILL);
+    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+      const Mesh& m = surfaces[i].mesh();
+      buffers[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
+      g.BindVertexArray(buffers[i].vao);
+      g.DrawElements(GL_TRIANGLES, buffers[i].index_count, GL_UNSIGNED_INT, nullptr);
+    }
+    g.Disable(GL_POLYGON_OFFSET_FILL);
+  };
+
   // Jelly surfaces.
   g.Uniform2f(loc(sp, "u_cavity"), 0.0f, 0.0f);
   if (opt.surface) {
@@ -423,16 +437,7 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     g.Uniform1i(loc(sp, "u_has_hole"), 0);
     set3(sp, "u_color", colors::kJelly);
     set_material(kJellyMaterial);
-    // Keep lines drawn on the surface (springs) visible: push the surface back a little.
-    g.Enable(GL_POLYGON_OFFSET_FILL);
-    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
-    for (std::size_t i = 0; i < d.surfaces_.size(); ++i) {
-      const Mesh& m = d.surfaces_[i].mesh();
-      gpu.surfaces[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
-      g.BindVertexArray(gpu.surfaces[i].vao);
-      g.DrawElements(GL_TRIANGLES, gpu.surfaces[i].index_count, GL_UNSIGNED_INT, nullptr);
-    }
-    g.Disable(GL_POLYGON_OFFSET_FILL);
+    draw_moving(d.surfaces_, gpu.surfaces);
   }
 
   // Cloth scenes: the cloth's two sides and the spheres.
@@ -443,15 +448,7 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
     set3(sp, "u_color", colors::kClothFront);
     set3(sp, "u_back_color", colors::kClothBack);
     set_material(kClothMaterial);
-    g.Enable(GL_POLYGON_OFFSET_FILL);
-    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
-    for (std::size_t i = 0; i < d.cloth_surfaces_.size(); ++i) {
-      const Mesh& m = d.cloth_surfaces_[i].mesh();
-      gpu.cloths[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
-      g.BindVertexArray(gpu.cloths[i].vao);
-      g.DrawElements(GL_TRIANGLES, gpu.cloths[i].index_count, GL_UNSIGNED_INT, nullptr);
-    }
-    g.Disable(GL_POLYGON_OFFSET_FILL);
+    draw_moving(d.cloth_surfaces_, gpu.cloths);
     g.Uniform1i(loc(sp, "u_two_tone"), 0);
   }
   if (!d.spheres_.empty()) {
