@@ -107,21 +107,9 @@ std::vector<fs::path> find_named(const fs::path& root, const std::string& name) 
   return hits;
 }
 
-// A task file under the name a learning-management system's bulk download gives it: Canvas
-// prefixes the student and two numbers (`dave_12345_67890_forces.cpp`, `dave_LATE_12345_67890_…`)
-// and numbers a resubmission (`…_forces-1.cpp`); Moodle, downloading without folders, the
-// student's name, id and `assignsubmission_file` (`Dave
-// Smith_12345_assignsubmission_file_forces.cpp`). Returns the file to grade, the latest
+// The file to grade as `name` under an LMS bulk-download name (config.hpp, lms_name): the latest
 // resubmission of the shallowest ones, or an empty path.
 fs::path find_lms_named(const fs::path& root, const std::string& name) {
-  const fs::path p(name);
-  const auto escape = [](const std::string& t) {
-    static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
-    return std::regex_replace(t, special, R"(\$&)");
-  };
-  const std::regex lms("^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_" +
-                       escape(p.stem().string()) + "(?:-([0-9]+))?" +
-                       escape(p.extension().string()) + "$");
   fs::path best;
   long best_depth = 0, best_number = -1;
   std::error_code ec;
@@ -129,17 +117,16 @@ fs::path find_lms_named(const fs::path& root, const std::string& name) {
            root, fs::directory_options::skip_permission_denied, ec);
        it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
-    std::smatch m;
-    const std::string file = it->path().filename().string();
-    if (it->is_directory(ec) || !std::regex_match(file, m, lms)) continue;
+    if (it->is_directory(ec)) continue;
+    const std::optional<LmsName> lms = lms_name(it->path().filename().string());
+    if (!lms || lms->file != name) continue;
     const long depth = std::distance(it->path().begin(), it->path().end());
-    const long number = m[1].matched ? std::stol(m[1].str()) : 0;
     if (best.empty() || depth < best_depth ||
-        (depth == best_depth &&
-         (number > best_number || (number == best_number && it->path() < best)))) {
+        (depth == best_depth && (lms->resubmission > best_number ||
+                                 (lms->resubmission == best_number && it->path() < best)))) {
       best = it->path();
       best_depth = depth;
-      best_number = number;
+      best_number = lms->resubmission;
     }
   }
   return best;

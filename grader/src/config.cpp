@@ -132,12 +132,8 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
       if (!it->is_directory(ec)) {
         const std::string file = it->path().filename().string();
         present.push_back(file);
-        // A learning-management system's bulk-download name (build.cpp, find_lms_named) names
-        // the file it stands for: dave_12345_67890_forces-1.cpp is forces.cpp.
-        static const std::regex lms(
-            R"(^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_(.+?)(?:-[0-9]+)?(\.[^.]+)$)");
-        std::smatch m;
-        if (std::regex_match(file, m, lms)) present.push_back(m[1].str() + m[2].str());
+        // An LMS bulk-download name names the file it stands for (the build takes it too).
+        if (const std::optional<LmsName> lms = lms_name(file)) present.push_back(lms->file);
       }
     std::vector<AssignmentManifest> manifests;
     for (const AssignmentConfig& a : config.assignments) manifests.push_back(a.manifest);
@@ -158,6 +154,14 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
   config.link_objects = chosen->link_objects;
   config.link_libraries = chosen->link_libraries;
   config.reference_runner = chosen->reference_runner;
+}
+
+std::optional<LmsName> lms_name(const std::string& file_name) {
+  static const std::regex lms(
+      R"(^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_(.+?)(?:-([0-9]+))?(\.[^.]+)$)");
+  std::smatch m;
+  if (!std::regex_match(file_name, m, lms)) return std::nullopt;
+  return LmsName{m[1].str() + m[3].str(), m[2].matched ? std::stol(m[2].str()) : 0};
 }
 
 }  // namespace jelly::grade

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,5 +77,16 @@ GradeConfig load_config(const std::string& path);
 /// submission folder holds (`submission`, may be empty); else the only one of the build. Throws
 /// std::runtime_error naming the choices when it cannot tell.
 void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission);
+
+/// A file name as a learning-management system's bulk download gives it: Canvas prefixes the
+/// student and two numbers (`dave_12345_67890_forces.cpp`, `dave_LATE_12345_67890_…`) and numbers
+/// a resubmission (`…_forces-1.cpp`); Moodle, downloading without folders, the student's name, id
+/// and `assignsubmission_file` (`Dave Smith_12345_assignsubmission_file_forces.cpp`).
+struct LmsName {
+  std::string file;       ///< the name it stands for: "forces.cpp"
+  long resubmission = 0;  ///< Canvas's -N (0 without)
+};
+/// The name `file_name` stands for, when it is an LMS bulk-download name.
+std::optional<LmsName> lms_name(const std::string& file_name);
 
 }  // namespace jelly::grade
