@@ -476,6 +476,25 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// A report's frames table in OUT/report.md: six rows, the student's and the reference's picture
+// in each (PNG files beside the report), `last_row` the last.
+void expect_six_frames_each_side(const fs::path& out, const std::string& last_row) {
+  const std::string md = read_text(out / "report.md");
+  ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
+  EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
+  EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
+  EXPECT_NE(md.find(last_row), std::string::npos) << md;
+  for (const char* side : {"yours", "reference"})
+    for (int k = 0; k < 6; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05d.png", k);
+      const std::string png = read_text(out / "frames" / side / name);
+      ASSERT_GT(png.size(), 1000u) << side << "/" << name;
+      EXPECT_EQ(png.substr(1, 3), "PNG") << side << "/" << name;
+    }
+}
+
 // The course scene's frames: recorded in the sandbox, never graded, never reference data.
 TEST(GraderFrames, RecordedFramesAreNeitherGradedNorReferenceData) {
   const Json ref = read_json(kSource / "assignments" / "a1" / "grader" / "data" / "public" /
@@ -498,24 +517,10 @@ TEST(GraderFrames, ReportShowsYourFramesBesideTheReferences) {
   const Json r = grade(submission("frames"), "frames");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
   const fs::path out = kWork / "out" / "frames";
-  const std::string md = read_text(out / "report.md");
-  ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
-  EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
   // One row per frame time of assignments/a1/grader/cases/course.toml (0.5, 1, 2, 3, 5, 10 s), both
   // sides.
-  EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
-  EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
-  EXPECT_NE(md.find("| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)"),
-            std::string::npos)
-      << md;
-  for (const char* side : {"yours", "reference"})
-    for (int k = 0; k < 6; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.png", k);
-      const std::string png = read_text(out / "frames" / side / name);
-      ASSERT_GT(png.size(), 1000u) << side << "/" << name;
-      EXPECT_EQ(png.substr(1, 3), "PNG") << side << "/" << name;
-    }
+  expect_six_frames_each_side(out,
+                              "| 10.00 | ![yours at t = 10.00 s](frames/yours/frame_00005.png)");
   // The HTML report is self-contained: the twelve pictures inline.
   const std::string html = read_text(out / "report.html");
   EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 12u);
@@ -536,24 +541,9 @@ TEST(GraderFrames, A2ReportShowsTheClothFramesBesideTheReferences) {
   const Json r = grade(kSource / "solutions" / "a2", "frames-a2", "--assignment a2");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 85.0) << "80 and the bonus's 5";
   EXPECT_EQ(r.dump().find("frame_"), std::string::npos) << "frames in results.json";
-  const fs::path out = kWork / "out" / "frames-a2";
-  const std::string md = read_text(out / "report.md");
-  ASSERT_NE(md.find("| t [s] | yours | reference |"), std::string::npos) << md;
-  EXPECT_EQ(md.find("Frames not available"), std::string::npos) << md;
   // assignments/a2/grader/cases/course.toml: 0.25, 0.5, 0.75, 1, 1.25 and 1.6 s, both sides.
-  EXPECT_EQ(count(md, "](frames/yours/frame_"), 6u) << md;
-  EXPECT_EQ(count(md, "](frames/reference/frame_"), 6u) << md;
-  EXPECT_NE(md.find("| 1.60 | ![yours at t = 1.60 s](frames/yours/frame_00005.png)"),
-            std::string::npos)
-      << md;
-  for (const char* side : {"yours", "reference"})
-    for (int k = 0; k < 6; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.png", k);
-      const std::string png = read_text(out / "frames" / side / name);
-      ASSERT_GT(png.size(), 1000u) << side << "/" << name;
-      EXPECT_EQ(png.substr(1, 3), "PNG") << side << "/" << name;
-    }
+  expect_six_frames_each_side(kWork / "out" / "frames-a2",
+                              "| 1.60 | ![yours at t = 1.60 s](frames/yours/frame_00005.png)");
 }
 
 TEST(GraderFrames, WithoutARendererTheReportSaysWhyAndGradingIsUnchanged) {
