@@ -157,8 +157,9 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
 }
 
 std::optional<LmsName> lms_name(const std::string& file_name) {
+  // At most 9 digits of resubmission number: a longer run (a hostile name) never reaches stol.
   static const std::regex lms(
-      R"(^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_(.+?)(?:-([0-9]+))?(\.[^.]+)$)");
+      R"(^.+_(?:LATE_)?[0-9]+_(?:[0-9]+|assignsubmission_file)_(.+?)(?:-([0-9]{1,9}))?(\.[^.]+)$)");
   std::smatch m;
   if (!std::regex_match(file_name, m, lms)) return std::nullopt;
   return LmsName{m[1].str() + m[3].str(), m[2].matched ? std::stol(m[2].str()) : 0};

@@ -587,6 +587,8 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
                 fs::copy_options::overwrite_existing);
   fs::copy_file(kSource / "solutions" / "a1" / "forces.cpp",
                 dir / "in" / "carol" / "carol_123_456_forces-1.cpp");
+  // A resubmission number too long for any integer is not an LMS name: no grader error.
+  std::ofstream(dir / "in" / "carol" / "carol_123_456_forces-99999999999999999999.cpp") << "x\n";
   // ... and contact.cpp as Moodle names a file it downloads without folders.
   fs::rename(dir / "in" / "carol" / "carol_123_456_contact.cpp",
              dir / "in" / "carol" / "Carol Smith_123_assignsubmission_file_contact.cpp");
