@@ -368,7 +368,7 @@ if [ "$platform" = mingw ] && [ "$viewer" = ON ]; then
     end_wine_session() { "$wineserver" -k 2>/dev/null; "$wineserver" -w 2>/dev/null || true; }
     for attempt in 1 2; do
       end_wine_session
-      (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "$scene" \
+      (cd "$src" && timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "${run[@]}" "$lab" "${scene//%S/$src}" \
           --shot-at 2.2 --size 1024x600 --screenshot "$shot" >"$out/viewer.txt" 2>&1)
       rc=$?
       end_wine_session
