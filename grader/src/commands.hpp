@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "cases.hpp"
 #include "grade.hpp"
@@ -35,10 +36,37 @@ int prairielearn(const GradeConfig& config, const CaseBook& book, const std::str
 /// grader/data/{public,hidden}/*.json from solutions/ with the reference runner.
 int generate_reference(const GradeConfig& config, const CaseBook& book);
 
-/// `batch` (commands/batch.cpp): grades every folder in `dir` (one per student) in parallel;
-/// results per student and scores.csv.
-int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
-          const std::string& out, int jobs, const GradeOptions& options, bool frames = true);
+/// What `jelly-grade batch` was asked for besides the grading options.
+struct BatchArgs {
+  std::filesystem::path in;   ///< SUBMISSIONS: a folder of submissions (find_submissions)
+  std::filesystem::path out;  ///< --out
+  int jobs = 0;               ///< --jobs: submissions graded at once (0: one per core)
+  bool frames = true;         ///< false with --no-frames
+  bool resume = false;        ///< --resume: keep the records a stopped batch made
+  int shard_index = 1;        ///< --shard I/N: grade the I-th of N disjoint parts
+  int shard_count = 1;
+  bool similarity = false;  ///< --similarity: also compare the submissions' task files
+};
+
+/// "I/N".
+std::string shard_label(int index, int count);
+
+/// `batch` (commands/batch.cpp): grades the submissions in args.in (its shard of them) in
+/// parallel: each student's reports and record in args.out/students/<id>/, then the class files
+/// (scores.csv, ...) and batch.json (what was graded, for --resume and merge). Exit status 1 when a
+/// submission could not be graded.
+int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args,
+          const GradeOptions& options);
+
+/// `merge` (commands/merge.cpp): joins the --out folders of a sharded batch into `out` (which may
+/// be one of them): every student's folder, then the class files from all the records, the same
+/// bytes one unsharded batch writes. Throws std::runtime_error naming the part when the parts are
+/// not one class graded one way (missing shard, a student in two parts, another fingerprint).
+int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std::string>& parts,
+          const std::filesystem::path& out);
+
+/// The assignment a batch's --out folder was graded for (its batch.json).
+std::string batch_assignment(const std::filesystem::path& part);
 
 /// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user
 /// of the "user" sandbox and make the grader's secrets under `source` readable by root only.

@@ -258,6 +258,19 @@ void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const
   const std::vector<std::string> caps = sandbox_problems(c, options.memory_bytes, in_task);
   if (!problem.empty() || !caps.empty()) {
     r.status = "failed";
+    if (c.timed_out) r.abnormal = "timed out";
+#ifdef SIGXCPU
+    else if (c.signal == SIGXCPU)
+      r.abnormal = "timed out";
+#endif
+    else if (!caps.empty() || (parsed && result.contains("forbidden_syscall")) || c.output_flood)
+      r.abnormal = "refused";
+    else if (c.signal != 0)
+      r.abnormal = "crashed";
+    else if (!parsed)
+      r.abnormal = "ended early";
+    else if (result.contains("error"))
+      r.abnormal = "threw";
     r.failures = caps;
     if (!problem.empty()) r.failures.push_back(problem);
     return;

@@ -17,9 +17,13 @@ struct CaseResult {
   double score = 0.0;
   std::vector<std::string> failures;  ///< what failed and why, in the student's terms
   bool not_run = false;  ///< its file could not be used (FileFailure): failures say why
-  std::string printed;   ///< an excerpt of what the student's code printed
-  Json outputs;          ///< the student's outputs (for plots)
-  Json reference;        ///< the reference outputs
+  /// Why the test's program did not finish normally: "timed out", "crashed", "refused" (a
+  /// forbidden system call or a sandbox limit), "ended early", "threw" (an exception left the
+  /// student's code); "" when it returned its outputs.
+  std::string abnormal;
+  std::string printed;  ///< an excerpt of what the student's code printed
+  Json outputs;         ///< the student's outputs (for plots)
+  Json reference;       ///< the reference outputs
   double seconds = 0.0;
 };
 

@@ -6,8 +6,12 @@
 //   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
 //               [--compile-memory MIB] [--compile-cpu S]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S]
-//   [--no-frames] jelly-grade generate-reference jelly-grade gradescope-zip OUT.zip jelly-grade
-//   prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S] [--jobs N]
+//               [--no-frames] [--resume] [--shard I/N]
+//   jelly-grade merge BATCH_OUT... --out DIR
+//   jelly-grade generate-reference
+//   jelly-grade gradescope-zip OUT.zip
+//   jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S]
+//               [--jobs N]
 //   jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility ...] [--timeout S]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
 //
@@ -31,6 +35,7 @@
 #include "commands.hpp"
 #include "commands/common.hpp"
 #include "jelly/cli_common/command_line.hpp"
+#include "submissions.hpp"
 
 #ifdef _WIN32
 #ifndef NOMINMAX
@@ -55,6 +60,9 @@ constexpr const char* kUsage =
     "[--strict]\n"
     "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout "
     "S] [--no-frames]\n"
+    "                    [--resume (keep what a stopped batch graded)] [--shard I/N (the I-th of "
+    "N parts)]\n"
+    "  jelly-grade merge BATCH_OUT... --out DIR (join the parts of a sharded batch)\n"
     "  jelly-grade generate-reference\n"
     "  jelly-grade gradescope-zip OUT.zip\n"
     "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] "
@@ -79,7 +87,10 @@ struct Options {
   std::vector<std::string> formats{"terminal", "gradescope"};
   double timeout = 10.0, compile_memory_mib = 2048, compile_cpu = 120;
   std::string isolation = "auto", runner;
-  int jobs = 0;         // 0: one per core
+  std::vector<std::string> parts;  // merge: the batches' --out folders
+  std::string shard;               // batch --shard I/N
+  bool resume = false;             // batch --resume
+  int jobs = 0;                    // 0: one per core
   bool strict = false;  // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
   bool verbose = false;
   bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
@@ -119,6 +130,11 @@ void declare(const std::string& command, Command& cmd, Options& o) {
     cmd.add_option("SUBMISSIONS_DIR", o.positional)->required();
     cmd.add_option("--out", o.out)->type_name("DIR")->required();
     cmd.add_flag("--no-frames", o.no_frames);
+    cmd.add_flag("--resume", o.resume);
+    cmd.add_option("--shard", o.shard)->type_name("I/N");
+  } else if (command == "merge") {
+    cmd.add_option("BATCH_OUT", o.parts)->required();
+    cmd.add_option("--out", o.out)->type_name("DIR")->required();
   } else if (command == "gradescope-zip") {
     cmd.add_option("OUT.zip", o.positional)->required();
   } else if (command == "prairielearn") {
@@ -139,14 +155,17 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   else if (command == "prairielearn")
     submission = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
   else if (command == "batch") {
-    std::error_code ec;
-    for (fs::directory_iterator it(o.positional, ec), end; !ec && it != end; it.increment(ec))
-      if (it->is_directory(ec)) {
-        submission = it->path();
+    for (const Submission& s : find_submissions(o.positional))
+      if (s.problem.empty()) {
+        submission = s.dir;
         break;
       }
   }
-  select_assignment(config, o.assignment, submission);
+  // merge: the assignment the batches were graded for.
+  select_assignment(
+      config,
+      command == "merge" && o.assignment.empty() ? batch_assignment(o.parts.front()) : o.assignment,
+      submission);
   const CaseBook book = load_case_book(config, o.rubric_path);
   if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
     // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
@@ -189,8 +208,31 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     args.strict = o.strict;
     return grade_one(config, book, args, options);
   }
-  if (command == "batch")
-    return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames);
+  if (command == "batch") {
+    BatchArgs args;
+    args.in = o.positional;
+    args.out = o.out;
+    args.jobs = o.jobs;
+    args.frames = !o.no_frames;
+    args.resume = o.resume;
+    if (!o.shard.empty()) {
+      // I/N with 1 <= I <= N.
+      const auto slash = o.shard.find('/');
+      const auto whole = [](const std::string& t) {
+        return !t.empty() && t.size() <= 6 &&
+               t.find_first_not_of("0123456789") == std::string::npos;
+      };
+      const std::string i = slash == std::string::npos ? "" : o.shard.substr(0, slash);
+      const std::string n = slash == std::string::npos ? "" : o.shard.substr(slash + 1);
+      if (!whole(i) || !whole(n) || std::stoi(i) < 1 || std::stoi(i) > std::stoi(n))
+        return cmd.error("--shard " + o.shard +
+                         ": expected I/N, the I-th of N parts with 1 <= I <= N (e.g. 2/4)");
+      args.shard_index = std::stoi(i);
+      args.shard_count = std::stoi(n);
+    }
+    return batch(config, book, args, options);
+  }
+  if (command == "merge") return merge(config, book, o.parts, o.out);
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
   if (command == "prairielearn") return prairielearn(config, book, o.student, o.results, options);
@@ -200,8 +242,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> commands{"grade",          "batch",        "generate-reference",
-                                       "gradescope-zip", "prairielearn", "mutants"};
+  const std::set<std::string> commands{
+      "grade", "batch", "merge", "generate-reference", "gradescope-zip", "prairielearn", "mutants"};
   const std::string command = argc >= 2 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help") {
     std::cout << kUsage;

@@ -12,24 +12,62 @@
 #define JELLY_STDERR_IS_TTY() (isatty(2) != 0)
 #endif
 
+#include "class_record.hpp"
 #include "commands/common.hpp"
 #include "csv.hpp"
 #include "parallel.hpp"
 #include "report.hpp"
+#include "submissions.hpp"
 #include "text_safety.hpp"
 
 namespace jelly::grade {
 
-int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
-          const std::string& out, int jobs, const GradeOptions& options, bool frames) {
-  std::vector<fs::path> subs;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.is_directory()) subs.push_back(e.path());
-  std::sort(subs.begin(), subs.end());
-  // Class files at the top of --out, each student's files under students/<folder>/: no folder
-  // name can collide with a class file.
-  const fs::path students = fs::path(out) / "students";
+namespace {
+
+/// A record --resume may keep: readable, made under the same grading fingerprint from the same
+/// files, and not a grader error (which may have been the machine's, not the student's).
+bool keepable(const fs::path& file, const std::string& fingerprint, const Submission& sub) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return false;
+  try {
+    const Json r = read_record(file);
+    if (r.value("fingerprint", "") != fingerprint || r.value("status", "") == "grader error")
+      return false;
+    return r.value("submission_digest", "") ==
+           (sub.problem.empty() ? submission_digest(sub.dir) : std::string());
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+std::string shard_label(int index, int count) {
+  return std::to_string(index) + "/" + std::to_string(count);
+}
+
+int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args,
+          const GradeOptions& options) {
+  // Absolute: the compiler and the tests run in other working folders.
+  const fs::path out = fs::absolute(args.out);
+  std::vector<Submission> all = find_submissions(fs::absolute(args.in));
+  // --shard I/N: every N-th submission in id order, starting at the I-th, so that each part gets
+  // its share of the alphabet and the parts are disjoint and together the class.
+  std::vector<Submission> subs;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (static_cast<int>(k % static_cast<std::size_t>(args.shard_count)) == args.shard_index - 1)
+      subs.push_back(all[k]);
+  // Class files at the top of --out, each student's files under students/<id>/: no id can
+  // collide with a class file.
+  const fs::path students = out / "students";
   fs::create_directories(students);
+  // A folder left half-made by a batch that was stopped (students/.<id>.partial) is never a
+  // result: it goes, and its student is graded again.
+  for (const auto& e : fs::directory_iterator(students)) {
+    const std::string n = e.path().filename().string();
+    if (n.size() > 9 && n[0] == '.' && n.compare(n.size() - 8, 8, ".partial") == 0)
+      fs::remove_all(e.path());
+  }
   // User mode: while the batch runs, no sandbox user can read any submission or any report (the
   // work folders are private to each submission already: Workspace).
   struct CloseToOthers {
@@ -49,84 +87,109 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
     }
   } closed;
   if (options.isolation.kind == IsolationKind::User) {
-    closed.close(dir);
+    closed.close(fs::absolute(args.in));
     closed.close(out);
   }
-  std::vector<GradeReport> reports(subs.size());
-  std::vector<std::string> errors(subs.size());
+  const std::string fingerprint = grading_fingerprint(config, book, options);
+  // --resume: whoever has a record made under this fingerprint from the same files keeps it.
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < subs.size(); ++i)
+    if (!args.resume || !keepable(record_path(out, subs[i].id), fingerprint, subs[i]))
+      todo.push_back(i);
+  if (args.resume)
+    std::cerr << "jelly-grade: resuming " << safe_text(out.string()) << ": "
+              << subs.size() - todo.size() << " of " << subs.size()
+              << " submissions already graded (kept), " << todo.size() << " to grade\n";
   std::size_t done = 0;
+  int status = 0;
   std::mutex mutex;
   // On a terminal one progress line is rewritten in place; into a file or a pipe (a log, CI) each
   // submission gets its own line.
   const bool tty = JELLY_STDERR_IS_TTY();
   GradeOptions per = options;
   per.jobs = 1;  // parallel across students, serial within one
-  parallel_for(subs.size(), jobs, [&](std::size_t i) {
-    const std::string name = subs[i].filename().string();
-    try {
-      reports[i] = grade_submission(config, book, subs[i], students / name / "work", per);
-      write_reports(reports[i], book, students / name, {"gradescope", "markdown", "html"},
-                    frames ? &config : nullptr);
-      fs::remove_all(students / name / "work");
-    } catch (const std::exception& e) {
-      errors[i] = e.what();
-    } catch (...) {
-      errors[i] = "unknown error";
+  parallel_for(todo.size(), args.jobs, [&](std::size_t t) {
+    const Submission& sub = subs[todo[t]];
+    // Everything of one student is made in students/.<id>.partial and renamed into place when
+    // whole: a report appears whole or not at all, and the record last of all.
+    const fs::path part = students / ("." + sub.id + ".partial");
+    const fs::path final_dir = students / sub.id;
+    std::string error;
+    GradeReport report;
+    bool graded = false;
+    std::error_code ec;
+    fs::remove_all(part, ec);
+    fs::create_directories(part, ec);
+    if (sub.problem.empty()) {
+      try {
+        report = grade_submission(config, book, sub.dir, part / "work", per);
+        write_reports(report, book, part, {"gradescope", "markdown", "html"},
+                      args.frames ? &config : nullptr);
+        graded = true;
+      } catch (const std::exception& e) {
+        error = e.what();
+      } catch (...) {
+        error = "unknown error";
+      }
     }
-    if (!errors[i].empty()) {  // no half-made work folder (objects, a runner) among the reports
-      std::error_code ec;
-      fs::remove_all(students / name / "work", ec);
+    // No half-made work folder (objects, a runner) among the reports.
+    fs::remove_all(part / "work", ec);
+    const Json record =
+        student_record(sub, graded ? &report : nullptr, error, config, book, fingerprint);
+    std::string failed;
+    try {
+      write_file_atomically(part / "record.json", record.dump(2) + "\n");
+      fs::remove_all(final_dir);
+      fs::rename(part, final_dir);
+    } catch (const std::exception& e) {
+      failed = e.what();
     }
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
-    std::cerr << (tty ? "\r[" : "[") << done << "/" << subs.size() << "] " << safe_text(name)
+    if (!failed.empty()) {
+      std::cerr << (tty ? "\n" : "") << "jelly-grade: " << safe_text(sub.id)
+                << ": the results could not be written: " << safe_text(failed) << "\n";
+      status = 1;
+    }
+    if (!graded) status = 1;
+    std::cerr << (tty ? "\r[" : "[") << done << "/" << todo.size() << "] " << safe_text(sub.id)
               << ": "
-              << (errors[i].empty()
-                      ? pts(reports[i].score) + " / " + pts(reports[i].max_score) +
-                            (reports[i].has_bonus() ? " + bonus " + pts(reports[i].bonus_score)
-                                                    : "")
-                      : "grader error")
+              << (graded ? pts(report.score) + " / " + pts(report.max_score) +
+                               (report.has_bonus() ? " + bonus " + pts(report.bonus_score) : "")
+                  : !sub.problem.empty() ? "not graded: " + safe_text(sub.problem)
+                                         : "grader error")
               << (tty ? "            " : "\n") << std::flush;
   });
-  if (tty) std::cerr << "\n";
-  // A bonus column only for an assignment with a bonus task (A1's file is as it always was).
-  bool bonus = false;
-  for (const TaskSpec& t : book.rubric.tasks) bonus = bonus || t.bonus;
-  std::vector<std::string> header = {"student", "score", "max_score", "compiled"};
-  if (bonus) header.insert(header.begin() + 3, "bonus");
-  for (const TaskSpec& t : book.rubric.tasks) header.push_back(csv_field(t.id));
-  // The task files not found in the submission (graded as the unchanged stubs): a student who
-  // submitted nothing usable shows here, not only inside their own report.
-  header.push_back("missing_files");
-  header.push_back("error");
-  std::string csv = csv_row(header);
-  int status = 0;
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    std::vector<std::string> row = {csv_field(safe_text(subs[i].filename().string()))};
-    if (!errors[i].empty()) {
-      for (std::size_t k = 0; k < (bonus ? 5 : 4) + book.rubric.tasks.size(); ++k)
-        row.push_back("");
-      row.push_back(csv_field(safe_text(errors[i])));
+  if (tty && !todo.empty()) std::cerr << "\n";
+  // The class files come from the records alone, those of this run and those it kept.
+  std::vector<Json> records;
+  Json ids = Json::array(), mine = Json::array();
+  for (const Submission& s : all) ids.push_back(s.id);
+  for (const Submission& s : subs) {
+    mine.push_back(s.id);
+    try {
+      records.push_back(read_record(record_path(out, s.id)));
+      if (records.back().value("status", "") != "graded") status = 1;
+    } catch (const std::exception& e) {
+      std::cerr << "jelly-grade: " << safe_text(e.what()) << "\n";
       status = 1;
-    } else {
-      row.push_back(pts(reports[i].score));
-      row.push_back(pts(reports[i].max_score));
-      if (bonus) row.push_back(pts(reports[i].bonus_score));
-      row.push_back(reports[i].compiled ? "1" : "0");
-      for (const TaskResult& t : reports[i].tasks) row.push_back(pts(t.score));
-      std::string missing;
-      for (const std::string& file : config.task_files())
-        if (const auto u = reports[i].build.used.find(file);
-            u != reports[i].build.used.end() && u->second == "stub")
-          missing += (missing.empty() ? "" : " ") + file;
-      row.push_back(csv_field(missing));
-      row.push_back("");
     }
-    csv += csv_row(row);
   }
-  write_file_atomically(fs::path(out) / "scores.csv", csv);
-  std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out
-            << " (scores.csv; each student's reports in students/)\n";
+  const Json manifest = {{"format", "jelly-grade batch 1"},
+                         {"assignment", config.assignment().id},
+                         {"fingerprint", fingerprint},
+                         {"shard", shard_label(args.shard_index, args.shard_count)},
+                         {"class", ids},
+                         {"students", mine}};
+  write_file_atomically(out / "batch.json", manifest.dump(2) + "\n");
+  write_class_files(out, records, book);
+  std::cout << "jelly-grade: graded " << todo.size() << " submissions"
+            << (args.shard_count > 1
+                    ? " (shard " + shard_label(args.shard_index, args.shard_count) + ")"
+                    : "")
+            << (todo.size() < subs.size() ? ", kept " + std::to_string(subs.size() - todo.size())
+                                          : "")
+            << " into " << out.string() << " (scores.csv; each student's reports in students/)\n";
   return status;
 }
 

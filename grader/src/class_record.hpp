@@ -1,0 +1,45 @@
+// One student's result in a class (students/<id>/record.json) and the class files made from the
+// records alone (scores.csv): a batch, a resumed batch, and the merge of sharded batches all write
+// the class files from the same records, so they write the same bytes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cases.hpp"
+#include "grade.hpp"
+#include "submissions.hpp"
+
+namespace jelly::grade {
+
+/// What makes two gradings of one submission comparable: the assignment, the harness and the
+/// reference data (harness_digest), the rubric's points, the cases run, the visibility and the
+/// time limit. A record made under another fingerprint is graded again by --resume.
+std::string grading_fingerprint(const GradeConfig& config, const CaseBook& book,
+                                const GradeOptions& options);
+
+/// A digest of every regular file under a submission folder (names and contents): a submission
+/// changed since its record was made is graded again by --resume.
+std::string submission_digest(const std::filesystem::path& dir);
+
+/// The record of a graded submission (`report` given) or of one that could not be graded
+/// (`error`: the submission's problem or the grader's error).
+Json student_record(const Submission& sub, const GradeReport* report, const std::string& error,
+                    const GradeConfig& config, const CaseBook& book,
+                    const std::string& fingerprint);
+
+/// The record file of student `id` under a batch's --out.
+std::filesystem::path record_path(const std::filesystem::path& out, const std::string& id);
+
+/// Reads a record file; throws std::runtime_error naming the file when it is not a record.
+Json read_record(const std::filesystem::path& file);
+
+/// scores.csv from the records (in the order given).
+std::string scores_csv(const std::vector<Json>& records, const CaseBook& book);
+
+/// Writes the class files (scores.csv) into `out` from `records`, each file whole or not at all.
+void write_class_files(const std::filesystem::path& out, const std::vector<Json>& records,
+                       const CaseBook& book);
+
+}  // namespace jelly::grade

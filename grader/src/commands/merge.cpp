@@ -1,0 +1,117 @@
+#include <iostream>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "class_record.hpp"
+#include "commands.hpp"
+#include "csv.hpp"
+#include "files.hpp"
+#include "text_safety.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+Json read_batch_manifest(const fs::path& part) {
+  const fs::path file = part / "batch.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw std::runtime_error(file.string() +
+                             " does not exist: expected the --out folder of a jelly-grade batch");
+  Json m;
+  try {
+    m = Json::parse(read_file(file));
+  } catch (const std::exception& e) {
+    throw std::runtime_error(file.string() + ": not a batch manifest (" + e.what() + ")");
+  }
+  if (!m.is_object() || m.value("format", "") != "jelly-grade batch 1" || !m.contains("class") ||
+      !m["class"].is_array() || !m.contains("students") || !m["students"].is_array())
+    throw std::runtime_error(file.string() +
+                             ": not a batch manifest (expected \"format\": \"jelly-grade batch "
+                             "1\" with \"class\" and \"students\" lists)");
+  return m;
+}
+
+}  // namespace
+
+std::string batch_assignment(const fs::path& part) {
+  return read_batch_manifest(part).value("assignment", "");
+}
+
+int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std::string>& parts,
+          const fs::path& out) {
+  if (parts.empty()) throw std::runtime_error("merge: no batch folders given");
+  // Every part must come from the same class, graded the same way.
+  std::vector<Json> manifests;
+  for (const std::string& p : parts) manifests.push_back(read_batch_manifest(p));
+  const Json& first = manifests.front();
+  std::map<std::string, std::string> owner;  // student id → the part that graded them
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const Json& m = manifests[k];
+    const std::string where = (fs::path(parts[k]) / "batch.json").string();
+    if (m.value("assignment", "") != config.assignment().id)
+      throw std::runtime_error(where + ": graded assignment '" + m.value("assignment", "") +
+                               "', not '" + config.assignment().id + "'");
+    if (m.value("fingerprint", "") != first.value("fingerprint", ""))
+      throw std::runtime_error(
+          where + " was graded differently from " + (fs::path(parts[0]) / "batch.json").string() +
+          " (another grader build, reference data, rubric, visibility or --timeout): grade every "
+          "part with the same command and the same build");
+    if (m["class"] != first["class"])
+      throw std::runtime_error(where + " lists another class than " +
+                               (fs::path(parts[0]) / "batch.json").string() +
+                               ": every shard must read the same submissions folder");
+    for (const Json& id : m["students"]) {
+      const std::string s = id.get<std::string>();
+      if (const auto [it, added] = owner.emplace(s, parts[k]); !added)
+        throw std::runtime_error("student '" + safe_text(s) + "' is in both " + it->second +
+                                 " and " + parts[k] + ": were two parts given the same --shard?");
+    }
+  }
+  std::vector<std::string> missing;
+  for (const Json& id : first["class"])
+    if (!owner.count(id.get<std::string>())) missing.push_back(id.get<std::string>());
+  if (!missing.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < missing.size() && k < 5; ++k)
+      list += (k ? ", " : "") + safe_text(missing[k]);
+    throw std::runtime_error(std::to_string(missing.size()) + " of the class's " +
+                             std::to_string(first["class"].size()) +
+                             " students are in none of the parts (" + list +
+                             (missing.size() > 5 ? ", ..." : "") +
+                             "): is a shard missing or unfinished? (the shard of a part is in its "
+                             "batch.json)");
+  }
+  // Every part's records must be there and whole before anything is copied.
+  std::vector<Json> records;
+  for (const Json& id : first["class"]) {
+    const std::string s = id.get<std::string>();
+    records.push_back(read_record(record_path(owner.at(s), s)));
+  }
+  fs::create_directories(out / "students");
+  for (const auto& [id, part] : owner) {
+    const fs::path from = fs::path(part) / "students" / id;
+    const fs::path to = out / "students" / id;
+    std::error_code ec;
+    if (fs::equivalent(from, to, ec)) continue;
+    const fs::path tmp = out / "students" / ("." + id + ".partial");
+    fs::remove_all(tmp);
+    fs::copy(from, tmp, fs::copy_options::recursive);
+    fs::remove_all(to);
+    fs::rename(tmp, to);
+  }
+  Json manifest = first;
+  manifest["shard"] = "1/1";
+  manifest["students"] = first["class"];
+  write_file_atomically(out / "batch.json", manifest.dump(2) + "\n");
+  write_class_files(out, records, book);
+  int status = 0;
+  for (const Json& r : records)
+    if (r.value("status", "") != "graded") status = 1;
+  std::cout << "jelly-grade: merged " << parts.size() << " parts (" << records.size()
+            << " students) into " << out.string() << "\n";
+  return status;
+}
+
+}  // namespace jelly::grade
