@@ -8,6 +8,7 @@
 
 #include "cases.hpp"
 #include "grade.hpp"
+#include "similarity.hpp"
 
 namespace jelly::grade {
 
@@ -37,8 +38,21 @@ int generate_reference(const GradeConfig& config, const CaseBook& book);
 
 /// `batch` (commands/batch.cpp): grades every folder in `dir` (one per student) in parallel;
 /// results per student and scores.csv.
+/// With `similarity` ≥ 0 (--similarity), also the similarity report of the class into `out`
+/// (similarity(), that threshold).
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
-          const std::string& out, int jobs, const GradeOptions& options, bool frames = true);
+          const std::string& out, int jobs, const GradeOptions& options, bool frames = true,
+          double similarity = -1.0);
+
+/// `similarity` (commands/similarity.cpp): every subfolder of `dir` is one student's submission;
+/// writes similarity.html and similarity.json into `out` (grader/src/similarity.hpp) and prints
+/// how many pairs reach `threshold` percent. 0 whatever it finds: the report is evidence for a
+/// person, not a failure.
+int similarity_command(const GradeConfig& config, const std::string& dir, const std::string& out,
+                       double threshold);
+/// The same for a list of submissions (batch's, or another discovery's).
+int similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+               const std::string& out, double threshold);
 
 /// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user
 /// of the "user" sandbox and make the grader's secrets under `source` readable by root only.

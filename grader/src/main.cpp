@@ -6,7 +6,9 @@
 //   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
 //               [--compile-memory MIB] [--compile-cpu S]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S]
-//   [--no-frames] jelly-grade generate-reference jelly-grade gradescope-zip OUT.zip jelly-grade
+//   [--no-frames] [--similarity [--threshold P]]
+//   jelly-grade similarity SUBMISSIONS_DIR --out DIR [--threshold P]
+//   jelly-grade generate-reference jelly-grade gradescope-zip OUT.zip jelly-grade
 //   prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S] [--jobs N]
 //   jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility ...] [--timeout S]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
@@ -55,6 +57,8 @@ constexpr const char* kUsage =
     "[--strict]\n"
     "  jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout "
     "S] [--no-frames]\n"
+    "                    [--similarity [--threshold P]]\n"
+    "  jelly-grade similarity SUBMISSIONS_DIR --out DIR [--threshold P (percent, default 50)]\n"
     "  jelly-grade generate-reference\n"
     "  jelly-grade gradescope-zip OUT.zip\n"
     "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] "
@@ -82,8 +86,23 @@ struct Options {
   int jobs = 0;         // 0: one per core
   bool strict = false;  // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
   bool verbose = false;
-  bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
+  bool no_frames = false;   // --no-frames: no rendered frames in report.md / report.html
+  bool similarity = false;  // batch --similarity: also the similarity report
+  double threshold = SimilarityOptions{}.threshold;  // --threshold P (similarity)
 };
+
+/// A percentage > 0 and ≤ 100.
+CLI::Validator percentage() {
+  return CLI::Validator(
+      [](std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        return !text.empty() && end == text.c_str() + text.size() && v > 0.0 && v <= 100.0
+                   ? std::string()
+                   : "expected a percentage > 0 and ≤ 100, got '" + text + "'";
+      },
+      "");
+}
 
 /// The options COMMAND takes, declared on `cmd`.
 void declare(const std::string& command, Command& cmd, Options& o) {
@@ -119,6 +138,15 @@ void declare(const std::string& command, Command& cmd, Options& o) {
     cmd.add_option("SUBMISSIONS_DIR", o.positional)->required();
     cmd.add_option("--out", o.out)->type_name("DIR")->required();
     cmd.add_flag("--no-frames", o.no_frames);
+    CLI::Option* similarity = cmd.add_flag("--similarity", o.similarity);
+    cmd.add_option("--threshold", o.threshold)
+        ->type_name("P")
+        ->check(percentage())
+        ->needs(similarity);
+  } else if (command == "similarity") {
+    cmd.add_option("SUBMISSIONS_DIR", o.positional)->required();
+    cmd.add_option("--out", o.out)->type_name("DIR")->required();
+    cmd.add_option("--threshold", o.threshold)->type_name("P")->check(percentage());
   } else if (command == "gradescope-zip") {
     cmd.add_option("OUT.zip", o.positional)->required();
   } else if (command == "prairielearn") {
@@ -138,7 +166,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     submission = o.positional;
   else if (command == "prairielearn")
     submission = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
-  else if (command == "batch") {
+  else if (command == "batch" || command == "similarity") {
     std::error_code ec;
     for (fs::directory_iterator it(o.positional, ec), end; !ec && it != end; it.increment(ec))
       if (it->is_directory(ec)) {
@@ -147,6 +175,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       }
   }
   select_assignment(config, o.assignment, submission);
+  // Compares source text: no reference data, no sandbox.
+  if (command == "similarity") return similarity_command(config, o.positional, o.out, o.threshold);
   const CaseBook book = load_case_book(config, o.rubric_path);
   if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
     // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
@@ -190,7 +220,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     return grade_one(config, book, args, options);
   }
   if (command == "batch")
-    return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames);
+    return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames,
+                 o.similarity ? o.threshold : -1.0);
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
   if (command == "prairielearn") return prairielearn(config, book, o.student, o.results, options);
@@ -200,8 +231,9 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> commands{"grade",          "batch",        "generate-reference",
-                                       "gradescope-zip", "prairielearn", "mutants"};
+  const std::set<std::string> commands{
+      "grade",          "batch",        "similarity", "generate-reference",
+      "gradescope-zip", "prairielearn", "mutants"};
   const std::string command = argc >= 2 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help") {
     std::cout << kUsage;

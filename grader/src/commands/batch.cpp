@@ -21,7 +21,8 @@
 namespace jelly::grade {
 
 int batch(const GradeConfig& config, const CaseBook& book, const std::string& dir,
-          const std::string& out, int jobs, const GradeOptions& options, bool frames) {
+          const std::string& out, int jobs, const GradeOptions& options, bool frames,
+          double similarity_threshold) {
   std::vector<fs::path> subs;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_directory()) subs.push_back(e.path());
@@ -127,6 +128,11 @@ int batch(const GradeConfig& config, const CaseBook& book, const std::string& di
   write_file_atomically(fs::path(out) / "scores.csv", csv);
   std::cout << "jelly-grade: graded " << subs.size() << " submissions into " << out
             << " (scores.csv; each student's reports in students/)\n";
+  if (similarity_threshold >= 0.0) {  // --similarity: who copied, over the same folders
+    std::vector<SimilarityInput> inputs;
+    for (const fs::path& s : subs) inputs.push_back({s.filename().string(), s});
+    similarity(config, inputs, out, similarity_threshold);
+  }
   return status;
 }
 
