@@ -461,7 +461,7 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
     h << "</ul>\n";
   }
   h << "</body></html>\n";
-  write_file_atomically(out / "similarity.json", j.dump(2) + "\n");
+  write_file_atomically(out / "similarity.json", j.dump(1) + "\n");
   write_file_atomically(out / "similarity.html", h.str());
   return static_cast<int>(flagged.size());
 }
