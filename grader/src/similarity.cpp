@@ -414,7 +414,7 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
   h << "<p class=\"evidence\"><b>Evidence, not a verdict.</b> " << html_escape(kEvidence)
     << "</p>\n";
   h << "<p>" << inputs.size() << " submissions, " << compared << " pairs compared, "
-    << flagged.size() << " at or above " << html_escape(percent(options.threshold))
+    << flagged.size() << " at or above " << options.threshold
     << " %. A&nbsp;% is the share of A's own code lines (lines with code that are not the "
        "stub's) inside regions B shares; a pair is listed when A&nbsp;% or B&nbsp;% reaches the "
        "threshold. Stub lines (identical to a line of the stub, or in a run of "
@@ -513,9 +513,9 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
         c.why = "not found";
         continue;
       }
-      std::error_code ec;
-      const fs::path rel = fs::relative(file, inputs[i].folder, ec);
-      c.shown = (ec ? file.filename() : rel).generic_string();
+      // Lexically: fs::relative would follow a symbolic link and show where it points.
+      const fs::path rel = file.lexically_relative(inputs[i].folder);
+      c.shown = (rel.empty() ? file.filename() : rel).generic_string();
       const std::string text = read_task_file(file, c.why);
       if (!c.why.empty()) continue;
       c.lines = split_lines(text);

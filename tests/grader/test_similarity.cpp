@@ -249,6 +249,33 @@ TEST(Similarity, ClearErrors) {
   EXPECT_NE(r.out.find("at least two"), std::string::npos) << r.out;
 }
 
+// A task file that is a symbolic or hard link (to the reference, say), or too large, is not read:
+// listed as not compared, never shown, never paired.
+TEST(Similarity, LinksAndHugeFilesAreNotRead) {
+  ASSERT_TRUE(has_sim()) << kNoSim;
+  const fs::path cls = kWork / "class-links", out = kWork / "out-links";
+  fs::remove_all(cls);
+  fs::remove_all(out);
+  const fs::path ref = kSource / "solutions" / "a1";
+  for (const char* f : kTaskFiles) write(cls / "ref" / f, read(ref / f));
+  fs::create_directories(cls / "linker");
+  fs::create_symlink(ref / "springs.cpp", cls / "linker" / "springs.cpp");
+  fs::create_hard_link(cls / "ref" / "forces.cpp", cls / "linker" / "forces.cpp");
+  write(cls / "linker" / "collision.cpp", std::string((1u << 20) + 1, ';'));
+  const Cmd r = run("similarity " + q(cls) + " --out " + q(out) + " --assignment a1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json j = Json::parse(read(out / "similarity.json"));
+  EXPECT_TRUE(j["pairs"].empty()) << j.dump(1);
+  std::string notes;
+  for (const Json& n : j["not_compared"]) notes += n.get<std::string>() + "\n";
+  EXPECT_NE(notes.find("linker: springs.cpp (springs.cpp) is a symbolic link"), std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("forces.cpp (forces.cpp) is a hard link"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("linker: collision.cpp (collision.cpp) is larger than 1024 KiB"),
+            std::string::npos)
+      << notes;
+}
+
 // The independent solution the first test relies on is a correct one: graded, every test of
 // A1.T1–A1.T5 passes (its other task files are the stubs, whose tasks score 0).
 TEST(Similarity, IndependentSolutionIsCorrect) {
