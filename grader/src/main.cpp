@@ -71,7 +71,8 @@ constexpr const char* kUsage =
     "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default "
     "auto),\n"
     "    --compile-memory MIB (default 2048, at least 64), --compile-cpu S (default 120)\n"
-    "exit status: 0 grading ran, whatever the score (1 with --strict when it is not full); 1 a "
+    "exit status: 0 grading ran, whatever the score (similarity: whatever it finds; 1 with "
+    "--strict when it is not full); 1 a "
     "self-test\n"
     "(mutants) failed or a batch had a grader error; 2 bad arguments, missing or stale reference "
     "data.\n";

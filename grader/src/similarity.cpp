@@ -199,14 +199,50 @@ std::vector<char> code_lines(const std::vector<std::string>& lines) {
   return code;
 }
 
+// The C++ code blocks (```cpp, ```c++, ```cc, ```cxx, ```c) of the assignment's handout pages
+// (the folder of the manifest's `handout`): given code, as the stubs are.
+std::vector<std::string> handout_code(const GradeConfig& config) {
+  std::vector<std::string> blocks;
+  const std::string& front = config.assignment().manifest.handout;
+  if (front.empty()) return blocks;
+  std::vector<fs::path> pages;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it((config.assignments_dir() / front).parent_path(), ec),
+       end;
+       !ec && it != end; it.increment(ec))
+    if (it->path().extension() == ".md" && it->is_regular_file(ec)) pages.push_back(it->path());
+  std::sort(pages.begin(), pages.end());
+  for (const fs::path& page : pages) {
+    std::string block;
+    bool in = false, cxx = false;
+    for (const std::string& l : split_lines(read_file(page))) {
+      const std::size_t start = l.find_first_not_of(' ');
+      if (start != std::string::npos && l.compare(start, 3, "```") == 0) {
+        if (in && cxx && !block.empty()) blocks.push_back(block);
+        if (!in) {
+          std::string info = l.substr(start + 3);
+          info = info.substr(0, info.find_first_of(" {"));
+          cxx = info == "cpp" || info == "c++" || info == "cc" || info == "cxx" || info == "c";
+        }
+        in = !in;
+        block.clear();
+      } else if (in) {
+        block += l + "\n";
+      }
+    }
+  }
+  return blocks;
+}
+
 // One submission's copy of one task file.
 struct TaskCopy {
   bool present = false;
   std::string shown;               // its path in the submission (student-controlled)
   std::string why;                 // why it was not compared (missing, refused)
   std::vector<std::string> lines;  // as submitted
-  std::vector<char> stub;          // the line is a stub line (identical, or in a run with the stub)
-  std::vector<char> code;          // the line holds code
+  std::vector<char> stub;  // given code: identical to a line of the stub or of the handout's code,
+                           // or in a run with either
+  std::vector<char> code;  // the line holds code
   bool counts(std::size_t line) const {  // 1-based
     return line >= 1 && line <= lines.size() && code[line - 1] && !stub[line - 1];
   }
@@ -314,7 +350,7 @@ constexpr const char* kEvidence =
 
 int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
            const std::vector<std::vector<TaskCopy>>& copies, const std::vector<Run>& runs,
-           const std::vector<std::string>& notes, const fs::path& out,
+           const std::vector<std::string>& notes, std::size_t handout_blocks, const fs::path& out,
            const SimilarityOptions& options) {
   const std::vector<std::string>& tasks = config.task_files();
   // Each submission's own code lines: lines with code that are not stub lines.
@@ -362,8 +398,11 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
       return std::tie(x.task, x.a1, x.b1) < std::tie(y.task, y.a1, y.b1);
     });
   const std::size_t compared = inputs.size() * (inputs.size() - (inputs.empty() ? 0 : 1)) / 2;
-  const std::string settings = "sim_c++ -e -r" + std::to_string(options.min_run) +
-                               " on each task file over the whole class, the stub as an old file";
+  const std::string settings =
+      "sim_c++ -e -r" + std::to_string(options.min_run) +
+      " on each task file over the whole class, the stub and the handout's "
+      "C++ code blocks (" +
+      std::to_string(handout_blocks) + ") as old files";
 
   nlohmann::json j;
   j["assignment"] = config.assignment().id;
@@ -417,9 +456,11 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
     << flagged.size() << " at or above " << options.threshold
     << " %. A&nbsp;% is the share of A's own code lines (lines with code that are not the "
        "stub's) inside regions B shares; a pair is listed when A&nbsp;% or B&nbsp;% reaches the "
-       "threshold. Stub lines (identical to a line of the stub, or in a run of "
+       "threshold. Given lines (identical to a line of the stub or of the handout's C++ code, or "
+       "in "
+       "a run of "
     << options.min_run
-    << " tokens or more shared with it) do not count; they are shown grey. Settings: "
+    << " tokens or more shared with them) do not count; they are shown grey. Settings: "
     << html_escape(settings) << ".</p>\n";
   if (!flagged.empty()) {
     h << "<table border=\"1\" style=\"border-collapse:collapse\"><tr><th>#</th><th>A</th>"
@@ -491,6 +532,7 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
   // Every submission's copy of every task file, its stub lines blanked in the copy sim_c++ reads.
   std::vector<std::vector<TaskCopy>> copies(inputs.size(), std::vector<TaskCopy>(tasks.size()));
   std::vector<Run> runs;
+  const std::vector<std::string> handout = handout_code(config);
   for (std::size_t t = 0; t < tasks.size(); ++t) {
     const std::string stub_text = read_file(config.assignments_dir() / tasks[t]);
     if (stub_text.empty())
@@ -499,9 +541,14 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
     std::set<std::string> stub_lines;
     for (const std::string& l : split_lines(stub_text))
       if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
+    for (const std::string& block : handout)
+      for (const std::string& l : split_lines(block))
+        if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
     const fs::path dir = work / std::to_string(t);
     fs::create_directories(dir);
     write_file_atomically(dir / "stub.cpp", stub_text);
+    for (std::size_t h = 0; h < handout.size(); ++h)
+      write_file_atomically(dir / ("handout" + std::to_string(h) + ".cpp"), handout[h]);
     std::vector<std::string> argv = {sim.string(), "-e",     "-n",
                                      "-s",         "-T",     "-r" + std::to_string(options.min_run),
                                      "-o",         "sim.out"};
@@ -544,8 +591,10 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
     if (present < 2) continue;
     for (std::size_t i = 0; i < inputs.size(); ++i)
       if (copies[i][t].present) argv.push_back(std::to_string(i) + ".cpp");
-    argv.push_back("/");  // the stub is an "old" file: runs against it mark stub code
+    argv.push_back("/");  // the given code are "old" files: runs against them mark it
     argv.push_back("stub.cpp");
+    for (std::size_t h = 0; h < handout.size(); ++h)
+      argv.push_back("handout" + std::to_string(h) + ".cpp");
     Limits lim = trusted_tool_limits(options.timeout_s);
     lim.memory_bytes = 4ULL << 30;
     const ChildResult r = run_child(argv, lim, dir);
@@ -557,8 +606,8 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
            : r.signal    ? "was ended by " + describe_signal(r.signal)
                          : "failed with exit status " + std::to_string(r.exit_code)) +
           (r.err.empty() ? "" : ": " + safe_excerpt(r.err, 400)));
-    // Runs against the stub mark stub code the student moved or reformatted; the others are the
-    // shared regions.
+    // Runs against the stub or the handout mark given code the student moved or reformatted; the
+    // others are the shared regions.
     std::istringstream simout(read_file(dir / "sim.out"));
     std::string line;
     const auto index = [&](const std::string& name, std::size_t& i) {
@@ -575,7 +624,7 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
       if (!parse_sim_line(line, s)) continue;
       std::size_t a = 0, b = 0;
       const bool left = index(s.left, a), right = index(s.right, b);
-      if (left && s.right == "stub.cpp") {
+      if (left && (s.right == "stub.cpp" || s.right.rfind("handout", 0) == 0)) {
         for (long n = s.l1; n <= s.l2 && n <= static_cast<long>(copies[a][t].stub.size()); ++n)
           copies[a][t].stub[static_cast<std::size_t>(n - 1)] = 1;
       } else if (left && right && a != b) {
@@ -585,7 +634,8 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
       }
     }
   }
-  return report(config, inputs, copies, runs, notes_for(inputs, tasks, copies), out, options);
+  return report(config, inputs, copies, runs, notes_for(inputs, tasks, copies), handout.size(), out,
+                options);
 }
 
 }  // namespace jelly::grade

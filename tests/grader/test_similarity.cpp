@@ -276,6 +276,35 @@ TEST(Similarity, LinksAndHugeFilesAreNotRead) {
       << notes;
 }
 
+// Code the handout gives (a ```cpp block of a handout page) does not count, as the stub's does not:
+// two submissions that are the reference's forces.cpp are flagged, and not once the handout holds
+// that code. The handout is changed in a copy of assignments/a1/ that a copy of grade-config.json
+// names.
+TEST(Similarity, HandoutCodeDoesNotCount) {
+  ASSERT_TRUE(has_sim()) << kNoSim;
+  const fs::path cls = kWork / "class-handout", a1 = kWork / "handout-copy" / "a1";
+  fs::remove_all(cls);
+  fs::remove_all(a1);
+  fs::create_directories(a1.parent_path());
+  const std::string forces = read(kSource / "solutions" / "a1" / "forces.cpp");
+  for (const char* who : {"alice", "bob"}) write(cls / who / "forces.cpp", forces);
+  fs::copy(kSource / "assignments" / "a1", a1, fs::copy_options::recursive);
+  Json config = Json::parse(read(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json"));
+  config["assignments"]["a1"]["dir"] = a1.string();
+  write(kWork / "grade-config-handout.json", config.dump(1));
+  const auto flagged = [&](const std::string& name) {
+    const fs::path out = kWork / ("out-handout-" + name);
+    const Cmd r = run("similarity " + q(cls) + " --out " + q(out) + " --assignment a1 --config " +
+                      q(kWork / "grade-config-handout.json"));
+    if (r.status != 0) ADD_FAILURE() << r.out;
+    return r.status == 0 ? Json::parse(read(out / "similarity.json"))["pairs"].size() : 99u;
+  };
+  EXPECT_EQ(flagged("before"), 1u);
+  write(a1 / "handout" / "T4-spring-force.md",
+        read(a1 / "handout" / "T4-spring-force.md") + "\n```cpp\n" + forces + "```\n");
+  EXPECT_EQ(flagged("after"), 0u);
+}
+
 // The independent solution the first test relies on is a correct one: graded, every test of
 // A1.T1–A1.T5 passes (its other task files are the stubs, whose tasks score 0).
 TEST(Similarity, IndependentSolutionIsCorrect) {
