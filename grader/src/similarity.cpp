@@ -581,7 +581,7 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
       bool own = false;  // anything but stub lines?
       for (std::size_t n = 0; n < c.lines.size(); ++n) own = own || (c.code[n] && !c.stub[n]);
       if (!own) {
-        c.why = "holds only the stub's lines";
+        c.why = "holds only given lines (the stub's, the handout's code)";
         continue;
       }
       c.present = true;
