@@ -220,6 +220,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     args.strict = o.strict;
     return grade_one(config, book, args, options);
   }
+  if (command == "batch" && o.similarity) similarity_tool();  // missing: say so before grading
   if (command == "batch")
     return batch(config, book, o.positional, o.out, o.jobs, options, !o.no_frames,
                  o.similarity ? o.threshold : -1.0);

@@ -509,14 +509,19 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
 
 }  // namespace
 
-int write_similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
-                     const fs::path& out, const SimilarityOptions& options) {
+fs::path similarity_tool() {
   const fs::path sim = find_sim();
   if (sim.empty())
     throw std::runtime_error(
         "similarity: sim_c++ (Dick Grune's similarity tester) was not found on PATH: install the "
         "Debian package similarity-tester (sudo apt-get install similarity-tester, or sudo "
         "tools/install-deps.sh)");
+  return sim;
+}
+
+int write_similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+                     const fs::path& out, const SimilarityOptions& options) {
+  const fs::path sim = similarity_tool();
   const std::vector<std::string>& tasks = config.task_files();
   fs::create_directories(out);
   const fs::path work = out / "similarity-work";

@@ -30,6 +30,10 @@ struct SimilarityOptions {
   double timeout_s = 600.0;
 };
 
+/// sim_c++ on PATH; throws std::runtime_error naming the package to install when it is not there
+/// (batch --similarity asks before grading, not after).
+std::filesystem::path similarity_tool();
+
 /// Compares the selected assignment's task files of every pair of `inputs` (sim_c++ once per task
 /// file, over the whole set) and writes similarity.html and similarity.json into `out` (created;
 /// each written atomically). Returns the number of pairs at or above the threshold. Throws

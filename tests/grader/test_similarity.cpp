@@ -227,12 +227,18 @@ TEST(Similarity, ThresholdSelectsPairs) {
 TEST(Similarity, ClearErrors) {
   const fs::path cls = kWork / "class-errors", out = kWork / "out-errors";
   make_class(cls);
+  fs::remove_all(out);
   // No sim_c++ on PATH: exit status 2 naming the package.
   const fs::path empty = kWork / "empty-path";
   fs::create_directories(empty);
   Cmd r = run("similarity " + q(cls) + " --out " + q(out), "PATH=" + q(empty));
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(r.out.find("similarity-tester"), std::string::npos) << r.out;
+  // batch --similarity says so before it grades anyone.
+  r = run("batch " + q(cls) + " --out " + q(out) + " --similarity", "PATH=" + q(empty));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("similarity-tester"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "scores.csv"));
   // A threshold that is no percentage, and --threshold on batch without --similarity.
   r = run("similarity " + q(cls) + " --out " + q(out) + " --threshold 0");
   EXPECT_EQ(r.status, 2) << r.out;
