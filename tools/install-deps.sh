@@ -17,6 +17,7 @@ PACKAGES=(
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
   gnuplot-nox xvfb xauth zip unzip
+  similarity-tester  # sim_c++: `jelly-grade similarity` (who copied) and its test
   ccache    # run-tests compiles through it when present: repeated runs and the release builds reuse objects
   clang-format-14  # the house style of the C++ sources (.clang-format; tools/format, test house.clang_format)
   clang libclang-rt-14-dev

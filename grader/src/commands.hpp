@@ -9,6 +9,7 @@
 
 #include "cases.hpp"
 #include "grade.hpp"
+#include "similarity.hpp"
 
 namespace jelly::grade {
 
@@ -45,7 +46,8 @@ struct BatchArgs {
   bool resume = false;        ///< --resume: keep the records a stopped batch made
   int shard_index = 1;        ///< --shard I/N: grade the I-th of N disjoint parts
   int shard_count = 1;
-  bool similarity = false;  ///< --similarity: also compare the submissions' task files
+  /// --similarity P: also the class's similarity report at threshold P percent (< 0: none).
+  double similarity = -1.0;
 };
 
 /// "I/N".
@@ -67,6 +69,16 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
 
 /// The assignment a batch's --out folder was graded for (its batch.json).
 std::string batch_assignment(const std::filesystem::path& part);
+
+/// `similarity` (commands/similarity.cpp): every subfolder of `dir` is one student's submission;
+/// writes similarity.html and similarity.json into `out` (grader/src/similarity.hpp) and prints
+/// how many pairs reach `threshold` percent. 0 whatever it finds: the report is evidence for a
+/// person, not a failure.
+int similarity_command(const GradeConfig& config, const std::string& dir, const std::string& out,
+                       double threshold);
+/// The same for a list of submissions (batch's, or another discovery's).
+int similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+               const std::string& out, double threshold);
 
 /// Shell lines (setup.sh, run_autograder, a PrairieLearn image) that create the unprivileged user
 /// of the "user" sandbox and make the grader's secrets under `source` readable by root only.

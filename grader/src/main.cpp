@@ -6,8 +6,9 @@
 //   (grade, batch, prairielearn, mutants) [--isolation auto|bwrap|user|none]
 //               [--compile-memory MIB] [--compile-cpu S]
 //   jelly-grade batch SUBMISSIONS_DIR --out DIR [--jobs N] [--visibility public|all] [--timeout S]
-//               [--no-frames] [--resume] [--shard I/N]
+//               [--no-frames] [--resume] [--shard I/N] [--similarity [--threshold P]]
 //   jelly-grade merge BATCH_OUT... --out DIR
+//   jelly-grade similarity SUBMISSIONS_DIR --out DIR [--threshold P]
 //   jelly-grade generate-reference
 //   jelly-grade gradescope-zip OUT.zip
 //   jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S]
@@ -63,6 +64,8 @@ constexpr const char* kUsage =
     "                    [--resume (keep what a stopped batch graded)] [--shard I/N (the I-th of "
     "N parts)]\n"
     "  jelly-grade merge BATCH_OUT... --out DIR (join the parts of a sharded batch)\n"
+    "                    [--similarity [--threshold P]]\n"
+    "  jelly-grade similarity SUBMISSIONS_DIR --out DIR [--threshold P (percent, default 50)]\n"
     "  jelly-grade generate-reference\n"
     "  jelly-grade gradescope-zip OUT.zip\n"
     "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] "
@@ -75,7 +78,8 @@ constexpr const char* kUsage =
     "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default "
     "auto),\n"
     "    --compile-memory MIB (default 2048, at least 64), --compile-cpu S (default 120)\n"
-    "exit status: 0 grading ran, whatever the score (1 with --strict when it is not full); 1 a "
+    "exit status: 0 grading ran, whatever the score (similarity: whatever it finds; 1 with "
+    "--strict when it is not full); 1 a "
     "self-test\n"
     "(mutants) failed or a batch had a grader error; 2 bad arguments, missing or stale reference "
     "data.\n";
@@ -93,8 +97,23 @@ struct Options {
   int jobs = 0;                    // 0: one per core
   bool strict = false;  // --strict: exit 1 unless full marks (the selfcheck target's pass/fail)
   bool verbose = false;
-  bool no_frames = false;  // --no-frames: no rendered frames in report.md / report.html
+  bool no_frames = false;   // --no-frames: no rendered frames in report.md / report.html
+  bool similarity = false;  // batch --similarity: also the similarity report
+  double threshold = SimilarityOptions{}.threshold;  // --threshold P (similarity)
 };
+
+/// A percentage > 0 and ≤ 100.
+CLI::Validator percentage() {
+  return CLI::Validator(
+      [](std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        return !text.empty() && end == text.c_str() + text.size() && v > 0.0 && v <= 100.0
+                   ? std::string()
+                   : "expected a percentage > 0 and ≤ 100, got '" + text + "'";
+      },
+      "");
+}
 
 /// The options COMMAND takes, declared on `cmd`.
 void declare(const std::string& command, Command& cmd, Options& o) {
@@ -132,9 +151,18 @@ void declare(const std::string& command, Command& cmd, Options& o) {
     cmd.add_flag("--no-frames", o.no_frames);
     cmd.add_flag("--resume", o.resume);
     cmd.add_option("--shard", o.shard)->type_name("I/N");
+    CLI::Option* similarity_flag = cmd.add_flag("--similarity", o.similarity);
+    cmd.add_option("--threshold", o.threshold)
+        ->type_name("P")
+        ->check(percentage())
+        ->needs(similarity_flag);
   } else if (command == "merge") {
     cmd.add_option("BATCH_OUT", o.parts)->required();
     cmd.add_option("--out", o.out)->type_name("DIR")->required();
+  } else if (command == "similarity") {
+    cmd.add_option("SUBMISSIONS_DIR", o.positional)->required();
+    cmd.add_option("--out", o.out)->type_name("DIR")->required();
+    cmd.add_option("--threshold", o.threshold)->type_name("P")->check(percentage());
   } else if (command == "gradescope-zip") {
     cmd.add_option("OUT.zip", o.positional)->required();
   } else if (command == "prairielearn") {
@@ -154,7 +182,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
     submission = o.positional;
   else if (command == "prairielearn")
     submission = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
-  else if (command == "batch") {
+  else if (command == "batch" || command == "similarity") {
     for (const Submission& s : find_submissions(o.positional))
       if (s.problem.empty()) {
         submission = s.dir;
@@ -166,6 +194,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       config,
       command == "merge" && o.assignment.empty() ? batch_assignment(o.parts.front()) : o.assignment,
       submission);
+  // Compares source text: no reference data, no sandbox.
+  if (command == "similarity") return similarity_command(config, o.positional, o.out, o.threshold);
   const CaseBook book = load_case_book(config, o.rubric_path);
   if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
     // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
@@ -230,6 +260,10 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       args.shard_index = std::stoi(i);
       args.shard_count = std::stoi(n);
     }
+    if (o.similarity) {
+      similarity_tool();  // missing: say so before grading
+      args.similarity = o.threshold;
+    }
     return batch(config, book, args, options);
   }
   if (command == "merge") return merge(config, book, o.parts, o.out);
@@ -243,7 +277,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
 
 int main(int argc, char** argv) {
   const std::set<std::string> commands{
-      "grade", "batch", "merge", "generate-reference", "gradescope-zip", "prairielearn", "mutants"};
+      "grade",          "batch",        "merge",  "similarity", "generate-reference",
+      "gradescope-zip", "prairielearn", "mutants"};
   const std::string command = argc >= 2 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help") {
     std::cout << kUsage;

@@ -101,6 +101,14 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
     fs::remove_all(to);
     fs::rename(tmp, to);
   }
+  // batch --similarity: the first shard compared the whole class; its report comes along.
+  for (const std::string& p : parts)
+    for (const char* name : {"similarity.html", "similarity.json"}) {
+      const fs::path from = fs::path(p) / name;
+      std::error_code ec;
+      if (fs::is_regular_file(from, ec) && !fs::equivalent(from, out / name, ec))
+        write_file_atomically(out / name, read_file(from));
+    }
   Json manifest = first;
   manifest["shard"] = "1/1";
   manifest["students"] = first["class"];
