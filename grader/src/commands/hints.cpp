@@ -145,7 +145,7 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
   }
   const fs::path root = args.work.empty()
                             ? config.binary_dir / "grader" / "hints" / config.assignment().id
-                            : fs::path(args.work);
+                            : fs::absolute(args.work);
   fs::remove_all(root);
   std::vector<Graded> list;
   list.push_back({"reference", "", "", config.solutions_dir(), {}, {}});
@@ -180,6 +180,11 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
   if (list[0].report.score < list[0].report.max_score - 1e-9) {
     std::cerr << "jelly-grade: the reference does not pass every public test: no hints are made "
                  "from it\n";
+    for (const std::string& n : list[0].report.notes) std::cerr << "  note: " << n << "\n";
+    for (const CaseResult& c : list[0].report.cases)
+      if (c.status == "failed")
+        std::cerr << "  " << c.spec->id << ": "
+                  << (c.failures.empty() ? std::string("failed") : c.failures.front()) << "\n";
     return 1;
   }
   const std::string text =
