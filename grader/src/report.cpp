@@ -107,6 +107,16 @@ std::string task_anchor(const TaskResult& t) {
   return a;
 }
 
+// The task whose test records the course scene's centre-of-mass curve (its section holds the plot
+// and the frames), or nullptr.
+const TaskResult* course_scene_task(const GradeReport& r) {
+  for (const TaskResult& t : r.tasks)
+    for (const CaseResult* c : t.cases)
+      if (c->status != "skipped" && c->reference.is_object() && c->reference.contains("com_time"))
+        return &t;
+  return nullptr;
+}
+
 struct TaskCount {
   std::size_t run = 0, passed = 0;
 };
@@ -521,6 +531,33 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
          "your report]("
       << page << ").\n";
   o << "\n";
+  // The course scene's plot and frames, in the section of the task whose test records them.
+  const auto course_scene = [&]() {
+    if (!com_plot_svg(r).empty())
+      o << "### Course scene\n\n![centre-of-mass height, yours against the "
+           "reference](com-height.svg)\n\n";
+    if (frames && frames->shown) {
+      o << "### Frames: yours beside the reference\n\n";
+      if (!frames->unavailable.empty()) {
+        o << "Frames not available: " << frames->unavailable << "\n\n";
+      } else {
+        o << "| t [s] | yours | reference |\n|---|---|---|\n";
+        for (const FrameRow& row : frames->rows)
+          o << "| " << pts(row.time) << " | "
+            << (row.yours.empty() ? std::string("—")
+                                  : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
+            << " | "
+            << (row.reference.empty()
+                    ? std::string("—")
+                    : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
+            << " |\n";
+        o << "\n";
+      }
+      for (const std::string& n : frames->notes) o << "- " << n << "\n";
+      if (!frames->notes.empty()) o << "\n";
+    }
+  };
+  const TaskResult* scene_task = course_scene_task(r);
   // Per task: the first failed test expanded, the other failed ones and the passed ones folded.
   for (const TaskResult& t : r.tasks) {
     const TaskCount n = count(t);
@@ -559,6 +596,7 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
           << markdown_inline(cases[i]->spec->id) << "\\]\n";
       o << "\n</details>\n\n";
     }
+    if (&t == scene_task) course_scene();
   }
   const std::vector<const CaseResult*> printed = printed_cases(r, 5);
   if (!printed.empty()) {
@@ -567,29 +605,7 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
       o << "### " << c->spec->id << " (" << c->status << ")\n\n"
         << markdown_code_block(cut_utf8(c->printed, 1500)) << "\n";
   }
-  if (!com_plot_svg(r).empty())
-    o << "## Course scene\n\n![centre-of-mass height, yours against the "
-         "reference](com-height.svg)\n\n";
-  if (frames && frames->shown) {
-    o << "### Frames: yours beside the reference\n\n";
-    if (!frames->unavailable.empty()) {
-      o << "Frames not available: " << frames->unavailable << "\n\n";
-    } else {
-      o << "| t [s] | yours | reference |\n|---|---|---|\n";
-      for (const FrameRow& row : frames->rows)
-        o << "| " << pts(row.time) << " | "
-          << (row.yours.empty() ? std::string("—")
-                                : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
-          << " | "
-          << (row.reference.empty()
-                  ? std::string("—")
-                  : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
-          << " |\n";
-      o << "\n";
-    }
-    for (const std::string& n : frames->notes) o << "- " << n << "\n";
-    if (!frames->notes.empty()) o << "\n";
-  }
+  if (!scene_task) course_scene();
   return o.str();
 }
 
@@ -664,11 +680,7 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
       o << "</ul>\n";
     }
   };
-  const TaskResult* scene_task = nullptr;
-  for (const TaskResult& t : r.tasks)
-    for (const CaseResult* c : t.cases)
-      if (c->status != "skipped" && c->reference.is_object() && c->reference.contains("com_time"))
-        scene_task = scene_task ? scene_task : &t;
+  const TaskResult* scene_task = course_scene_task(r);
 
   const auto failed_test = [&](const CaseResult& c) {
     o << "<div class=\"failure\"><p class=\"fail\">✗ <b>" << xml_escape(c.spec->title) << "</b> ["

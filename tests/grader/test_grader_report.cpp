@@ -218,6 +218,20 @@ TEST(GraderReport, GradescopesSummaryLeavesTheHiddenTestsOut) {
   EXPECT_NE(all.find("(1/4 tests)"), std::string::npos) << all;
 }
 
+TEST(GraderReport, TheCourseScenesPlotIsInItsTasksSection) {
+  Fixture f;
+  f.report.cases[4].reference =
+      Json::parse(R"({"com_time": {"value": [0, 1]}, "com_y": {"value": [2, 1]}})");
+  const std::string html = html_report(f.report);
+  const std::size_t section = html.find("<section id=\"task-p-t2\">");
+  const std::size_t plot = html.find("<h3>Course scene</h3>");
+  ASSERT_NE(plot, std::string::npos);
+  EXPECT_LT(section, plot);
+  EXPECT_LT(plot, html.find("</section>", section));
+  const std::string md = markdown_report(f.report);
+  EXPECT_LT(md.find("## P.T2 Forces"), md.find("### Course scene"));
+}
+
 // ---- hints.hpp: the matching, on made-up outputs.
 
 struct HintFixture {
