@@ -190,7 +190,13 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
   const std::string text =
       make_hints_json(config, book, std::vector<Graded>(list.begin(), list.begin() + n_mutants));
   if (!args.check) {
-    std::ofstream(file, std::ios::binary) << text;
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out.flush()) {
+      std::cerr << "jelly-grade: cannot write " << file.string() << "\n";
+      return 2;
+    }
+    out.close();
     const HintBook made = load_hints(file);
     std::cout << "jelly-grade: wrote " << file.string() << " (" << made.signatures.size() << " of "
               << n_mutants - 2 << " mutants have a public signature)\n";
