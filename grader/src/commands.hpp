@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cases.hpp"
@@ -88,6 +89,37 @@ std::string sandbox_setup_lines(const std::string& source);
 /// and run_autograder from grader/templates/, the framework without solutions/ but with the
 /// hidden data).
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path);
+
+/// One mutant (assignments/<id>/grader/mutants/NAME.toml): a realistic mistake applied to a copy of
+/// the reference.
+struct MutantSpec {
+  std::string name, task, file, description;
+  bool public_catches = false;  ///< the handout says the self-check catches it
+  std::vector<std::tuple<std::string, std::string, int>> replacements;  ///< find, with, nth
+  std::filesystem::path dir;  ///< its submission folder (made by make_mutant_folders)
+};
+
+/// Reads every *.toml of `specs_dir` (sorted by name) and writes each mutant's submission folder,
+/// `root`/NAME/submission: the reference's task files with its replacements applied. Throws
+/// std::runtime_error naming the file when a spec is incomplete or no longer applies.
+std::vector<MutantSpec> make_mutant_folders(const GradeConfig& config,
+                                            const std::filesystem::path& specs_dir,
+                                            const std::filesystem::path& root);
+
+/// What `jelly-grade hints` is asked to do (commands/hints.cpp).
+struct HintsArgs {
+  std::string out;       ///< --out FILE ("": assignments/<id>/grader/hints.json)
+  bool check = false;    ///< --check: regenerate, compare with the file, prove the hints work
+  bool digest = false;   ///< --check-digest: only whether the file was made from today's sources
+  std::string controls;  ///< --controls DIR: honest mistakes (mutant files) that must get no hint
+  std::string work;      ///< --work DIR: where the submissions are graded
+};
+
+/// `hints` (commands/hints.cpp): grades the reference, the stubs and every mutant on the public
+/// cases and writes each mutant's signature (its outputs on the public cases it fails) to
+/// hints.json (hints.hpp). Returns 0, or 1 when a check fails.
+int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
+          const GradeOptions& options);
 
 /// `mutants` (commands/mutants.cpp): applies every assignments/<id>/grader/mutants/*.toml to a copy
 /// of solutions/<id>/,

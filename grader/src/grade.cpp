@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hints.hpp"
 #include "parallel.hpp"
 #include "text_safety.hpp"
 
@@ -582,12 +583,23 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   rep.isolation_warning = options.isolation.warning;
   const int jobs = worker_count(options.jobs);
 
+  // A malformed hints.json is a grader error before anything runs, like stale reference data.
+  const HintBook hints = options.hints ? load_hints(hints_path(config)) : HintBook();
   const std::vector<std::optional<Json>> refs = select_cases(config, book, options, rep);
   build_runner(config, submission, work_dir, jobs, workspace.gid(), options, rep);
   share_points(book, rep);
   note_failed_files(config, rep);
   run_cases(refs, book, work_dir, jobs, workspace.gid(), options, rep);
   add_up(rep);
+  apply_hints(hints, book, harness_digest(config), rep);
+  const fs::path terms = config.assignments_dir() / "handout" / "reading-your-report.md";
+  std::error_code ec;
+  if (fs::is_regular_file(terms, ec)) {
+    const fs::path rel =
+        terms.lexically_normal().lexically_relative(config.source_dir.lexically_normal());
+    rep.terms_page =
+        rel.empty() || *rel.begin() == ".." ? terms.generic_string() : rel.generic_string();
+  }
   make_safe(rep);
   return rep;
 }

@@ -25,6 +25,8 @@ struct CaseResult {
   Json outputs;         ///< the student's outputs (for plots)
   Json reference;       ///< the reference outputs
   double seconds = 0.0;
+  /// The mistakes of the mutation table this failure looks like (hints.hpp): their descriptions.
+  std::vector<std::string> hints;
 };
 
 struct TaskResult {
@@ -41,6 +43,7 @@ struct GradeOptions {
   std::size_t memory_bytes = 1ULL << 30;
   Isolation isolation;       ///< where the compiler and the tests run (choose_isolation)
   BuildLimits build_limits;  ///< limits of compiling and linking
+  bool hints = true;         ///< "this looks like ..." hints from hints.json (hints.hpp)
   std::filesystem::path
       runner;  ///< --runner: a runner CMake built from the student's tasks; nothing
                ///< is compiled, and it runs without a sandbox (the self-check)
@@ -82,6 +85,10 @@ struct GradeReport {
   std::string isolation;         ///< the mechanism used: "bwrap", "user" or "none"
   std::string isolation_description;
   std::string isolation_warning;  ///< non-empty when hidden tests were not protected
+  /// The handout page that explains the report's terms (tolerance names, contract sections),
+  /// relative to the framework's top folder ("assignments/a1/handout/reading-your-report.md"); ""
+  /// when the assignment has none.
+  std::string terms_page;
 };
 
 /// Builds the submission's runner and runs every selected case. Throws std::runtime_error only

@@ -14,6 +14,7 @@
 //   jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S]
 //               [--jobs N]
 //   jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility ...] [--timeout S]
+//   jelly-grade hints [--check | --check-digest] [--controls DIR] [--out FILE] [--work DIR]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
 //
 // --runner FILE grades a runner CMake built from the student's tasks (target
@@ -72,6 +73,8 @@ constexpr const char* kUsage =
     "[--timeout S] [--jobs N]\n"
     "  jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility public|all] "
     "[--timeout S]\n"
+    "  jelly-grade hints [--check | --check-digest] [--controls DIR] [--out FILE] [--work DIR] "
+    "[--jobs N]\n"
     "  common options: --config FILE (grade-config.json), --rubric FILE,\n"
     "    --assignment ID (which assignment; inferred from a submission's files, or the build's "
     "only one)\n"
@@ -100,6 +103,7 @@ struct Options {
   bool no_frames = false;   // --no-frames: no rendered frames in report.md / report.html
   bool similarity = false;  // batch --similarity: also the similarity report
   double threshold = SimilarityOptions{}.threshold;  // --threshold P (similarity)
+  HintsArgs hints;                                   // jelly-grade hints
 };
 
 /// A percentage > 0 and ≤ 100.
@@ -121,8 +125,8 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   cmd.add_option("--config", o.config_path)->type_name("FILE");
   cmd.add_option("--rubric", o.rubric_path)->type_name("FILE");
   cmd.add_option("--assignment", o.assignment)->type_name("ID");
-  const bool grades =
-      command == "grade" || command == "batch" || command == "prairielearn" || command == "mutants";
+  const bool grades = command == "grade" || command == "batch" || command == "prairielearn" ||
+                      command == "mutants" || command == "hints";
   if (grades) {
     cmd.add_option("--isolation", o.isolation)->type_name("auto|bwrap|user|none");
     cmd.add_option("--compile-memory", o.compile_memory_mib)
@@ -171,6 +175,12 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   } else if (command == "mutants") {
     cmd.add_option("--table", o.table)->type_name("FILE");
     cmd.add_option("--out", o.out)->type_name("DIR");
+  } else if (command == "hints") {
+    cmd.add_flag("--check", o.hints.check);
+    cmd.add_flag("--check-digest", o.hints.digest);
+    cmd.add_option("--controls", o.hints.controls)->type_name("DIR");
+    cmd.add_option("--out", o.hints.out)->type_name("FILE");
+    cmd.add_option("--work", o.hints.work)->type_name("DIR");
   }
 }
 
@@ -226,7 +236,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   if (!o.runner.empty())
     options.isolation = own_machine_isolation();
   else if (command == "grade" || command == "batch" || command == "prairielearn" ||
-           command == "mutants")
+           command == "mutants" || (command == "hints" && !o.hints.digest))
     options.isolation = choose_isolation(config, o.isolation);
   if (command == "grade") {
     GradeOneArgs args;
@@ -270,6 +280,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
   if (command == "prairielearn") return prairielearn(config, book, o.student, o.results, options);
+  if (command == "hints") return hints(config, book, o.hints, o.jobs, options);
   return mutants(config, book, o.table, o.out, o.jobs, options);
 }
 
@@ -277,8 +288,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
 
 int main(int argc, char** argv) {
   const std::set<std::string> commands{
-      "grade",          "batch",        "merge",  "similarity", "generate-reference",
-      "gradescope-zip", "prairielearn", "mutants"};
+      "grade",          "batch",        "merge",   "similarity", "generate-reference",
+      "gradescope-zip", "prairielearn", "mutants", "hints"};
   const std::string command = argc >= 2 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help") {
     std::cout << kUsage;

@@ -685,18 +685,22 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
       run("grade " + sub.string() + " --visibility public --format terminal --out " + out.string());
   unsetenv("JELLY_GRADE_KEEP_WORK");
   ASSERT_EQ(plain.status, 0) << plain.out;
-  const std::string n3 = "[a1.t1.structural.n3]";
-  ASSERT_NE(plain.out.find(n3), std::string::npos) << plain.out;
-  const std::string after = plain.out.substr(plain.out.find(n3));
-  EXPECT_NE(after.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); "
-                       "missing: (0,0,0)–(1,0,0)\n"),
+  // The task's first failed test (the 2×2×2 cube) is expanded: its first two reasons name the
+  // springs, the hint counts the rest; the next failed test (3×3×3) is one line.
+  const std::string n2 = "[a1.t1.structural.n2]", n3 = "[a1.t1.structural.n3]";
+  ASSERT_NE(plain.out.find(n2), std::string::npos) << plain.out;
+  const std::string first =
+      plain.out.substr(plain.out.find(n2), plain.out.find(n3) - plain.out.find(n2));
+  EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); missing: (0,0,0)–(1,0,0)\n"),
             std::string::npos)
       << plain.out;
-  EXPECT_NE(after.find("expected 0, got 1 (difference 1, allowed 0 by tolerance 'exact'); yours: "
-                       "(0,0,0)–(1,1,0)\n"),
+  EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
             std::string::npos)
       << plain.out;
-  EXPECT_NE(after.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos)
+  EXPECT_NE(first.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos)
+      << plain.out;
+  EXPECT_NE(plain.out.find(n3 + "\n           ✗ "), std::string::npos)
+      << "the second failed test is one line:\n"
       << plain.out;
   EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n"
                                               << plain.out;
@@ -715,6 +719,12 @@ TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) 
   EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
   EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
+  // --verbose expands every failed test: the 3×3×3 cube's reasons too.
+  const std::string all = verbose.out.substr(verbose.out.find(n3));
+  EXPECT_NE(all.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); "
+                     "missing: (0,0,0)–(1,0,0)\n"),
+            std::string::npos)
+      << verbose.out;
 }
 
 // ---- --assignment: which assignment a command works on (grade-config.json's "assignments") ----

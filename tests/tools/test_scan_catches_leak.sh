@@ -25,6 +25,7 @@ rel="$work/out/jelly-lab-student"
 check "no solutions/ in the release" '[ ! -e "$rel/solutions" ]'
 check "no hidden data in the release" '[ ! -e "$rel/grader/data/$id" ]'
 check "no mutants in the release" '[ ! -e "$rel/$asg/grader/mutants" ]'
+check "no hints made from the mutants in the release" '[ ! -e "$rel/$asg/grader/hints.json" ]'
 for f in $files; do
   check "the stub $asg/$f is in the release" '[ -f "$rel/$asg/$f" ]'
 done
@@ -106,6 +107,9 @@ if [ -n "$hidden_id" ]; then
 fi
 if [ -d "$src/$asg/grader/mutants" ]; then
   plant "the mutants folder" 'mkdir -p "$copy/$asg/grader/mutants"' "$asg/grader/mutants/ is in the release"
+fi
+if [ -f "$src/$asg/grader/hints.json" ]; then
+  plant "the hints made from the mutants" 'cp "$src/$asg/grader/hints.json" "$copy/$asg/grader/"' "$asg/grader/hints.json/ is in the release"
 fi
 hidden_file="$(find "$src/grader/data/$id/hidden" -type f 2>/dev/null | head -1)"
 if [ -n "$hidden_file" ]; then

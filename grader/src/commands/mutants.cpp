@@ -30,6 +30,52 @@ std::string in_tree(const GradeConfig& config, const fs::path& p) {
 
 }  // namespace
 
+std::vector<MutantSpec> make_mutant_folders(const GradeConfig& config, const fs::path& specs_dir,
+                                            const fs::path& root) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(specs_dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<MutantSpec> out;
+  for (const fs::path& f : files) {
+    toml::table t = toml::parse_file(f.string());
+    MutantSpec m;
+    m.name = f.stem().string();
+    m.task = t["task"].value_or(std::string());
+    m.file = t["file"].value_or(std::string());
+    m.description = t["description"].value_or(std::string());
+    m.public_catches = t["public_catches"].value_or(false);
+    if (const toml::array* reps = t["replace"].as_array())
+      for (const toml::node& n : *reps) {
+        const toml::table& r = *n.as_table();
+        m.replacements.emplace_back(r["find"].value_or(std::string()),
+                                    r["with"].value_or(std::string()),
+                                    static_cast<int>(r["nth"].value_or(1)));
+      }
+    if (m.task.empty() || m.file.empty() || m.replacements.empty())
+      throw std::runtime_error(f.string() +
+                               ": a mutant needs task, file and at least one [[replace]]");
+    m.dir = root / m.name / "submission";
+    fs::create_directories(m.dir);
+    for (const std::string& name : config.task_files())
+      fs::copy_file(config.solutions_dir() / name, m.dir / name,
+                    fs::copy_options::overwrite_existing);
+    std::string text = read_file(m.dir / m.file);
+    for (const auto& [find, with, nth] : m.replacements) {
+      auto at = text.find(find);
+      for (int k = 1; k < nth && at != std::string::npos; ++k)
+        at = text.find(find, at + find.size());
+      if (find.empty() || at == std::string::npos)
+        throw std::runtime_error(f.string() + ": \"" + find + "\" is not in solutions/" + m.file +
+                                 " (the mutant no longer applies)");
+      text.replace(at, find.size(), with);
+    }
+    std::ofstream(m.dir / m.file, std::ios::binary) << text;
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
 int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
             const std::string& work, int jobs, const GradeOptions& options) {
   struct Mutant {
@@ -42,10 +88,6 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
     std::string error;
   };
   std::vector<Mutant> list;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(config.mutants_dir()))
-    if (e.path().extension() == ".toml") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
   // One folder per assignment: the A1 and A2 runs (two CTest tests) may run at once.
   const fs::path root = work.empty()
                             ? config.binary_dir / "grader" / "mutants" / config.assignment().id
@@ -70,49 +112,17 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
                   config.assignments_dir(),
                   {},
                   {}});
-  for (const fs::path& f : files) {
-    toml::table t = toml::parse_file(f.string());
+  for (MutantSpec& spec : make_mutant_folders(config, config.mutants_dir(), root)) {
     Mutant m;
-    m.name = f.stem().string();
-    m.task = t["task"].value_or(std::string());
-    m.file = t["file"].value_or(std::string());
-    m.description = t["description"].value_or(std::string());
-    m.public_catches = t["public_catches"].value_or(false);
-    if (const toml::array* reps = t["replace"].as_array())
-      for (const toml::node& n : *reps) {
-        const toml::table& r = *n.as_table();
-        m.replacements.emplace_back(r["find"].value_or(std::string()),
-                                    r["with"].value_or(std::string()),
-                                    static_cast<int>(r["nth"].value_or(1)));
-      }
-    if (m.task.empty() || m.file.empty() || m.replacements.empty()) {
-      std::cerr << "jelly-grade: " << f
-                << ": a mutant needs task, file and at least one [[replace]]\n";
-      return 2;
-    }
-    m.dir = root / m.name / "submission";
-    fs::create_directories(m.dir);
-    for (const std::string& name : config.task_files())
-      fs::copy_file(config.solutions_dir() / name, m.dir / name,
-                    fs::copy_options::overwrite_existing);
-    std::string text = read_file(m.dir / m.file);
-    for (const auto& [find, with, nth] : m.replacements) {
-      auto at = text.find(find);
-      for (int k = 1; k < nth && at != std::string::npos; ++k)
-        at = text.find(find, at + find.size());
-      if (find.empty() || at == std::string::npos) {
-        std::cerr << "jelly-grade: " << f << ": \"" << find << "\" is not in solutions/" << m.file
-                  << " (the mutant no longer applies)\n";
-        return 2;
-      }
-      text.replace(at, find.size(), with);
-    }
-    std::ofstream(m.dir / m.file, std::ios::binary) << text;
+    m.name = spec.name, m.task = spec.task, m.file = spec.file;
+    m.description = spec.description, m.public_catches = spec.public_catches;
+    m.replacements = spec.replacements, m.dir = spec.dir;
     list.push_back(std::move(m));
   }
   GradeOptions per = options;
   per.jobs = 1;
   per.include_hidden = true;
+  per.hints = false;  // the table is about points, not about the hints (jelly-grade hints)
   std::mutex mutex;
   parallel_for(list.size(), jobs, [&](std::size_t i) {
     try {
