@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #ifdef __linux__
+#include <sys/prctl.h>
 #include <sys/syscall.h>
 #endif
 
@@ -114,6 +115,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   const rlim_t cpu = static_cast<rlim_t>(limits.cpu_s > 0 ? limits.cpu_s : limits.timeout_s + 1.0);
 
   const auto start = std::chrono::steady_clock::now();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     r.start_error = std::string("fork: ") + std::strerror(errno);
@@ -147,6 +149,15 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
       if (limits.run_as_uid >= 0 && setuid(static_cast<uid_t>(limits.run_as_uid)) != 0) _exit(125);
       if (limits.run_as_uid != 0 && setuid(0) == 0) _exit(125);
     }
+#ifdef __linux__
+    // The child ends with the grader: a batch stopped by Ctrl-C, a scheduler's SIGTERM or SIGKILL
+    // leaves no compiler, renderer or test running (bwrap's --die-with-parent takes the sandbox
+    // with it). Set after the change of user, which clears it; the grader may be gone already.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(128);
+#else
+    (void)parent;
+#endif
     if (!dir.empty() && chdir(dir.c_str()) != 0) _exit(126);
     if (limits.env.empty())
       execv(args[0], args.data());

@@ -61,6 +61,9 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
   // collide with a class file.
   const fs::path students = out / "students";
   fs::create_directories(students);
+  // batch.json is written when the batch ends: until then (and if it is stopped) the folder is
+  // not a part merge accepts, even when an earlier batch into it had ended.
+  fs::remove(out / "batch.json");
   // A folder left half-made by a batch that was stopped (students/.<id>.partial) is never a
   // result: it goes, and its student is graded again.
   for (const auto& e : fs::directory_iterator(students)) {

@@ -17,8 +17,10 @@ Json read_batch_manifest(const fs::path& part) {
   const fs::path file = part / "batch.json";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
-    throw std::runtime_error(file.string() +
-                             " does not exist: expected the --out folder of a jelly-grade batch");
+    throw std::runtime_error(
+        file.string() +
+        " does not exist: expected the --out folder of a jelly-grade batch (a batch writes it "
+        "when it ends: if this part was stopped, finish it with the same command and --resume)");
   Json m;
   try {
     m = Json::parse(read_file(file));
@@ -76,18 +78,48 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
     std::string list;
     for (std::size_t k = 0; k < missing.size() && k < 5; ++k)
       list += (k ? ", " : "") + safe_text(missing[k]);
-    throw std::runtime_error(std::to_string(missing.size()) + " of the class's " +
-                             std::to_string(first["class"].size()) +
-                             " students are in none of the parts (" + list +
-                             (missing.size() > 5 ? ", ..." : "") +
-                             "): is a shard missing or unfinished? (the shard of a part is in its "
-                             "batch.json)");
+    // When the parts are shards of one count N, name the shards that were not given.
+    std::set<std::string> given;
+    std::string count;
+    bool one_count = true;
+    for (const Json& m : manifests) {
+      const std::string shard = m.value("shard", "");
+      const auto slash = shard.find('/');
+      if (slash == std::string::npos) {
+        one_count = false;
+        continue;
+      }
+      if (!count.empty() && count != shard.substr(slash + 1)) one_count = false;
+      count = shard.substr(slash + 1);
+      given.insert(shard);
+    }
+    std::string shards;
+    if (one_count && !count.empty() && count.size() < 6 &&
+        count.find_first_not_of("0123456789") == std::string::npos) {
+      const int n = std::stoi(count);
+      for (int i = 1; i <= n; ++i)
+        if (!given.count(shard_label(i, n)))
+          shards += (shards.empty() ? "" : ", ") + shard_label(i, n);
+    }
+    throw std::runtime_error(
+        (shards.empty() ? std::string("a part is missing") : "shard " + shards + " is missing") +
+        ": " + std::to_string(missing.size()) + " of the class's " +
+        std::to_string(first["class"].size()) + " students are in none of the parts (" + list +
+        (missing.size() > 5 ? ", ..." : "") +
+        "); give every part's --out folder (the shard of a part is in its batch.json)");
   }
   // Every part's records must be there and whole before anything is copied.
   std::vector<Json> records;
   for (const Json& id : first["class"]) {
     const std::string s = id.get<std::string>();
     records.push_back(read_record(record_path(owner.at(s), s)));
+    // A record regraded under other options after its part's batch.json was written (a later
+    // batch into the same folder, stopped) is not this part's result.
+    if (records.back().value("fingerprint", "") != first.value("fingerprint", ""))
+      throw std::runtime_error(record_path(owner.at(s), s).string() +
+                               " was graded differently from its part's batch.json (another "
+                               "batch into " +
+                               owner.at(s) + " was stopped?): finish that part with --resume");
   }
   fs::create_directories(out / "students");
   for (const auto& [id, part] : owner) {
