@@ -50,7 +50,11 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
           const GradeOptions& options) {
   // Absolute: the compiler and the tests run in other working folders.
   const fs::path out = fs::absolute(args.out);
-  std::vector<Submission> all = find_submissions(fs::absolute(args.in));
+  // A zip (a Gradescope export) is extracted into --out/.submissions (no id starts with '.').
+  std::vector<std::string> warnings;
+  std::vector<Submission> all =
+      find_submissions(fs::absolute(args.in), out / ".submissions", &warnings);
+  for (const std::string& w : warnings) std::cerr << "jelly-grade: " << safe_text(w) << "\n";
   // --shard I/N: every N-th submission in id order, starting at the I-th, so that each part gets
   // its share of the alphabet and the parts are disjoint and together the class.
   std::vector<Submission> subs;
@@ -101,7 +105,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
               << subs.size() - todo.size() << " of " << subs.size()
               << " submissions already graded (kept), " << todo.size() << " to grade\n";
   std::size_t done = 0;
-  int status = 0;
+  int status = warnings.empty() ? 0 : 1;
   std::mutex mutex;
   // On a terminal one progress line is rewritten in place; into a file or a pipe (a log, CI) each
   // submission gets its own line.
