@@ -145,8 +145,7 @@ class ScalarReader {
 
   std::string after_quote(const std::string& rest, int at) {
     const std::string tail = strip_comment(rest);
-    if (!tail.empty())
-      yaml_error(file_, at, "unexpected text '" + tail + "' after a quoted value");
+    if (!tail.empty()) yaml_error(file_, at, "unexpected text '" + tail + "' after a quoted value");
     return "";
   }
 
@@ -183,14 +182,16 @@ class ScalarReader {
       const char e = t[k];
       const auto hex = [&](int digits) {
         if (k + static_cast<std::size_t>(digits) >= t.size())
-          yaml_error(file_, at, "a \\" + std::string(1, e) + " escape needs " +
-                                    std::to_string(digits) + " hexadecimal digits");
+          yaml_error(file_, at,
+                     "a \\" + std::string(1, e) + " escape needs " + std::to_string(digits) +
+                         " hexadecimal digits");
         std::uint32_t v = 0;
         for (int d = 1; d <= digits; ++d) {
           const char h = t[k + static_cast<std::size_t>(d)];
           if (!std::isxdigit(static_cast<unsigned char>(h)))
-            yaml_error(file_, at, "a \\" + std::string(1, e) + " escape needs " +
-                                      std::to_string(digits) + " hexadecimal digits");
+            yaml_error(file_, at,
+                       "a \\" + std::string(1, e) + " escape needs " + std::to_string(digits) +
+                           " hexadecimal digits");
           v = v * 16 + static_cast<std::uint32_t>(
                            std::isdigit(static_cast<unsigned char>(h))
                                ? h - '0'
@@ -223,7 +224,8 @@ class ScalarReader {
         case 'u': hex(4); break;
         case 'U': hex(8); break;
         default:
-          yaml_error(file_, at, "unknown escape \\" + std::string(1, e) + " in a double-quoted value");
+          yaml_error(file_, at,
+                     "unknown escape \\" + std::string(1, e) + " in a double-quoted value");
       }
     }
     yaml_error(file_, at, "a double-quoted value with no closing quote (\")");
@@ -326,11 +328,12 @@ std::vector<GradescopeEntry> read_gradescope_metadata(const std::string& text,
                        " spaces like the one above, found " + std::to_string(l.indent));
       std::string k, r;
       if (!split_key(l.text, k, r))
-        yaml_error(file, l.number, "expected a key of " + key + " (such as :submitters:), found '" +
-                                       l.text + "'");
+        yaml_error(file, l.number,
+                   "expected a key of " + key + " (such as :submitters:), found '" + l.text + "'");
       ++i;
       if (k != ":submitters:" && k != ":submitters") {
-        // Any other key (:created_at:, :score:, :results:, :history:, ...) with everything under it.
+        // Any other key (:created_at:, :score:, :results:, :history:, ...) with everything under
+        // it.
         while (i < lines.size() && lines[i].indent > child) ++i;
         continue;
       }
@@ -348,7 +351,8 @@ std::vector<GradescopeEntry> read_gradescope_metadata(const std::string& text,
         const int item_line = item.number;
         std::string first = item.text.size() > 1 ? item.text.substr(1) : "";
         if (!first.empty() && first[0] != ' ')
-          yaml_error(file, item.number, "expected '- ' starting a submitter, found '" + item.text + "'");
+          yaml_error(file, item.number,
+                     "expected '- ' starting a submitter, found '" + item.text + "'");
         const int offset = static_cast<int>(first.size() - trim(first).size()) + 1;
         first = strip_comment(first).empty() ? "" : trim(first);
         GradescopeSubmitter who;
@@ -359,9 +363,9 @@ std::vector<GradescopeEntry> read_gradescope_metadata(const std::string& text,
           if (first[0] == '*') {
             const auto a = item_anchors.find(name);
             if (a == item_anchors.end())
-              yaml_error(file, item.number,
-                         "the alias *" + name + " names no submitter anchored (&" + name +
-                             ") before it");
+              yaml_error(
+                  file, item.number,
+                  "the alias *" + name + " names no submitter anchored (&" + name + ") before it");
             entry.submitters.push_back(a->second);
             ++i;
             continue;
@@ -485,7 +489,7 @@ std::string folder_problem(const fs::path& dir, const fs::path& root) {
     }
     if (type == fs::file_type::symlink) {
       if (!link_stays_inside(it->path(), dir))
-        return fs::relative(it->path(), dir, ec).generic_string() + " is a symlink to " +
+        return it->path().lexically_relative(dir).generic_string() + " is a symlink to " +
                fs::read_symlink(it->path(), ec).string() +
                ", outside the submission: not followed, and the submission is not graded "
                "(replace the link by the file)";
@@ -570,7 +574,7 @@ std::string find_unzip() {
 /// message); unzip itself keeps every file inside `scratch` and makes symlinks last, so that no
 /// entry is written through one.
 std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
-                                                         const fs::path& scratch) {
+                                                          const fs::path& scratch) {
   std::error_code ec;
   fs::remove_all(scratch, ec);
   fs::create_directories(scratch);
@@ -629,7 +633,8 @@ std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
                              "): " + trim(x.err + x.out));
   // What unzip made of a refused entry is not the student's file: it goes.
   for (const auto& r : refused)
-    if (!r.first.empty() && fs::symlink_status(scratch / r.first, ec).type() != fs::file_type::directory)
+    if (!r.first.empty() &&
+        fs::symlink_status(scratch / r.first, ec).type() != fs::file_type::directory)
       fs::remove(scratch / r.first, ec);
   return refused;
 }
@@ -653,10 +658,9 @@ std::string safe_id(const std::string& raw) {
     if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0x80)) s.pop_back();
   }
   // Names Windows reserves for devices, whatever the extension.
-  static const std::set<std::string> devices = {"con",  "prn",  "aux",  "nul",  "com1", "com2",
-                                                "com3", "com4", "com5", "com6", "com7", "com8",
-                                                "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5",
-                                                "lpt6", "lpt7", "lpt8", "lpt9"};
+  static const std::set<std::string> devices = {
+      "con",  "prn",  "aux",  "nul",  "com1", "com2", "com3", "com4", "com5", "com6", "com7",
+      "com8", "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5", "lpt6", "lpt7", "lpt8", "lpt9"};
   if (devices.count(lower(s.substr(0, s.find('.'))))) s.insert(s.begin(), '_');
   if (s.empty()) s = "_";
   return s;
@@ -689,8 +693,8 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
     if (exports.size() == 1) root = exports.front();
   }
   const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
-  std::vector<Entry> entries = entries_of(root, gradescope ? std::set<std::string>{kMetadata}
-                                                           : std::set<std::string>{});
+  std::vector<Entry> entries =
+      entries_of(root, gradescope ? std::set<std::string>{kMetadata} : std::set<std::string>{});
   // A refused zip entry belongs to the submission folder it would have landed in.
   const fs::path rel_root = root == scratch ? fs::path() : root.lexically_relative(scratch);
   std::map<std::string, std::vector<std::string>> refused_in;
@@ -726,9 +730,10 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
   if (gradescope) {
     const std::vector<GradescopeEntry> meta = read_gradescope_metadata(
         read_file(root / kMetadata),
-        fs::is_regular_file(in, ec) ? in.filename().string() + ": " +
-                                          fs::relative(root / kMetadata, scratch, ec).generic_string()
-                                    : (root / kMetadata).string());
+        fs::is_regular_file(in, ec)
+            ? in.filename().string() + ": " +
+                  fs::relative(root / kMetadata, scratch, ec).generic_string()
+            : (root / kMetadata).string());
     std::map<std::string, const Entry*> by_folder;
     for (const Entry& e : entries) by_folder[e.key] = &e;
     std::set<std::string> listed;
@@ -739,8 +744,8 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
       if (f == by_folder.end()) {
         base.source = g.folder;
         base.dir = root / safe_id(g.folder);
-        base.problem = std::string(kMetadata) + " lists the submission " + g.folder +
-                       " (line " + std::to_string(g.line) + ") but the export has no such folder";
+        base.problem = std::string(kMetadata) + " lists the submission " + g.folder + " (line " +
+                       std::to_string(g.line) + ") but the export has no such folder";
       } else {
         base = from_entry(*f->second);
       }
@@ -802,7 +807,8 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
     if (classroom) {
       // `gh classroom clone student-repos` clones into <assignment>-submissions/: its name says
       // where the username starts even when usernames share a start.
-      const std::string parent = (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
+      const std::string parent =
+          (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
       const std::string suffix = "-submissions";
       if (parent.size() > suffix.size() &&
           parent.compare(parent.size() - suffix.size(), suffix.size(), suffix) == 0) {
