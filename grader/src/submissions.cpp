@@ -470,8 +470,11 @@ bool link_stays_inside(const fs::path& link, const fs::path& root) {
   return !ec && inside(real, real_root);
 }
 
-/// Why the folder `dir` (a submission, inside `root`, the class) cannot be graded, or "".
-std::string folder_problem(const fs::path& dir, const fs::path& root) {
+/// Why the folder `dir` (a submission, inside `root`, the class) cannot be graded, or "";
+/// `notes` gets the symlinks inside it that lead out of it (never followed: the build reads no task
+/// file through a link and reports such a file, so the rest of the submission is graded).
+std::string folder_problem(const fs::path& dir, const fs::path& root,
+                           std::vector<std::string>& notes) {
   std::error_code ec;
   if (fs::symlink_status(dir, ec).type() == fs::file_type::symlink) {
     if (!link_stays_inside(dir, root))
@@ -489,10 +492,10 @@ std::string folder_problem(const fs::path& dir, const fs::path& root) {
     }
     if (type == fs::file_type::symlink) {
       if (!link_stays_inside(it->path(), dir))
-        return it->path().lexically_relative(dir).generic_string() + " is a symlink to " +
-               fs::read_symlink(it->path(), ec).string() +
-               ", outside the submission: not followed, and the submission is not graded "
-               "(replace the link by the file)";
+        notes.push_back(it->path().lexically_relative(dir).generic_string() + " is a symlink to " +
+                        fs::read_symlink(it->path(), ec).string() +
+                        ", outside the submission: not followed (the build refuses a task "
+                        "file that is a link: its tasks score 0)");
       continue;
     }
     if (type == fs::file_type::regular) ++files;
@@ -723,7 +726,7 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
     else if (const auto r = refused_in.find(e.key); r != refused_in.end())
       s.problem = r->second.front();
     else
-      s.problem = folder_problem(e.path, root);
+      s.problem = folder_problem(e.path, root, s.notes);
     return s;
   };
 

@@ -757,9 +757,9 @@ const std::vector<std::string> kTaskFiles = {"springs.cpp", "forces.cpp", "colli
 }  // namespace
 
 // Every bad entry of a class folder gets a row saying what is wrong, and the rest is graded:
-// a file, an empty folder (or one with only .git), a symlink out of the submission, a folder that
-// is a symlink out of the class, two folders whose ids differ only in case, an id unsafe as a
-// folder name.
+// a file, an empty folder (or one with only .git), a folder that is a symlink out of the class,
+// two folders whose ids differ only in case, an id unsafe as a folder name; a symlink out of a
+// submission is not followed (a note says so) and the rest of that submission is graded.
 TEST(Grader, BatchBadInputsEachGetARowSayingWhyAndTheRestIsGraded) {
   const fs::path dir = kWork / "batch-bad";
   fs::remove_all(dir);
@@ -800,17 +800,25 @@ TEST(Grader, BatchBadInputsEachGetARowSayingWhyAndTheRestIsGraded) {
   EXPECT_NE(error_of("notes.txt").find("is a file, not a folder"), std::string::npos);
   EXPECT_NE(error_of("empty").find("an empty folder"), std::string::npos);
   EXPECT_NE(error_of("only-git").find("an empty folder"), std::string::npos);
-  EXPECT_NE(error_of("linker").find("forces.cpp is a symlink to /etc/passwd, outside the "
-                                    "submission: not followed"),
+  // A symlink out of the submission is not followed, and the rest of it is graded.
+  ASSERT_TRUE(rows.count("linker"));
+  EXPECT_NE(rows.at("linker")[1], "") << "graded";
+  EXPECT_NE(record_text(dir / "out", "linker")
+                .find("forces.cpp is a symlink to /etc/passwd, outside the submission: not "
+                      "followed"),
             std::string::npos)
-      << error_of("linker");
+      << record_text(dir / "out", "linker");
+  EXPECT_NE(read_text(dir / "out" / "students" / "linker" / "results.json")
+                .find("error: is a symbolic link; submit the file itself"),
+            std::string::npos)
+      << "the build refuses the link itself";
   EXPECT_NE(error_of("outside").find("outside the class's folder: not followed"), std::string::npos)
       << error_of("outside");
   EXPECT_NE(error_of("Bob").find("the id Bob is also the id of bob"), std::string::npos)
       << error_of("Bob");
   EXPECT_NE(error_of("bob~2").find("the id bob is also the id of Bob"), std::string::npos)
       << error_of("bob~2");
-  for (const char* id : {"notes.txt", "empty", "linker", "outside", "Bob", "bob~2", "a_b"}) {
+  for (const char* id : {"notes.txt", "empty", "outside", "Bob", "bob~2", "a_b"}) {
     ASSERT_TRUE(rows.count(id)) << id;
     EXPECT_EQ(rows.at(id)[1], "") << id << ": no points rather than 0, so an import skips it";
     EXPECT_NE(record_text(dir / "out", id).find("\"status\": \"not graded\""), std::string::npos)
@@ -821,14 +829,12 @@ TEST(Grader, BatchBadInputsEachGetARowSayingWhyAndTheRestIsGraded) {
                       "is a_b"),
             std::string::npos);
   EXPECT_NE(record_text(dir / "out", "bob~2").find("this row's id is bob~2"), std::string::npos);
-  EXPECT_NE(r.out.find("] linker: not graded: forces.cpp is a symlink"), std::string::npos)
-      << r.out;
 }
 
 // A Gradescope export as "Download Submissions" gives it: a zip of assignment_<n>_export/ with
 // submission_metadata.yml and one folder per submission. Ids are the submitters' :sid: (else the
 // email, else the folder); a group has a row per member; entries with '..' or an absolute path
-// are refused, a symlink out of the submission is not followed, and the rest is graded.
+// are refused, a symlink out of the submission is not followed (noted), and the rest is graded.
 TEST(Grader, BatchReadsAGradescopeExportZip) {
   const fs::path dir = kWork / "batch-gradescope";
   fs::remove_all(dir);
@@ -927,10 +933,12 @@ submission_106:
   EXPECT_NE(rows.at("cy@example.edu").back().find("an empty folder"), std::string::npos)
       << rows.at("cy@example.edu").back();
   EXPECT_NE(record_text(out, "cy@example.edu").find("no student id (:sid:)"), std::string::npos);
-  EXPECT_NE(rows.at("1004").back().find("forces.cpp is a symlink to /etc/passwd, outside the "
-                                        "submission: not followed"),
+  EXPECT_NE(rows.at("1004")[1], "") << "graded, the link not followed";
+  EXPECT_NE(record_text(out, "1004")
+                .find("forces.cpp is a symlink to /etc/passwd, outside the "
+                      "submission: not followed"),
             std::string::npos)
-      << rows.at("1004").back();
+      << record_text(out, "1004");
   EXPECT_NE(rows.at("1005").back().find("the zip's entry '" + root +
                                         "submission_104/../../escaped.txt' has a '..' component: "
                                         "refused"),
