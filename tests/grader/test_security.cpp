@@ -399,8 +399,9 @@ fs::path make_submission(const fs::path& in, const Route& r) {
     if (n == "hardlink") {
       // A second name of the hidden file itself where the file systems allow it, else of a copy.
       if (link(T->hidden.c_str(), top.c_str()) != 0) {
-        fs::copy_file(T->hidden, in / "hardlink-target.json");
-        EXPECT_EQ(link((in / "hardlink-target.json").c_str(), top.c_str()), 0);
+        // (in the submission: a loose file in the class folder would be a row of its own)
+        fs::copy_file(T->hidden, dir / "hardlink-target.json");
+        EXPECT_EQ(link((dir / "hardlink-target.json").c_str(), top.c_str()), 0);
       }
     }
   }
