@@ -62,6 +62,7 @@ Json student_record(const Submission& sub, const GradeReport* report, const std:
   r["submission_digest"] = sub.problem.empty() ? submission_digest(sub.dir) : "";
   r["id"] = safe_text(sub.id);
   r["name"] = safe_text(sub.name);
+  r["email"] = safe_text(sub.email);
   Json notes = Json::array();
   for (const std::string& n : sub.notes) notes.push_back(safe_text(n));
   if (!report) {
@@ -134,12 +135,23 @@ Json read_record(const fs::path& file) {
 }
 
 std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
-  // A bonus column only for an assignment with a bonus task (A1's file is as it always was).
+  // What an LMS import takes (docs/instructor-guide.md, "Import the scores"): the id, the points
+  // out of the autograded maximum and as a percentage, an empty column for the hand-graded part,
+  // then each task's points. A bonus column only for an assignment with a bonus task; no column
+  // for a task worth nothing (A1's course scene, which would always read 0).
   bool bonus = false;
-  for (const TaskSpec& t : book.rubric.tasks) bonus = bonus || t.bonus;
-  std::vector<std::string> header = {"student", "score", "max_score", "compiled"};
-  if (bonus) header.insert(header.begin() + 3, "bonus");
-  for (const TaskSpec& t : book.rubric.tasks) header.push_back(csv_field(t.id));
+  std::vector<const TaskSpec*> tasks;
+  for (const TaskSpec& t : book.rubric.tasks) {
+    bonus = bonus || t.bonus;
+    if (t.bonus || t.points != 0.0) tasks.push_back(&t);
+  }
+  std::vector<std::string> header = {"student", "points", "max_points", "percent"};
+  if (bonus) header.push_back("bonus");
+  header.push_back("hand_graded");
+  header.push_back("compiled");
+  for (const TaskSpec* t : tasks) header.push_back(csv_field(t->id));
+  header.push_back("name");
+  header.push_back("email");
   // The task files not found in the submission (graded as the unchanged stubs): a student who
   // submitted nothing usable shows here, not only inside their own report.
   header.push_back("missing_files");
@@ -147,22 +159,34 @@ std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
   std::string csv = csv_row(header);
   for (const Json& r : records) {
     std::vector<std::string> row = {csv_field(r.value("id", ""))};
-    if (r.value("status", "") != "graded") {
-      for (std::size_t k = 0; k < (bonus ? 5 : 4) + book.rubric.tasks.size(); ++k)
-        row.push_back("");
-      row.push_back(csv_field(r.value("error", "")));
+    const bool graded = r.value("status", "") == "graded";
+    if (!graded) {
+      // No points at all, not 0: an import then leaves the student's grade as it was.
+      for (std::size_t k = 0; k < header.size() - 5 - tasks.size(); ++k) row.push_back("");
+      for (std::size_t k = 0; k < tasks.size(); ++k) row.push_back("");
     } else {
-      row.push_back(pts(r["score"].get<double>()));
-      row.push_back(pts(r["max_score"].get<double>()));
+      const double score = r["score"].get<double>(), max = r["max_score"].get<double>();
+      row.push_back(pts(score));
+      row.push_back(pts(max));
+      row.push_back(max > 0.0 ? pts(100.0 * score / max) : "");
       if (bonus) row.push_back(pts(r["bonus_score"].get<double>()));
+      row.push_back("");  // hand_graded: the instructor's
       row.push_back(r["compiled"].get<bool>() ? "1" : "0");
-      for (const Json& t : r["tasks"]) row.push_back(pts(t["score"].get<double>()));
-      std::string missing;
+      for (const TaskSpec* t : tasks) {
+        std::string cell;
+        for (const Json& rt : r["tasks"])
+          if (rt.value("id", "") == t->id) cell = pts(rt["score"].get<double>());
+        row.push_back(cell);
+      }
+    }
+    row.push_back(csv_field(r.value("name", "")));
+    row.push_back(csv_field(r.value("email", "")));
+    std::string missing;
+    if (graded)
       for (const Json& f : r["missing_files"])
         missing += (missing.empty() ? "" : " ") + f.get<std::string>();
-      row.push_back(csv_field(missing));
-      row.push_back("");
-    }
+    row.push_back(csv_field(missing));
+    row.push_back(csv_field(graded ? "" : r.value("error", "")));
     csv += csv_row(row);
   }
   return csv;

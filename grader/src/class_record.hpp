@@ -35,7 +35,9 @@ std::filesystem::path record_path(const std::filesystem::path& out, const std::s
 /// Reads a record file; throws std::runtime_error naming the file when it is not a record.
 Json read_record(const std::filesystem::path& file);
 
-/// scores.csv from the records (in the order given).
+/// scores.csv from the records (in the order given), for an LMS import: student (the id), points,
+/// max_points, percent, [bonus,] hand_graded (empty), compiled, each task's points (no column for a
+/// task worth 0 that is no bonus), name, email, missing_files, error.
 std::string scores_csv(const std::vector<Json>& records, const CaseBook& book);
 
 /// Writes the class files (scores.csv) into `out` from `records`, each file whole or not at all.

@@ -11,6 +11,7 @@
 #include "cases.hpp"
 #include "grade.hpp"
 #include "similarity.hpp"
+#include "submissions.hpp"
 
 namespace jelly::grade {
 
@@ -77,6 +78,9 @@ std::string batch_assignment(const std::filesystem::path& part);
 /// person, not a failure.
 int similarity_command(const GradeConfig& config, const std::string& dir, const std::string& out,
                        double threshold);
+/// The submissions to compare: those that can be graded, one per folder (a Gradescope group's
+/// members share theirs).
+std::vector<SimilarityInput> similarity_inputs(const std::vector<Submission>& subs);
 /// The same for a list of submissions (batch's, or another discovery's).
 int similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
                const std::string& out, double threshold);

@@ -193,7 +193,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   else if (command == "prairielearn")
     submission = o.student.empty() ? fs::path("/grade/student") : fs::path(o.student);
   else if (command == "batch" || command == "similarity") {
-    for (const Submission& s : find_submissions(o.positional))
+    for (const Submission& s : find_submissions(o.positional, fs::path(o.out) / ".submissions"))
       if (s.problem.empty()) {
         submission = s.dir;
         break;

@@ -5,11 +5,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -606,13 +608,21 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   std::getline(csv, dave);
   for (std::string* row : {&header, &alice, &bob, &carol, &dave})
     if (!row->empty() && row->back() == '\r') row->pop_back();  // RFC 4180 line ends
-  EXPECT_EQ(header.rfind("student,score,max_score,compiled,A1.T1", 0), 0u) << header;
-  EXPECT_NE(header.find(",A1.COURSE,missing_files,error"), std::string::npos) << header;
-  EXPECT_EQ(alice.rfind("alice,80.00,80.00,1", 0), 0u) << alice;
-  EXPECT_EQ(bob.rfind("bob,0.00,80.00,1", 0), 0u) << bob;
-  EXPECT_EQ(bob.substr(bob.size() - 2), ",,") << "bob's stubs are all there: " << bob;
-  EXPECT_EQ(carol.rfind("carol,80.00,80.00,1", 0), 0u) << carol;
-  EXPECT_EQ(dave.rfind("dave,0.00,80.00,1", 0), 0u) << dave;
+  // For an LMS import: the id, the points, the percentage, an empty column for the hand-graded
+  // report, then each task; no column for the course scene (0 points, not a bonus).
+  EXPECT_EQ(header.rfind("student,points,max_points,percent,hand_graded,compiled,A1.T1,", 0), 0u)
+      << header;
+  EXPECT_NE(header.find(",A1.T13,name,email,missing_files,error"), std::string::npos) << header;
+  EXPECT_EQ(header.find("A1.COURSE"), std::string::npos) << header;
+  EXPECT_EQ(alice.rfind("alice,80.00,80.00,100.00,,1,5.00,", 0), 0u) << alice;
+  EXPECT_EQ(bob.rfind("bob,0.00,80.00,0.00,,1,0.00,", 0), 0u) << bob;
+  EXPECT_EQ(bob.substr(bob.size() - 4), ",,,,") << "no name, no email, no missing file: " << bob;
+  EXPECT_EQ(carol.rfind("carol,80.00,80.00,100.00,,1", 0), 0u) << carol;
+  EXPECT_EQ(dave.rfind("dave,0.00,80.00,0.00,,1", 0), 0u) << dave;
+  for (const std::string* row : {&alice, &bob, &carol, &dave})
+    EXPECT_EQ(std::count(row->begin(), row->end(), ','),
+              std::count(header.begin(), header.end(), ','))
+        << *row;
   EXPECT_NE(dave.find(",springs.cpp forces.cpp collision.cpp contact.cpp integrators.cpp,"),
             std::string::npos)
       << dave;
@@ -632,6 +642,364 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   for (const char* who : {"alice", "bob", "carol", "dave"})
     EXPECT_NE(r.out.find("] " + std::string(who) + ": "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find('\r'), std::string::npos) << "carriage returns in a log";
+}
+
+namespace {
+
+// A zip with the given entries stored as they are (names unchecked: a hostile export), each a file
+// or, with `link`, a symlink whose target is `data`.
+struct ZipEntry {
+  std::string name, data;
+  bool link = false;
+};
+
+void write_zip(const fs::path& file, const std::vector<ZipEntry>& entries) {
+  const auto crc32 = [](const std::string& d) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : d) {
+      c ^= b;
+      for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xFFFFFFFFu;
+  };
+  std::string out, central;
+  const auto u16 = [](std::string& s, unsigned v) {
+    s += static_cast<char>(v & 0xFF);
+    s += static_cast<char>((v >> 8) & 0xFF);
+  };
+  const auto u32 = [&](std::string& s, std::uint32_t v) {
+    u16(s, v & 0xFFFF);
+    u16(s, v >> 16);
+  };
+  for (const ZipEntry& e : entries) {
+    const std::uint32_t offset = static_cast<std::uint32_t>(out.size());
+    const std::uint32_t crc = crc32(e.data);
+    const auto size = static_cast<std::uint32_t>(e.data.size());
+    u32(out, 0x04034b50);  // local file header
+    u16(out, 20);
+    u16(out, 0);
+    u16(out, 0);  // stored
+    u16(out, 0);
+    u16(out, 0x21);
+    u32(out, crc);
+    u32(out, size);
+    u32(out, size);
+    u16(out, static_cast<unsigned>(e.name.size()));
+    u16(out, 0);
+    out += e.name + e.data;
+    u32(central, 0x02014b50);
+    u16(central, 0x0314);  // made by Unix, so that the mode (and a symlink) counts
+    u16(central, 20);
+    u16(central, 0);
+    u16(central, 0);
+    u16(central, 0);
+    u16(central, 0x21);
+    u32(central, crc);
+    u32(central, size);
+    u32(central, size);
+    u16(central, static_cast<unsigned>(e.name.size()));
+    u16(central, 0);
+    u16(central, 0);
+    u16(central, 0);
+    u16(central, 0);
+    u32(central, (e.link ? 0120777u : 0100644u) << 16);
+    u32(central, offset);
+    central += e.name;
+  }
+  const auto at = static_cast<std::uint32_t>(out.size());
+  out += central;
+  u32(out, 0x06054b50);
+  u16(out, 0);
+  u16(out, 0);
+  u16(out, static_cast<unsigned>(entries.size()));
+  u16(out, static_cast<unsigned>(entries.size()));
+  u32(out, static_cast<std::uint32_t>(central.size()));
+  u32(out, at);
+  u16(out, 0);
+  std::ofstream(file, std::ios::binary) << out;
+}
+
+// scores.csv's rows by student id (RFC 4180 fields; the tests' fields hold no line break).
+std::map<std::string, std::vector<std::string>> csv_rows(const fs::path& file) {
+  std::map<std::string, std::vector<std::string>> rows;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::vector<std::string> f(1);
+    bool quoted = false;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      const char c = line[k];
+      if (quoted && c == '"' && k + 1 < line.size() && line[k + 1] == '"') {
+        f.back() += '"';
+        ++k;
+      } else if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        f.emplace_back();
+      } else {
+        f.back() += c;
+      }
+    }
+    rows[f[0]] = f;
+  }
+  return rows;
+}
+
+std::string record_text(const fs::path& out, const std::string& id) {
+  return read_text(out / "students" / id / "record.json");
+}
+
+const std::vector<std::string> kTaskFiles = {"springs.cpp", "forces.cpp", "collision.cpp",
+                                             "contact.cpp", "integrators.cpp"};
+
+}  // namespace
+
+// Every bad entry of a class folder gets a row saying what is wrong, and the rest is graded:
+// a file, an empty folder (or one with only .git), a folder that is a symlink out of the class,
+// two folders whose ids differ only in case, an id unsafe as a folder name; a symlink out of a
+// submission is not followed (a note says so) and the rest of that submission is graded.
+TEST(Grader, BatchBadInputsEachGetARowSayingWhyAndTheRestIsGraded) {
+  const fs::path dir = kWork / "batch-bad";
+  fs::remove_all(dir);
+  const fs::path in = dir / "in";
+  fs::create_directories(in);
+  fs::copy(submission("batch-bad-ref"), in / "alice", fs::copy_options::recursive);
+  std::ofstream(in / "notes.txt") << "not a submission\n";
+  fs::create_directories(in / "empty");
+  fs::create_directories(in / "only-git" / ".git");
+  std::ofstream(in / "only-git" / ".git" / "HEAD") << "ref: refs/heads/main\n";
+  fs::create_directories(in / "linker");
+  std::ofstream(in / "linker" / "springs.cpp") << "// mine\n";
+  fs::create_symlink("/etc/passwd", in / "linker" / "forces.cpp");
+  fs::create_directories(dir / "elsewhere");
+  std::ofstream(dir / "elsewhere" / "springs.cpp") << "// not in the class\n";
+  fs::create_directory_symlink(dir / "elsewhere", in / "outside");
+  for (const char* twin : {"Bob", "bob"}) {
+    fs::create_directories(in / twin);
+    std::ofstream(in / twin / "springs.cpp") << "// " << twin << "\n";
+  }
+  fs::create_directories(in / "a:b");  // empty too: not graded, but its id is made safe
+  fs::create_directories(in / ".hidden");
+  std::ofstream(in / ".hidden" / "springs.cpp") << "// hidden folders are not submissions\n";
+  const Cmd r = run("batch " + in.string() + " --assignment a1 --out " + (dir / "out").string() +
+                    " --jobs 2 --no-frames");
+  EXPECT_EQ(r.status, 1) << "a student could not be graded: " << r.out;
+  const auto rows = csv_rows(dir / "out" / "scores.csv");
+  std::set<std::string> ids;
+  for (const auto& [id, row] : rows) ids.insert(id);
+  EXPECT_EQ(ids, (std::set<std::string>{"Bob", "a_b", "alice", "bob~2", "empty", "linker",
+                                        "notes.txt", "only-git", "outside"}))
+      << read_text(dir / "out" / "scores.csv");
+  ASSERT_TRUE(rows.count("alice"));
+  EXPECT_EQ(rows.at("alice")[1], "80.00") << "the rest of the class is graded";
+  const auto error_of = [&](const std::string& id) {
+    return rows.count(id) ? rows.at(id).back() : std::string("(no row)");
+  };
+  EXPECT_NE(error_of("notes.txt").find("is a file, not a folder"), std::string::npos);
+  EXPECT_NE(error_of("empty").find("an empty folder"), std::string::npos);
+  EXPECT_NE(error_of("only-git").find("an empty folder"), std::string::npos);
+  // A symlink out of the submission is not followed, and the rest of it is graded.
+  ASSERT_TRUE(rows.count("linker"));
+  EXPECT_NE(rows.at("linker")[1], "") << "graded";
+  EXPECT_NE(record_text(dir / "out", "linker")
+                .find("forces.cpp is a symlink to /etc/passwd, outside the submission: not "
+                      "followed"),
+            std::string::npos)
+      << record_text(dir / "out", "linker");
+  EXPECT_NE(read_text(dir / "out" / "students" / "linker" / "results.json")
+                .find("error: is a symbolic link; submit the file itself"),
+            std::string::npos)
+      << "the build refuses the link itself";
+  EXPECT_NE(error_of("outside").find("outside the class's folder: not followed"), std::string::npos)
+      << error_of("outside");
+  EXPECT_NE(error_of("Bob").find("the id Bob is also the id of bob"), std::string::npos)
+      << error_of("Bob");
+  EXPECT_NE(error_of("bob~2").find("the id bob is also the id of Bob"), std::string::npos)
+      << error_of("bob~2");
+  for (const char* id : {"notes.txt", "empty", "outside", "Bob", "bob~2", "a_b"}) {
+    ASSERT_TRUE(rows.count(id)) << id;
+    EXPECT_EQ(rows.at(id)[1], "") << id << ": no points rather than 0, so an import skips it";
+    EXPECT_NE(record_text(dir / "out", id).find("\"status\": \"not graded\""), std::string::npos)
+        << id;
+  }
+  EXPECT_NE(record_text(dir / "out", "a_b")
+                .find("the id 'a:b' is not safe as a folder name: it "
+                      "is a_b"),
+            std::string::npos);
+  EXPECT_NE(record_text(dir / "out", "bob~2").find("this row's id is bob~2"), std::string::npos);
+}
+
+// A Gradescope export as "Download Submissions" gives it: a zip of assignment_<n>_export/ with
+// submission_metadata.yml and one folder per submission. Ids are the submitters' :sid: (else the
+// email, else the folder); a group has a row per member; entries with '..' or an absolute path
+// are refused, a symlink out of the submission is not followed (noted), and the rest is graded.
+TEST(Grader, BatchReadsAGradescopeExportZip) {
+  const fs::path dir = kWork / "batch-gradescope";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string root = "assignment_4711_export/";
+  std::vector<ZipEntry> entries;
+  entries.push_back({root + "submission_metadata.yml", R"(---
+submission_101:
+  :submitters:
+  - &1
+    :name: "Ana \u00d3 Lee"
+    :sid: '1001'
+    :email: ana@example.edu
+    section_name: lab-2
+  - :name: Ben 'B' Ode   # the second member
+    :sid: 1002
+    :email: ben@example.edu
+  :created_at: 2026-11-01 10:00:00.000000000 Z
+  :score: 80.0
+  :results:
+    tests:
+    - name: "compiles"
+      output: |-
+        submission_999:
+          :submitters:
+          - :sid: '666'
+  :history:
+  - :created_at: 2026-10-31 09:00:00.000000000 Z
+    :submitters:
+    - :sid: '666'
+submission_102:
+  :submitters:
+  - :name: Cy
+    :email: cy@example.edu
+submission_103:
+  :submitters:
+  - :name: Dee
+    :sid: '1004'
+submission_104:
+  :submitters:
+  - :name: Eve
+    :sid: '1005'
+submission_105:
+  :submitters:
+  - *1
+submission_106:
+  :submitters: []
+)"});
+  for (const std::string& f : kTaskFiles) {
+    std::ifstream src(kSource / "solutions" / "a1" / f, std::ios::binary);
+    std::stringstream text;
+    text << src.rdbuf();
+    entries.push_back({root + "submission_101/src/" + f, text.str()});
+  }
+  entries.push_back({root + "submission_102/", ""});  // a folder and nothing in it
+  entries.push_back({root + "submission_103/springs.cpp", "// Dee\n"});
+  entries.push_back({root + "submission_103/forces.cpp", "/etc/passwd", true});
+  entries.push_back({root + "submission_104/springs.cpp", "// Eve\n"});
+  entries.push_back({root + "submission_104/../../escaped.txt", "out of the export\n"});
+  entries.push_back({"/absolute.txt", "out of the export\n"});
+  entries.push_back({root + "submission_105/springs.cpp", "// Ana again\n"});
+  entries.push_back({root + "submission_106/springs.cpp", "// nobody\n"});
+  write_zip(dir / "export.zip", entries);
+  const fs::path out = dir / "out";
+  const Cmd r = run("batch " + (dir / "export.zip").string() + " --out " + out.string() +
+                    " --jobs 2 --no-frames");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "escaped.txt"));
+  EXPECT_FALSE(fs::exists(out / "escaped.txt"));
+  EXPECT_FALSE(fs::exists("/absolute.txt"));
+  const auto rows = csv_rows(out / "scores.csv");
+  std::set<std::string> ids;
+  for (const auto& [id, row] : rows) ids.insert(id);
+  // 1001 twice: Ana in her group and (through the alias) in submission_105.
+  EXPECT_EQ(ids, (std::set<std::string>{"1001", "1001~2", "1002", "1004", "1005", "cy@example.edu",
+                                        "submission_106"}))
+      << read_text(out / "scores.csv");
+  // The group: one row per member, each graded from the group's files.
+  ASSERT_TRUE(rows.count("1002"));
+  EXPECT_EQ(rows.at("1002")[1], "80.00") << r.out;
+  EXPECT_EQ(rows.at("1002")[3], "100.00");
+  const std::string ben = record_text(out, "1002");
+  EXPECT_NE(ben.find("\"name\": \"Ben 'B' Ode\""), std::string::npos) << ben;
+  EXPECT_NE(ben.find("\"email\": \"ben@example.edu\""), std::string::npos) << ben;
+  EXPECT_NE(ben.find("group submission submission_101 with Ana \u00d3 Lee (1001)"),
+            std::string::npos)
+      << ben;
+  EXPECT_NE(read_text(out / "scores.csv").find(",Ana \u00d3 Lee,ana@example.edu,"),
+            std::string::npos);
+  // Ana is in two submissions: neither row is graded, each names the other.
+  EXPECT_NE(rows.at("1001").back().find("the id 1001 is also the id of submission_105"),
+            std::string::npos)
+      << rows.at("1001").back();
+  EXPECT_NE(rows.at("1001~2").back().find("the id 1001 is also the id of submission_101"),
+            std::string::npos);
+  EXPECT_NE(rows.at("cy@example.edu").back().find("an empty folder"), std::string::npos)
+      << rows.at("cy@example.edu").back();
+  EXPECT_NE(record_text(out, "cy@example.edu").find("no student id (:sid:)"), std::string::npos);
+  EXPECT_NE(rows.at("1004")[1], "") << "graded, the link not followed";
+  EXPECT_NE(record_text(out, "1004")
+                .find("forces.cpp is a symlink to /etc/passwd, outside the "
+                      "submission: not followed"),
+            std::string::npos)
+      << record_text(out, "1004");
+  EXPECT_NE(rows.at("1005").back().find("the zip's entry '" + root +
+                                        "submission_104/../../escaped.txt' has a '..' component: "
+                                        "refused"),
+            std::string::npos)
+      << rows.at("1005").back();
+  EXPECT_NE(r.out.find("the zip's entry '/absolute.txt' has an absolute path: refused"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(record_text(out, "submission_106").find("names no submitter for submission_106"),
+            std::string::npos);
+  // The class files hold no absolute path (the export was extracted under --out).
+  EXPECT_EQ(read_text(out / "scores.csv").find(dir.string()), std::string::npos);
+}
+
+// submission_metadata.yml that is not what Gradescope writes: the file and the line are named.
+TEST(Grader, BatchNamesTheFileAndLineOfABadSubmissionMetadata) {
+  const fs::path dir = kWork / "batch-bad-metadata";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "export" / "submission_1");
+  std::ofstream(dir / "export" / "submission_1" / "springs.cpp") << "// x\n";
+  std::ofstream(dir / "export" / "submission_metadata.yml")
+      << "submission_1:\n  :submitters:\n  - :name: \"Unclosed\n";
+  const Cmd r = run("batch " + (dir / "export").string() + " --assignment a1 --out " +
+                    (dir / "out").string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("submission_metadata.yml:3: a double-quoted value with no closing quote"),
+            std::string::npos)
+      << r.out;
+}
+
+// GitHub Classroom: `gh classroom clone student-repos` makes <assignment>-submissions/ with a clone
+// <assignment>-<username> per student; the id is the username, even one with a '-'.
+TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
+  const fs::path dir = kWork / "batch-classroom" / "a1-jelly-submissions";
+  fs::remove_all(dir.parent_path());
+  for (const char* who : {"a1-jelly-mary-jane", "a1-jelly-mary-ann"}) {
+    fs::create_directories(dir / who / ".git" / "objects");
+    std::ofstream(dir / who / ".git" / "HEAD") << "ref: refs/heads/main\n";
+  }
+  const fs::path out = dir.parent_path() / "out";
+  const Cmd r = run("batch " + dir.string() + " --assignment a1 --out " + out.string());
+  EXPECT_EQ(r.status, 1) << "both clones are empty: " << r.out;
+  const auto rows = csv_rows(out / "scores.csv");
+  EXPECT_EQ(rows.size(), 2u) << read_text(out / "scores.csv");
+  EXPECT_TRUE(rows.count("mary-jane")) << read_text(out / "scores.csv");
+  EXPECT_TRUE(rows.count("mary-ann")) << read_text(out / "scores.csv");
+  EXPECT_NE(record_text(out, "mary-ann")
+                .find("GitHub Classroom repository a1-jelly-mary-ann: the id is the username "
+                      "mary-ann (the prefix a1-jelly- every folder shares stripped)"),
+            std::string::npos)
+      << record_text(out, "mary-ann");
+  // Elsewhere than <assignment>-submissions/, the prefix all the folders share goes.
+  const fs::path moved = dir.parent_path() / "clones";
+  fs::rename(dir, moved);
+  fs::create_directories(moved / "a1-jelly-zed" / ".git");
+  std::ofstream(moved / "a1-jelly-zed" / ".git" / "HEAD") << "ref: refs/heads/main\n";
+  const Cmd r2 = run("batch " + moved.string() + " --assignment a1 --out " + out.string());
+  const auto rows2 = csv_rows(out / "scores.csv");
+  std::set<std::string> ids;
+  for (const auto& [id, row] : rows2) ids.insert(id);
+  EXPECT_EQ(ids, (std::set<std::string>{"mary-ann", "mary-jane", "zed"})) << r2.out;
 }
 
 TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {

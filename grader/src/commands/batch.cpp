@@ -50,7 +50,11 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
           const GradeOptions& options) {
   // Absolute: the compiler and the tests run in other working folders.
   const fs::path out = fs::absolute(args.out);
-  std::vector<Submission> all = find_submissions(fs::absolute(args.in));
+  // A zip (a Gradescope export) is extracted into --out/.submissions (no id starts with '.').
+  std::vector<std::string> warnings;
+  std::vector<Submission> all =
+      find_submissions(fs::absolute(args.in), out / ".submissions", &warnings);
+  for (const std::string& w : warnings) std::cerr << "jelly-grade: " << safe_text(w) << "\n";
   // --shard I/N: every N-th submission in id order, starting at the I-th, so that each part gets
   // its share of the alphabet and the parts are disjoint and together the class.
   std::vector<Submission> subs;
@@ -93,7 +97,11 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
     closed.close(fs::absolute(args.in));
     closed.close(out);
   }
-  const std::string fingerprint = grading_fingerprint(config, book, options);
+  // Frames or not changes the reports, not the scores: a part graded --no-frames is not resumed
+  // or merged as one with frames.
+  const std::string fingerprint =
+      args.frames ? grading_fingerprint(config, book, options)
+                  : fnv_hex(grading_fingerprint(config, book, options) + " --no-frames");
   // --resume: whoever has a record made under this fingerprint from the same files keeps it.
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < subs.size(); ++i)
@@ -104,7 +112,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
               << subs.size() - todo.size() << " of " << subs.size()
               << " submissions already graded (kept), " << todo.size() << " to grade\n";
   std::size_t done = 0;
-  int status = 0;
+  int status = warnings.empty() ? 0 : 1;
   std::mutex mutex;
   // On a terminal one progress line is rewritten in place; into a file or a pipe (a log, CI) each
   // submission gets its own line.
@@ -126,6 +134,9 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
     if (sub.problem.empty()) {
       try {
         report = grade_submission(config, book, sub.dir, part / "work", per);
+        // The reports name the student, not this machine's path to their folder: the parts of a
+        // class graded on several machines give the same reports.
+        report.submission = sub.id;
         write_reports(report, book, part, {"gradescope", "markdown", "html"},
                       args.frames ? &config : nullptr);
         graded = true;
@@ -196,10 +207,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
   // --similarity: who copied, over the whole class (every shard has the same class; the first
   // writes the report, and merge takes it from there).
   if (args.similarity >= 0.0 && args.shard_index == 1) {
-    std::vector<SimilarityInput> inputs;
-    for (const Submission& s : all)
-      if (s.problem.empty()) inputs.push_back({s.id, s.dir});
-    similarity(config, inputs, out, args.similarity);
+    similarity(config, similarity_inputs(all), out, args.similarity);
   }
   return status;
 }

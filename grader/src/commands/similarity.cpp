@@ -1,6 +1,7 @@
 #include "similarity.hpp"
 
 #include <iostream>
+#include <set>
 #include <stdexcept>
 
 #include "commands.hpp"
@@ -20,17 +21,25 @@ int similarity(const GradeConfig& config, const std::vector<SimilarityInput>& in
   return 0;
 }
 
+std::vector<SimilarityInput> similarity_inputs(const std::vector<Submission>& subs) {
+  // One entry per folder: the members of a Gradescope group share one (it is not a copy).
+  std::vector<SimilarityInput> inputs;
+  std::set<fs::path> seen;
+  for (const Submission& s : subs)
+    if (s.problem.empty() && seen.insert(s.dir).second) inputs.push_back({s.id, s.dir});
+  return inputs;
+}
+
 int similarity_command(const GradeConfig& config, const std::string& dir, const std::string& out,
                        double threshold) {
   // The same submissions, with the same ids, as batch grades (a Gradescope export, Classroom
   // clones, a folder of folders).
-  std::vector<SimilarityInput> inputs;
-  for (const Submission& s : find_submissions(dir))
-    if (s.problem.empty()) inputs.push_back({s.id, s.dir});
+  const std::vector<SimilarityInput> inputs =
+      similarity_inputs(find_submissions(dir, fs::path(out) / ".submissions"));
   if (inputs.size() < 2)
     throw std::runtime_error(dir + ": holds " + std::to_string(inputs.size()) +
-                             " submission folders; comparing needs at least two (one folder "
-                             "per student)");
+                             " submissions that can be read; comparing needs at least two (one "
+                             "folder per student)");
   return similarity(config, inputs, out, threshold);
 }
 
