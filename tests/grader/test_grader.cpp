@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,8 +14,10 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <toml++/toml.h>
 #include <nlohmann/json.hpp>
 
 #include "shell_quote.hpp"
@@ -632,6 +635,116 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
   for (const char* who : {"alice", "bob", "carol", "dave"})
     EXPECT_NE(r.out.find("] " + std::string(who) + ": "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find('\r'), std::string::npos) << "carriage returns in a log";
+}
+
+// The class report (class.json, class.md, class.html) of a small class: the reference, the stubs,
+// two of the grader's mutants, a file that does not compile (its message quotes HTML), a function
+// that never returns and a missing task file (in a folder whose name is HTML).
+TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
+  const fs::path dir = kWork / "class-report";
+  fs::remove_all(dir);
+  const fs::path in = dir / "in";
+  const std::vector<std::string> files = {"springs.cpp", "forces.cpp", "collision.cpp",
+                                          "contact.cpp", "integrators.cpp"};
+  auto reference = [&](const std::string& id) {
+    fs::create_directories(in / id);
+    for (const std::string& f : files) fs::copy_file(kSource / "solutions" / "a1" / f, in / id / f);
+    return in / id;
+  };
+  // A mutant applied as `jelly-grade mutants` applies it (each [[replace]] once).
+  auto mutant = [&](const std::string& id, const std::string& name) {
+    const toml::table t = toml::parse_file(
+        (kSource / "assignments" / "a1" / "grader" / "mutants" / (name + ".toml")).string());
+    const std::string file = t["file"].value_or(std::string());
+    const fs::path path = reference(id) / file;
+    std::string text = read_text(path);
+    for (const toml::node& n : *t["replace"].as_array()) {
+      const std::string find = (*n.as_table())["find"].value_or(std::string());
+      const auto at = text.find(find);
+      ASSERT_NE(at, std::string::npos) << name << " no longer applies";
+      text.replace(at, find.size(), (*n.as_table())["with"].value_or(std::string()));
+    }
+    std::ofstream(path, std::ios::binary) << text;
+  };
+  const std::string html_id = "f-<b onclick=x>missing";  // no slash: one folder
+  reference("a-reference");
+  mutant("b-mutant-t1", "t1-duplicates");
+  mutant("c-mutant-t13", "t13-k4-from-k2");
+  std::ofstream(reference("d-no-compile") / "forces.cpp", std::ios::app)
+      << "\n#error <script>alert(\"class\")</script>\n";
+  fs::copy_file(kHostile / "infinite_loop" / "integrators.cpp",
+                reference("e-loop") / "integrators.cpp", fs::copy_options::overwrite_existing);
+  fs::remove(reference(html_id) / "contact.cpp");
+  fs::copy(kSource / "assignments" / "a1", in / "z-stubs", fs::copy_options::recursive);
+  const Cmd r = run("batch " + in.string() + " --assignment a1 --out " + (dir / "out").string() +
+                    " --jobs 2 --timeout 3 --no-frames");
+  ASSERT_EQ(r.status, 0) << r.out;
+
+  const Json c = read_json(dir / "out" / "class.json");
+  EXPECT_EQ(c["students"], 7);
+  EXPECT_EQ(c["graded"], 7);
+  EXPECT_EQ(c["score"]["full_marks"], 1) << "the reference";
+  EXPECT_EQ(c["score"]["histogram"][0]["count"], 1) << "the stubs";
+  auto failed_case = [&](const std::string& task, const std::string& id) -> Json {
+    for (const Json& t : c["tasks"])
+      if (t["id"] == task)
+        for (const Json& fc : t["failed_cases"])
+          if (fc["case"] == id) return fc;
+    return Json();
+  };
+  auto first_failure = [&](const std::string& student, const std::string& id) {
+    const Json rec = read_json(dir / "out" / "students" / student / "record.json");
+    for (const Json& k : rec["cases"])
+      if (k["id"] == id && !k["failures"].empty()) return k["failures"][0].get<std::string>();
+    return std::string("(no failure of ") + id + ")";
+  };
+  // The mutants' cases: failed by the mutant and the stubs; the example is the mutant (first by
+  // id) with its first failure message, as its own record has it.
+  for (const auto& [task, id, student] : std::vector<std::array<std::string, 3>>{
+           {"A1.T1", "a1.t1.structural.n3", "b-mutant-t1"},
+           {"A1.T13", "a1.t13.rk4.single_step", "c-mutant-t13"}}) {
+    const Json fc = failed_case(task, id);
+    ASSERT_TRUE(fc.is_object()) << id << " not among " << task << "'s failed cases:\n" << c.dump(1);
+    EXPECT_EQ(fc["students"], 2) << id << ": the mutant and the stubs";
+    EXPECT_EQ(fc["example"]["student"], student);
+    EXPECT_EQ(fc["example"]["message"], first_failure(student, id)) << id;
+  }
+  // A case only the stubs fail (k4 from k2 keeps the energy test): counted once.
+  EXPECT_EQ(failed_case("A1.T13", "a1.t13.rk4.energy")["students"], 1);
+  // A task every compiled student but the stubs passes (the loop times out, not fails).
+  EXPECT_EQ(failed_case("A1.T5", "a1.t5.damper_force.values")["example"]["student"], "z-stubs");
+
+  ASSERT_EQ(c["did_not_compile"].size(), 1u) << c["did_not_compile"].dump(1);
+  EXPECT_EQ(c["did_not_compile"][0]["student"], "d-no-compile");
+  EXPECT_EQ(c["did_not_compile"][0]["file"], "forces.cpp");
+  EXPECT_NE(c["did_not_compile"][0]["message"].get<std::string>().find("<script>"),
+            std::string::npos)
+      << "the compiler's error line: " << c["did_not_compile"][0].dump();
+  ASSERT_EQ(c["timed_out_or_crashed"].size(), 1u) << c["timed_out_or_crashed"].dump(1);
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["student"], "e-loop");
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["abnormal"], "timed out");
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["first_case"].get<std::string>().rfind("a1.t13.", 0), 0u);
+  EXPECT_TRUE(c["could_not_grade"].empty());
+  ASSERT_EQ(c["missing_files"]["students"].size(), 1u);
+  EXPECT_EQ(c["missing_files"]["students"][0]["student"], html_id);
+  EXPECT_EQ(c["missing_files"]["students"][0]["files"], Json::array({"contact.cpp"}));
+
+  const std::string md = read_text(dir / "out" / "class.md");
+  for (const char* section :
+       {"# What the class got wrong: a1", "## Scores", "## Tasks", "## What failed, task by task",
+        "### A1.T13", "## Did not compile", "- d-no-compile: forces.cpp did not compile",
+        "## Timed out or crashed", "- e-loop: timed out in ", "## Could not be graded\n\nNone.",
+        "## Missing task files", "**Missing task files: 1 student** (contact.cpp 1)"})
+    EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
+  const std::string html = read_text(dir / "out" / "class.html");
+  EXPECT_EQ(html.find("<script"), std::string::npos) << "the compile error's text is escaped";
+  EXPECT_EQ(html.find("<b onclick"), std::string::npos) << "the folder name is escaped";
+  EXPECT_NE(html.find("f-&lt;b onclick=x&gt;missing"), std::string::npos);
+  EXPECT_NE(md.find("- f-&lt;b onclick=x>missing: contact.cpp"), std::string::npos) << md;
+  EXPECT_NE(html.find("&lt;script&gt;alert(&quot;class&quot;)&lt;/script&gt;"), std::string::npos);
+  // No path of this machine in the class files (a merge of shards elsewhere gives the same bytes).
+  for (const std::string& text : {html, md, read_text(dir / "out" / "class.json")})
+    EXPECT_EQ(text.find(kWork.string()), std::string::npos);
 }
 
 TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
