@@ -305,6 +305,10 @@ std::string class_markdown(const Json& s) {
   o << "\n## Tasks\n\n| Task | Points | Mean | Median | Full marks |\n|---|---:|---:|---:|---:|\n";
   for (const Json& t : s["tasks"]) {
     const Json& d = t["scores"];
+    if (num(d, "max_score") <= 0.0) {
+      o << "| " << markdown_inline(task_name(t)) << " | 0.00 | | | no points |\n";
+      continue;
+    }
     o << "| " << markdown_inline(task_name(t)) << " | " << pts(num(d, "max_score")) << " | "
       << pts(num(d, "mean")) << " | " << pts(num(d, "median")) << " | " << d.value("full_marks", 0)
       << " (" << percent(num(d, "full_marks_share")) << ") |\n";
@@ -425,7 +429,7 @@ body{font-family:"DejaVu Sans",Arial,sans-serif;font-size:24px;line-height:1.35;
 h1{font-size:46px;margin:0 0 8px}h2{font-size:36px;margin:40px 0 12px;border-bottom:3px solid #ccc}
 h3{font-size:28px;margin:28px 0 8px}.note{color:#a33;font-style:italic}
 table{border-collapse:collapse;width:100%}td,th{padding:6px 12px;border-bottom:1px solid #ddd;text-align:left;vertical-align:top}
-th{font-size:20px;color:#555}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+th{font-size:20px;color:#555}td.fm{white-space:nowrap}.dim{color:#777;font-style:italic}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 .bar{display:inline-block;width:220px;height:22px;background:#eee;vertical-align:middle;margin-right:10px}
 .bar span{display:block;height:100%}
 .big{font-size:30px}.msg{font-family:"DejaVu Sans Mono",monospace;font-size:19px;white-space:pre-wrap;overflow-wrap:anywhere;color:#333}
@@ -460,8 +464,13 @@ std::string class_html(const Json& s) {
   for (const Json& t : s["tasks"]) {
     const Json& d = t["scores"];
     o << "<tr><td>" << h(task_name(t)) << "</td><td class=\"n\">" << pts(num(d, "max_score"))
-      << "</td><td class=\"n\">" << pts(num(d, "mean")) << "</td><td class=\"n\">"
-      << pts(num(d, "median")) << "</td><td class=\"n\">"
+      << "</td>";
+    if (num(d, "max_score") <= 0.0) {  // a task of no points (A1.COURSE): nothing to compare
+      o << "<td colspan=\"4\" class=\"dim\">no points: its tests are listed below</td></tr>\n";
+      continue;
+    }
+    o << "<td class=\"n\">" << pts(num(d, "mean")) << "</td><td class=\"n\">"
+      << pts(num(d, "median")) << "</td><td class=\"fm\">"
       << css_bar(num(d, "full_marks_share"), "#2e8b57") << percent(num(d, "full_marks_share"))
       << "</td><td>" << svg_histogram(d["histogram"], 220, 44, false) << "</td></tr>\n";
   }

@@ -189,7 +189,8 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
                     : "")
             << (todo.size() < subs.size() ? ", kept " + std::to_string(subs.size() - todo.size())
                                           : "")
-            << " into " << out.string() << " (scores.csv; each student's reports in students/)\n";
+            << " into " << out.string()
+            << " (scores.csv, the class report class.html; each student's reports in students/)\n";
   return status;
 }
 
