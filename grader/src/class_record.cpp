@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "class_report.hpp"
 #include "commands/common.hpp"
 #include "csv.hpp"
 #include "files.hpp"
@@ -195,6 +196,10 @@ std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
 void write_class_files(const fs::path& out, const std::vector<Json>& records,
                        const CaseBook& book) {
   write_file_atomically(out / "scores.csv", scores_csv(records, book));
+  const Json summary = class_summary(records, book);
+  write_file_atomically(out / "class.json", summary.dump(1) + "\n");
+  write_file_atomically(out / "class.md", class_markdown(summary));
+  write_file_atomically(out / "class.html", class_html(summary));
 }
 
 }  // namespace jelly::grade

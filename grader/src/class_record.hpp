@@ -1,6 +1,6 @@
 // One student's result in a class (students/<id>/record.json) and the class files made from the
-// records alone (scores.csv): a batch, a resumed batch, and the merge of sharded batches all write
-// the class files from the same records, so they write the same bytes.
+// records alone (scores.csv, the class report class.*): a batch, a resumed batch, and the merge of
+// sharded batches all write the class files from the same records, so they write the same bytes.
 #pragma once
 
 #include <filesystem>
@@ -40,7 +40,8 @@ Json read_record(const std::filesystem::path& file);
 /// task worth 0 that is no bonus), name, email, missing_files, error.
 std::string scores_csv(const std::vector<Json>& records, const CaseBook& book);
 
-/// Writes the class files (scores.csv) into `out` from `records`, each file whole or not at all.
+/// Writes the class files into `out` from `records`, each file whole or not at all: scores.csv and
+/// the class report (class.json, class.md, class.html: class_report.hpp).
 void write_class_files(const std::filesystem::path& out, const std::vector<Json>& records,
                        const CaseBook& book);
 

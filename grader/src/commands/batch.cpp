@@ -203,7 +203,8 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
                     : "")
             << (todo.size() < subs.size() ? ", kept " + std::to_string(subs.size() - todo.size())
                                           : "")
-            << " into " << out.string() << " (scores.csv; each student's reports in students/)\n";
+            << " into " << out.string()
+            << " (scores.csv, the class report class.html; each student's reports in students/)\n";
   // --similarity: who copied, over the whole class (every shard has the same class; the first
   // writes the report, and merge takes it from there).
   if (args.similarity >= 0.0 && args.shard_index == 1) {
