@@ -1003,385 +1003,382 @@ TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
   std::set<std::string> ids;
   for (const auto& [id, row] : rows2) ids.insert(id);
   EXPECT_EQ(ids, (std::set<std::string>{"mary-ann", "mary-jane", "zed"})) << r2.out;
+}
 
-  // The class report (class.json, class.md, class.html) of a small class: the reference, the stubs,
-  // two of the grader's mutants, a file that does not compile (its message quotes HTML), a function
-  // that never returns and a missing task file (in a folder whose name is HTML).
-  TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
-    const fs::path dir = kWork / "class-report";
-    fs::remove_all(dir);
-    const fs::path in = dir / "in";
-    const std::vector<std::string> files = {"springs.cpp", "forces.cpp", "collision.cpp",
-                                            "contact.cpp", "integrators.cpp"};
-    auto reference = [&](const std::string& id) {
-      fs::create_directories(in / id);
-      for (const std::string& f : files)
-        fs::copy_file(kSource / "solutions" / "a1" / f, in / id / f);
-      return in / id;
-    };
-    // A mutant applied as `jelly-grade mutants` applies it (each [[replace]] once).
-    auto mutant = [&](const std::string& id, const std::string& name) {
-      const toml::table t = toml::parse_file(
-          (kSource / "assignments" / "a1" / "grader" / "mutants" / (name + ".toml")).string());
-      const std::string file = t["file"].value_or(std::string());
-      const fs::path path = reference(id) / file;
-      std::string text = read_text(path);
-      for (const toml::node& n : *t["replace"].as_array()) {
-        const std::string find = (*n.as_table())["find"].value_or(std::string());
-        const auto at = text.find(find);
-        ASSERT_NE(at, std::string::npos) << name << " no longer applies";
-        text.replace(at, find.size(), (*n.as_table())["with"].value_or(std::string()));
-      }
-      std::ofstream(path, std::ios::binary) << text;
-    };
-    const std::string html_id = "f-<b onclick=x>missing";  // no slash: one folder
-    reference("a-reference");
-    mutant("b-mutant-t1", "t1-duplicates");
-    mutant("c-mutant-t13", "t13-k4-from-k2");
-    std::ofstream(reference("d-no-compile") / "forces.cpp", std::ios::app)
-        << "\n#error <script>alert(\"class\")</script>\n";
-    fs::copy_file(kHostile / "infinite_loop" / "integrators.cpp",
-                  reference("e-loop") / "integrators.cpp", fs::copy_options::overwrite_existing);
-    fs::remove(reference(html_id) / "contact.cpp");
-    fs::copy(kSource / "assignments" / "a1", in / "z-stubs", fs::copy_options::recursive);
-    const Cmd r = run("batch " + in.string() + " --assignment a1 --out " + (dir / "out").string() +
-                      " --jobs 2 --timeout 3 --no-frames");
-    ASSERT_EQ(r.status, 0) << r.out;
-
-    const Json c = read_json(dir / "out" / "class.json");
-    EXPECT_EQ(c["students"], 7);
-    EXPECT_EQ(c["graded"], 7);
-    EXPECT_EQ(c["score"]["full_marks"], 1) << "the reference";
-    EXPECT_EQ(c["score"]["histogram"][0]["count"], 1) << "the stubs";
-    auto failed_case = [&](const std::string& task, const std::string& id) -> Json {
-      for (const Json& t : c["tasks"])
-        if (t["id"] == task)
-          for (const Json& fc : t["failed_cases"])
-            if (fc["case"] == id) return fc;
-      return Json();
-    };
-    auto first_failure = [&](const std::string& student, const std::string& id) {
-      const Json rec = read_json(dir / "out" / "students" / student / "record.json");
-      for (const Json& k : rec["cases"])
-        if (k["id"] == id && !k["failures"].empty()) return k["failures"][0].get<std::string>();
-      return std::string("(no failure of ") + id + ")";
-    };
-    // The mutants' cases: failed by the mutant and the stubs; the example is the mutant (first by
-    // id) with its first failure message, as its own record has it.
-    for (const auto& [task, id, student] : std::vector<std::array<std::string, 3>>{
-             {"A1.T1", "a1.t1.structural.n3", "b-mutant-t1"},
-             {"A1.T13", "a1.t13.rk4.single_step", "c-mutant-t13"}}) {
-      const Json fc = failed_case(task, id);
-      ASSERT_TRUE(fc.is_object()) << id << " not among " << task << "'s failed cases:\n"
-                                  << c.dump(1);
-      EXPECT_EQ(fc["students"], 2) << id << ": the mutant and the stubs";
-      EXPECT_EQ(fc["example"]["student"], student);
-      EXPECT_EQ(fc["example"]["message"], first_failure(student, id)) << id;
+// The class report (class.json, class.md, class.html) of a small class: the reference, the stubs,
+// two of the grader's mutants, a file that does not compile (its message quotes HTML), a function
+// that never returns and a missing task file (in a folder whose name is HTML).
+TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
+  const fs::path dir = kWork / "class-report";
+  fs::remove_all(dir);
+  const fs::path in = dir / "in";
+  const std::vector<std::string> files = {"springs.cpp", "forces.cpp", "collision.cpp",
+                                          "contact.cpp", "integrators.cpp"};
+  auto reference = [&](const std::string& id) {
+    fs::create_directories(in / id);
+    for (const std::string& f : files) fs::copy_file(kSource / "solutions" / "a1" / f, in / id / f);
+    return in / id;
+  };
+  // A mutant applied as `jelly-grade mutants` applies it (each [[replace]] once).
+  auto mutant = [&](const std::string& id, const std::string& name) {
+    const toml::table t = toml::parse_file(
+        (kSource / "assignments" / "a1" / "grader" / "mutants" / (name + ".toml")).string());
+    const std::string file = t["file"].value_or(std::string());
+    const fs::path path = reference(id) / file;
+    std::string text = read_text(path);
+    for (const toml::node& n : *t["replace"].as_array()) {
+      const std::string find = (*n.as_table())["find"].value_or(std::string());
+      const auto at = text.find(find);
+      ASSERT_NE(at, std::string::npos) << name << " no longer applies";
+      text.replace(at, find.size(), (*n.as_table())["with"].value_or(std::string()));
     }
-    // A case only the stubs fail (k4 from k2 keeps the energy test): counted once.
-    EXPECT_EQ(failed_case("A1.T13", "a1.t13.rk4.energy")["students"], 1);
-    // A task every compiled student but the stubs passes (the loop times out, not fails).
-    EXPECT_EQ(failed_case("A1.T5", "a1.t5.damper_force.values")["example"]["student"], "z-stubs");
+    std::ofstream(path, std::ios::binary) << text;
+  };
+  const std::string html_id = "f-<b onclick=x>&missing";  // no slash: one folder
+  // Its id: the reader makes ids safe as folder names (< and > go), '&' stays for the escaping.
+  const std::string safe_id = "f-_b onclick=x_&missing";
+  reference("a-reference");
+  mutant("b-mutant-t1", "t1-duplicates");
+  mutant("c-mutant-t13", "t13-k4-from-k2");
+  std::ofstream(reference("d-no-compile") / "forces.cpp", std::ios::app)
+      << "\n#error <script>alert(\"class\")</script>\n";
+  fs::copy_file(kHostile / "infinite_loop" / "integrators.cpp",
+                reference("e-loop") / "integrators.cpp", fs::copy_options::overwrite_existing);
+  fs::remove(reference(html_id) / "contact.cpp");
+  fs::copy(kSource / "assignments" / "a1", in / "z-stubs", fs::copy_options::recursive);
+  const Cmd r = run("batch " + in.string() + " --assignment a1 --out " + (dir / "out").string() +
+                    " --jobs 2 --timeout 3 --no-frames");
+  ASSERT_EQ(r.status, 0) << r.out;
 
-    ASSERT_EQ(c["did_not_compile"].size(), 1u) << c["did_not_compile"].dump(1);
-    EXPECT_EQ(c["did_not_compile"][0]["student"], "d-no-compile");
-    EXPECT_EQ(c["did_not_compile"][0]["file"], "forces.cpp");
-    EXPECT_NE(c["did_not_compile"][0]["message"].get<std::string>().find("<script>"),
-              std::string::npos)
-        << "the compiler's error line: " << c["did_not_compile"][0].dump();
-    ASSERT_EQ(c["timed_out_or_crashed"].size(), 1u) << c["timed_out_or_crashed"].dump(1);
-    EXPECT_EQ(c["timed_out_or_crashed"][0]["student"], "e-loop");
-    EXPECT_EQ(c["timed_out_or_crashed"][0]["abnormal"], "timed out");
-    EXPECT_EQ(c["timed_out_or_crashed"][0]["first_case"].get<std::string>().rfind("a1.t13.", 0),
-              0u);
-    EXPECT_TRUE(c["could_not_grade"].empty());
-    ASSERT_EQ(c["missing_files"]["students"].size(), 1u);
-    EXPECT_EQ(c["missing_files"]["students"][0]["student"], html_id);
-    EXPECT_EQ(c["missing_files"]["students"][0]["files"], Json::array({"contact.cpp"}));
-
-    const std::string md = read_text(dir / "out" / "class.md");
-    for (const char* section :
-         {"# What the class got wrong: a1", "## Scores", "## Tasks", "## What failed, task by task",
-          "### A1.T13", "## Did not compile", "- d-no-compile: forces.cpp did not compile",
-          "## Timed out or crashed", "- e-loop: timed out in ", "## Could not be graded\n\nNone.",
-          "## Missing task files", "**Missing task files: 1 student** (contact.cpp 1)"})
-      EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
-    const std::string html = read_text(dir / "out" / "class.html");
-    EXPECT_EQ(html.find("<script"), std::string::npos) << "the compile error's text is escaped";
-    EXPECT_EQ(html.find("<b onclick"), std::string::npos) << "the folder name is escaped";
-    EXPECT_NE(html.find("f-&lt;b onclick=x&gt;missing"), std::string::npos);
-    EXPECT_NE(md.find("- f-&lt;b onclick=x>missing: contact.cpp"), std::string::npos) << md;
-    EXPECT_NE(html.find("&lt;script&gt;alert(&quot;class&quot;)&lt;/script&gt;"),
-              std::string::npos);
-    // No path of this machine in the class files (a merge of shards elsewhere gives the same
-    // bytes).
-    for (const std::string& text : {html, md, read_text(dir / "out" / "class.json")})
-      EXPECT_EQ(text.find(kWork.string()), std::string::npos);
+  const Json c = read_json(dir / "out" / "class.json");
+  EXPECT_EQ(c["students"], 7);
+  EXPECT_EQ(c["graded"], 7);
+  EXPECT_EQ(c["score"]["full_marks"], 1) << "the reference";
+  EXPECT_EQ(c["score"]["histogram"][0]["count"], 1) << "the stubs";
+  auto failed_case = [&](const std::string& task, const std::string& id) -> Json {
+    for (const Json& t : c["tasks"])
+      if (t["id"] == task)
+        for (const Json& fc : t["failed_cases"])
+          if (fc["case"] == id) return fc;
+    return Json();
+  };
+  auto first_failure = [&](const std::string& student, const std::string& id) {
+    const Json rec = read_json(dir / "out" / "students" / student / "record.json");
+    for (const Json& k : rec["cases"])
+      if (k["id"] == id && !k["failures"].empty()) return k["failures"][0].get<std::string>();
+    return std::string("(no failure of ") + id + ")";
+  };
+  // The mutants' cases: failed by the mutant and the stubs; the example is the mutant (first by
+  // id) with its first failure message, as its own record has it.
+  for (const auto& [task, id, student] : std::vector<std::array<std::string, 3>>{
+           {"A1.T1", "a1.t1.structural.n3", "b-mutant-t1"},
+           {"A1.T13", "a1.t13.rk4.single_step", "c-mutant-t13"}}) {
+    const Json fc = failed_case(task, id);
+    ASSERT_TRUE(fc.is_object()) << id << " not among " << task << "'s failed cases:\n" << c.dump(1);
+    EXPECT_EQ(fc["students"], 2) << id << ": the mutant and the stubs";
+    EXPECT_EQ(fc["example"]["student"], student);
+    EXPECT_EQ(fc["example"]["message"], first_failure(student, id)) << id;
   }
+  // A case only the stubs fail (k4 from k2 keeps the energy test): counted once.
+  EXPECT_EQ(failed_case("A1.T13", "a1.t13.rk4.energy")["students"], 1);
+  // A task every compiled student but the stubs passes (the loop times out, not fails).
+  EXPECT_EQ(failed_case("A1.T5", "a1.t5.damper_force.values")["example"]["student"], "z-stubs");
 
-  TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
-    const fs::path zip = kWork / "autograder.zip";
-    const Cmd r = run("gradescope-zip " + zip.string() + " --assignment a1");
-    ASSERT_EQ(r.status, 0) << r.out;
-    FILE* p = popen(("unzip -Z1 " + jelly::testing::shell_quoted(zip.string())).c_str(), "r");
-    std::string list;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) list.append(buf, n);
-    pclose(p);
-    // One folder: Gradescope extracts the zip into /autograder/source, where setup.sh runs
-    // `cmake -S .`, so the framework's CMakeLists.txt is at the top beside the two scripts.
-    list.insert(0, "\n");  // every entry is "\n" + path + "\n"
-    EXPECT_NE(list.find("\nsetup.sh\n"), std::string::npos) << list;
-    EXPECT_NE(list.find("\nrun_autograder\n"), std::string::npos);
-    EXPECT_NE(list.find("\nCMakeLists.txt\n"), std::string::npos);
-    EXPECT_NE(list.find("\ngrader/data/a1/hidden/"), std::string::npos);
-    EXPECT_NE(list.find("\nassignments/a1/assignment.toml\n"), std::string::npos);
-    EXPECT_NE(list.find("\nassignments/a1/grader/cases/"), std::string::npos);
-    EXPECT_NE(list.find("\nthird_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
-    EXPECT_EQ(list.find("\nsource/"), std::string::npos) << "a source/ folder inside the zip";
-    EXPECT_EQ(list.find("solutions/"), std::string::npos);
-    EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
-    // The mutants quote the reference: no assignment's may ship.
-    EXPECT_EQ(list.find("grader/mutants/"), std::string::npos) << list;
-  }
+  ASSERT_EQ(c["did_not_compile"].size(), 1u) << c["did_not_compile"].dump(1);
+  EXPECT_EQ(c["did_not_compile"][0]["student"], "d-no-compile");
+  EXPECT_EQ(c["did_not_compile"][0]["file"], "forces.cpp");
+  EXPECT_NE(c["did_not_compile"][0]["message"].get<std::string>().find("<script>"),
+            std::string::npos)
+      << "the compiler's error line: " << c["did_not_compile"][0].dump();
+  ASSERT_EQ(c["timed_out_or_crashed"].size(), 1u) << c["timed_out_or_crashed"].dump(1);
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["student"], "e-loop");
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["abnormal"], "timed out");
+  EXPECT_EQ(c["timed_out_or_crashed"][0]["first_case"].get<std::string>().rfind("a1.t13.", 0), 0u);
+  EXPECT_TRUE(c["could_not_grade"].empty());
+  ASSERT_EQ(c["missing_files"]["students"].size(), 1u);
+  EXPECT_EQ(c["missing_files"]["students"][0]["student"], safe_id);
+  EXPECT_EQ(c["missing_files"]["students"][0]["files"], Json::array({"contact.cpp"}));
 
-  // A1.T1 with one spring missing and one extra (issue 12): the failure names both by their grid
-  // coordinates, and the terminal's "(N more: --verbose, ...)" hint is true: with --verbose every
-  // failure shows and the hint is gone (on a compiled submission and on a prebuilt runner, the
-  // IDE's selfcheck target, whose report is the same line for line).
-  TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) {
-    const fs::path sub = submission("spring_names");
-    const fs::path file = sub / "nested" / "src" / "springs.cpp";
-    std::string text = read_text(file);
-    const std::string call = "add_forward_springs(cube, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, out);";
-    const auto at = text.find(call);
-    ASSERT_NE(at, std::string::npos) << "solutions/a1/springs.cpp changed: update this test";
-    text.insert(
-        at + call.size(),
-        "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
-        "  out.push_back(Spring{cube.index(0, 0, 0), cube.index(1, 1, 0),\n"
-        "                       (cube.position(1, 1, 0) - cube.position(0, 0, 0)).norm()});\n");
-    std::ofstream(file, std::ios::binary) << text;
-    const fs::path out = kWork / "out" / "spring_names";
-    fs::remove_all(out);
-    setenv("JELLY_GRADE_KEEP_WORK", "1", 1);
-    const Cmd plain = run("grade " + sub.string() +
-                          " --visibility public --format terminal --out " + out.string());
-    unsetenv("JELLY_GRADE_KEEP_WORK");
-    ASSERT_EQ(plain.status, 0) << plain.out;
-    // The task's first failed test (the 2×2×2 cube) is expanded: its first two reasons name the
-    // springs, the hint counts the rest; the next failed test (3×3×3) is one line.
-    const std::string n2 = "[a1.t1.structural.n2]", n3 = "[a1.t1.structural.n3]";
-    ASSERT_NE(plain.out.find(n2), std::string::npos) << plain.out;
-    const std::string first =
-        plain.out.substr(plain.out.find(n2), plain.out.find(n3) - plain.out.find(n2));
-    EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); missing: (0,0,0)–(1,0,0)\n"),
-              std::string::npos)
-        << plain.out;
-    EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
-              std::string::npos)
-        << plain.out;
-    EXPECT_NE(first.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos)
-        << plain.out;
-    EXPECT_NE(plain.out.find(n3 + "\n           ✗ "), std::string::npos)
-        << "the second failed test is one line:\n"
-        << plain.out;
-    EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n"
-                                                << plain.out;
+  const std::string md = read_text(dir / "out" / "class.md");
+  for (const char* section :
+       {"# What the class got wrong: a1", "## Scores", "## Tasks", "## What failed, task by task",
+        "### A1.T13", "## Did not compile", "- d-no-compile: forces.cpp did not compile",
+        "## Timed out or crashed", "- e-loop: timed out in ", "## Could not be graded\n\nNone.",
+        "## Missing task files", "**Missing task files: 1 student** (contact.cpp 1)"})
+    EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
+  const std::string html = read_text(dir / "out" / "class.html");
+  EXPECT_EQ(html.find("<script"), std::string::npos) << "the compile error's text is escaped";
+  EXPECT_EQ(html.find("<b onclick"), std::string::npos) << "the folder name is escaped";
+  EXPECT_NE(html.find("f-_b onclick=x_&amp;missing"), std::string::npos);
+  EXPECT_NE(md.find("- f-\\_b onclick=x\\_&amp;missing: contact.cpp"), std::string::npos) << md;
+  EXPECT_NE(html.find("&lt;script&gt;alert(&quot;class&quot;)&lt;/script&gt;"), std::string::npos);
+  // No path of this machine in the class files (a merge of shards elsewhere gives the same
+  // bytes).
+  for (const std::string& text : {html, md, read_text(dir / "out" / "class.json")})
+    EXPECT_EQ(text.find(kWork.string()), std::string::npos);
+}
 
-    fs::path runner;
-    for (const auto& e : fs::recursive_directory_iterator(out / ".work"))
-      if (e.path().filename() == "runner" && e.is_regular_file()) runner = e.path();
-    ASSERT_FALSE(runner.empty()) << "no built runner kept under " << out / ".work";
-    const std::string args = "grade " + sub.string() +
-                             " --visibility public --format terminal --runner " + runner.string();
-    const Cmd prebuilt = run(args + " --out " + (out / "prebuilt").string());
-    EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"),
-              std::string::npos)
-        << prebuilt.out;
-    const Cmd verbose = run(args + " --verbose --out " + (out / "verbose").string());
-    EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
-    EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
-    EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
-    // --verbose expands every failed test: the 3×3×3 cube's reasons too.
-    const std::string all = verbose.out.substr(verbose.out.find(n3));
-    EXPECT_NE(all.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); "
-                       "missing: (0,0,0)–(1,0,0)\n"),
-              std::string::npos)
-        << verbose.out;
-  }
+TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {
+  const fs::path zip = kWork / "autograder.zip";
+  const Cmd r = run("gradescope-zip " + zip.string() + " --assignment a1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  FILE* p = popen(("unzip -Z1 " + jelly::testing::shell_quoted(zip.string())).c_str(), "r");
+  std::string list;
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) list.append(buf, n);
+  pclose(p);
+  // One folder: Gradescope extracts the zip into /autograder/source, where setup.sh runs
+  // `cmake -S .`, so the framework's CMakeLists.txt is at the top beside the two scripts.
+  list.insert(0, "\n");  // every entry is "\n" + path + "\n"
+  EXPECT_NE(list.find("\nsetup.sh\n"), std::string::npos) << list;
+  EXPECT_NE(list.find("\nrun_autograder\n"), std::string::npos);
+  EXPECT_NE(list.find("\nCMakeLists.txt\n"), std::string::npos);
+  EXPECT_NE(list.find("\ngrader/data/a1/hidden/"), std::string::npos);
+  EXPECT_NE(list.find("\nassignments/a1/assignment.toml\n"), std::string::npos);
+  EXPECT_NE(list.find("\nassignments/a1/grader/cases/"), std::string::npos);
+  EXPECT_NE(list.find("\nthird_party/cli11/include/CLI/CLI.hpp\n"), std::string::npos);
+  EXPECT_EQ(list.find("\nsource/"), std::string::npos) << "a source/ folder inside the zip";
+  EXPECT_EQ(list.find("solutions/"), std::string::npos);
+  EXPECT_EQ(list.find("grader/tests/"), std::string::npos);
+  // The mutants quote the reference: no assignment's may ship.
+  EXPECT_EQ(list.find("grader/mutants/"), std::string::npos) << list;
+}
 
-  // ---- --assignment: which assignment a command works on (grade-config.json's "assignments") ----
-  namespace {
+// A1.T1 with one spring missing and one extra (issue 12): the failure names both by their grid
+// coordinates, and the terminal's "(N more: --verbose, ...)" hint is true: with --verbose every
+// failure shows and the hint is gone (on a compiled submission and on a prebuilt runner, the
+// IDE's selfcheck target, whose report is the same line for line).
+TEST(Grader, SpringFailuresNameTheMissingAndExtraSpringsAndVerboseShowsTheRest) {
+  const fs::path sub = submission("spring_names");
+  const fs::path file = sub / "nested" / "src" / "springs.cpp";
+  std::string text = read_text(file);
+  const std::string call = "add_forward_springs(cube, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, out);";
+  const auto at = text.find(call);
+  ASSERT_NE(at, std::string::npos) << "solutions/a1/springs.cpp changed: update this test";
+  text.insert(
+      at + call.size(),
+      "\n  out.erase(out.begin());  // the spring (0,0,0)-(1,0,0)\n"
+      "  out.push_back(Spring{cube.index(0, 0, 0), cube.index(1, 1, 0),\n"
+      "                       (cube.position(1, 1, 0) - cube.position(0, 0, 0)).norm()});\n");
+  std::ofstream(file, std::ios::binary) << text;
+  const fs::path out = kWork / "out" / "spring_names";
+  fs::remove_all(out);
+  setenv("JELLY_GRADE_KEEP_WORK", "1", 1);
+  const Cmd plain =
+      run("grade " + sub.string() + " --visibility public --format terminal --out " + out.string());
+  unsetenv("JELLY_GRADE_KEEP_WORK");
+  ASSERT_EQ(plain.status, 0) << plain.out;
+  // The task's first failed test (the 2×2×2 cube) is expanded: its first two reasons name the
+  // springs, the hint counts the rest; the next failed test (3×3×3) is one line.
+  const std::string n2 = "[a1.t1.structural.n2]", n3 = "[a1.t1.structural.n3]";
+  ASSERT_NE(plain.out.find(n2), std::string::npos) << plain.out;
+  const std::string first =
+      plain.out.substr(plain.out.find(n2), plain.out.find(n3) - plain.out.find(n2));
+  EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); missing: (0,0,0)–(1,0,0)\n"),
+            std::string::npos)
+      << plain.out;
+  EXPECT_NE(first.find("allowed 0 by tolerance 'exact'); yours: (0,0,0)–(1,1,0)\n"),
+            std::string::npos)
+      << plain.out;
+  EXPECT_NE(first.find("(1 more: --verbose, or the selfcheck-verbose target)"), std::string::npos)
+      << plain.out;
+  EXPECT_NE(plain.out.find(n3 + "\n           ✗ "), std::string::npos)
+      << "the second failed test is one line:\n"
+      << plain.out;
+  EXPECT_EQ(count(plain.out, "pair_set"), 0u) << "the third failure shows only with --verbose:\n"
+                                              << plain.out;
 
-  // A copy of this build's grade-config.json with a second assignment "zz" beside a1 (a folder with
-  // a manifest of its own files; never graded here), or with `edit` applied to it.
-  fs::path config_with(const std::string& name, const std::function<void(Json&)>& edit) {
-    const fs::path dir = kWork / "configs" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    Json cfg = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
-    edit(cfg);
-    std::ofstream(dir / "grade-config.json") << cfg.dump(1);
-    return dir / "grade-config.json";
-  }
+  fs::path runner;
+  for (const auto& e : fs::recursive_directory_iterator(out / ".work"))
+    if (e.path().filename() == "runner" && e.is_regular_file()) runner = e.path();
+  ASSERT_FALSE(runner.empty()) << "no built runner kept under " << out / ".work";
+  const std::string args = "grade " + sub.string() +
+                           " --visibility public --format terminal --runner " + runner.string();
+  const Cmd prebuilt = run(args + " --out " + (out / "prebuilt").string());
+  EXPECT_NE(prebuilt.out.find("(1 more: --verbose, or the selfcheck-verbose target)"),
+            std::string::npos)
+      << prebuilt.out;
+  const Cmd verbose = run(args + " --verbose --out " + (out / "verbose").string());
+  EXPECT_EQ(verbose.out.find(" more: --verbose"), std::string::npos) << verbose.out;
+  EXPECT_NE(verbose.out.find("pair_set"), std::string::npos) << verbose.out;
+  EXPECT_NE(verbose.out.find("missing: (0,0,0)–(1,0,0)"), std::string::npos) << verbose.out;
+  // --verbose expands every failed test: the 3×3×3 cube's reasons too.
+  const std::string all = verbose.out.substr(verbose.out.find(n3));
+  EXPECT_NE(all.find("expected 18, got 17 (difference 1, allowed 0 by tolerance 'exact'); "
+                     "missing: (0,0,0)–(1,0,0)\n"),
+            std::string::npos)
+      << verbose.out;
+}
 
-  // The ids of this build's assignments (grade-config.json, sorted as the grader lists them), with
-  // `extra` among them: "a1, a2, zz". The build may link A1 alone or A1 with others.
-  std::string build_ids(const std::string& extra = "") {
-    std::vector<std::string> ids;
-    const Json cfg = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
-    for (const auto& item : cfg["assignments"].items()) ids.push_back(item.key());
-    if (!extra.empty()) ids.push_back(extra);
-    std::sort(ids.begin(), ids.end());
-    std::string out;
-    for (const std::string& id : ids) out += (out.empty() ? "" : ", ") + id;
-    return out;
-  }
+// ---- --assignment: which assignment a command works on (grade-config.json's "assignments") ----
+namespace {
 
-  fs::path two_assignments() {
-    return config_with("two", [](Json& cfg) {
-      const fs::path zz = kWork / "configs" / "zz-assignments" / "zz";
-      fs::create_directories(zz);
-      std::ofstream(zz / "assignment.toml")
-          << "id = \"zz\"\nnamespace = \"zz\"\ntitle = \"Another\"\nfiles = [\"thing.cpp\", "
-             "\"other.cpp\"]\n[grading]\nautograded_total = 10.0\n[[task]]\nid = \"ZZ.T1\"\n"
-             "title = \"Thing\"\nfile = \"thing.cpp\"\npoints = 10\n";
-      Json a = cfg["assignments"]["a1"];
-      a["dir"] = zz.string();
-      a["solutions_dir"] = (zz / "no-solutions").string();
-      a["reference_runner"] = "";
-      cfg["assignments"]["zz"] = a;
-    });
-  }
+// A copy of this build's grade-config.json with a second assignment "zz" beside a1 (a folder with
+// a manifest of its own files; never graded here), or with `edit` applied to it.
+fs::path config_with(const std::string& name, const std::function<void(Json&)>& edit) {
+  const fs::path dir = kWork / "configs" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Json cfg = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  edit(cfg);
+  std::ofstream(dir / "grade-config.json") << cfg.dump(1);
+  return dir / "grade-config.json";
+}
 
-  }  // namespace
+// The ids of this build's assignments (grade-config.json, sorted as the grader lists them), with
+// `extra` among them: "a1, a2, zz". The build may link A1 alone or A1 with others.
+std::string build_ids(const std::string& extra = "") {
+  std::vector<std::string> ids;
+  const Json cfg = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  for (const auto& item : cfg["assignments"].items()) ids.push_back(item.key());
+  if (!extra.empty()) ids.push_back(extra);
+  std::sort(ids.begin(), ids.end());
+  std::string out;
+  for (const std::string& id : ids) out += (out.empty() ? "" : ", ") + id;
+  return out;
+}
 
-  // An unknown id is a usage error naming the ones the build has.
-  TEST(GraderAssignment, UnknownIdNamesTheKnownOnesAndExitsTwo) {
-    const Cmd one = run("grade " + submission("unknown-id").string() + " --assignment a9 --out " +
-                        (kWork / "out" / "unknown-id").string());
-    EXPECT_EQ(one.status, 2) << one.out;
-    EXPECT_NE(one.out.find("--assignment a9: no such assignment in this build (it has: " +
-                           build_ids() + ")"),
-              std::string::npos)
-        << one.out;
-    EXPECT_FALSE(fs::exists(kWork / "out" / "unknown-id" / "results.json"));
-    const Cmd two = run("gradescope-zip " + (kWork / "unknown.zip").string() +
-                        " --assignment A1 --config " + two_assignments().string());
-    EXPECT_EQ(two.status, 2) << two.out;
-    EXPECT_NE(two.out.find("--assignment A1: no such assignment in this build (it has: " +
-                           build_ids("zz") + ")"),
-              std::string::npos)
-        << two.out;
-  }
+fs::path two_assignments() {
+  return config_with("two", [](Json& cfg) {
+    const fs::path zz = kWork / "configs" / "zz-assignments" / "zz";
+    fs::create_directories(zz);
+    std::ofstream(zz / "assignment.toml")
+        << "id = \"zz\"\nnamespace = \"zz\"\ntitle = \"Another\"\nfiles = [\"thing.cpp\", "
+           "\"other.cpp\"]\n[grading]\nautograded_total = 10.0\n[[task]]\nid = \"ZZ.T1\"\n"
+           "title = \"Thing\"\nfile = \"thing.cpp\"\npoints = 10\n";
+    Json a = cfg["assignments"]["a1"];
+    a["dir"] = zz.string();
+    a["solutions_dir"] = (zz / "no-solutions").string();
+    a["reference_runner"] = "";
+    cfg["assignments"]["zz"] = a;
+  });
+}
 
-  // With two assignments and no --assignment, a submission's files choose: A1's five files (in a
-  // nested folder, beside a README) are graded as a1, with full marks; files of neither are an
-  // error that says how to choose.
-  TEST(GraderAssignment, InferredFromTheSubmissionsFiles) {
-    const fs::path two = two_assignments();
-    const Json r = grade(submission("inferred"), "inferred", "--config " + two.string());
-    EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
-    EXPECT_NE(find_test(r, "a1.t4.spring_force.values"), nullptr);
-    const fs::path neither = kWork / "submissions" / "neither";
-    fs::remove_all(neither);
-    fs::create_directories(neither);
-    std::ofstream(neither / "main.cpp") << "int main() {}\n";
-    const Cmd n = run("grade " + neither.string() + " --config " + two.string() + " --out " +
-                      (kWork / "out" / "neither").string());
-    EXPECT_EQ(n.status, 2) << n.out;
-    EXPECT_NE(n.out.find("its files do not name exactly one assignment; say which with "
-                         "--assignment ID (this build has: " +
+}  // namespace
+
+// An unknown id is a usage error naming the ones the build has.
+TEST(GraderAssignment, UnknownIdNamesTheKnownOnesAndExitsTwo) {
+  const Cmd one = run("grade " + submission("unknown-id").string() + " --assignment a9 --out " +
+                      (kWork / "out" / "unknown-id").string());
+  EXPECT_EQ(one.status, 2) << one.out;
+  EXPECT_NE(one.out.find(
+                "--assignment a9: no such assignment in this build (it has: " + build_ids() + ")"),
+            std::string::npos)
+      << one.out;
+  EXPECT_FALSE(fs::exists(kWork / "out" / "unknown-id" / "results.json"));
+  const Cmd two = run("gradescope-zip " + (kWork / "unknown.zip").string() +
+                      " --assignment A1 --config " + two_assignments().string());
+  EXPECT_EQ(two.status, 2) << two.out;
+  EXPECT_NE(two.out.find("--assignment A1: no such assignment in this build (it has: " +
                          build_ids("zz") + ")"),
-              std::string::npos)
-        << n.out;
-    // A command without a submission cannot infer: it asks.
-    const Cmd zip =
-        run("gradescope-zip " + (kWork / "two.zip").string() + " --config " + two.string());
-    EXPECT_EQ(zip.status, 2) << zip.out;
-    EXPECT_NE(zip.out.find("this build has several assignments (" + build_ids("zz") +
-                           "): say which with --assignment ID"),
-              std::string::npos)
-        << zip.out;
-  }
+            std::string::npos)
+      << two.out;
+}
 
-  // A config written before assignments were plug-ins, and a manifest with a mistake: errors that
-  // name the file and the key (exit 2, nothing graded).
-  TEST(GraderAssignment, ConfigWithoutAssignmentsAndBadManifestsAreClearErrors) {
-    const fs::path old = config_with("old", [](Json& cfg) { cfg.erase("assignments"); });
-    const Cmd r = run("grade " + submission("old-config").string() + " --config " + old.string() +
-                      " --out " + (kWork / "out" / "old-config").string());
-    EXPECT_EQ(r.status, 2) << r.out;
-    EXPECT_NE(r.out.find(old.string() + ": assignments: expected an object with one entry per "
-                                        "assignment (rebuild: this config predates assignments as "
-                                        "plug-ins)"),
-              std::string::npos)
-        << r.out;
+// With two assignments and no --assignment, a submission's files choose: A1's five files (in a
+// nested folder, beside a README) are graded as a1, with full marks; files of neither are an
+// error that says how to choose.
+TEST(GraderAssignment, InferredFromTheSubmissionsFiles) {
+  const fs::path two = two_assignments();
+  const Json r = grade(submission("inferred"), "inferred", "--config " + two.string());
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
+  EXPECT_NE(find_test(r, "a1.t4.spring_force.values"), nullptr);
+  const fs::path neither = kWork / "submissions" / "neither";
+  fs::remove_all(neither);
+  fs::create_directories(neither);
+  std::ofstream(neither / "main.cpp") << "int main() {}\n";
+  const Cmd n = run("grade " + neither.string() + " --config " + two.string() + " --out " +
+                    (kWork / "out" / "neither").string());
+  EXPECT_EQ(n.status, 2) << n.out;
+  EXPECT_NE(n.out.find("its files do not name exactly one assignment; say which with "
+                       "--assignment ID (this build has: " +
+                       build_ids("zz") + ")"),
+            std::string::npos)
+      << n.out;
+  // A command without a submission cannot infer: it asks.
+  const Cmd zip =
+      run("gradescope-zip " + (kWork / "two.zip").string() + " --config " + two.string());
+  EXPECT_EQ(zip.status, 2) << zip.out;
+  EXPECT_NE(zip.out.find("this build has several assignments (" + build_ids("zz") +
+                         "): say which with --assignment ID"),
+            std::string::npos)
+      << zip.out;
+}
 
-    // A copy of a1's manifest with a typo in the fourth task's handout key.
-    const fs::path a1 = kWork / "configs" / "bad-manifest" / "a1";
-    fs::remove_all(a1.parent_path());
-    fs::create_directories(a1);
-    std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
-    const auto task4 = text.find("id = \"A1.T4\"");
-    ASSERT_NE(task4, std::string::npos);
-    const auto key = text.find("handout = ", task4);
-    text.replace(key, 7, "handuot");
-    const long line = 1 + std::count(text.begin(), text.begin() + key, '\n');
-    std::ofstream(a1 / "assignment.toml") << text;
-    const fs::path bad =
-        config_with("bad", [&](Json& cfg) { cfg["assignments"]["a1"]["dir"] = a1.string(); });
-    const Cmd b = run("grade " + submission("bad-manifest").string() + " --config " + bad.string() +
-                      " --out " + (kWork / "out" / "bad-manifest").string());
-    EXPECT_EQ(b.status, 2) << b.out;
-    EXPECT_NE(b.out.find((a1 / "assignment.toml").string() + ":" + std::to_string(line) +
-                         ": task[4].handuot: expected no such key"),
-              std::string::npos)
-        << b.out;
-    EXPECT_FALSE(fs::exists(kWork / "out" / "bad-manifest" / "results.json"));
-  }
+// A config written before assignments were plug-ins, and a manifest with a mistake: errors that
+// name the file and the key (exit 2, nothing graded).
+TEST(GraderAssignment, ConfigWithoutAssignmentsAndBadManifestsAreClearErrors) {
+  const fs::path old = config_with("old", [](Json& cfg) { cfg.erase("assignments"); });
+  const Cmd r = run("grade " + submission("old-config").string() + " --config " + old.string() +
+                    " --out " + (kWork / "out" / "old-config").string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find(old.string() + ": assignments: expected an object with one entry per "
+                                      "assignment (rebuild: this config predates assignments as "
+                                      "plug-ins)"),
+            std::string::npos)
+      << r.out;
 
-  // A rubric whose points no longer add up to autograded_total scales every task: the grader says
-  // what each task is now worth (one task raised from 5 to 10 moves every other one).
-  TEST(GraderAssignment, AScaledRubricStatesEveryTasksNewPoints) {
-    std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
-    const auto task1 = text.find("id = \"A1.T1\"");
-    ASSERT_NE(task1, std::string::npos);
-    const auto key = text.find("points = 5\n", task1);
-    ASSERT_NE(key, std::string::npos);
-    text.replace(key, 10, "points = 10");
-    const fs::path rubric = kWork / "configs" / "rubric-t1-10.toml";
-    fs::create_directories(rubric.parent_path());
-    std::ofstream(rubric) << text;
-    const fs::path out = kWork / "out" / "rubric-t1-10";
-    const Cmd r =
-        run("grade " + submission("rubric-t1-10").string() + " --assignment a1 --rubric " +
-            rubric.string() + " --out " + out.string() + " --format gradescope");
-    EXPECT_EQ(r.status, 0) << r.out;
-    EXPECT_NE(r.out.find("the tasks' points add up to 85.00, not autograded_total = 80.00"),
-              std::string::npos)
-        << r.out;
-    EXPECT_NE(r.out.find("A1.T1 9.41 (written 10.00)"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("A1.T2 4.71 (written 5.00)"), std::string::npos) << r.out;
-    // The manifest as it is adds up: nothing is said.
-    const Cmd plain =
-        run("grade " + submission("rubric-plain").string() + " --assignment a1 --out " +
-            (kWork / "out" / "rubric-plain").string() + " --format gradescope");
-    EXPECT_EQ(plain.out.find("add up to"), std::string::npos) << plain.out;
-  }
+  // A copy of a1's manifest with a typo in the fourth task's handout key.
+  const fs::path a1 = kWork / "configs" / "bad-manifest" / "a1";
+  fs::remove_all(a1.parent_path());
+  fs::create_directories(a1);
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const auto task4 = text.find("id = \"A1.T4\"");
+  ASSERT_NE(task4, std::string::npos);
+  const auto key = text.find("handout = ", task4);
+  text.replace(key, 7, "handuot");
+  const long line = 1 + std::count(text.begin(), text.begin() + key, '\n');
+  std::ofstream(a1 / "assignment.toml") << text;
+  const fs::path bad =
+      config_with("bad", [&](Json& cfg) { cfg["assignments"]["a1"]["dir"] = a1.string(); });
+  const Cmd b = run("grade " + submission("bad-manifest").string() + " --config " + bad.string() +
+                    " --out " + (kWork / "out" / "bad-manifest").string());
+  EXPECT_EQ(b.status, 2) << b.out;
+  EXPECT_NE(b.out.find((a1 / "assignment.toml").string() + ":" + std::to_string(line) +
+                       ": task[4].handuot: expected no such key"),
+            std::string::npos)
+      << b.out;
+  EXPECT_FALSE(fs::exists(kWork / "out" / "bad-manifest" / "results.json"));
+}
 
-  // --rubric: a manifest-shaped file with the term's own points replaces the manifest's.
-  TEST(GraderAssignment, RubricOptionTakesAManifestShapedFile) {
-    std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
-    const std::string total = "autograded_total = 80.0";
-    ASSERT_NE(text.find(total), std::string::npos);
-    text.replace(text.find(total), total.size(), "autograded_total = 40.0");
-    const fs::path rubric = kWork / "configs" / "rubric-40.toml";
-    fs::create_directories(rubric.parent_path());
-    std::ofstream(rubric) << text;
-    const Json r = grade(submission("rubric-40"), "rubric-40", "--rubric " + rubric.string());
-    EXPECT_NEAR(r["score"].get<double>(), 40.0, 1e-6);
-    EXPECT_NEAR(task_score(r, "A1.T13"), 15.0 / 2.0, 1e-4) << "points scaled to the new total";
-  }
+// A rubric whose points no longer add up to autograded_total scales every task: the grader says
+// what each task is now worth (one task raised from 5 to 10 moves every other one).
+TEST(GraderAssignment, AScaledRubricStatesEveryTasksNewPoints) {
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const auto task1 = text.find("id = \"A1.T1\"");
+  ASSERT_NE(task1, std::string::npos);
+  const auto key = text.find("points = 5\n", task1);
+  ASSERT_NE(key, std::string::npos);
+  text.replace(key, 10, "points = 10");
+  const fs::path rubric = kWork / "configs" / "rubric-t1-10.toml";
+  fs::create_directories(rubric.parent_path());
+  std::ofstream(rubric) << text;
+  const fs::path out = kWork / "out" / "rubric-t1-10";
+  const Cmd r = run("grade " + submission("rubric-t1-10").string() + " --assignment a1 --rubric " +
+                    rubric.string() + " --out " + out.string() + " --format gradescope");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("the tasks' points add up to 85.00, not autograded_total = 80.00"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("A1.T1 9.41 (written 10.00)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("A1.T2 4.71 (written 5.00)"), std::string::npos) << r.out;
+  // The manifest as it is adds up: nothing is said.
+  const Cmd plain = run("grade " + submission("rubric-plain").string() + " --assignment a1 --out " +
+                        (kWork / "out" / "rubric-plain").string() + " --format gradescope");
+  EXPECT_EQ(plain.out.find("add up to"), std::string::npos) << plain.out;
+}
+
+// --rubric: a manifest-shaped file with the term's own points replaces the manifest's.
+TEST(GraderAssignment, RubricOptionTakesAManifestShapedFile) {
+  std::string text = read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  const std::string total = "autograded_total = 80.0";
+  ASSERT_NE(text.find(total), std::string::npos);
+  text.replace(text.find(total), total.size(), "autograded_total = 40.0");
+  const fs::path rubric = kWork / "configs" / "rubric-40.toml";
+  fs::create_directories(rubric.parent_path());
+  std::ofstream(rubric) << text;
+  const Json r = grade(submission("rubric-40"), "rubric-40", "--rubric " + rubric.string());
+  EXPECT_NEAR(r["score"].get<double>(), 40.0, 1e-6);
+  EXPECT_NEAR(task_score(r, "A1.T13"), 15.0 / 2.0, 1e-4) << "points scaled to the new total";
+}
