@@ -550,6 +550,13 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
     EXPECT_EQ(csv[i].size(), csv[0].size()) << "row " << i << " of scores.csv";
     if (!csv[i].empty()) rows[csv[i][0]] = csv[i];
   }
+  // The class report counts every submission as graded (a hostile one is a student with a low
+  // score, never a hole in the class result), and the well-behaved one among the full marks.
+  const Json cls = Json::parse(read_text(b.out / "class.json"));
+  EXPECT_EQ(cls["students"], routes.size() + 1) << cls.dump(1).substr(0, 3000);
+  EXPECT_EQ(cls["graded"], routes.size() + 1);
+  EXPECT_TRUE(cls["could_not_grade"].empty()) << cls["could_not_grade"].dump(1);
+  EXPECT_GE(cls["score"]["full_marks"].get<int>(), 1) << cls["score"].dump(1);
   // The id batch gives a folder name: control characters and what Windows refuses in a name
   // become '_' (docs/grader.md, "Batch inputs").
   const auto id_of = [](std::string name) {
