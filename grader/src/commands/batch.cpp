@@ -208,7 +208,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
   // --similarity: who copied, over the whole class (every shard has the same class; the first
   // writes the report, and merge takes it from there).
   if (args.similarity >= 0.0 && args.shard_index == 1) {
-    similarity(config, similarity_inputs(all), out, args.similarity);
+    similarity(config, similarity_inputs(all), out.string(), args.similarity);
   }
   return status;
 }
