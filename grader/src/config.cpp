@@ -165,4 +165,47 @@ std::optional<LmsName> lms_name(const std::string& file_name) {
   return LmsName{m[1].str() + m[3].str(), m[2].matched ? std::stol(m[2].str()) : 0};
 }
 
+// The shallowest file called `name` under `root` (symbolic links included, so that they are
+// refused with a message rather than silently ignored).
+std::vector<fs::path> find_named(const fs::path& root, const std::string& name) {
+  std::vector<fs::path> hits;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(
+           root, fs::directory_options::skip_permission_denied, ec);
+       it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    if (it->path().filename() == name && !it->is_directory(ec)) hits.push_back(it->path());
+  }
+  std::sort(hits.begin(), hits.end(), [](const fs::path& a, const fs::path& b) {
+    const auto da = std::distance(a.begin(), a.end()), db = std::distance(b.begin(), b.end());
+    return da != db ? da < db : a < b;
+  });
+  return hits;
+}
+
+// The file to grade as `name` under an LMS bulk-download name (config.hpp, lms_name): the latest
+// resubmission of the shallowest ones, or an empty path.
+fs::path find_lms_named(const fs::path& root, const std::string& name) {
+  fs::path best;
+  long best_depth = 0, best_number = -1;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(
+           root, fs::directory_options::skip_permission_denied, ec);
+       it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    if (it->is_directory(ec)) continue;
+    const std::optional<LmsName> lms = lms_name(it->path().filename().string());
+    if (!lms || lms->file != name) continue;
+    const long depth = std::distance(it->path().begin(), it->path().end());
+    if (best.empty() || depth < best_depth ||
+        (depth == best_depth && (lms->resubmission > best_number ||
+                                 (lms->resubmission == best_number && it->path() < best)))) {
+      best = it->path();
+      best_depth = depth;
+      best_number = lms->resubmission;
+    }
+  }
+  return best;
+}
+
 }  // namespace jelly::grade

@@ -89,4 +89,12 @@ struct LmsName {
 /// The name `file_name` stands for, when it is an LMS bulk-download name.
 std::optional<LmsName> lms_name(const std::string& file_name);
 
+/// The files called `name` under `root`, shallowest first (then by path; symbolic links included,
+/// so that the build refuses them with a message rather than silently ignoring them).
+std::vector<fs::path> find_named(const fs::path& root, const std::string& name);
+
+/// The file to grade as `name` under an LMS bulk-download name (lms_name): the latest
+/// resubmission of the shallowest ones, or an empty path.
+fs::path find_lms_named(const fs::path& root, const std::string& name);
+
 }  // namespace jelly::grade

@@ -49,34 +49,8 @@ fs::path find_sim() {
 // shallowest one called `name`; else the shallowest LMS bulk-download name for it, the latest
 // resubmission first. Empty when there is none.
 fs::path find_task_file(const fs::path& root, const std::string& name) {
-  fs::path exact, lms;
-  long exact_depth = 0, lms_depth = 0, lms_number = -1;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(
-           root, fs::directory_options::skip_permission_denied, ec);
-       it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (ec) break;
-    if (it->is_directory(ec)) continue;
-    const fs::path& p = it->path();
-    const long depth = std::distance(p.begin(), p.end());
-    if (p.filename() == name) {
-      if (exact.empty() || depth < exact_depth || (depth == exact_depth && p < exact)) {
-        exact = p;
-        exact_depth = depth;
-      }
-      continue;
-    }
-    const std::optional<LmsName> l = lms_name(p.filename().string());
-    if (!l || l->file != name) continue;
-    if (lms.empty() || depth < lms_depth ||
-        (depth == lms_depth &&
-         (l->resubmission > lms_number || (l->resubmission == lms_number && p < lms)))) {
-      lms = p;
-      lms_depth = depth;
-      lms_number = l->resubmission;
-    }
-  }
-  return exact.empty() ? lms : exact;
+  const std::vector<fs::path> exact = find_named(root, name);
+  return exact.empty() ? find_lms_named(root, name) : exact.front();
 }
 
 // The bytes of a submitted file, or "" with `why` set: a symbolic link, a hard link (a second name
