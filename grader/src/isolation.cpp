@@ -1,5 +1,6 @@
 // Linux mechanisms only (bubblewrap, setuid/setgid, file modes, cgroups); see isolation.hpp.
 #include "isolation.hpp"
+#include "lane_keeper.hpp"
 
 #include <fcntl.h>
 #include <pwd.h>
@@ -159,19 +160,41 @@ std::vector<fs::path> secrets_of(const GradeConfig& config) {
 // ---- cgroups: the caps of each run, and a list of every process it started ----
 
 struct Cgroups {
-  fs::path memory, pids;  // v1: our own folder (jelly-grade-PID) in each hierarchy
-  fs::path unified;       // v2: our own folder; holds the memory and pids files when v2_caps
-  bool v2_memory = false, v2_pids = false;
+  fs::path memory, pids, cpu;  // v1: our own folder (jelly-grade-PID) in each hierarchy
+  fs::path unified;  // v2: our own folder; holds the memory, pids and cpu files where v2 has them
+  bool v2_memory = false, v2_pids = false, v2_cpu = false;
 
-  bool any() const { return !memory.empty() || !pids.empty() || !unified.empty(); }
+  bool any() const { return !memory.empty() || !pids.empty() || !cpu.empty() || !unified.empty(); }
+  std::vector<fs::path> dirs() const {
+    std::vector<fs::path> d;
+    for (const fs::path& p : {memory, pids, cpu, unified})
+      if (!p.empty()) d.push_back(p);
+    return d;
+  }
   bool caps_memory() const { return !memory.empty() || v2_memory; }
   bool caps_pids() const { return !pids.empty() || v2_pids; }
 };
 
+// One core's time per 100 ms period for all the processes of the cgroup `dir` together.
+bool write_cpu_quota(const fs::path& dir, bool v2) {
+  if (v2) return write_small(dir / "cpu.max", "100000 100000");
+  return write_small(dir / "cpu.cfs_period_us", "100000") &&
+         write_small(dir / "cpu.cfs_quota_us", "100000");
+}
+
+// Whether a lane under `parent` can get its quota (tried on a folder made and removed).
+bool quota_writable(const fs::path& parent, bool v2) {
+  const fs::path probe = parent / "lane-probe";
+  if (mkdir(probe.c_str(), 0755) != 0) return false;
+  const bool ok = write_cpu_quota(probe, v2);
+  rmdir(probe.c_str());
+  return ok;
+}
+
 // Our cgroups, made under the ones this process is in (so that a container's own limits still
 // hold), when the kernel and our privileges allow: cgroup v2 where it has the controllers, else
-// the v1 memory and pids hierarchies (as on a root shell of a cgroup v1 machine); a v2 folder is
-// made even without controllers, to find and kill every process of a run.
+// the v1 memory, pids and cpu hierarchies (as on a root shell of a cgroup v1 machine); a v2 folder
+// is made even without controllers, to find and kill every process of a run.
 Cgroups make_cgroups() {
   Cgroups cg;
   std::map<std::string, std::pair<fs::path, std::string>> v1;  // controller -> (mount, root)
@@ -194,7 +217,7 @@ Cgroups make_cgroups() {
         std::istringstream opts(super);
         std::string o;
         while (std::getline(opts, o, ','))
-          if (o == "memory" || o == "pids") v1[o] = {mount, root};
+          if (o == "memory" || o == "pids" || o == "cpu") v1[o] = {mount, root};
       }
     }
   }
@@ -217,7 +240,8 @@ Cgroups make_cgroups() {
     std::string rel = path;
     if (root != "/" && rel.compare(0, root.size(), root) == 0) rel = rel.substr(root.size());
     const fs::path parent = mount / fs::path(rel).relative_path();
-    // The empty folders of a jelly-grade that was killed go (a folder with processes stays).
+    // The folders of a jelly-grade that is gone go, every process in them killed first (its
+    // keeper, killed with it, could not).
     std::error_code ec;
     for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
       const std::string n = it->path().filename().string();
@@ -225,10 +249,7 @@ Cgroups make_cgroups() {
       const std::string pid = n.substr(12);
       if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
       if (kill(std::stoi(pid), 0) == 0 || errno != ESRCH) continue;
-      std::error_code lc;
-      for (fs::directory_iterator l(it->path(), lc), le; !lc && l != le; l.increment(lc))
-        if (l->is_directory(lc)) rmdir(l->path().c_str());
-      rmdir(it->path().c_str());
+      end_cgroup_tree(it->path());
     }
     fs::path dir = parent / mine;
     if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) return fs::path();
@@ -239,19 +260,33 @@ Cgroups make_cgroups() {
     const fs::path parent = v2_mount / fs::path(own[""]).relative_path();
     // Ask for the controllers our children need (refused where this cgroup holds processes and
     // is not the root: then v2 only lists and kills).
-    write_small(parent / "cgroup.subtree_control", "+memory +pids");
+    for (const char* c : {"+memory", "+pids", "+cpu"})
+      write_small(parent / "cgroup.subtree_control", c);
     cg.unified = folder(v2_mount, v2_root, own[""]);
     if (!cg.unified.empty()) {
-      write_small(cg.unified / "cgroup.subtree_control", "+memory +pids");
+      for (const char* c : {"+memory", "+pids", "+cpu"})
+        write_small(cg.unified / "cgroup.subtree_control", c);
       const std::string have = read_small(cg.unified / "cgroup.subtree_control");
-      cg.v2_memory = have.find("memory") != std::string::npos;
-      cg.v2_pids = have.find("pids") != std::string::npos;
+      std::istringstream words(have);
+      for (std::string w; words >> w;) {
+        cg.v2_memory = cg.v2_memory || w == "memory";
+        cg.v2_pids = cg.v2_pids || w == "pids";
+        cg.v2_cpu = cg.v2_cpu || w == "cpu";
+      }
     }
   }
   if (!cg.v2_memory && v1.count("memory") && own.count("memory"))
     cg.memory = folder(v1["memory"].first, v1["memory"].second, own["memory"]);
   if (!cg.v2_pids && v1.count("pids") && own.count("pids"))
     cg.pids = folder(v1["pids"].first, v1["pids"].second, own["pids"]);
+  if (!cg.v2_cpu && v1.count("cpu") && own.count("cpu"))
+    cg.cpu = folder(v1["cpu"].first, v1["cpu"].second, own["cpu"]);
+  // The CPU share is said to be in force only where a lane's quota can be written.
+  cg.v2_cpu = cg.v2_cpu && quota_writable(cg.unified, true);
+  if (!cg.cpu.empty() && !quota_writable(cg.cpu, false)) {
+    rmdir(cg.cpu.c_str());
+    cg.cpu.clear();
+  }
   return cg;
 }
 
@@ -260,35 +295,6 @@ std::vector<int> procs_of(const fs::path& dir) {
   std::istringstream in(read_small(dir / "cgroup.procs"));
   int p;
   while (in >> p) pids.push_back(p);
-  return pids;
-}
-
-// SIGKILL to every process of `uid` (from a child that becomes that user: kill(-1) reaches exactly
-// its processes, in one pass of the kernel over all processes).
-void kill_user(int uid) {
-  const pid_t pid = fork();
-  if (pid < 0) return;
-  if (pid == 0) {
-    if (setuid(static_cast<uid_t>(uid)) != 0) _exit(2);
-    kill(-1, SIGKILL);
-    _exit(0);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-}
-
-// The processes whose effective user is `uid` (the owner of /proc/PID).
-std::vector<int> processes_of_user(int uid) {
-  std::vector<int> pids;
-  std::error_code ec;
-  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-    struct stat st {};
-    if (stat(it->path().c_str(), &st) == 0 && static_cast<int>(st.st_uid) == uid)
-      pids.push_back(std::stoi(name));
-  }
   return pids;
 }
 
@@ -324,15 +330,21 @@ struct Lane {
   int index = 0;
   int user_index = -1;  // jelly-sandbox-N (kind User)
   int uid = -1, gid = -1;
-  fs::path memory, pids, unified;  // this lane's cgroups (empty: none)
-  bool v2_memory = false, v2_pids = false;
+  fs::path memory, pids, cpu, unified;  // this lane's cgroups (empty: none)
+  bool v2_memory = false, v2_pids = false, v2_cpu = false;
   long long oom_before = 0, max_before = 0;
 
   std::vector<fs::path> dirs() const {
     std::vector<fs::path> d;
-    for (const fs::path& p : {memory, pids, unified})
+    for (const fs::path& p : {memory, pids, cpu, unified})
       if (!p.empty()) d.push_back(p);
     return d;
+  }
+  // One core's time per period, all the lane's processes together: a submission's busy processes
+  // take no more than a core from the submissions graded beside it. False where it cannot be set.
+  bool share_cpu() const {
+    if (v2_cpu) return write_cpu_quota(unified, true);
+    return !cpu.empty() && write_cpu_quota(cpu, false);
   }
   fs::path memory_dir() const { return v2_memory ? unified : memory; }
   fs::path pids_dir() const { return v2_pids ? unified : pids; }
@@ -598,20 +610,24 @@ class TreeModes {
 
 class SandboxPool {
  public:
-  SandboxPool(IsolationKind kind, Cgroups cg) : kind_(kind), cg_(std::move(cg)) {}
+  // Where there are lanes to keep (cgroups, sandbox users), their keeper is forked here, while
+  // the grader has one thread: it ends them if the grader dies (lane_keeper.hpp).
+  SandboxPool(IsolationKind kind, Cgroups cg) : kind_(kind), cg_(std::move(cg)) {
+    if (cg_.any() || kind_ == IsolationKind::User) keeper_.start(cg_.dirs());
+  }
 
   ~SandboxPool() {
     for (auto& l : lanes_) {
       l->end_all();
       for (const fs::path& d : l->dirs()) rmdir(d.c_str());
     }
-    for (const fs::path& d : {cg_.memory, cg_.pids, cg_.unified})
-      if (!d.empty()) rmdir(d.c_str());
+    for (const fs::path& d : cg_.dirs()) rmdir(d.c_str());
     if (!scratch_.empty()) {
       std::error_code ec;
       fs::remove_all(scratch_, ec);
     }
     for (const auto& [n, fd] : claimed_) ::close(fd);
+    // keeper_ goes last (declared first): it finds nothing left, and is waited for.
   }
 
   // User mode: the private scratch folder (root's, others may only enter it) and the closed tree.
@@ -656,18 +672,9 @@ class SandboxPool {
         ++n;
       lane->user_index = n;
       ensure_user(std::string(kSandboxUser) + "-" + std::to_string(n), lane->uid, lane->gid);
+      keeper_.tell_user(n, lane->uid);
     }
-    const std::string name = "lane-" + std::to_string(lane->index);
-    auto sub = [&](const fs::path& base) {
-      if (base.empty()) return fs::path();
-      const fs::path d = base / name;
-      return (mkdir(d.c_str(), 0755) == 0 || errno == EEXIST) ? d : fs::path();
-    };
-    lane->memory = sub(cg_.memory);
-    lane->pids = sub(cg_.pids);
-    lane->unified = sub(cg_.unified);
-    lane->v2_memory = cg_.v2_memory && !lane->unified.empty();
-    lane->v2_pids = cg_.v2_pids && !lane->unified.empty();
+    open_cgroups(*lane);
     lane->count_leftovers = kind_ != IsolationKind::Bwrap;
     lanes_.push_back(std::move(lane));
     busy_.push_back(true);
@@ -709,6 +716,32 @@ class SandboxPool {
   }
 
  private:
+  // The lane's own cgroups under ours, with one core's quota.
+  void open_cgroups(Lane& lane) {
+    const std::string name = "lane-" + std::to_string(lane.index);
+    auto sub = [&](const fs::path& base) {
+      if (base.empty()) return fs::path();
+      const fs::path d = base / name;
+      return (mkdir(d.c_str(), 0755) == 0 || errno == EEXIST) ? d : fs::path();
+    };
+    lane.memory = sub(cg_.memory);
+    lane.pids = sub(cg_.pids);
+    lane.unified = sub(cg_.unified);
+    lane.v2_memory = cg_.v2_memory && !lane.unified.empty();
+    lane.v2_pids = cg_.v2_pids && !lane.unified.empty();
+    lane.cpu = sub(cg_.cpu);
+    lane.v2_cpu = cg_.v2_cpu && !lane.unified.empty();
+    lane.share_cpu();
+    // The lanes together weigh as much as as many ordinary processes (a nested cgroup weighs as
+    // one): grading keeps its share of a machine busy with other work.
+    const std::size_t lanes = lanes_.size() + 1;
+    if (cg_.v2_cpu)
+      write_small(cg_.unified / "cpu.weight",
+                  std::to_string(std::min<std::size_t>(100 * lanes, 10000)));
+    else if (!cg_.cpu.empty())
+      write_small(cg_.cpu / "cpu.shares", std::to_string(1024 * lanes));
+  }
+
   // Sandbox user N serves one jelly-grade process at a time (a lock file per user, held until the
   // end): two gradings on one machine never share a user, so neither kills the other's processes
   // nor reads the other's files. A process may use its users both for lanes and for groups.
@@ -724,22 +757,16 @@ class SandboxPool {
       return false;
     }
     claimed_[n] = fd;
+    // Whatever a dead grader's run left as this user (its keeper found the lock taken) ends now:
+    // the user is ours alone from here on.
+    int uid = -1, gid = -1;
+    if (lookup_user(std::string(kSandboxUser) + "-" + std::to_string(n), uid, gid) && uid > 0)
+      for (int round = 0; round < 50 && !processes_of_user(uid).empty(); ++round) kill_user(uid);
     return true;
   }
-  static fs::path lock_dir() {
-    for (const char* base : {"/run", "/var/lib"}) {
-      if (access(base, W_OK) != 0) continue;
-      const fs::path d = fs::path(base) / "jelly-grade";
-      mkdir(d.c_str(), 0700);
-      struct stat st {};
-      if (lstat(d.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == 0 &&
-          !(st.st_mode & (S_IWGRP | S_IWOTH)))
-        return d;
-    }
-    throw std::runtime_error(
-        "--isolation user: no root-only folder for the sandbox users' locks (/run/jelly-grade)");
-  }
+  static fs::path lock_dir() { return sandbox_lock_dir(true); }
 
+  LaneKeeper keeper_;  // first: destroyed last, after the lanes are ended and the locks released
   IsolationKind kind_;
   Cgroups cg_;
   std::map<int, int> claimed_;  // user number -> its lock file
@@ -775,13 +802,15 @@ std::string describe_caps(const Cgroups& cg, IsolationKind kind, bool prlimit) {
     procs = n + " processes and threads in the sandbox's user namespace (RLIMIT_NPROC)";
   else
     procs = "no process cap (no pids cgroup)";
-  std::string kill = !cg.unified.empty() || !cg.pids.empty() || !cg.memory.empty()
-                         ? "leftover processes found by cgroup"
+  const std::string cpu = cg.v2_cpu         ? "one core's time (cgroup v2 cpu.max)"
+                          : !cg.cpu.empty() ? "one core's time (cgroup v1 cpu.cfs_quota_us)"
+                                            : "no CPU share per lane: no cpu cgroup";
+  std::string kill = cg.any()                      ? "leftover processes found by cgroup"
                      : kind == IsolationKind::User ? "leftover processes found by user"
                      : kind == IsolationKind::Bwrap
                          ? "leftover processes end with the pid namespace"
                          : "leftover processes not tracked";
-  return "per compile and per test: " + mem + ", " + procs + "; " + kill;
+  return "per compile and per test: " + mem + ", " + procs + ", " + cpu + "; " + kill;
 }
 
 struct LaneLease {
@@ -800,6 +829,9 @@ struct LaneLease {
 Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
   if (mode != "auto" && mode != "bwrap" && mode != "user" && mode != "none")
     throw std::runtime_error("--isolation must be auto, bwrap, user or none (got '" + mode + "')");
+  // Whatever a grader that is gone left running as a sandbox user ends first, in every mode (its
+  // cgroups are swept by make_cgroups).
+  sweep_abandoned_users();
   Isolation iso;
   iso.secrets = secrets_of(config);
   const bool prlimit = !find_program({"/usr/bin/prlimit"}).empty();

@@ -83,14 +83,17 @@ class Workspace {
 
 /// Picks the mechanism: `mode` is auto, bwrap, user or none. auto tries bwrap (a real probe), then
 /// user (when root), then none. A forced mechanism that cannot work is a std::runtime_error saying
-/// why. Makes the run's cgroups where it can (every mode). For "user", closes the checkout and the
-/// build tree to other users except what a submission is compiled and linked with (deny by
+/// why. First ends whatever a grader that is gone left (processes in its cgroups, of sandbox users
+/// whose lock nobody holds); makes the run's cgroups where it can (every mode) and forks their
+/// keeper (lane_keeper.hpp), which ends them if this process dies. For "user", closes the checkout
+/// and the build tree to other users except what a submission is compiled and linked with (deny by
 /// default; the modes are restored when the last copy of the Isolation goes) and makes a private
 /// scratch folder.
 Isolation choose_isolation(const GradeConfig& config, const std::string& mode);
 
 /// Runs `argv` isolated, in a lane of its own (a sandbox user in user mode; a cgroup where one can
-/// be made): capped as a whole (memory, kRunProcesses), and when it ends every process it left is
+/// be made): capped as a whole (memory, kRunProcesses, one core's CPU time where there is a cpu
+/// cgroup), and when it ends every process it left is
 /// killed, its private folder and whatever its user left in /tmp, /var/tmp, /dev/shm and System V
 /// IPC removed (ChildResult says what was found). A process that bubblewrap reports as exit
 /// status 128 + N is reported as ended by signal N, as it would be without the sandbox.
