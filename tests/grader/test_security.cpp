@@ -9,10 +9,13 @@
 // contain any distinctive text of any hidden reference file of ANY assignment. The hostile sources
 // name the hidden files by their real absolute paths, so every route WOULD leak without the
 // sandbox: NoIsolationLetsTheCanaryThrough proves the search finds it.
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -1174,4 +1177,242 @@ TEST_P(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Assignments, GraderSecurityOs, ::testing::ValuesIn(target_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
+
+// ---------------------------------------------------------------------------------------------
+// Lanes (issue 28, items 1 and 2): a batch killed by SIGKILL leaves no process of any submission
+// running, and one submission's busy processes take no more than a core from the student graded
+// beside it; in both sandboxes. The lanes are the grader's, not an assignment's: each case runs on
+// the first assignment of the build only (a minute or two each).
+namespace {
+
+// A static constructor at the top of the compile_file: every test of the submission starts `n`
+// busy processes named `name` (comm), detached (setsid + double fork) when `detach`, then waits
+// `wait_s` seconds before the test goes on.
+std::string busy_code(const char* name, int n, bool detach, int wait_s) {
+  const std::string spin = "{ prctl(PR_SET_NAME, \"" + std::string(name) +
+                           "\"); volatile unsigned long x = 0; for (;;) x = x + 1; }";
+  const std::string child = detach ? "{ setsid(); if (fork() == 0) " + spin + " _exit(0); }" : spin;
+  return "#include <sys/prctl.h>\n"
+         "static int jelly_busy = [] {\n"
+         "  for (int i = 0; i < " +
+         std::to_string(n) + "; ++i) if (fork() == 0) " + child +
+         "\n"
+         "  sleep(" +
+         std::to_string(wait_s) + ");\n  return 0; }();\n";
+}
+
+// A submission of the reference with `code` at the top of its compile_file.
+void busy_submission(const Clone& c, const fs::path& dir, const std::string& code) {
+  const fs::path solutions = in_clone(c, T->solutions);
+  fs::create_directories(dir);
+  copy_files(solutions, dir);
+  std::ofstream(dir / T->compile_file, std::ios::binary)
+      << replace_all(kReadRequest, "@CASE@", T->run_case) << code
+      << read_text(solutions / T->compile_file);
+}
+
+// The processes whose name (comm) is `name`: their ids, each followed by a space.
+std::string processes_called(const std::string& name) {
+  std::string found;
+  std::error_code ec;
+  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+    std::string comm = read_text(it->path() / "comm");
+    while (!comm.empty() && comm.back() == '\n') comm.pop_back();
+    if (comm == name) found += it->path().filename().string() + " ";
+  }
+  return found;
+}
+
+// The cgroup folders of the jelly-grade process `pid` (jelly-grade-PID, in every hierarchy).
+std::vector<fs::path> grader_cgroups(pid_t pid) {
+  std::vector<fs::path> found;
+  const std::string mine = "jelly-grade-" + std::to_string(pid);
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it("/sys/fs/cgroup", ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (!it->is_directory(ec) || it->is_symlink(ec)) continue;
+    if (it->path().filename() == mine) found.push_back(it->path());
+    if (it->path().filename() == mine || it.depth() > 5 ||
+        it->path().filename().string().rfind("jelly-grade-", 0) == 0)
+      it.disable_recursion_pending();
+  }
+  return found;
+}
+
+// The processes in `cgroup` and below it that still run (not zombies).
+std::string live_processes_in(const fs::path& cgroup) {
+  std::string found;
+  std::error_code ec;
+  std::vector<fs::path> dirs = {cgroup};
+  for (fs::recursive_directory_iterator it(cgroup, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_directory(ec)) dirs.push_back(it->path());
+  for (const fs::path& d : dirs) {
+    std::istringstream in(read_text(d / "cgroup.procs"));
+    for (std::string p; in >> p;) {
+      const std::string st = read_text("/proc/" + p + "/stat");
+      const auto paren = st.rfind(')');
+      if (paren != std::string::npos && paren + 2 < st.size() && st[paren + 2] != 'Z')
+        found += d.string() + ": " + p + "\n";
+    }
+  }
+  return found;
+}
+
+// jelly-grade started in the background, its output in `log`.
+pid_t start_grade(const std::vector<std::string>& args, const fs::path& log) {
+  std::vector<std::string> argv = {JELLY_GRADE_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> a;
+  for (std::string& s : argv) a.push_back(s.data());
+  a.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    execv(a[0], a.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// Waits up to `s` seconds for `done`, every 100 ms; `each` is called at every look.
+bool wait_for(double s, const std::function<bool()>& done, const std::function<void()>& each = {}) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(s);
+  while (std::chrono::steady_clock::now() < until) {
+    if (each) each();
+    if (done()) return true;
+    usleep(100000);
+  }
+  return false;
+}
+
+// What must be gone 5 s after the batch `pid` was killed: every process of its submissions (named
+// `busy`, of a sandbox user, in its cgroups), its keeper (its command line names the clone), and
+// its cgroup folders.
+void expect_nothing_left(pid_t pid, const Clone& c, const std::string& busy) {
+  sleep(5);
+  EXPECT_EQ(processes_called(busy), "") << "busy processes of a submission outlived the batch";
+  EXPECT_EQ(sandbox_user_processes(), "");
+  EXPECT_EQ(processes_naming(c.root.string()), "");
+  for (const fs::path& g : grader_cgroups(pid)) {
+    EXPECT_EQ(live_processes_in(g), "") << g;
+    EXPECT_FALSE(fs::exists(g)) << g << ": the dead grader's cgroup folder is still there";
+  }
+}
+
+std::vector<std::string> batch_args(const Clone& c, const std::string& isolation) {
+  return {"batch",        (c.root / "in").string(),
+          "--out",        (c.root / "out").string(),
+          "--config",     c.config.string(),
+          "--assignment", T->id,
+          "--jobs",       "2",
+          "--visibility", "public",
+          "--timeout",    "10",
+          "--no-frames",  "--isolation",
+          isolation};
+}
+
+bool sandbox_available(const std::string& isolation, std::string& why) {
+  if (isolation == "bwrap") return bwrap_usable(why);
+  why = "the user-drop mode needs root (it makes its sandbox users with useradd)";
+  return geteuid() == 0;
+}
+
+}  // namespace
+
+class GraderSecurityLanes : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override { select_target(target_ids().front()); }
+};
+
+// A batch killed by SIGKILL while a submission's test has forked busy detached processes (setsid,
+// double fork: reparented to init, out of reach of PR_SET_PDEATHSIG): 5 s later none of them runs,
+// nor anything else of the batch, and its cgroup folders are gone.
+TEST_P(GraderSecurityLanes, SigkilledBatchLeavesNoProcess) {
+  const std::string isolation = GetParam();
+  std::string why;
+  if (!sandbox_available(isolation, why)) GTEST_SKIP() << why;
+  const Clone c = make_clone("kill-" + isolation);
+  busy_submission(c, c.root / "in" / "a_detached", busy_code("jelly-busy", 8, true, 5));
+  fs::create_directories(c.root / "in" / "b_honest");
+  copy_files(in_clone(c, T->solutions), c.root / "in" / "b_honest");
+  const fs::path log = c.root / "console.txt";
+  const pid_t pid = start_grade(batch_args(c, isolation), log);
+  ASSERT_GT(pid, 0);
+  const bool busy = wait_for(120, [] {
+    const std::string p = processes_called("jelly-busy");
+    return std::count(p.begin(), p.end(), ' ') >= 8;
+  });
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  ASSERT_TRUE(busy) << "the detached busy processes never started:\n" << read_text(log);
+  expect_nothing_left(pid, c, "jelly-busy");
+  std::error_code ec;
+  fs::remove_all(c.root.parent_path(), ec);
+}
+
+// A neighbour whose every test keeps 48 busy processes for 9 s (under the cap of 64) beside an
+// honest submission in a --jobs 2 batch: each lane has one core's quota (read from its cgroup while
+// the batch runs), and the honest student gets full marks with no test timed out. The batch is
+// killed once the honest student is graded (the neighbour's 9 s tests would take minutes).
+TEST_P(GraderSecurityLanes, BusyNeighbourDoesNotStarveTheNextStudent) {
+  const std::string isolation = GetParam();
+  std::string why;
+  if (!sandbox_available(isolation, why)) GTEST_SKIP() << why;
+  const Clone c = make_clone("hog-" + isolation);
+  busy_submission(c, c.root / "in" / "a_hog", busy_code("jelly-hog", 48, false, 9));
+  fs::create_directories(c.root / "in" / "b_honest");
+  copy_files(in_clone(c, T->solutions), c.root / "in" / "b_honest");
+  const fs::path log = c.root / "console.txt", honest = c.root / "out" / "students" / "b_honest";
+  const pid_t pid = start_grade(batch_args(c, isolation), log);
+  ASSERT_GT(pid, 0);
+  std::set<std::string> quotas;  // the lanes' CPU quotas seen while the batch runs
+  bool hog_seen = false;
+  const bool graded = wait_for(
+      // Ten times what the honest student takes on a busy 2-core machine, and more than all its
+      // tests' time limits together would be if the neighbour starved them.
+      300, [&] { return fs::exists(honest / "results.json"); },
+      [&] {
+        hog_seen = hog_seen || !processes_called("jelly-hog").empty();
+        for (const fs::path& g : grader_cgroups(pid))
+          for (const char* f : {"cpu.cfs_quota_us", "cpu.max"}) {
+            std::error_code ec;
+            for (fs::directory_iterator it(g, ec), end; !ec && it != end; it.increment(ec)) {
+              std::string q = read_text(it->path() / f);
+              while (!q.empty() && q.back() == '\n') q.pop_back();
+              if (!q.empty()) quotas.insert(q);
+            }
+          }
+      });
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  SCOPED_TRACE("console: " + log.string());
+  ASSERT_TRUE(graded) << "the honest student was not graded beside the busy neighbour:\n"
+                      << read_text(log);
+  EXPECT_TRUE(hog_seen) << "the neighbour's busy processes never ran";
+  const Json j = Json::parse(read_text(honest / "results.json"));
+  const std::string description = j["extra_data"]["isolation_description"];
+  EXPECT_EQ(description.find("no CPU share per lane"), std::string::npos) << description;
+  EXPECT_TRUE(quotas.count("100000") || quotas.count("100000 100000"))
+      << "no lane had one core's quota; seen: " << ::testing::PrintToString(quotas);
+  double max = 0;
+  for (const Json& t : j["tests"]) {
+    if (t.contains("max_score")) max += t["max_score"].get<double>();
+    const std::string o = t.value("output", std::string());
+    EXPECT_EQ(o.find("took longer than"), std::string::npos) << t["name"] << ": " << o;
+    EXPECT_NE(t.value("status", std::string()), "failed") << t["name"] << ": " << o;
+  }
+  const double bonus = j.contains("extra_data") && j["extra_data"].contains("bonus_max")
+                           ? j["extra_data"]["bonus_max"].get<double>()
+                           : 0.0;
+  EXPECT_GT(max, 0.0);
+  EXPECT_NEAR(j["score"].get<double>(), max + bonus, 1e-3) << j.dump(1).substr(0, 4000);
+  expect_nothing_left(pid, c, "jelly-hog");
+  std::error_code ec;
+  fs::remove_all(c.root.parent_path(), ec);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sandboxes, GraderSecurityLanes, ::testing::Values("user", "bwrap"),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
