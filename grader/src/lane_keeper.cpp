@@ -161,7 +161,11 @@ int end_cgroup_tree(const fs::path& dir) {
     }
     sleep_ms(std::min(round + 1, 10));
   }
-  for (auto f = folders.rbegin(); f != folders.rend(); ++f) rmdir(f->c_str());
+  // A folder still listing a killed process (a zombie its new parent has not reaped yet) cannot be
+  // removed: a second at most.
+  for (auto f = folders.rbegin(); f != folders.rend(); ++f)
+    for (int tries = 0; rmdir(f->c_str()) != 0 && errno == EBUSY && tries < 100; ++tries)
+      sleep_ms(10);
   return static_cast<int>(seen.size());
 }
 
