@@ -1341,7 +1341,7 @@ TEST_P(GraderSecurityLanes, SigkilledBatchLeavesNoProcess) {
   const fs::path log = c.root / "console.txt";
   const pid_t pid = start_grade(batch_args(c, isolation), log);
   ASSERT_GT(pid, 0);
-  const bool busy = wait_for(120, [] {
+  const bool busy = wait_for(300, [] {
     const std::string p = processes_called("jelly-busy");
     return std::count(p.begin(), p.end(), ' ') >= 8;
   });
