@@ -44,7 +44,8 @@ int runs_with(const fs::path& log, const std::string& needle) {
 g::GradeConfig made_up_assignment(const fs::path& root, const fs::path& compiler) {
   write(root / "include/t/a.hpp", "#pragma once\nint task_a(int x);\n");
   write(root / "include/t/b.hpp", "#pragma once\nint task_b(int x);\n");
-  write(root / "asg/a.cpp", "#include \"t/a.hpp\"\nint task_a(int x) { return x; }\nint main() {}\n");
+  write(root / "asg/a.cpp",
+        "#include \"t/a.hpp\"\nint task_a(int x) { return x; }\nint main() {}\n");
   write(root / "asg/b.cpp", "#include \"t/b.hpp\"\nint task_b(int x) { return -x; }\n");
   g::GradeConfig c;
   c.compiler = compiler.string();
@@ -66,7 +67,8 @@ g::GradeConfig made_up_assignment(const fs::path& root, const fs::path& compiler
 }  // namespace
 
 TEST(GraderBuildCache, EachSharedArtefactIsBuiltOnceWhenManyWorkersNeedItAtOnce) {
-  const fs::path root = fs::temp_directory_path() / ("jelly-build-once-" + std::to_string(getpid()));
+  const fs::path root =
+      fs::temp_directory_path() / ("jelly-build-once-" + std::to_string(getpid()));
   fs::remove_all(root);
   const fs::path log = root / "compiler-runs.log", wrapper = root / "cc";
   // Every run is logged, then waits a second before compiling: long enough for every worker to
@@ -88,7 +90,8 @@ TEST(GraderBuildCache, EachSharedArtefactIsBuiltOnceWhenManyWorkersNeedItAtOnce)
       std::atomic<int> failed{0};
       g::parallel_for(kWorkers, kWorkers, [&](std::size_t w) {
         const fs::path work = root / ("work-" + std::to_string(p) + "-" + std::to_string(w));
-        const g::BuildResult r = g::build_submission(config, root / "empty", work, 2, g::Isolation{});
+        const g::BuildResult r =
+            g::build_submission(config, root / "empty", work, 2, g::Isolation{});
         if (!r.ok || !r.failed_files.empty()) failed = 1;
       });
       _exit(failed.load());
