@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <chrono>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -111,6 +113,31 @@ std::string include_policy(const std::string& shown, const std::string& text) {
   }
   return errors;
 }
+
+// While it lives, an exclusive flock(2) on ARTEFACT.lock, a file beside a shared artefact of the
+// cache (an object, a precompiled header): one builder of it at a time. The others wait, then find
+// it made (the builder writes a temporary name and renames it), instead of each building it again:
+// at the start of a batch every worker needs the same stubs and headers. flock holds between the
+// threads of a batch (each opens its own file) and between processes sharing the cache (shards on
+// one machine), and ends with its holder, whatever kills it. Where the lock file cannot be made
+// (a read-only cache), nothing is held and each builds its own, as before.
+class ArtefactLock {
+ public:
+  explicit ArtefactLock(const fs::path& artefact)
+      : fd_(open((artefact.string() + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+    if (fd_ >= 0)
+      while (flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
+      }
+  }
+  ~ArtefactLock() {
+    if (fd_ >= 0) close(fd_);  // releases the lock
+  }
+  ArtefactLock(const ArtefactLock&) = delete;
+  ArtefactLock& operator=(const ArtefactLock&) = delete;
+
+ private:
+  int fd_;
+};
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
   if (from.empty()) return s;
@@ -350,10 +377,15 @@ class SubmissionBuild {
           config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + job.name + "\n" + text) + ".o");
       const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
       std::error_code ec;
-      if (fs::exists(cached)) {
-        fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
-        if (!ec) return;
-      }
+      const auto reuse = [&] {
+        return fs::exists(cached, ec) &&
+               fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
+      };
+      if (reuse()) return;
+      // Not cached: whoever else needs the same object now (the stubs, at the start of a batch)
+      // waits for this compile and copies its result.
+      const ArtefactLock building(cached);
+      if (reuse()) return;
       std::vector<std::string> argv = base_;
       argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
       SandboxView view;
@@ -604,8 +636,6 @@ class SubmissionBuild {
   void use_precompiled_headers() {
     if (iso_.kind == IsolationKind::User) return;
     const fs::path dir = config_.cache_dir() / ("pch-" + fnv_hex(flags_key_));
-    static std::mutex building;  // the students a batch compiles at once build each only once
-    std::lock_guard<std::mutex> lock(building);
     bool any = false;
     for (const std::string& name : files_) {
       std::string header;
@@ -624,8 +654,12 @@ class SubmissionBuild {
       if (source.empty()) continue;
       const fs::path gch = dir / (header + ".gch");
       std::error_code ec;
+      std::optional<ArtefactLock> building;  // the workers of a batch build each header once
       if (!fs::is_regular_file(gch, ec)) {
         fs::create_directories(gch.parent_path(), ec);
+        building.emplace(gch);
+      }
+      if (!fs::is_regular_file(gch, ec)) {
         const fs::path tmp = gch.string() + ".tmp" + std::to_string(getpid());
         std::vector<std::string> argv = base_;
         argv.insert(argv.end(), {"-x", "c++-header", source.string(), "-o", tmp.string()});

@@ -125,6 +125,25 @@ plant "the threat model's undefended list in a doc" \
   'printf "**Not defended**: timing side channels\n" >>"$copy/$asg/handout/README.md"' "$asg/handout/README.md:"
 plant "the release tool named in the front page" \
   'printf "Made with tools/make-student-release.\n" >>"$copy/README.md"' "README.md:"
+# The self-check's configuration without -D, as the test command's notes in performance.md said it.
+plant "the instructor build's configuration named without -D" \
+  'printf "The build is configured with \`JELLY_TASKS=solutions\`.\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
+# Development notes: a developer's clone or worktree path, who ran a measurement.
+plant "a clone path under /tmp in a doc" \
+  'printf "| a clone in \`/tmp/jelly lab/main\` | 29 min |\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
+plant "a developer's build folder in a doc" \
+  'printf "The figures ran the build in /work/main.\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
+plant "a development note naming who ran it" \
+  'printf "The whole suite is the lead'"'"'s final run.\n" >>"$copy/docs/viewer.md"' "docs/viewer.md:$((lines + 1)):"
+# ... but the compiler's own temporary files (/tmp/cc*.s), which the student's messages may name,
+# are no machine path.
+cp -a "$rel" "$work/copy-ok" && rm -rf "$work/copy-ok/third_party"
+printf 'Assembler messages point into `/tmp/ccAbC123.s`.\n' >>"$work/copy-ok/docs/viewer.md"
+"$tool" --scan "$work/copy-ok" >"$work/scan-ok.log" 2>&1
+check "the scan lets the compiler's temporary file /tmp/cc*.s pass" '[ $? -eq 0 ] || { cat "$work/scan-ok.log"; false; }'
+rm -rf "$work/copy-ok"
+check "the release's performance.md names no instructor build option and no machine path" \
+  '! grep -nE "JELLY_TASKS=solutions|/tmp/jelly|/work/" "$rel/docs/performance.md"'
 check "the release's grader.md has the student's sandbox section, not the threat model" \
   'grep -q "^## The sandbox" "$rel/docs/grader.md" && ! grep -qi "threat model" "$rel/docs/grader.md"'
 check "no audience marker is left in the release" \
