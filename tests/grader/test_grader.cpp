@@ -1008,7 +1008,8 @@ TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
 // The class report (class.json; class.md and class.html to project; class-instructor.md and
 // class-instructor.html) of a small class: the reference, the stubs, two of the grader's mutants, a
 // file that does not compile (its message quotes HTML), a function that never returns and a
-// missing task file (in a folder whose name is HTML).
+// missing task file (in a folder whose name is HTML), and explicit Euler without h (the course
+// scene blows up).
 TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   const fs::path dir = kWork / "class-report";
   fs::remove_all(dir);
@@ -1041,6 +1042,7 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   reference("a-reference");
   mutant("b-mutant-t1", "t1-duplicates");
   mutant("c-mutant-t13", "t13-k4-from-k2");
+  mutant("a2-mutant-t10", "t10-no-h");  // its course scene blows up (the first to fail it)
   std::ofstream(reference("d-no-compile") / "forces.cpp", std::ios::app)
       << "\n#error <script>alert(\"class\")</script>\n";
   fs::copy_file(kHostile / "infinite_loop" / "integrators.cpp",
@@ -1052,8 +1054,8 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   ASSERT_EQ(r.status, 0) << r.out;
 
   const Json c = read_json(dir / "out" / "class.json");
-  EXPECT_EQ(c["students"], 7);
-  EXPECT_EQ(c["graded"], 7);
+  EXPECT_EQ(c["students"], 8);
+  EXPECT_EQ(c["graded"], 8);
   EXPECT_EQ(c["score"]["full_marks"], 1) << "the reference";
   EXPECT_EQ(c["score"]["histogram"][0]["count"], 1) << "the stubs";
   auto failed_case = [&](const std::string& task, const std::string& id) -> Json {
@@ -1159,8 +1161,18 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
                             "twice"),
             std::string::npos)
       << lecture_md;
-  EXPECT_NE(lecture_md.find("- did not compile: 1 student (14%)"), std::string::npos)
-      << lecture_md;
+  EXPECT_NE(lecture_md.find("- did not compile: 1 student ("), std::string::npos) << lecture_md;
+  // A course scene the stability detector stopped, said plainly, in every view and the record.
+  EXPECT_EQ(first_failure("a2-mutant-t10", "a1.course.scene")
+                .rfind("the stability detector fired shortly after t = ", 0),
+            0u)
+      << first_failure("a2-mutant-t10", "a1.course.scene");
+  for (const std::string& text : {md, lecture_md})
+    EXPECT_NE(text.find("the stability detector fired shortly after t = "), std::string::npos)
+        << "the course scene's example\n"
+        << text;
+  for (const std::string& text : {html, md, lecture_md, lecture_html})
+    EXPECT_EQ(text.find("without the stability detector firing"), std::string::npos);
   // A number the public data has too (a time step, a cube's size) is no secret.
   std::set<std::string> hidden, brief, shown;
   std::function<void(const Json&, std::set<std::string>&, const char*, std::size_t)> numbers =
