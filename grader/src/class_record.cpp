@@ -202,7 +202,8 @@ void write_class_files(const fs::path& out, const std::vector<Json>& records, co
   write_file_atomically(out / "class.json", summary.dump(1) + "\n");
   write_file_atomically(out / "class.md", class_markdown(summary, ClassView::Lecture));
   write_file_atomically(out / "class.html", class_html(summary, ClassView::Lecture));
-  write_file_atomically(out / "class-instructor.md", class_markdown(summary, ClassView::Instructor));
+  write_file_atomically(out / "class-instructor.md",
+                        class_markdown(summary, ClassView::Instructor));
   write_file_atomically(out / "class-instructor.html", class_html(summary, ClassView::Instructor));
 }
 

@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "commands/common.hpp"
 #include "class_report_fields.hpp"
+#include "commands/common.hpp"
 #include "text_safety.hpp"
 
 namespace jelly::grade {
@@ -98,10 +98,10 @@ struct Group {
 
 // What the graded students' failed tests add up to.
 struct Tally {
-  std::map<std::string, Group> groups;                          // by case id
+  std::map<std::string, Group> groups;                         // by case id
   std::map<std::string, std::map<std::string, int>> mistakes;  // task → hint → students
-  std::map<std::string, int> hidden_failed;                     // task → students
-  std::map<std::string, int> kinds;                             // abnormal kind → students
+  std::map<std::string, int> hidden_failed;                    // task → students
+  std::map<std::string, int> kinds;                            // abnormal kind → students
   Json abnormal = Json::array();
 };
 
@@ -116,8 +116,8 @@ const TaskSpec* task_of(const CaseBook& book, const std::string& id) {
 // file of its own (a course scene) runs all the student's code, with the stub of the failed file.
 // Its failures then follow from the compile error, which is counted once, apart.
 bool follows_from_compile_error(const Json& r, const TaskSpec* task) {
-  const bool compile_failed = !list(r, "failed_files").empty() ||
-                              (r.contains("compiled") && !flag(r, "compiled"));
+  const bool compile_failed =
+      !list(r, "failed_files").empty() || (r.contains("compiled") && !flag(r, "compiled"));
   return compile_failed && task && task->file.empty();
 }
 

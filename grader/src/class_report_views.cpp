@@ -87,8 +87,8 @@ std::string tasks_without_failure(const Json& s) {
 }
 
 std::string kind_text(const Json& k) {
-  return str(k, "kind") + ": " + students(static_cast<std::size_t>(k.value("students", 0))) +
-         " (" + percent(num(k, "share")) + ")";
+  return str(k, "kind") + ": " + students(static_cast<std::size_t>(k.value("students", 0))) + " (" +
+         percent(num(k, "share")) + ")";
 }
 
 }  // namespace
@@ -354,8 +354,8 @@ void html_instructor_tasks(std::ostringstream& o, const Json& s) {
     if (!task_failed(t)) continue;
     o << "<h3>" << h(task_name(t)) << "</h3>\n<table>\n";
     for (const Json& m : t["known_mistakes"])
-      o << "<tr><td class=\"n\">" << css_bar(num(m, "share"), "#c0392b")
-        << m.value("students", 0) << "</td><td><b>" << hs(m, "mistake")
+      o << "<tr><td class=\"n\">" << css_bar(num(m, "share"), "#c0392b") << m.value("students", 0)
+        << "</td><td><b>" << hs(m, "mistake")
         << "</b><span class=\"tag\">known mistake</span></td></tr>\n";
     for (const Json& c : t["failed_cases"]) {
       const int n = c.value("students", 0);
@@ -373,8 +373,8 @@ void html_kinds(std::ostringstream& o, const Json& s) {
   if (s["failure_kinds"].empty()) o << "<p>None.</p>\n";
   o << "<table>\n";
   for (const Json& k : s["failure_kinds"])
-    o << "<tr><td class=\"n\">" << css_bar(num(k, "share"), "#c0392b")
-      << percent(num(k, "share")) << "</td><td><b>" << hs(k, "kind") << "</b> <span class=\"dim\">("
+    o << "<tr><td class=\"n\">" << css_bar(num(k, "share"), "#c0392b") << percent(num(k, "share"))
+      << "</td><td><b>" << hs(k, "kind") << "</b> <span class=\"dim\">("
       << students(k.value("students", 0u)) << ")</span></td></tr>\n";
   o << "</table>\n";
 }
@@ -413,8 +413,7 @@ void html_instructor_lists(std::ostringstream& o, const Json& s) {
   o << "<h2>Missing task files</h2>\n";
   const Json& miss = s["missing_files"];
   if (none(miss["students"])) return;
-  o << "<p class=\"warn\">Missing task files: <b>" << students(miss["students"].size())
-    << "</b> (";
+  o << "<p class=\"warn\">Missing task files: <b>" << students(miss["students"].size()) << "</b> (";
   bool first = true;
   for (const Json& f : miss["by_file"]) {
     o << (first ? "" : ", ") << hs(f, "file") << " " << f.value("students", 0);

@@ -207,7 +207,8 @@ void say_blow_up_plainly(CaseResult& r) {
   else if (t.is_object() && t.contains("value") && t["value"].is_array())
     when = " before its first sample";
   const Json& d = r.spec->params.contains("duration") ? r.spec->params["duration"] : Json();
-  const std::string of = d.is_number() ? " (the run was to last " + fmt(d.get<double>()) + " s)" : "";
+  const std::string of =
+      d.is_number() ? " (the run was to last " + fmt(d.get<double>()) + " s)" : "";
   r.failures.erase(old);
   r.failures.insert(r.failures.begin(),
                     "the stability detector fired" + when + of +

@@ -197,9 +197,9 @@ TEST(ClassReport, StudentTextIsEscapedInHtmlAndMarkdown) {
   EXPECT_NE(md.find("\\[x\\](http://e.vil)"), std::string::npos) << "a student's link stays text";
   EXPECT_EQ(md.find("**bold**"), std::string::npos) << "a student's emphasis stays text";
   for (const char* section :
-       {"# What the class got wrong: The jelly cube", "## Scores", "## Tasks", "## What failed, task by task",
-        "### A1.T4 Spring force", "## Did not compile", "## Timed out or crashed",
-        "## Could not be graded", "## Missing task files",
+       {"# What the class got wrong: The jelly cube", "## Scores", "## Tasks",
+        "## What failed, task by task", "### A1.T4 Spring force", "## Did not compile",
+        "## Timed out or crashed", "## Could not be graded", "## Missing task files",
         "**Missing task files: 1 student** (forces.cpp 1)"})
     EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
   // Every table row of the failed tests has its three cells: a student's | is escaped.
@@ -229,8 +229,8 @@ bool has_word(const std::string& text, const std::string& word) {
   const auto alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
   for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
     const bool before = at > 0 && alnum(text[at - 1]) && alnum(word.front());
-    const bool after = at + word.size() < text.size() && alnum(text[at + word.size()]) &&
-                       alnum(word.back());
+    const bool after =
+        at + word.size() < text.size() && alnum(text[at + word.size()]) && alnum(word.back());
     if (!before && !after) return true;
   }
   return false;
@@ -317,8 +317,8 @@ TEST(ClassReport, KnownMistakesAreCountedOncePerStudentInTheHintsWords) {
 
 TEST(ClassReport, ACompileErrorIsCountedOnceNotAmongTheCourseScenesFailures) {
   g::CaseBook b = book();
-  b.rubric.tasks.push_back({"A1.COURSE", "Course scene (all your code)", "integration", "", "", 0,
-                            false});
+  b.rubric.tasks.push_back(
+      {"A1.COURSE", "Course scene (all your code)", "integration", "", "", 0, false});
   g::CaseSpec course;
   course.id = "course";
   course.task = "A1.COURSE";
@@ -333,8 +333,8 @@ TEST(ClassReport, ACompileErrorIsCountedOnceNotAmongTheCourseScenesFailures) {
         {{"id", "A1.COURSE"}, {"score", 0.0}, {"max_score", 0.0}, {"bonus", false}});
     return rec;
   };
-  const Json broken = Json::array(
-      {{{"file", "forces.cpp"}, {"what", "did not compile"}, {"message", "error: x"}}});
+  const Json broken =
+      Json::array({{{"file", "forces.cpp"}, {"what", "did not compile"}, {"message", "error: x"}}});
   std::vector<Json> r;
   r.push_back(with_course(graded("amy", {}), true));
   // bo's forces.cpp did not compile: its tests are not run, the course scene ran with the stub.
