@@ -100,8 +100,9 @@ Json student_record(const Submission& sub, const GradeReport* report, const std:
   r["tasks"] = tasks;
   Json cases = Json::array();
   for (const CaseResult& c : report->cases) {
-    Json failures = Json::array();
+    Json failures = Json::array(), hints = Json::array();
     for (const std::string& f : c.failures) failures.push_back(safe_text(f));
+    for (const std::string& h : c.hints) hints.push_back(safe_text(h));
     cases.push_back({{"id", c.spec->id},
                      {"task", c.spec->task},
                      {"hidden", c.spec->hidden},
@@ -110,7 +111,8 @@ Json student_record(const Submission& sub, const GradeReport* report, const std:
                      {"max_score", c.max_score},
                      {"abnormal", c.abnormal},
                      {"not_run", c.not_run},
-                     {"failures", failures}});
+                     {"failures", failures},
+                     {"hints", hints}});
   }
   r["cases"] = cases;
   (void)book;
@@ -193,13 +195,16 @@ std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
   return csv;
 }
 
-void write_class_files(const fs::path& out, const std::vector<Json>& records,
-                       const CaseBook& book) {
+void write_class_files(const fs::path& out, const std::vector<Json>& records, const CaseBook& book,
+                       const std::string& title) {
   write_file_atomically(out / "scores.csv", scores_csv(records, book));
-  const Json summary = class_summary(records, book);
+  const Json summary = class_summary(records, book, title);
   write_file_atomically(out / "class.json", summary.dump(1) + "\n");
-  write_file_atomically(out / "class.md", class_markdown(summary));
-  write_file_atomically(out / "class.html", class_html(summary));
+  write_file_atomically(out / "class.md", class_markdown(summary, ClassView::Lecture));
+  write_file_atomically(out / "class.html", class_html(summary, ClassView::Lecture));
+  write_file_atomically(out / "class-instructor.md",
+                        class_markdown(summary, ClassView::Instructor));
+  write_file_atomically(out / "class-instructor.html", class_html(summary, ClassView::Instructor));
 }
 
 }  // namespace jelly::grade

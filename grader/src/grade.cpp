@@ -185,6 +185,37 @@ void make_safe(GradeReport& rep) {
   }
 }
 
+// A run the stability detector stopped (contract §8; the runners' output "finished" is 0 then),
+// said plainly instead of as its failed check ("reached 10 s without the detector firing: got 0,
+// expected between 1 and 1"), first, since the case's other failures follow from it. When the run
+// was sampled ("com_time": the last sample before the detector fired), it says when.
+void say_blow_up_plainly(CaseResult& r) {
+  const Json& mine = r.outputs.contains("finished") ? r.outputs["finished"] : Json();
+  if (!mine.is_object() || !mine.contains("value") || !mine["value"].is_number() ||
+      mine["value"].get<double>() != 0.0 || !r.reference.contains("finished"))
+    return;
+  const std::string name = "finished";
+  const auto old = std::find_if(r.failures.begin(), r.failures.end(), [&](const std::string& f) {
+    return f.rfind(name + " — ", 0) == 0 || f.rfind(name + ":", 0) == 0;
+  });
+  if (old == r.failures.end()) return;  // a case where stopping early passes
+  std::string when;
+  const Json& t = r.outputs.contains("com_time") ? r.outputs["com_time"] : Json();
+  if (t.is_object() && t.contains("value") && t["value"].is_array() && !t["value"].empty() &&
+      t["value"].back().is_number())
+    when = " shortly after t = " + fmt(t["value"].back().get<double>()) + " s";
+  else if (t.is_object() && t.contains("value") && t["value"].is_array())
+    when = " before its first sample";
+  const Json& d = r.spec->params.contains("duration") ? r.spec->params["duration"] : Json();
+  const std::string of =
+      d.is_number() ? " (the run was to last " + fmt(d.get<double>()) + " s)" : "";
+  r.failures.erase(old);
+  r.failures.insert(r.failures.begin(),
+                    "the stability detector fired" + when + of +
+                        ": the simulation blew up (its energy or positions ran away); this "
+                        "test's other failures follow from that");
+}
+
 // Runs case `r` with `runner` and judges it against `ref`. Throws on a result it cannot digest;
 // the caller makes that the test's failure.
 void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const CaseBook& book,
@@ -284,6 +315,7 @@ void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const
                book.tolerances, r.failures) &&
          ok;
   }
+  if (!ok) say_blow_up_plainly(r);
   r.status = ok ? "passed" : "failed";
   r.score = ok ? r.max_score : 0.0;
 }

@@ -1,18 +1,27 @@
 // The class report (grader/src/class_report.cpp) on made-up student records: no compiler, no
 // runner. What it counts, which student it takes as the example, that the same records in
-// another order give the same bytes, and that a student's text cannot inject HTML or Markdown.
+// another order give the same bytes, that a student's text cannot inject HTML or Markdown, and
+// that the lecture's view names no student and shows no hidden test.
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "class_report.hpp"
+#include "text_safety.hpp"
 
 namespace g = jelly::grade;
 using g::Json;
 
 namespace {
+
+const std::string kTitle = "The jelly cube";
+// The hidden case's inputs, as a real hidden case has them; its failure message quotes them.
+const Json kHiddenParams = {{"x_a", {0.893, 0.1174, 2.25}}, {"ks", 713.5}, {"rest", 0.9376}};
+const std::string kHiddenMessage =
+    "spring_force — on x_a=(0.893, 0.1174, 2.25) ks=713.5 rest=0.9376: expected 41.6602, got 3.3";
 
 g::CaseBook book() {
   g::CaseBook b;
@@ -25,6 +34,7 @@ g::CaseBook book() {
     c.task = id[1] == '1' ? "A1.T1" : "A1.T4";
     c.title = std::string("title of ") + id;
     c.hidden = std::string(id) == "t4.b";
+    if (c.hidden) c.params = kHiddenParams;
     b.cases.push_back(c);
   }
   return b;
@@ -60,7 +70,8 @@ Json graded(const std::string& id, std::vector<Json> failed, Json failed_files =
   return {{"format", "jelly-grade student record 1"},
           {"assignment", "a1"},
           {"id", id},
-          {"name", ""},
+          {"name", "Name of " + id},
+          {"email", id + "@example.edu"},
           {"status", "graded"},
           {"error", ""},
           {"score", t1 + t4},
@@ -81,7 +92,7 @@ std::vector<Json> the_class() {
   r.push_back(graded("alice", {}));
   r.push_back(graded("bob", {a_case("t4.a", false, "expected 1, got 2")}));
   r.push_back(graded("carol", {a_case("t4.a", false, "expected 1, got 3"),
-                               a_case("t4.b", false, "carol's hidden failure")}));
+                               a_case("t4.b", false, kHiddenMessage)}));
   r.push_back(graded("dave",
                      {a_case("t1.a", false, "forces.cpp did not compile", "", true),
                       a_case("t1.b", false, "forces.cpp did not compile", "", true)},
@@ -94,7 +105,8 @@ std::vector<Json> the_class() {
   r.push_back({{"format", "jelly-grade student record 1"},
                {"assignment", "a1"},
                {"id", "frank"},
-               {"name", ""},
+               {"name", "Frank Notgraded"},
+               {"email", "frank@example.edu"},
                {"status", "not graded"},
                {"error", "no task file found " + kHostile}});
   r.push_back(graded("gina", {a_case("t4.a", false, "expected 1, got 0")}, Json::array(),
@@ -106,7 +118,7 @@ std::vector<Json> the_class() {
 }  // namespace
 
 TEST(ClassReport, CountsGroupsAndExamples) {
-  const Json s = g::class_summary(the_class(), book());
+  const Json s = g::class_summary(the_class(), book(), kTitle);
   EXPECT_EQ(s["students"], 8);
   EXPECT_EQ(s["graded"], 7);
   EXPECT_EQ(s["not_graded"], 1);
@@ -157,18 +169,20 @@ TEST(ClassReport, CountsGroupsAndExamples) {
 TEST(ClassReport, TheSameRecordsInAnotherOrderGiveTheSameBytes) {
   std::vector<Json> r = the_class();
   const g::CaseBook b = book();
-  const Json s = g::class_summary(r, b);
+  const Json s = g::class_summary(r, b, kTitle);
   std::reverse(r.begin(), r.end());
   std::rotate(r.begin(), r.begin() + 3, r.end());
-  const Json t = g::class_summary(r, b);
+  const Json t = g::class_summary(r, b, kTitle);
   EXPECT_EQ(s.dump(), t.dump());
-  EXPECT_EQ(g::class_markdown(s), g::class_markdown(t));
-  EXPECT_EQ(g::class_html(s), g::class_html(t));
+  for (const g::ClassView v : {g::ClassView::Lecture, g::ClassView::Instructor}) {
+    EXPECT_EQ(g::class_markdown(s, v), g::class_markdown(t, v));
+    EXPECT_EQ(g::class_html(s, v), g::class_html(t, v));
+  }
 }
 
 TEST(ClassReport, StudentTextIsEscapedInHtmlAndMarkdown) {
-  const Json s = g::class_summary(the_class(), book());
-  const std::string html = g::class_html(s);
+  const Json s = g::class_summary(the_class(), book(), kTitle);
+  const std::string html = g::class_html(s, g::ClassView::Instructor);
   EXPECT_EQ(html.find("<script"), std::string::npos) << html;
   EXPECT_EQ(html.find("<a "), std::string::npos);
   EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
@@ -178,14 +192,14 @@ TEST(ClassReport, StudentTextIsEscapedInHtmlAndMarkdown) {
         "<h2>Missing task files</h2>", "<svg", "Instructor-only"})
     EXPECT_NE(html.find(section), std::string::npos) << section;
 
-  const std::string md = g::class_markdown(s);
+  const std::string md = g::class_markdown(s, g::ClassView::Instructor);
   EXPECT_EQ(md.find("<script"), std::string::npos) << md;
   EXPECT_NE(md.find("\\[x\\](http://e.vil)"), std::string::npos) << "a student's link stays text";
   EXPECT_EQ(md.find("**bold**"), std::string::npos) << "a student's emphasis stays text";
   for (const char* section :
-       {"# What the class got wrong: a1", "## Scores", "## Tasks", "## What failed, task by task",
-        "### A1.T4 Spring force", "## Did not compile", "## Timed out or crashed",
-        "## Could not be graded", "## Missing task files",
+       {"# What the class got wrong: The jelly cube", "## Scores", "## Tasks",
+        "## What failed, task by task", "### A1.T4 Spring force", "## Did not compile",
+        "## Timed out or crashed", "## Could not be graded", "## Missing task files",
         "**Missing task files: 1 student** (forces.cpp 1)"})
     EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
   // Every table row of the failed tests has its three cells: a student's | is escaped.
@@ -196,4 +210,157 @@ TEST(ClassReport, StudentTextIsEscapedInHtmlAndMarkdown) {
   for (std::size_t i = 0; i < line.size(); ++i)
     if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
   EXPECT_EQ(bars, 4u) << line;
+}
+
+namespace {
+
+// Every number in `j` (the hidden case's parameters), as JSON and as a message shows it.
+void numbers_of(const Json& j, std::vector<std::string>& out) {
+  if (j.is_number()) {
+    out.push_back(j.dump());
+    return;
+  }
+  if (j.is_structured())
+    for (const Json& e : j) numbers_of(e, out);
+}
+
+// Whether `word` stands in `text` as a word of its own (an id "eve" is not the "eve" of "every").
+bool has_word(const std::string& text, const std::string& word) {
+  const auto alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    const bool before = at > 0 && alnum(text[at - 1]) && alnum(word.front());
+    const bool after =
+        at + word.size() < text.size() && alnum(text[at + word.size()]) && alnum(word.back());
+    if (!before && !after) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(ClassReport, TheLectureViewNamesNoStudentAndShowsNoHiddenTest) {
+  const std::vector<Json> records = the_class();
+  const g::CaseBook b = book();
+  const Json s = g::class_summary(records, b, kTitle);
+  const std::string html = g::class_html(s, g::ClassView::Lecture);
+  const std::string md = g::class_markdown(s, g::ClassView::Lecture);
+  std::vector<std::string> hidden;  // the hidden case's id, title, inputs and failure
+  for (const g::CaseSpec& c : b.cases)
+    if (c.hidden) {
+      hidden.push_back(c.id);
+      hidden.push_back(c.title);
+      numbers_of(c.params, hidden);
+    }
+  hidden.push_back("41.6602");  // its expected value
+  ASSERT_GE(hidden.size(), 6u);
+  const std::string instructor = g::class_html(s, g::ClassView::Instructor);
+  EXPECT_NE(instructor.find("713.5"), std::string::npos) << "the instructor's view shows it";
+  for (const std::string& text : {html, md}) {
+    for (const Json& r : records)
+      for (const char* key : {"id", "name", "email"}) {
+        const std::string v = r.value(key, "");
+        ASSERT_FALSE(v.empty()) << key;
+        // The escaped forms too: an id with HTML in it is shown escaped.
+        for (const std::string& form : {v, v.substr(0, v.find('<')), g::html_escape(v)})
+          EXPECT_FALSE(has_word(text, form)) << key << " " << form << "\n" << text;
+      }
+    for (const std::string& v : hidden) EXPECT_EQ(text.find(v), std::string::npos) << v;
+    EXPECT_EQ(text.find("hidden failure"), std::string::npos);
+  }
+  // What it shows instead: counts, shares and the tests' titles.
+  EXPECT_NE(html.find("What the class got wrong: The jelly cube"), std::string::npos);
+  EXPECT_NE(md.find("**43% of the class (3 students)**: failed the test “title of t4.a”"),
+            std::string::npos)
+      << "bob, carol and gina of 7 graded\n"
+      << md;
+  EXPECT_NE(md.find("**14% of the class (1 student)**: failed a hidden test of this task"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("- did not compile: 1 student (14%)"), std::string::npos) << md;
+  EXPECT_NE(md.find("- timed out: 1 student (14%)"), std::string::npos) << md;
+  EXPECT_NE(md.find("- missing task files: 1 student (14%)"), std::string::npos) << md;
+  EXPECT_NE(md.find("- could not be graded: 1 student (14%)"), std::string::npos) << md;
+  for (const char* instructor_only :
+       {"## Did not compile\n", "## Timed out or crashed", "## Could not be graded"})
+    EXPECT_EQ(md.find(instructor_only), std::string::npos) << instructor_only;
+  EXPECT_NE(html.find("class-instructor.html"), std::string::npos) << "where the rest is";
+}
+
+TEST(ClassReport, KnownMistakesAreCountedOncePerStudentInTheHintsWords) {
+  std::vector<Json> r;
+  const std::string rk4 = "RK4 with equal weights (h/4 each)";
+  Json hinted = a_case("t4.a", false, "expected 1, got 2");
+  hinted["hints"] = Json::array({rk4});
+  Json hinted_too = a_case("t1.a", false, "expected 1, got 2");
+  hinted_too["hints"] = Json::array({rk4});
+  // ann's mistake shows in two tests of one task: one student.
+  Json twice = a_case("t4.a", false, "expected 1, got 2");
+  twice["hints"] = Json::array({rk4});
+  r.push_back(graded("ann", {twice}));
+  r.push_back(graded("ben", {hinted}));
+  r.push_back(graded("cid", {a_case("t4.a", false, "expected 1, got 9")}));
+  r.push_back(graded("dot", {}));
+  r.push_back(graded("eli", {hinted_too}));
+  const Json s = g::class_summary(r, book(), kTitle);
+  const Json& t4 = s["tasks"][1];
+  ASSERT_EQ(t4["known_mistakes"].size(), 1u) << t4.dump(1);
+  EXPECT_EQ(t4["known_mistakes"][0]["mistake"], rk4);
+  EXPECT_EQ(t4["known_mistakes"][0]["students"], 2);
+  EXPECT_DOUBLE_EQ(t4["known_mistakes"][0]["share"].get<double>(), 0.4);
+  EXPECT_EQ(s["tasks"][0]["known_mistakes"][0]["students"], 1) << "eli's, in A1.T1";
+  const std::string md = g::class_markdown(s, g::ClassView::Lecture);
+  EXPECT_NE(md.find("- **40% of the class (2 students)**: RK4 with equal weights (h/4 each)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(g::class_html(s, g::ClassView::Lecture).find(rk4), std::string::npos);
+}
+
+TEST(ClassReport, ACompileErrorIsCountedOnceNotAmongTheCourseScenesFailures) {
+  g::CaseBook b = book();
+  b.rubric.tasks.push_back(
+      {"A1.COURSE", "Course scene (all your code)", "integration", "", "", 0, false});
+  g::CaseSpec course;
+  course.id = "course";
+  course.task = "A1.COURSE";
+  course.title = "the course scene";
+  b.cases.push_back(course);
+  auto with_course = [](Json rec, bool passed) {
+    Json c = a_case("course", passed, passed ? "" : "the stability detector fired");
+    c["task"] = "A1.COURSE";
+    c["max_score"] = 0.0;
+    rec["cases"].push_back(c);
+    rec["tasks"].push_back(
+        {{"id", "A1.COURSE"}, {"score", 0.0}, {"max_score", 0.0}, {"bonus", false}});
+    return rec;
+  };
+  const Json broken =
+      Json::array({{{"file", "forces.cpp"}, {"what", "did not compile"}, {"message", "error: x"}}});
+  std::vector<Json> r;
+  r.push_back(with_course(graded("amy", {}), true));
+  // bo's forces.cpp did not compile: its tests are not run, the course scene ran with the stub.
+  r.push_back(with_course(graded("bo",
+                                 {a_case("t4.a", false, "not run", "", true),
+                                  a_case("t4.b", false, "not run", "", true)},
+                                 broken),
+                          false));
+  r.push_back(with_course(graded("cy", {}), false));
+  const Json s = g::class_summary(r, b, kTitle);
+  const Json& course_task = s["tasks"][2];
+  ASSERT_EQ(course_task["id"], "A1.COURSE");
+  ASSERT_EQ(course_task["failed_cases"].size(), 1u) << course_task.dump(1);
+  EXPECT_EQ(course_task["failed_cases"][0]["students"], 1) << "cy only";
+  EXPECT_EQ(course_task["failed_cases"][0]["example"]["student"], "cy");
+  ASSERT_EQ(s["failure_kinds"].size(), 1u) << s["failure_kinds"].dump(1);
+  EXPECT_EQ(s["failure_kinds"][0]["kind"], "did not compile");
+  EXPECT_EQ(s["failure_kinds"][0]["students"], 1);
+  // The tasks nobody failed: one line, not a heading each.
+  const std::string md = g::class_markdown(s, g::ClassView::Instructor);
+  EXPECT_NE(md.find("**No test failed:** A1.T1 Structural springs, A1.T4 Spring force\n"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("### A1.T1"), std::string::npos) << md;
+  EXPECT_EQ(md.find("No test failed.\n"), std::string::npos) << md;
+  EXPECT_NE(g::class_markdown(s, g::ClassView::Lecture)
+                .find("**No test failed:** A1.T1 Structural springs, A1.T4 Spring force\n"),
+            std::string::npos);
 }

@@ -1005,9 +1005,11 @@ TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
   EXPECT_EQ(ids, (std::set<std::string>{"mary-ann", "mary-jane", "zed"})) << r2.out;
 }
 
-// The class report (class.json, class.md, class.html) of a small class: the reference, the stubs,
-// two of the grader's mutants, a file that does not compile (its message quotes HTML), a function
-// that never returns and a missing task file (in a folder whose name is HTML).
+// The class report (class.json; class.md and class.html to project; class-instructor.md and
+// class-instructor.html) of a small class: the reference, the stubs, two of the grader's mutants, a
+// file that does not compile (its message quotes HTML), a function that never returns and a
+// missing task file (in a folder whose name is HTML), and explicit Euler without h (the course
+// scene blows up).
 TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   const fs::path dir = kWork / "class-report";
   fs::remove_all(dir);
@@ -1040,6 +1042,7 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   reference("a-reference");
   mutant("b-mutant-t1", "t1-duplicates");
   mutant("c-mutant-t13", "t13-k4-from-k2");
+  mutant("a2-mutant-t10", "t10-no-h");  // its course scene blows up (the first to fail it)
   std::ofstream(reference("d-no-compile") / "forces.cpp", std::ios::app)
       << "\n#error <script>alert(\"class\")</script>\n";
   fs::copy_file(kHostile / "infinite_loop" / "integrators.cpp",
@@ -1051,8 +1054,8 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   ASSERT_EQ(r.status, 0) << r.out;
 
   const Json c = read_json(dir / "out" / "class.json");
-  EXPECT_EQ(c["students"], 7);
-  EXPECT_EQ(c["graded"], 7);
+  EXPECT_EQ(c["students"], 8);
+  EXPECT_EQ(c["graded"], 8);
   EXPECT_EQ(c["score"]["full_marks"], 1) << "the reference";
   EXPECT_EQ(c["score"]["histogram"][0]["count"], 1) << "the stubs";
   auto failed_case = [&](const std::string& task, const std::string& id) -> Json {
@@ -1099,14 +1102,42 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   EXPECT_EQ(c["missing_files"]["students"][0]["student"], safe_id);
   EXPECT_EQ(c["missing_files"]["students"][0]["files"], Json::array({"contact.cpp"}));
 
-  const std::string md = read_text(dir / "out" / "class.md");
+  // d-no-compile's forces.cpp did not compile: the course scene ran with its stub and failed,
+  // which follows from the compile error and is not counted again.
+  for (const Json& t : c["tasks"])
+    for (const Json& fc : t["failed_cases"])
+      if (fc["case"] == "a1.course.scene") {
+        int failed = 0;
+        for (const fs::directory_entry& e : fs::directory_iterator(dir / "out" / "students")) {
+          if (e.path().filename() == "d-no-compile") continue;
+          const Json record = read_json(e.path() / "record.json");
+          for (const Json& k : record["cases"])
+            if (k["id"] == "a1.course.scene" && k["status"] == "failed" && k["abnormal"] == "")
+              ++failed;
+        }
+        EXPECT_EQ(fc["students"], failed) << fc.dump(1);
+        EXPECT_NE(fc["example"]["student"], "d-no-compile");
+      }
+  // The mutants' mistakes in the hints' words (hints.json), one student each.
+  auto mistake = [&](const std::string& task, const std::string& what) {
+    for (const Json& t : c["tasks"])
+      if (t["id"] == task)
+        for (const Json& m : t["known_mistakes"])
+          if (m["mistake"] == what) return m["students"].get<int>();
+    return 0;
+  };
+  EXPECT_EQ(mistake("A1.T1", "every (1,0,0) structural spring built twice"), 1) << c.dump(1);
+  EXPECT_EQ(mistake("A1.T13", "k4 evaluated from k2 instead of k3"), 1);
+
+  const std::string md = read_text(dir / "out" / "class-instructor.md");
   for (const char* section :
-       {"# What the class got wrong: a1", "## Scores", "## Tasks", "## What failed, task by task",
-        "### A1.T13", "## Did not compile", "- d-no-compile: forces.cpp did not compile",
-        "## Timed out or crashed", "- e-loop: timed out in ", "## Could not be graded\n\nNone.",
-        "## Missing task files", "**Missing task files: 1 student** (contact.cpp 1)"})
+       {"# What the class got wrong: The jelly cube", "## Scores", "## Tasks",
+        "## What failed, task by task", "### A1.T13", "## Did not compile",
+        "- d-no-compile: forces.cpp did not compile", "## Timed out or crashed",
+        "- e-loop: timed out in ", "## Could not be graded\n\nNone.", "## Missing task files",
+        "**Missing task files: 1 student** (contact.cpp 1)"})
     EXPECT_NE(md.find(section), std::string::npos) << section << "\n" << md;
-  const std::string html = read_text(dir / "out" / "class.html");
+  const std::string html = read_text(dir / "out" / "class-instructor.html");
   EXPECT_EQ(html.find("<script"), std::string::npos) << "the compile error's text is escaped";
   EXPECT_EQ(html.find("<b onclick"), std::string::npos) << "the folder name is escaped";
   EXPECT_NE(html.find("f-_b onclick=x_&amp;missing"), std::string::npos);
@@ -1114,8 +1145,102 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
   EXPECT_NE(html.find("&lt;script&gt;alert(&quot;class&quot;)&lt;/script&gt;"), std::string::npos);
   // No path of this machine in the class files (a merge of shards elsewhere gives the same
   // bytes).
-  for (const std::string& text : {html, md, read_text(dir / "out" / "class.json")})
+  const std::string lecture_md = read_text(dir / "out" / "class.md");
+  const std::string lecture_html = read_text(dir / "out" / "class.html");
+  for (const std::string& text :
+       {html, md, read_text(dir / "out" / "class.json"), lecture_md, lecture_html})
     EXPECT_EQ(text.find(kWork.string()), std::string::npos);
+
+  // The lecture's view (class.md, class.html): the assignment's name, what went wrong counted,
+  // and no student and no hidden test: no id (the folder names), no hidden case's id or title,
+  // no number of its inputs or expected values (as the grader prints them, %.10g), and nothing
+  // of the hidden failures' messages (their numbers as the runner prints them too).
+  EXPECT_NE(lecture_md.find("# What the class got wrong: The jelly cube"), std::string::npos);
+  EXPECT_NE(lecture_html.find("<h1>What the class got wrong: The jelly cube</h1>"),
+            std::string::npos);
+  EXPECT_NE(lecture_md.find("of the class (1 student)**: every (1,0,0) structural spring built "
+                            "twice"),
+            std::string::npos)
+      << lecture_md;
+  EXPECT_NE(lecture_md.find("- did not compile: 1 student ("), std::string::npos) << lecture_md;
+  // A course scene the stability detector stopped, said plainly, in every view and the record.
+  EXPECT_EQ(first_failure("a2-mutant-t10", "a1.course.scene")
+                .rfind("the stability detector fired before its first sample (the run was to "
+                       "last 10 s): the simulation blew up",
+                       0),
+            0u)
+      << first_failure("a2-mutant-t10", "a1.course.scene");
+  EXPECT_EQ(first_failure("d-no-compile", "a1.course.scene")
+                .rfind("the stability detector fired shortly after t = ", 0),
+            0u)
+      << first_failure("d-no-compile", "a1.course.scene");
+  for (const std::string& text : {md, lecture_md})
+    EXPECT_NE(text.find("the stability detector fired before its first sample"), std::string::npos)
+        << "the course scene's example\n"
+        << text;
+  for (const std::string& text : {html, md, lecture_md, lecture_html})
+    EXPECT_EQ(text.find("without the stability detector firing"), std::string::npos);
+  // A number the public data has too (a time step, a cube's size) is no secret.
+  std::set<std::string> hidden, brief, shown;
+  std::function<void(const Json&, std::set<std::string>&, const char*, std::size_t)> numbers =
+      [&](const Json& j, std::set<std::string>& into, const char* format, std::size_t least) {
+        if (j.is_number()) {
+          char b[40];
+          std::snprintf(b, sizeof b, format, j.get<double>());
+          if (std::string(b).size() >= least) into.insert(b);
+        } else if (j.is_structured()) {
+          for (const Json& e : j) numbers(e, into, format, least);
+        }
+      };
+  for (const char* vis : {"public", "hidden"})
+    for (const fs::directory_entry& e : fs::directory_iterator(
+             vis == std::string("public") ? kSource / "assignments" / "a1" / "grader" / "data" / vis
+                                          : kSource / "grader" / "data" / "a1" / vis)) {
+      const Json ref = read_json(e.path());
+      std::set<std::string>& into = vis == std::string("public") ? shown : hidden;
+      if (&into == &hidden) hidden.insert(ref["case_id"].get<std::string>());
+      for (const char* key : {"params", "input"}) {
+        numbers(ref.value(key, Json()), into, "%.10g", &into == &hidden ? 6 : 1);
+        if (&into == &shown) numbers(ref.value(key, Json()), shown, "%.3g", 1);
+        if (&into == &shown) numbers(ref.value(key, Json()), shown, "%.4g", 1);
+        if (&into == &hidden) numbers(ref.value(key, Json()), brief, "%.3g", 5);
+        if (&into == &hidden) numbers(ref.value(key, Json()), brief, "%.4g", 5);
+      }
+      for (const auto& [name, out] : ref["outputs"].items())
+        numbers(out.value("value", Json()), into, "%.10g", &into == &hidden ? 6 : 1);
+    }
+  for (const std::string& v : shown) hidden.erase(v);
+  for (const std::string& v : shown) brief.erase(v);
+  std::size_t in_instructor = 0;
+  for (const std::string& v : hidden) in_instructor += md.find(v) != std::string::npos;
+  EXPECT_GT(in_instructor, 0u) << "the instructor's view shows hidden tests; the check can fail";
+  for (const fs::directory_entry& e :
+       fs::directory_iterator(kSource / "assignments" / "a1" / "grader" / "cases")) {
+    const toml::table t = toml::parse_file(e.path().string());
+    if (const toml::array* cases = t["case"].as_array())
+      for (const toml::node& n : *cases)
+        if ((*n.as_table())["visibility"].value_or(std::string()) == "hidden")
+          hidden.insert((*n.as_table())["title"].value_or(std::string()));
+  }
+  // The hidden failures' messages: the numbers of their inputs as the runner prints them.
+  for (const Json& t : c["tasks"])
+    for (const Json& fc : t["failed_cases"])
+      if (fc["hidden"].get<bool>()) {
+        std::istringstream words(fc["example"]["message"].get<std::string>());
+        for (std::string w; words >> w;) {
+          w.erase(0, w.find_first_of("-0123456789"));
+          w = w.substr(0, w.find_first_not_of("0123456789.e-"));
+          if (brief.count(w) && !shown.count(w)) hidden.insert(w);
+        }
+      }
+  for (const std::string& text : {lecture_md, lecture_html}) {
+    for (const std::string& v : hidden)
+      EXPECT_EQ(text.find(v), std::string::npos) << "hidden: " << v;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "out" / "students"))
+      for (const std::string& id :
+           {e.path().filename().string(), std::string("f-_b onclick=x_&amp;missing")})
+        EXPECT_EQ(text.find(id), std::string::npos) << "student: " << id;
+  }
 }
 
 TEST(Grader, GradescopeZipHasTheEntryPointsAndNoSolutions) {

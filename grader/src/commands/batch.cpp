@@ -196,7 +196,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
                          {"class", ids},
                          {"students", mine}};
   write_file_atomically(out / "batch.json", manifest.dump(2) + "\n");
-  write_class_files(out, records, book);
+  write_class_files(out, records, book, config.assignment().manifest.title);
   std::cout << "jelly-grade: graded " << todo.size() << " submissions"
             << (args.shard_count > 1
                     ? " (shard " + shard_label(args.shard_index, args.shard_count) + ")"

@@ -145,7 +145,7 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
   manifest["shard"] = "1/1";
   manifest["students"] = first["class"];
   write_file_atomically(out / "batch.json", manifest.dump(2) + "\n");
-  write_class_files(out, records, book);
+  write_class_files(out, records, book, config.assignment().manifest.title);
   int status = 0;
   for (const Json& r : records)
     if (r.value("status", "") != "graded") status = 1;
