@@ -1474,9 +1474,9 @@ TEST(GraderGuide, ExampleCasePastesAndGenerates) {
   const std::string guide = read_text(kSource / "docs" / "instructor-guide.md");
   const auto section = guide.find("## 2. Add or hide a test");
   ASSERT_NE(section, std::string::npos);
-  const auto open = guide.find("```toml\n[[case]]\n", section);
-  ASSERT_NE(open, std::string::npos) << "the guide's example case block";
-  const auto begin = open + 8;
+  const auto fence = guide.find("```toml\n[[case]]\n", section);
+  ASSERT_NE(fence, std::string::npos) << "the guide's example case block";
+  const auto begin = fence + 8;
   const std::string block = guide.substr(begin, guide.find("```", begin) - begin);
   const auto id_at = block.find("id = \"") + 6;
   const std::string id = block.substr(id_at, block.find('"', id_at) - id_at);

@@ -91,8 +91,8 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
       result = Json::parse(run.result);
     } catch (const std::exception&) {
       std::cerr << "jelly-grade: " << case_location(config, c) << ": the reference failed on "
-                << c.id << " (exit " << run.exit_code
-                << ", signal " << run.signal << "): " << run.err << "\n";
+                << c.id << " (exit " << run.exit_code << ", signal " << run.signal
+                << "): " << run.err << "\n";
       return 2;
     }
     if (!result.contains("outputs")) {

@@ -28,9 +28,8 @@ fs::path manifest_path(const GradeConfig& config) {
 void record_gradescope_zip(const GradeConfig& config, const fs::path& zip) {
   const fs::path record = zip_record(config);
   fs::create_directories(record.parent_path());
-  std::ofstream(record, std::ios::binary)
-      << kZipLine << zip.string() << "\n"
-      << read_file(manifest_path(config));
+  std::ofstream(record, std::ios::binary) << kZipLine << zip.string() << "\n"
+                                          << read_file(manifest_path(config));
 }
 
 std::string stale_gradescope_zip_notice(const GradeConfig& config) {
