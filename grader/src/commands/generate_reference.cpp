@@ -95,6 +95,12 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
                 << "): " << run.err << "\n";
       return 2;
     }
+    if (result.contains("error") && result["error"].is_string()) {
+      // A missing or mistyped parameter: the runner names the key, the case file says where.
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": case " << c.id
+                << ": the reference failed: " << result["error"].get<std::string>() << "\n";
+      return 2;
+    }
     if (!result.contains("outputs")) {
       std::cerr << "jelly-grade: " << case_location(config, c) << ": the reference failed on "
                 << c.id << ": " << result.dump() << "\n";
