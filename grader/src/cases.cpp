@@ -221,6 +221,7 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
       const toml::table& t = *n.as_table();
       CaseSpec c;
       c.source = f.filename().string();
+      c.line = static_cast<int>(n.source().begin.line);
       c.id = t["id"].value_or(std::string());
       c.task = t["task"].value_or(std::string());
       c.title = t["title"].value_or(std::string());
@@ -263,6 +264,10 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
     }
   }
   return book;
+}
+
+std::string case_location(const GradeConfig& config, const CaseSpec& spec) {
+  return (config.cases_dir() / spec.source).string() + ":" + std::to_string(spec.line);
 }
 
 std::filesystem::path reference_path(const GradeConfig& config, const CaseSpec& spec) {

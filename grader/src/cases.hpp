@@ -46,6 +46,7 @@ struct CaseSpec {
   std::string tolerance;         ///< default rule for every output
   std::vector<std::pair<std::string, Rule>> rules;  ///< output-name pattern → rule (first match)
   std::string source;                               ///< file it came from
+  int line = 0;                                     ///< the line of its [[case]] in that file
 
   const Rule rule_for(const std::string& output) const;
 };
@@ -81,6 +82,9 @@ struct CaseBook {
 /// Loads every case file of the assignment and its manifest's rubric (or `rubric_path`); throws
 /// std::runtime_error naming the file and key on any problem (unknown tolerance, task, ...).
 CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path = {});
+
+/// "FILE:LINE" of a case's [[case]] entry, for messages about it (the file's full path).
+std::string case_location(const GradeConfig& config, const CaseSpec& spec);
 
 /// The reference data of one case, or nullopt when its file is absent (hidden data in a release).
 std::optional<Json> load_reference(const GradeConfig& config, const CaseSpec& spec);

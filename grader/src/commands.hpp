@@ -94,6 +94,14 @@ std::string sandbox_setup_lines(const std::string& source);
 /// hidden data).
 int gradescope_zip(const GradeConfig& config, const std::string& zip_path);
 
+/// Records, in the build tree, that `zip` was built from the selected assignment's manifest as it
+/// is now (commands/zip_record.cpp).
+void record_gradescope_zip(const GradeConfig& config, const std::filesystem::path& zip);
+/// One line for standard error when the selected assignment's manifest has changed since the last
+/// Gradescope zip built in this build tree (what the change needs: a new zip, a new release);
+/// "" when it has not, or when no zip was built here.
+std::string stale_gradescope_zip_notice(const GradeConfig& config);
+
 /// One mutant (assignments/<id>/grader/mutants/NAME.toml): a realistic mistake applied to a copy of
 /// the reference.
 struct MutantSpec {

@@ -64,8 +64,8 @@ constexpr const char* kUsage =
     "S] [--no-frames]\n"
     "                    [--resume (keep what a stopped batch graded)] [--shard I/N (the I-th of "
     "N parts)]\n"
+    "                    [--similarity [--threshold P] (also the similarity report)]\n"
     "  jelly-grade merge BATCH_OUT... --out DIR (join the parts of a sharded batch)\n"
-    "                    [--similarity [--threshold P]]\n"
     "  jelly-grade similarity SUBMISSIONS_DIR --out DIR [--threshold P (percent, default 50)]\n"
     "  jelly-grade generate-reference\n"
     "  jelly-grade gradescope-zip OUT.zip\n"
@@ -206,6 +206,10 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       submission);
   // Compares source text: no reference data, no sandbox.
   if (command == "similarity") return similarity_command(config, o.positional, o.out, o.threshold);
+  // A rubric change reaches this grader at once, Gradescope and the self-check only when remade.
+  if (const std::string notice = stale_gradescope_zip_notice(config);
+      !notice.empty() && command != "gradescope-zip")
+    std::cerr << notice << "\n";
   const CaseBook book = load_case_book(config, o.rubric_path);
   if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
     // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
@@ -274,6 +278,14 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       similarity_tool();  // missing: say so before grading
       args.similarity = o.threshold;
     }
+    // Every grading run says which sandbox it grades in (grade: its summary's second line).
+    const Isolation& iso = options.isolation;
+    std::cout << "jelly-grade: sandbox: "
+              << (iso.description.rfind("none", 0) == 0 || iso.description.empty()
+                      ? (iso.description.empty() ? iso.name : iso.description)
+                      : iso.name + " — " + iso.description)
+              << "\n"
+              << std::flush;
     return batch(config, book, args, options);
   }
   if (command == "merge") return merge(config, book, o.parts, o.out);

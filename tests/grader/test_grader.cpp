@@ -190,6 +190,45 @@ TEST(Grader, BadCommandLinesNameTheOptionAndExitTwo) {
   EXPECT_EQ(help.out.rfind("usage:", 0), 0u) << help.out;
 }
 
+// --help lists each option under a command that takes it: for every option of every command's
+// lines, that command (given its required arguments) does not call it unknown. A sentinel unknown
+// option after it makes every command stop at the command line, before it runs.
+TEST(Grader, HelpListsEachOptionUnderACommandThatTakesIt) {
+  const std::map<std::string, std::string> required{{"grade", "x"},
+                                                    {"batch", "x --out y"},
+                                                    {"merge", "x --out y"},
+                                                    {"similarity", "x --out y"},
+                                                    {"gradescope-zip", "x.zip"}};
+  const Cmd help = run("--help");
+  ASSERT_EQ(help.status, 0);
+  std::istringstream lines(help.out);
+  std::string line, command;
+  std::map<std::string, std::set<std::string>> listed;
+  while (std::getline(lines, line)) {
+    if (line.rfind("  jelly-grade ", 0) == 0)
+      command = line.substr(14, line.find(' ', 14) - 14);
+    else if (line.rfind("      ", 0) != 0)
+      command.clear();  // "common options", "sandbox", "exit status": several commands
+    if (command.empty()) continue;
+    for (auto at = line.find("--"); at != std::string::npos; at = line.find("--", at + 2)) {
+      const auto end = line.find_first_not_of("abcdefghijklmnopqrstuvwxyz-", at + 2);
+      listed[command].insert(line.substr(at, end - at));
+    }
+  }
+  EXPECT_EQ(listed["merge"].count("--similarity"), 0u) << "merge takes no --similarity";
+  EXPECT_EQ(listed["batch"].count("--similarity"), 1u) << help.out;
+  EXPECT_GE(listed.size(), 7u) << help.out;  // the commands that take options
+  for (const auto& [cmd, options] : listed)
+    for (const std::string& option : options) {
+      const auto req = required.find(cmd);
+      const Cmd r = run(cmd + " " + (req == required.end() ? "" : req->second) + " " + option +
+                        " --zz-sentinel");
+      EXPECT_EQ(r.status, 2) << cmd << " " << option << ": " << r.out;
+      EXPECT_EQ(r.out.find("unknown option " + option + "\n"), std::string::npos)
+          << "--help lists " << option << " under " << cmd << ", which does not take it";
+    }
+}
+
 TEST(Grader, ReferenceScoresFullMarksAndOutputsHaveTheirSchemas) {
   const Json r = grade(submission("reference"), "reference");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
@@ -1005,6 +1044,17 @@ TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
   EXPECT_EQ(ids, (std::set<std::string>{"mary-ann", "mary-jane", "zed"})) << r2.out;
 }
 
+// A batch, like every grading run, says first which sandbox it grades in (the guide tells the
+// instructor to read it there).
+TEST(Grader, BatchSaysWhichSandboxItGradesIn) {
+  const fs::path dir = kWork / "batch-sandbox";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "in" / "empty");
+  const Cmd r = run("batch " + (dir / "in").string() + " --assignment a1 --out " +
+                    (dir / "out").string() + " --isolation none");
+  EXPECT_NE(r.out.find("jelly-grade: sandbox: none"), std::string::npos) << r.out;
+}
+
 // The class report (class.json; class.md and class.html to project; class-instructor.md and
 // class-instructor.html) of a small class: the reference, the stubs, two of the grader's mutants, a
 // file that does not compile (its message quotes HTML), a function that never returns and a
@@ -1492,6 +1542,111 @@ TEST(GraderAssignment, AScaledRubricStatesEveryTasksNewPoints) {
   const Cmd plain = run("grade " + submission("rubric-plain").string() + " --assignment a1 --out " +
                         (kWork / "out" / "rubric-plain").string() + " --format gradescope");
   EXPECT_EQ(plain.out.find("add up to"), std::string::npos) << plain.out;
+}
+
+// A rubric change reaches the grader at once, but Gradescope only with a new zip and the students'
+// self-check only with a new release: once the manifest differs from the one the last zip of this
+// build tree was built from, every command says so in one line on standard error (and nothing
+// before any zip, or while the manifest is the zip's). One zip: it takes a while.
+TEST(GraderAssignment, AManifestChangedAfterTheGradescopeZipIsSaid) {
+  const fs::path root = kWork / "zip-record";
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const fs::path a1 = root / "a1";
+  fs::copy(kSource / "assignments" / "a1", a1, fs::copy_options::recursive);
+  const fs::path config = config_with("zip-record", [&](Json& cfg) {
+    cfg["binary_dir"] = (root / "build").string();
+    cfg["assignments"]["a1"]["dir"] = a1.string();
+  });
+  // A command that fails after the notice would be printed (no such submission): seconds.
+  const std::string probe = "grade " + (root / "no-submission").string() +
+                            " --assignment a1 --config " + config.string() + " --out " +
+                            (root / "out").string();
+  const std::string notice = "changed after the Gradescope zip";
+  EXPECT_EQ(run(probe).out.find(notice), std::string::npos) << "no zip was built here yet";
+  const fs::path zip = root / "a1.zip";
+  const std::string make_zip =
+      "gradescope-zip " + zip.string() + " --assignment a1 --config " + config.string();
+  const Cmd made = run(make_zip);
+  ASSERT_EQ(made.status, 0) << made.out;
+  EXPECT_EQ(run(probe).out.find(notice), std::string::npos) << "the zip's own manifest";
+
+  std::string text = read_text(a1 / "assignment.toml");
+  const auto key = text.find("autograded_total = 80.0");
+  ASSERT_NE(key, std::string::npos);
+  text.replace(key, 23, "autograded_total = 81.0");
+  std::ofstream(a1 / "assignment.toml", std::ios::binary) << text;
+  const Cmd after = run(probe);
+  const std::string line =
+      "jelly-grade: " + (a1 / "assignment.toml").string() + " changed after the Gradescope zip " +
+      zip.string() +
+      " was built: this grader uses the new manifest now, but Gradescope grades with the zip you "
+      "uploaded (build and upload a new one: jelly-grade gradescope-zip OUT.zip --assignment a1) "
+      "and students self-check with the release they have (publish a new one: "
+      "tools/make-student-release)\n";
+  EXPECT_NE(after.out.find(line), std::string::npos) << after.out;
+
+  // The manifest as the zip has it again: nothing to say.
+  std::ofstream(a1 / "assignment.toml", std::ios::binary)
+      << read_text(kSource / "assignments" / "a1" / "assignment.toml");
+  EXPECT_EQ(run(probe).out.find(notice), std::string::npos) << "the zip's manifest again";
+}
+
+// The instructor guide's example case (§2, "Add or hide a test"), pasted as it is at the end of a
+// copy of A1's forces.toml, is a new case that generate-reference writes ("wrote (new)"); the same
+// block with a mistyped parameter key fails naming the key and the case's file:line. A copy of the
+// tree's grader/runner and assignments/a1 (with forces.toml and tolerances.toml only, for time)
+// stands in for the checkout, so that nothing is written into it.
+TEST(GraderGuide, ExampleCasePastesAndGenerates) {
+  const std::string guide = read_text(kSource / "docs" / "instructor-guide.md");
+  const auto section = guide.find("## 2. Add or hide a test");
+  ASSERT_NE(section, std::string::npos);
+  const auto fence = guide.find("```toml\n[[case]]\n", section);
+  ASSERT_NE(fence, std::string::npos) << "the guide's example case block";
+  const auto begin = fence + 8;
+  const std::string block = guide.substr(begin, guide.find("```", begin) - begin);
+  const auto id_at = block.find("id = \"") + 6;
+  const std::string id = block.substr(id_at, block.find('"', id_at) - id_at);
+
+  const fs::path root = kWork / "guide-case";
+  fs::remove_all(root);
+  const fs::path src = root / "src", a1 = src / "assignments" / "a1";
+  fs::create_directories(src / "grader" / "data" / "a1" / "hidden");
+  fs::create_directories(a1.parent_path());
+  fs::copy(kSource / "grader" / "runner", src / "grader" / "runner", fs::copy_options::recursive);
+  fs::copy(kSource / "assignments" / "a1", a1, fs::copy_options::recursive);
+  for (const auto& e : fs::directory_iterator(a1 / "grader" / "cases")) {
+    const std::string name = e.path().filename().string();
+    EXPECT_EQ(read_text(e.path()).find("id = \"" + id + "\""), std::string::npos)
+        << "the guide's example must be a new case, but " << name << " has " << id;
+    if (name != "forces.toml" && name != "tolerances.toml") fs::remove(e.path());
+  }
+  const fs::path forces = a1 / "grader" / "cases" / "forces.toml";
+  const std::string original = read_text(forces);
+  std::ofstream(forces, std::ios::app) << "\n" << block;
+  const fs::path config = config_with("guide-case", [&](Json& cfg) {
+    cfg["source_dir"] = src.string();
+    cfg["binary_dir"] = (root / "build").string();
+    cfg["assignments"]["a1"]["dir"] = a1.string();
+  });
+  const std::string generate = "generate-reference --assignment a1 --config " + config.string();
+  const Cmd made = run(generate);
+  ASSERT_EQ(made.status, 0) << made.out;
+  EXPECT_NE(made.out.find("  wrote (new) " + id + ".json\n"), std::string::npos) << made.out;
+  EXPECT_TRUE(fs::exists(src / "grader" / "data" / "a1" / "hidden" / (id + ".json")));
+
+  // A mistyped key: the runner names it, the grader adds where the case is.
+  std::string typo = block;
+  const auto seed = typo.find("seed = ");
+  ASSERT_NE(seed, std::string::npos) << "the example's parameters have a seed";
+  typo.replace(seed, 4, "sede");
+  std::ofstream(forces, std::ios::binary) << original << "\n" << typo;
+  const auto line = std::count(original.begin(), original.end(), '\n') + 2;  // its [[case]]
+  const Cmd bad = run(generate);
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  const auto said = bad.out.find(forces.string() + ":" + std::to_string(line) + ": case " + id);
+  EXPECT_NE(said, std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("params.random.seed is missing", said), std::string::npos) << bad.out;
 }
 
 // --rubric: a manifest-shaped file with the term's own points replaces the manifest's.

@@ -62,11 +62,11 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
   const fs::path work = config.binary_dir / "grader" / "generate";
   fs::create_directories(work);
   std::set<fs::path> written;
-  std::vector<std::string> rewritten, removed;
+  std::vector<std::string> rewritten, created, removed;
   std::size_t unchanged = 0;
   for (const CaseSpec& c : book.cases) {
     if (!descriptions.count(c.generator)) {
-      std::cerr << "jelly-grade: " << c.source << ": case " << c.id
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": case " << c.id
                 << ": the runner has no generator \"" << c.generator
                 << "\" (see jelly-grade-reference-runner --list)\n";
       return 2;
@@ -79,8 +79,10 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
         throw std::runtime_error(prepared["error"].get<std::string>());
       input = prepared.at("input");
     } catch (const std::exception& e) {
-      std::cerr << "jelly-grade: preparing " << c.id << " failed: " << e.what() << " " << prep.err
-                << "\n";
+      // The case's file and line: a missing or mistyped parameter is named by the runner, which
+      // knows the key but not where the case was written.
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": case " << c.id
+                << ": preparing it failed: " << e.what() << " " << prep.err << "\n";
       return 2;
     }
     const ChildResult run = run_case(config.reference_runner, c, &input, work, 120.0, 0);
@@ -88,12 +90,20 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
     try {
       result = Json::parse(run.result);
     } catch (const std::exception&) {
-      std::cerr << "jelly-grade: the reference failed on " << c.id << " (exit " << run.exit_code
-                << ", signal " << run.signal << "): " << run.err << "\n";
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": the reference failed on "
+                << c.id << " (exit " << run.exit_code << ", signal " << run.signal
+                << "): " << run.err << "\n";
+      return 2;
+    }
+    if (result.contains("error") && result["error"].is_string()) {
+      // A missing or mistyped parameter: the runner names the key, the case file says where.
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": case " << c.id
+                << ": the reference failed: " << result["error"].get<std::string>() << "\n";
       return 2;
     }
     if (!result.contains("outputs")) {
-      std::cerr << "jelly-grade: the reference failed on " << c.id << ": " << result.dump() << "\n";
+      std::cerr << "jelly-grade: " << case_location(config, c) << ": the reference failed on "
+                << c.id << ": " << result.dump() << "\n";
       return 2;
     }
     // Recorded frames (rule "frames") are for the report only: never stored as reference data;
@@ -133,6 +143,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
       ++unchanged;
       continue;
     }
+    const bool is_new = !fs::exists(p);
     fs::create_directories(p.parent_path());
     // Whole or not at all: a stopped run leaves the old file, never half of the new one.
     const fs::path tmp = p.string() + ".tmp";
@@ -145,7 +156,7 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
       }
     }
     fs::rename(tmp, p);
-    rewritten.push_back(p.filename().string());
+    (is_new ? created : rewritten).push_back(p.filename().string());
   }
   // Remove data of cases that no longer exist.
   for (const char* vis : {"public", "hidden"}) {
@@ -157,12 +168,14 @@ int generate_reference(const GradeConfig& config, const CaseBook& book) {
         fs::remove(e.path());
       }
   }
+  for (const std::string& name : created) std::cout << "  wrote (new) " << name << "\n";
   for (const std::string& name : rewritten) std::cout << "  rewrote " << name << "\n";
   for (const std::string& name : removed)
     std::cout << "  removed " << name << " (no such case any more)\n";
   std::cout << "jelly-grade: reference data for " << written.size()
             << " cases: " << rewritten.size() << " rewritten, " << unchanged << " unchanged, "
-            << removed.size() << " removed (commit " << commit << ")\n";
+            << removed.size() << " removed, " << created.size() << " new (commit " << commit
+            << ")\n";
   return 0;
 }
 

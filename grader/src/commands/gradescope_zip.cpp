@@ -150,6 +150,7 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
     std::cerr << "jelly-grade: zip failed: " << c.err << "\n";
     return 2;
   }
+  record_gradescope_zip(config, zip);
   std::cout << "jelly-grade: wrote " << zip.string() << " for assignment " << assignment.id
             << " (setup.sh, run_autograder and the framework without solutions/, all at the top: "
                "Gradescope extracts it into /autograder/source)\n";
