@@ -707,6 +707,9 @@ std::vector<Submission> lms_submissions(
   };
   std::map<std::pair<std::string, std::string>, Student> students;
   std::vector<Submission> subs;
+  std::string witness;  // an entry named as a download's: why the class is read as one
+  for (const Entry& e : entries)
+    if (witness.empty() && lms_entry(e.key, is_folder(e.path))) witness = e.key;
   for (const Entry& e : entries) {
     const bool folder = is_folder(e.path);
     const std::optional<LmsEntry> who = lms_entry(e.key, folder);
@@ -718,7 +721,9 @@ std::vector<Submission> lms_submissions(
       s.problem = "'" + e.key + "' is " + (folder ? "a folder" : "a file") +
                   " of a Canvas or Moodle download not named as these name a student's entry "
                   "(Canvas: <name>_<user id>_<file id>_<file>; Moodle: <Full "
-                  "Name>_<participant id>_assignsubmission_file): it belongs to no student";
+                  "Name>_<participant id>_assignsubmission_file): it belongs to no student "
+                  "(the class is read as such a download because '" +
+                  witness + "' is named as one)";
       subs.push_back(s);
       continue;
     }
