@@ -118,8 +118,9 @@ const TaskSpec* Rubric::find(const std::string& id) const {
 }
 
 // A rubric given with --rubric: the manifest's [grading] table (or its keys at the top) and its
-// [[task]] entries with their points; the other keys of a manifest may be there or not.
-AssignmentManifest read_rubric(const std::string& path) {
+// [[task]] entries with their points; the other keys of a manifest may be there or not. Without
+// hand_graded_points it keeps `hand_graded_points` (the assignment's own).
+AssignmentManifest read_rubric(const std::string& path, double hand_graded_points) {
   toml::table root;
   try {
     root = toml::parse_file(path);
@@ -131,6 +132,9 @@ AssignmentManifest read_rubric(const std::string& path) {
   const toml::table& g = grading ? *grading : root;
   AssignmentManifest m;
   m.autograded_total = g["autograded_total"].value_or(80.0);
+  m.hand_graded_points = g["hand_graded_points"].value_or(hand_graded_points);
+  if (m.hand_graded_points < 0.0)
+    throw std::runtime_error(path + ": hand_graded_points: expected a number of points ≥ 0");
   m.hidden_visibility = g["hidden_visibility"].value_or(std::string("after_due_date"));
   const toml::array* tasks = root["task"].as_array();
   if (!tasks) throw std::runtime_error(path + ": expected [[task]] entries");
@@ -166,11 +170,14 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
   const std::string rpath = rubric_path.empty() ? config.rubric_path().string() : rubric_path;
   AssignmentManifest rubric;
   try {
-    rubric = rubric_path.empty() ? config.assignment().manifest : read_rubric(rubric_path);
+    rubric = rubric_path.empty()
+                 ? config.assignment().manifest
+                 : read_rubric(rubric_path, config.assignment().manifest.hand_graded_points);
   } catch (const ManifestError& e) {
     throw std::runtime_error(e.what());
   }
   book.rubric.autograded_total = rubric.autograded_total;
+  book.rubric.hand_graded_points = rubric.hand_graded_points;
   book.rubric.hidden_visibility = rubric.hidden_visibility;
   for (const ManifestTask& t : rubric.tasks) {
     TaskSpec s;

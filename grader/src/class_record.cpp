@@ -138,10 +138,12 @@ Json read_record(const fs::path& file) {
 }
 
 std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
-  // What an LMS import takes (docs/instructor-guide.md, "Import the scores"): the id, the points
-  // out of the autograded maximum and as a percentage, an empty column for the hand-graded part,
-  // then each task's points. A bonus column only for an assignment with a bonus task; no column
-  // for a task worth nothing (A1's course scene, which would always read 0).
+  // What an LMS import takes (docs/instructor-guide.md, "Import the scores"): the id; the
+  // autograded points out of max_points (autograded_total: the bonus is not in it) and as a
+  // percentage; the bonus, for an assignment with a bonus task; `total`, what the student earned
+  // with the bonus included (the column to import); an empty column for the hand-graded part and
+  // its maximum (the manifest's hand_graded_points); then each task's points. No column for a
+  // task worth nothing (A1's course scene, which would always read 0).
   bool bonus = false;
   std::vector<const TaskSpec*> tasks;
   for (const TaskSpec& t : book.rubric.tasks) {
@@ -150,30 +152,28 @@ std::string scores_csv(const std::vector<Json>& records, const CaseBook& book) {
   }
   std::vector<std::string> header = {"student", "points", "max_points", "percent"};
   if (bonus) header.push_back("bonus");
-  header.push_back("hand_graded");
-  header.push_back("compiled");
+  for (const char* h : {"total", "hand_graded", "hand_graded_max", "compiled"}) header.push_back(h);
   for (const TaskSpec* t : tasks) header.push_back(csv_field(t->id));
-  header.push_back("name");
-  header.push_back("email");
   // The task files not found in the submission (graded as the unchanged stubs): a student who
   // submitted nothing usable shows here, not only inside their own report.
-  header.push_back("missing_files");
-  header.push_back("error");
+  for (const char* h : {"name", "email", "missing_files", "error"}) header.push_back(h);
   std::string csv = csv_row(header);
   for (const Json& r : records) {
     std::vector<std::string> row = {csv_field(r.value("id", ""))};
     const bool graded = r.value("status", "") == "graded";
     if (!graded) {
       // No points at all, not 0: an import then leaves the student's grade as it was.
-      for (std::size_t k = 0; k < header.size() - 5 - tasks.size(); ++k) row.push_back("");
-      for (std::size_t k = 0; k < tasks.size(); ++k) row.push_back("");
+      while (row.size() < header.size() - 4) row.push_back("");
     } else {
       const double score = r["score"].get<double>(), max = r["max_score"].get<double>();
+      const double extra = bonus ? r["bonus_score"].get<double>() : 0.0;
       row.push_back(pts(score));
       row.push_back(pts(max));
       row.push_back(max > 0.0 ? pts(100.0 * score / max) : "");
-      if (bonus) row.push_back(pts(r["bonus_score"].get<double>()));
+      if (bonus) row.push_back(pts(extra));
+      row.push_back(pts(score + extra));
       row.push_back("");  // hand_graded: the instructor's
+      row.push_back(pts(book.rubric.hand_graded_points));
       row.push_back(r["compiled"].get<bool>() ? "1" : "0");
       for (const TaskSpec* t : tasks) {
         std::string cell;

@@ -35,9 +35,11 @@ std::filesystem::path record_path(const std::filesystem::path& out, const std::s
 /// Reads a record file; throws std::runtime_error naming the file when it is not a record.
 Json read_record(const std::filesystem::path& file);
 
-/// scores.csv from the records (in the order given), for an LMS import: student (the id), points,
-/// max_points, percent, [bonus,] hand_graded (empty), compiled, each task's points (no column for a
-/// task worth 0 that is no bonus), name, email, missing_files, error.
+/// scores.csv from the records (in the order given), for an LMS import: student (the id), points
+/// (autograded, bonus left out), max_points (autograded_total), percent, [bonus,] total (points +
+/// bonus: what the student earned), hand_graded (empty), hand_graded_max (the manifest's
+/// hand_graded_points), compiled, each task's points (no column for a task worth 0 that is no
+/// bonus), name, email, missing_files, error. A row not graded has no number at all.
 std::string scores_csv(const std::vector<Json>& records, const CaseBook& book);
 
 /// Writes the class files into `out` from `records`, each file whole or not at all: scores.csv and

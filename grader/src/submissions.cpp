@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <map>
+#include <optional>
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -642,6 +644,140 @@ std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
   return refused;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Learning-management systems' bulk downloads: Canvas's "Download Submissions" (one flat folder of
+// files) and Moodle's "Download all submissions" (a folder per student and plugin, or flat files).
+
+/// What one entry of an LMS download says about its student.
+struct LmsEntry {
+  std::string system;  ///< "Canvas" or "Moodle"
+  std::string id;      ///< Canvas's user id ("anon_<id>" when anonymous), Moodle's participant id
+  std::string name;    ///< as the file name gives it ("smithjane"; "Jane Smith"); "" if anonymous
+  bool late = false;   ///< Canvas's LATE mark
+};
+
+/// The student an entry of an LMS download belongs to, from its name alone; nullopt when the name
+/// is no such name. Canvas (lib/content_zipper.rb) names an uploaded file
+/// `<name>[_LATE]_<user id>_<file id>_<file>` (name: the sortable name, lower case, letters and
+/// digits only; LATE in upper case today, `late` in older downloads), a text entry
+/// `<name>[_LATE]_<user id>_text.html`, and for an anonymous assignment `[LATE_]anon_<id>_...`.
+/// Moodle (mod/assign, downloader.php) names a student's folder `<Full Name>_<participant
+/// id>_assignsubmission_<plugin>` (Moodle 4.1 on; a trailing '_' before), and, downloading
+/// without folders, each file `<Full Name>_<participant id>_assignsubmission_<plugin>_<file>`.
+std::optional<LmsEntry> lms_entry(const std::string& n, bool folder) {
+  static const std::regex moodle_folder(R"(^(.+)_([0-9]+)_assignsubmission_[a-z0-9]+_?$)");
+  static const std::regex moodle_file(R"(^(.+)_([0-9]+)_assignsubmission_[a-z0-9]+_.+$)");
+  static const std::regex canvas_anon(R"(^(?:(LATE|late)_)?anon_([A-Za-z0-9]+)_[0-9]+_.+$)");
+  static const std::regex canvas(
+      R"(^(.+?)(_LATE|_late)?_([0-9]+)_(?:[0-9]+_.+|text\.html|link\.html)$)");
+  std::smatch m;
+  if (folder) {
+    if (std::regex_match(n, m, moodle_folder)) return LmsEntry{"Moodle", m[2], m[1], false};
+    return std::nullopt;
+  }
+  if (std::regex_match(n, m, moodle_file)) return LmsEntry{"Moodle", m[2], m[1], false};
+  if (std::regex_match(n, m, canvas_anon))
+    return LmsEntry{"Canvas", "anon_" + m[2].str(), "", m[1].matched};
+  if (std::regex_match(n, m, canvas)) return LmsEntry{"Canvas", m[3], m[1], m[2].matched};
+  return std::nullopt;
+}
+
+/// Whether `entries` (a class's top level) is an LMS download: an entry named as one names it.
+bool is_lms_download(const std::vector<Entry>& entries) {
+  for (const Entry& e : entries)
+    if (lms_entry(e.key, is_folder(e.path))) return true;
+  return false;
+}
+
+/// The students of an LMS download, one per (system, id), each given a folder under `gather`
+/// (emptied first) holding copies of their entries under the names the download gave them (the
+/// build takes Canvas's and Moodle's file names for the task files they stand for, the latest
+/// resubmission first). An entry named as no student's becomes a row of its own that is not
+/// graded, saying why.
+std::vector<Submission> lms_submissions(
+    const std::vector<Entry>& entries, const fs::path& root, const fs::path& gather,
+    const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
+  fs::remove_all(gather, ec);
+  struct Student {
+    LmsEntry who;
+    std::vector<const Entry*> entries;
+    std::set<std::string> names;
+    std::string problem;
+  };
+  std::map<std::pair<std::string, std::string>, Student> students;
+  std::vector<Submission> subs;
+  std::string witness;  // an entry named as a download's: why the class is read as one
+  for (const Entry& e : entries)
+    if (witness.empty() && lms_entry(e.key, is_folder(e.path))) witness = e.key;
+  for (const Entry& e : entries) {
+    const bool folder = is_folder(e.path);
+    const std::optional<LmsEntry> who = lms_entry(e.key, folder);
+    if (!who) {
+      Submission s;
+      s.id = e.key;
+      s.source = e.key;
+      s.dir = e.path;
+      s.problem = "'" + e.key + "' is " + (folder ? "a folder" : "a file") +
+                  " of a Canvas or Moodle download not named as these name a student's entry "
+                  "(Canvas: <name>_<user id>_<file id>_<file>; Moodle: <Full "
+                  "Name>_<participant id>_assignsubmission_file): it belongs to no student "
+                  "(the class is read as such a download because '" +
+                  witness + "' is named as one)";
+      subs.push_back(s);
+      continue;
+    }
+    Student& st = students[{who->system, who->id}];
+    if (st.entries.empty()) st.who = *who;
+    st.who.late = st.who.late || who->late;
+    st.entries.push_back(&e);
+    st.names.insert(who->name);
+    if (const auto r = refused_in.find(e.key); r != refused_in.end() && st.problem.empty())
+      st.problem = r->second.front();
+    // A folder that is a symlink out of the class, or a file that is one: never followed.
+    if (fs::symlink_status(e.path, ec).type() == fs::file_type::symlink &&
+        !link_stays_inside(e.path, root) && st.problem.empty())
+      st.problem = "'" + e.key + "' is a symlink to " + fs::read_symlink(e.path, ec).string() +
+                   ", outside the class's folder: not followed";
+  }
+  std::size_t k = 0;
+  for (auto& [key, st] : students) {
+    Submission s;
+    s.id = st.who.id;
+    s.name = st.who.name;
+    s.source = st.entries.front()->key;
+    s.dir = gather / std::to_string(++k);
+    std::string listed;
+    for (const Entry* e : st.entries) listed += (listed.empty() ? "" : ", ") + e->key;
+    s.notes.push_back(st.who.system + " download: " + listed + " (the id is " +
+                      (st.who.system == "Canvas" ? "Canvas's user id, the gradebook export's ID"
+                                                 : "Moodle's participant id, the grading "
+                                                   "worksheet's Identifier") +
+                      ")");
+    if (st.names.size() > 1) {
+      std::string all;
+      for (const std::string& n : st.names) all += (all.empty() ? "" : ", ") + n;
+      s.notes.push_back("the files of " + st.who.id + " give several names: " + all);
+    }
+    if (st.who.late) s.notes.push_back("Canvas marked the submission late (LATE in its names)");
+    s.problem = st.problem;
+    fs::create_directories(s.dir, ec);
+    for (const Entry* e : st.entries) {
+      if (!s.problem.empty()) break;
+      const bool folder = is_folder(e->path);
+      if (!folder && lower(e->path.extension().string()) == ".zip")
+        s.notes.push_back(e->key + " is a zip the student handed in: it is not unpacked, so no "
+                          "file inside it is graded");
+      fs::copy(e->path, s.dir / e->key,
+               fs::copy_options::recursive | fs::copy_options::copy_symlinks, ec);
+      if (ec) s.problem = "'" + e->key + "' cannot be read: " + ec.message();
+    }
+    if (s.problem.empty()) s.problem = folder_problem(s.dir, s.dir, s.notes);
+    subs.push_back(s);
+  }
+  return subs;
+}
+
 }  // namespace
 
 std::string safe_id(const std::string& raw) {
@@ -678,7 +814,7 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
     if (lower(in.extension().string()) != ".zip")
       throw std::runtime_error(in.string() +
                                ": expected a folder of submissions or a .zip (a Gradescope "
-                               "export), found a file");
+                               "export, or Canvas's or Moodle's download), found a file");
     if (scratch.empty())
       throw std::runtime_error(in.string() + ": a zip needs a scratch folder to be extracted into");
     refused = extract_zip(in, scratch);
@@ -694,6 +830,14 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
           fs::is_regular_file(e.path / kMetadata, ec))
         exports.push_back(e.path);
     if (exports.size() == 1) root = exports.front();
+  }
+  // A Canvas or Moodle download zipped or unpacked into one folder of its own.
+  if (!fs::exists(root / kMetadata, ec)) {
+    const std::vector<Entry> top = entries_of(root);
+    if (top.size() == 1 && fs::symlink_status(top.front().path, ec).type() ==
+                               fs::file_type::directory &&
+        !is_lms_download(top) && is_lms_download(entries_of(top.front().path)))
+      root = top.front().path;
   }
   const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
   std::vector<Entry> entries =
@@ -722,7 +866,8 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
     if (!is_folder(e.path))
       s.problem = "'" + e.key +
                   "' is a file, not a folder: each submission is a folder of files (a student's "
-                  "zip must be unpacked first)";
+                  "zip must be unpacked first), unless the class is a Canvas or Moodle download, "
+                  "whose files are named after their students";
     else if (const auto r = refused_in.find(e.key); r != refused_in.end())
       s.problem = r->second.front();
     else
@@ -801,6 +946,12 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
                           ": the id is the folder's name");
         subs.push_back(s);
       }
+  } else if (is_lms_download(entries)) {
+    if (scratch.empty())
+      throw std::runtime_error(in.string() +
+                               ": a Canvas or Moodle download needs a scratch folder to gather "
+                               "each student's files in");
+    subs = lms_submissions(entries, root, scratch / ".by-student", refused_in);
   } else {
     // GitHub Classroom: every folder a git clone named <assignment>-<username>.
     bool classroom = !entries.empty();

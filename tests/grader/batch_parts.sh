@@ -148,7 +148,7 @@ for sig in INT TERM KILL; do
     { cat "$out-resumed.txt"; fail "SIG$sig: --resume failed"; }
   grep -qF "1 of 5 submissions already graded (kept), 4 to grade" "$out-resumed.txt" ||
     fail "SIG$sig: --resume did not keep the $finished finished one and grade 4: $(cat "$out-resumed.txt")"
-  grep -q "graded 4 submissions, kept 1 into" "$out-resumed.txt" || fail "SIG$sig: no 'kept 1': $(cat "$out-resumed.txt")"
+  grep -q "5 graded, 0 not graded; this run took 4, kept 1 into" "$out-resumed.txt" || fail "SIG$sig: no 'kept 1': $(cat "$out-resumed.txt")"
   [ -e "$out/students/.ben.partial" ] && fail "SIG$sig: .ben.partial is still there after --resume"
   same_class_files "$work/one" "$out"
   same_students "$work/one" "$out"

@@ -652,15 +652,18 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
     if (!row->empty() && row->back() == '\r') row->pop_back();  // RFC 4180 line ends
   // For an LMS import: the id, the points, the percentage, an empty column for the hand-graded
   // report, then each task; no column for the course scene (0 points, not a bonus).
-  EXPECT_EQ(header.rfind("student,points,max_points,percent,hand_graded,compiled,A1.T1,", 0), 0u)
+  EXPECT_EQ(header.rfind("student,points,max_points,percent,total,hand_graded,hand_graded_max,"
+                         "compiled,A1.T1,",
+                         0),
+            0u)
       << header;
   EXPECT_NE(header.find(",A1.T13,name,email,missing_files,error"), std::string::npos) << header;
   EXPECT_EQ(header.find("A1.COURSE"), std::string::npos) << header;
-  EXPECT_EQ(alice.rfind("alice,80.00,80.00,100.00,,1,5.00,", 0), 0u) << alice;
-  EXPECT_EQ(bob.rfind("bob,0.00,80.00,0.00,,1,0.00,", 0), 0u) << bob;
+  EXPECT_EQ(alice.rfind("alice,80.00,80.00,100.00,80.00,,20.00,1,5.00,", 0), 0u) << alice;
+  EXPECT_EQ(bob.rfind("bob,0.00,80.00,0.00,0.00,,20.00,1,0.00,", 0), 0u) << bob;
   EXPECT_EQ(bob.substr(bob.size() - 4), ",,,,") << "no name, no email, no missing file: " << bob;
-  EXPECT_EQ(carol.rfind("carol,80.00,80.00,100.00,,1", 0), 0u) << carol;
-  EXPECT_EQ(dave.rfind("dave,0.00,80.00,0.00,,1", 0), 0u) << dave;
+  EXPECT_EQ(carol.rfind("carol,80.00,80.00,100.00,80.00,,20.00,1", 0), 0u) << carol;
+  EXPECT_EQ(dave.rfind("dave,0.00,80.00,0.00,0.00,,20.00,1", 0), 0u) << dave;
   for (const std::string* row : {&alice, &bob, &carol, &dave})
     EXPECT_EQ(std::count(row->begin(), row->end(), ','),
               std::count(header.begin(), header.end(), ','))
@@ -828,6 +831,11 @@ TEST(Grader, BatchBadInputsEachGetARowSayingWhyAndTheRestIsGraded) {
   const Cmd r = run("batch " + in.string() + " --assignment a1 --out " + (dir / "out").string() +
                     " --jobs 2 --no-frames");
   EXPECT_EQ(r.status, 1) << "a student could not be graded: " << r.out;
+  // The last line counts the graded and the not graded apart.
+  EXPECT_NE(r.out.find("jelly-grade: 2 graded, 7 not graded (scores.csv's error column says why) "
+                       "into "),
+            std::string::npos)
+      << r.out;
   const auto rows = csv_rows(dir / "out" / "scores.csv");
   std::set<std::string> ids;
   for (const auto& [id, row] : rows) ids.insert(id);
@@ -1023,6 +1031,8 @@ TEST(Grader, BatchTakesGitHubClassroomUsernamesAsIds) {
   const fs::path out = dir.parent_path() / "out";
   const Cmd r = run("batch " + dir.string() + " --assignment a1 --out " + out.string());
   EXPECT_EQ(r.status, 1) << "both clones are empty: " << r.out;
+  EXPECT_NE(r.out.find("jelly-grade: 0 graded, 2 not graded"), std::string::npos)
+      << "none graded is not \"graded 2\": " << r.out;
   const auto rows = csv_rows(out / "scores.csv");
   EXPECT_EQ(rows.size(), 2u) << read_text(out / "scores.csv");
   EXPECT_TRUE(rows.count("mary-jane")) << read_text(out / "scores.csv");
@@ -1053,6 +1063,188 @@ TEST(Grader, BatchSaysWhichSandboxItGradesIn) {
   const Cmd r = run("batch " + (dir / "in").string() + " --assignment a1 --out " +
                     (dir / "out").string() + " --isolation none");
   EXPECT_NE(r.out.find("jelly-grade: sandbox: none"), std::string::npos) << r.out;
+}
+
+namespace {
+
+// A1's task files for a small class: the reference's, with `stub` (a file name, or "") taken from
+// the stubs instead.
+std::map<std::string, std::string> a1_files(const std::string& stub = "") {
+  std::map<std::string, std::string> out;
+  for (const std::string& f : kTaskFiles)
+    out[f] = read_text(kSource / (f == stub ? "assignments" : "solutions") / "a1" / f);
+  return out;
+}
+
+// scores.csv's rows without the name column (an LMS download gives names, a folder none).
+std::map<std::string, std::vector<std::string>> rows_but_names(const fs::path& file) {
+  std::map<std::string, std::vector<std::string>> rows = csv_rows(file);
+  std::ifstream in(file);
+  std::string header;
+  std::getline(in, header);
+  const auto at = header.find(",name,");
+  const auto column = static_cast<std::size_t>(std::count(header.begin(), header.begin() + at, ','));
+  for (auto& [id, row] : rows)
+    if (row.size() > column + 1) row.erase(row.begin() + static_cast<long>(column) + 1);
+  return rows;
+}
+
+// The last line of a batch's output.
+std::string last_line(const std::string& out) {
+  std::string s = out;
+  while (!s.empty() && s.back() == '\n') s.pop_back();
+  return s.substr(s.rfind('\n') + 1);
+}
+
+}  // namespace
+
+// Canvas's "Download Submissions" and Moodle's "Download all submissions", each as a folder and as
+// the zip they come in, made here in those systems' own naming (Canvas lib/content_zipper.rb,
+// Moodle mod/assign/classes/downloader.php): each student's files are found by their names and
+// graded to the same scores.csv as the same students in folders named by their ids. Canvas: a late
+// submission (LATE, or older downloads' `late`), a file resubmitted (-1, the later); Moodle: a
+// folder per plugin (file, onlinetext), with (before 4.1) or without its trailing '_', files in a
+// subfolder. An entry named as no student's is a row not graded, saying why; the last line counts
+// the graded and the not graded apart.
+TEST(Grader, BatchReadsCanvasAndMoodleDownloadsAsTheSameStudentsInFolders) {
+  const fs::path dir = kWork / "batch-lms";
+  fs::remove_all(dir);
+  // alice: the reference; bob: the stub forces.cpp; carol: the reference.
+  const std::map<std::string, std::map<std::string, std::string>> students = {
+      {"11111", a1_files()}, {"22222", a1_files("forces.cpp")}, {"33333", a1_files()}};
+  const auto write = [](const fs::path& file, const std::string& text) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary) << text;
+  };
+  for (const auto& [id, files] : students)
+    for (const auto& [f, text] : files) write(dir / "folders" / id / f, text);
+
+  // Canvas: <name>[_LATE]_<user id>_<file id>_<file>, one flat folder.
+  std::vector<ZipEntry> canvas;
+  int file_id = 90000;
+  const std::map<std::string, std::string> canvas_prefix = {
+      {"11111", "liddellalice_11111_"}, {"22222", "odebob_late_22222_"},
+      {"33333", "smithcarol_LATE_33333_"}};
+  for (const auto& [id, files] : students)
+    for (const auto& [f, text] : files) {
+      const std::string name = canvas_prefix.at(id) + std::to_string(++file_id) + "_" + f;
+      if (id != "33333" || f != "forces.cpp") {
+        canvas.push_back({name, text});
+        continue;
+      }
+      // carol handed forces.cpp in twice: Canvas named the later one forces-1.cpp.
+      canvas.push_back({name, read_text(kSource / "assignments" / "a1" / f)});
+      canvas.push_back({canvas_prefix.at(id) + std::to_string(++file_id) + "_forces-1.cpp", text});
+    }
+  canvas.push_back({"odebob_late_22222_text.html", "<p>see my files</p>\n"});
+  canvas.push_back({"notes.txt", "not a student's\n"});
+  // Moodle: <Full Name>_<participant id>_assignsubmission_<plugin>[_]/<the file's path>.
+  std::vector<ZipEntry> moodle;
+  const std::map<std::string, std::string> moodle_folder = {
+      {"11111", "Alice Liddell_11111_assignsubmission_file/"},
+      {"22222", "Bob Ode_22222_assignsubmission_file_/"},
+      {"33333", "Carol Smith_33333_assignsubmission_file/src/"}};
+  for (const auto& [id, files] : students)
+    for (const auto& [f, text] : files) moodle.push_back({moodle_folder.at(id) + f, text});
+  moodle.push_back(
+      {"Bob Ode_22222_assignsubmission_onlinetext_/onlinetext.html", "<p>see my files</p>\n"});
+  moodle.push_back({"Dan_Rest/springs.cpp", "// a folder named as no student's\n"});
+  for (const auto& [name, entries] : {std::pair{"canvas", canvas}, std::pair{"moodle", moodle}}) {
+    for (const ZipEntry& e : entries) write(dir / name / e.name, e.data);
+    write_zip(dir / (std::string(name) + ".zip"), entries);
+  }
+
+  const auto batch = [&](const std::string& in) {
+    const Cmd r = run("batch " + (dir / in).string() + " --assignment a1 --out " +
+                      (dir / ("out-" + in)).string() + " --jobs 2 --no-frames");
+    return r;
+  };
+  const Cmd folders = batch("folders");
+  ASSERT_EQ(folders.status, 0) << folders.out;
+  EXPECT_EQ(last_line(folders.out).rfind("jelly-grade: 3 graded, 0 not graded into ", 0), 0u)
+      << folders.out;
+  const auto expected = rows_but_names(dir / "out-folders" / "scores.csv");
+  ASSERT_EQ(expected.size(), 3u);
+  EXPECT_EQ(expected.at("11111")[1], "80.00");
+  EXPECT_NE(expected.at("22222")[1], "80.00") << "bob's stub forces.cpp costs points";
+  for (const char* in : {"canvas", "canvas.zip", "moodle", "moodle.zip"}) {
+    SCOPED_TRACE(in);
+    const Cmd r = batch(in);
+    EXPECT_EQ(r.status, 1) << "one entry names no student: " << r.out;
+    EXPECT_EQ(last_line(r.out).rfind("jelly-grade: 3 graded, 1 not graded (scores.csv's error "
+                                     "column says why) into ",
+                                     0),
+              0u)
+        << r.out;
+    const fs::path out = dir / ("out-" + std::string(in));
+    auto rows = rows_but_names(out / "scores.csv");
+    const std::string stray = std::string(in).rfind("canvas", 0) == 0 ? "notes.txt" : "Dan_Rest";
+    ASSERT_TRUE(rows.count(stray)) << read_text(out / "scores.csv");
+    EXPECT_EQ(rows.at(stray)[1], "") << "no points: an import leaves it alone";
+    EXPECT_NE(rows.at(stray).back().find("not named as these name a student's entry"),
+              std::string::npos)
+        << rows.at(stray).back();
+    rows.erase(stray);
+    EXPECT_EQ(rows, expected) << read_text(out / "scores.csv");
+    // The name column holds the name the download gives.
+    const std::string csv = read_text(out / "scores.csv");
+    EXPECT_NE(csv.find(std::string(in).rfind("canvas", 0) == 0 ? ",smithcarol," : ",Carol Smith,"),
+              std::string::npos)
+        << csv;
+  }
+  EXPECT_NE(record_text(dir / "out-canvas", "33333")
+                .find("Canvas marked the submission late (LATE in its names)"),
+            std::string::npos);
+  EXPECT_NE(record_text(dir / "out-canvas", "22222").find("Canvas marked the submission late"),
+            std::string::npos)
+      << "older downloads' lower-case late";
+  EXPECT_NE(read_text(dir / "out-canvas" / "students" / "33333" / "results.json")
+                .find("forces-1.cpp was graded as forces.cpp"),
+            std::string::npos)
+      << "the later of carol's two forces.cpp";
+  EXPECT_NE(record_text(dir / "out-moodle", "22222").find("Moodle's participant id"),
+            std::string::npos);
+}
+
+// A2's bonus reaches the gradebook: scores.csv's `total` is points + bonus, the column to import;
+// `hand_graded_max` is the manifest's hand_graded_points (20); max_points stays autograded_total.
+TEST(Grader, ScoresCsvTotalCarriesTheBonus) {
+  const fs::path dir = kWork / "batch-a2-total";
+  fs::remove_all(dir);
+  const toml::table manifest =
+      toml::parse_file((kSource / "assignments" / "a2" / "assignment.toml").string());
+  for (const char* who : {"with-friction", "without-friction"})
+    for (const toml::node& f : *manifest["files"].as_array()) {
+      const std::string file = f.value_or(std::string());
+      const bool stub = std::string(who) == "without-friction" && file == "friction.cpp";
+      fs::create_directories(dir / "in" / who);
+      fs::copy_file(kSource / (stub ? "assignments" : "solutions") / "a2" / file,
+                    dir / "in" / who / file);
+    }
+  const Cmd r = run("batch " + (dir / "in").string() + " --assignment a2 --out " +
+                    (dir / "out").string() + " --jobs 2 --no-frames");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(dir / "out" / "scores.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("student,points,max_points,percent,bonus,total,hand_graded,"
+                         "hand_graded_max,compiled,",
+                         0),
+            0u)
+      << header;
+  const auto rows = csv_rows(dir / "out" / "scores.csv");
+  ASSERT_TRUE(rows.count("with-friction") && rows.count("without-friction"))
+      << read_text(dir / "out" / "scores.csv");
+  // student, points, max_points, percent, bonus, total, hand_graded, hand_graded_max
+  EXPECT_EQ(std::vector<std::string>(rows.at("with-friction").begin(),
+                                     rows.at("with-friction").begin() + 8),
+            (std::vector<std::string>{"with-friction", "80.00", "80.00", "100.00", "5.00", "85.00",
+                                      "", "20.00"}));
+  // Without the friction task: no bonus, and total is the points.
+  const std::vector<std::string>& plain = rows.at("without-friction");
+  EXPECT_EQ(plain[4], "0.00") << read_text(dir / "out" / "scores.csv");
+  EXPECT_EQ(plain[5], plain[1]);
+  EXPECT_EQ(plain[7], "20.00");
 }
 
 // The class report (class.json; class.md and class.html to project; class-instructor.md and

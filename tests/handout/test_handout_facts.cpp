@@ -147,6 +147,7 @@ std::size_t body_diagonals(int n) {
 // The rubric's points, scaled to autograded_total as the grader does.
 struct Rubric {
   double total = 0, raw = 0;
+  double hand = 0;  ///< grading.hand_graded_points: the report's points, graded by hand
   std::map<std::string, double> task, category;
 };
 
@@ -154,6 +155,7 @@ Rubric rubric() {
   const AssignmentManifest& m = testing::a1_manifest();
   Rubric r;
   r.total = m.autograded_total;
+  r.hand = m.hand_graded_points;
   for (const ManifestTask& task : m.tasks) r.raw += task.points;
   for (const ManifestTask& task : m.tasks) {
     const double p = task.points * r.total / r.raw;
@@ -240,7 +242,9 @@ std::map<std::string, Fact> a1_facts() {
       }};
   f["rk4.real_interval"] = value([] { return -rk4_real_interval(); });
   f["points.autograded"] = points_value([] { return rubric().total; });
-  f["points.report"] = points_value([] { return 100.0 - rubric().total; });
+  // The report's points are the manifest's own (grading.hand_graded_points), not 100 minus the
+  // autograded total: raising autograded_total leaves them as they are.
+  f["points.report"] = points_value([] { return rubric().hand; });
   for (const char* c : {"springs", "forces", "collision", "integrators"})
     f[std::string("points.") + c] =
         points_value([c = std::string(c)] { return rubric().category.at(c); });
@@ -351,6 +355,7 @@ ManifestRubric rubric_of(const std::string& id) {
       toml::parse_file((kSource / "assignments" / id / "assignment.toml").string());
   ManifestRubric r;
   r.total = m.at_path("grading.autograded_total").value<double>().value_or(std::nan(""));
+  r.hand = m.at_path("grading.hand_graded_points").value<double>().value_or(0.0);
   const toml::array* tasks = m["task"].as_array();
   if (!tasks) return r;
   for (const toml::node& t : *tasks)
@@ -589,7 +594,7 @@ std::map<std::string, Fact> a2_facts() {
 
   const Rubric r = rubric_of("a2");
   f["points.autograded"] = points_value([] { return rubric_of("a2").total; });
-  f["points.report"] = points_value([] { return 100.0 - rubric_of("a2").total; });
+  f["points.report"] = points_value([] { return rubric_of("a2").hand; });
   for (const char* c : {"springs", "forces", "collision", "integrators"})
     f[std::string("points.") + c] =
         points_value([c = std::string(c)] { return rubric_of("a2").category.at(c); });

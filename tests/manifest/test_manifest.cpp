@@ -74,6 +74,7 @@ TEST(Manifest, TheSmallManifestReadsWithItsTasksAndGrading) {
   EXPECT_EQ(m.ns, "p1");
   EXPECT_EQ(m.files, (std::vector<std::string>{"launch.cpp", "drag.cpp"}));
   EXPECT_DOUBLE_EQ(m.autograded_total, 10.0);
+  EXPECT_DOUBLE_EQ(m.hand_graded_points, 0.0) << "no hand-graded part unless the manifest says";
   EXPECT_EQ(m.hidden_visibility, "after_due_date");
   ASSERT_EQ(m.tasks.size(), 2u);
   EXPECT_EQ(m.tasks[1].id, "P1.T2");
@@ -83,6 +84,15 @@ TEST(Manifest, TheSmallManifestReadsWithItsTasksAndGrading) {
   EXPECT_EQ(m.task_prefix(), "P1.");
   EXPECT_EQ(m.find_task("P1.T1")->functions_text(), "launch (launch.cpp)");
   EXPECT_EQ(m.find_task("P1.T3"), nullptr);
+}
+
+// `hand_graded_points` says how many points are graded by hand, apart from autograded_total.
+TEST(Manifest, HandGradedPointsAreRead) {
+  const jelly::AssignmentManifest m = jelly::parse_manifest(
+      replaced("autograded_total = 10.0", "autograded_total = 10.0\nhand_graded_points = 5"),
+      "p1.toml");
+  EXPECT_DOUBLE_EQ(m.autograded_total, 10.0);
+  EXPECT_DOUBLE_EQ(m.hand_graded_points, 5.0);
 }
 
 // `bonus = true` marks a task whose points come on top of autograded_total; absent, false.
@@ -116,6 +126,7 @@ TEST(Manifest, EveryShippedManifestReads) {
   EXPECT_EQ(a1->files, (std::vector<std::string>{"springs.cpp", "forces.cpp", "collision.cpp",
                                                  "contact.cpp", "integrators.cpp"}));
   EXPECT_DOUBLE_EQ(a1->autograded_total, 80.0);
+  EXPECT_DOUBLE_EQ(a1->hand_graded_points, 20.0) << "A1's report: 80 + 20";
   double points = 0;
   for (const jelly::ManifestTask& t : a1->tasks) points += t.points;
   EXPECT_DOUBLE_EQ(points, 80.0) << "A1's raw points are the course's 2023 weights";
@@ -128,6 +139,7 @@ TEST(Manifest, EveryShippedManifestReads) {
     for (const jelly::ManifestTask& t : a2->tasks) (t.bonus ? bonus : regular) += t.points;
     EXPECT_DOUBLE_EQ(regular, 80.0);
     EXPECT_DOUBLE_EQ(bonus, 5.0);
+    EXPECT_DOUBLE_EQ(a2->hand_graded_points, 20.0) << "A2's report: 80 + 20";
     ASSERT_NE(a2->find_task("A2.T12"), nullptr);
     EXPECT_TRUE(a2->find_task("A2.T12")->bonus);
   }
@@ -167,6 +179,8 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
                 "autograded_total = 10.0\nhidden_visibility = \"never\""),
        f + "8: grading.hidden_visibility: expected \"hidden\", \"after_due_date\" or "
            "\"after_published\", not \"never\""},
+      {replaced("autograded_total = 10.0", "autograded_total = 10.0\nhand_graded_points = -20"),
+       f + "8: grading.hand_graded_points: expected a number of points ≥ 0 graded by hand"},
       {replaced("points = 6", "points = -6"),
        f + "21: task[2].points: expected a number of points ≥ 0"},
       {replaced("id = \"P1.T2\"", "id = \"P1.T1\""),

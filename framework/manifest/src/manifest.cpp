@@ -220,8 +220,10 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     const auto* t = n->as_table();
     if (!t) fail(source, n, "grading", "a table");
     Reader g(*t, source, "grading.");
-    g.only_keys({"autograded_total", "hidden_visibility"});
+    g.only_keys({"autograded_total", "hand_graded_points", "hidden_visibility"});
     m.autograded_total = g.number("autograded_total", true, 0.0, "a number of points ≥ 0");
+    m.hand_graded_points =
+        g.number("hand_graded_points", false, 0.0, "a number of points ≥ 0 graded by hand");
     const std::string vis = g.string("hidden_visibility", false,
                                      "\"hidden\", \"after_due_date\" or \"after_published\"");
     if (!vis.empty()) {

@@ -40,6 +40,26 @@ bool keepable(const fs::path& file, const std::string& fingerprint, const Submis
   }
 }
 
+/// The batch's last line but its folder: the students graded and those not graded apart (a row
+/// with no points, whatever the reason: the submission's problem or the grader's error), and
+/// with --resume how many this run graded and kept.
+std::string last_line(const std::vector<Json>& records, std::size_t students, std::size_t run,
+                      const BatchArgs& args) {
+  std::size_t graded = 0;
+  for (const Json& r : records)
+    if (r.value("status", "") == "graded") ++graded;
+  const std::size_t not_graded = students - graded;
+  std::string line = "jelly-grade: " + std::to_string(graded) + " graded, " +
+                     std::to_string(not_graded) + " not graded";
+  if (args.shard_count > 1)
+    line += " (shard " + std::to_string(args.shard_index) + "/" +
+            std::to_string(args.shard_count) + ")";
+  if (not_graded > 0) line += " (scores.csv's error column says why)";
+  if (run < students)
+    line += "; this run took " + std::to_string(run) + ", kept " + std::to_string(students - run);
+  return line;
+}
+
 }  // namespace
 
 std::string shard_label(int index, int count) {
@@ -197,13 +217,7 @@ int batch(const GradeConfig& config, const CaseBook& book, const BatchArgs& args
                          {"students", mine}};
   write_file_atomically(out / "batch.json", manifest.dump(2) + "\n");
   write_class_files(out, records, book, config.assignment().manifest.title);
-  std::cout << "jelly-grade: graded " << todo.size() << " submissions"
-            << (args.shard_count > 1
-                    ? " (shard " + shard_label(args.shard_index, args.shard_count) + ")"
-                    : "")
-            << (todo.size() < subs.size() ? ", kept " + std::to_string(subs.size() - todo.size())
-                                          : "")
-            << " into " << out.string()
+  std::cout << last_line(records, subs.size(), todo.size(), args) << " into " << out.string()
             << " (scores.csv, the class report class.html; each student's reports in students/)\n";
   // --similarity: who copied, over the whole class (every shard has the same class; the first
   // writes the report, and merge takes it from there).

@@ -53,6 +53,10 @@ struct AssignmentManifest {
   std::string handout;                       ///< the handout's front page, relative
   std::vector<std::string> study_measures;   ///< what `jelly study effects` reports
   double autograded_total = 0.0;             ///< the points the score is scaled to
+  /// The points graded by hand, apart from the autograder (A1's report): `grading.
+  /// hand_graded_points`, 0 when absent. The assignment is worth autograded_total + this (bonus
+  /// on top); scores.csv gives it as `hand_graded_max`, the handout quotes it.
+  double hand_graded_points = 0.0;
   std::string hidden_visibility = "after_due_date";
   std::vector<ManifestTask> tasks;
   /// The folder the manifest was read from (empty for a manifest compiled into a program).
