@@ -626,8 +626,8 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
     if (std::string(r->name) == "report_injection") {
       const fs::path dir = b.out / "students" / r->name;
       const Json j = Json::parse(read_text(dir / "results.json"));
-      EXPECT_EQ(j["output_format"], "text");
-      EXPECT_EQ(j["test_output_format"], "text");
+      EXPECT_EQ(j.value("output_format", ""), "text");
+      EXPECT_EQ(j.value("test_output_format", ""), "text");
       std::string plain = j["output"].get<std::string>();
       for (const Json& t : j["tests"]) plain += t["output"].get<std::string>() + "\n";
       EXPECT_NE(plain.find("Total: 80.00 / 80.00"), std::string::npos) << plain.substr(0, 4000);
