@@ -158,8 +158,8 @@ int probe_command(int argc, char** argv) {
                 manifest.title.c_str(), std::string(a.tasks().origin).c_str());
     TextTable table(" ");
     for (const TaskStatus& s : statuses)
-      table.add_row({s.id, s.name,
-                     s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence});
+      table.add_row(
+          {s.id, s.name, s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence});
     std::printf("%s", table.str("  ").c_str());
   }
   return kExitOk;

@@ -66,8 +66,8 @@ std::string compile_summary(const GradeReport& r) {
     o += "Your files do not link together; each file was graded alone with the other files' "
          "stubs. The linker's messages:\n" +
          set_apart(r.build.link_errors, "    ");
-  if (o.empty()) o = "Your code did not compile. The compiler's messages:\n" +
-                     set_apart(r.build.errors, "    ");
+  if (o.empty())
+    o = "Your code did not compile. The compiler's messages:\n" + set_apart(r.build.errors, "    ");
   return o;
 }
 

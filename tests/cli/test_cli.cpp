@@ -281,12 +281,13 @@ TEST_F(Cli, TheProbeTableLinesUpByDisplayWidth) {
   };
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("student tasks of", 0) == 0) check_block();
-    const std::size_t status = std::min(column_of(line, "looks implemented"),
-                                        column_of(line, "NOT implemented yet"));
+    const std::size_t status =
+        std::min(column_of(line, "looks implemented"), column_of(line, "NOT implemented yet"));
     if (line.rfind("  ", 0) == 0 && status != std::string::npos) {
       columns.push_back(status), ++rows;
       // A space between the name and the status, however long the name.
-      const std::size_t byte = std::min(line.find("looks implemented"), line.find("NOT implemented"));
+      const std::size_t byte =
+          std::min(line.find("looks implemented"), line.find("NOT implemented"));
       EXPECT_EQ(line[byte - 1], ' ') << line;
     }
   }

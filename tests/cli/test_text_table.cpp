@@ -17,8 +17,10 @@ TEST(TextTable, DisplayWidthCountsColumnsNotBytes) {
   EXPECT_EQ(display_width("e\xCC\x81"), 1u);                 // e + combining acute
   EXPECT_EQ(display_width("\xE6\xBC\xA2\xE5\xAD\x97"), 4u);  // two CJK ideographs: wide
   EXPECT_EQ(display_width("\xF0\x9F\x98\x80"), 2u);          // an emoji
-  EXPECT_EQ(display_width("a\xFF" "b"), 3u);                  // a stray byte: one column
-  EXPECT_EQ(display_width("\xE2\x80"), 2u);                  // a cut character: its bytes
+  EXPECT_EQ(display_width("a\xFF"
+                          "b"),
+            3u);                             // a stray byte: one column
+  EXPECT_EQ(display_width("\xE2\x80"), 2u);  // a cut character: its bytes
 }
 
 TEST(TextTable, ColumnsAreAsWideAsTheirWidestCellByDisplayWidth) {

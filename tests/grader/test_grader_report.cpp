@@ -217,8 +217,7 @@ bool only_behind_the_gutter(const std::string& text, const std::string& needle) 
     const std::size_t at = line.find(needle);
     if (at == std::string::npos) continue;
     const std::size_t gutter = line.find("\xE2\x94\x82 ");
-    if (gutter == std::string::npos || gutter > at ||
-        line.find_first_not_of(' ') != gutter)
+    if (gutter == std::string::npos || gutter > at || line.find_first_not_of(' ') != gutter)
       return false;
   }
   return true;
@@ -249,7 +248,8 @@ TEST(GraderReport, StudentTextCannotPassForTheGradersSummary) {
   EXPECT_EQ(gs.value("test_output_format", ""), "text");
   std::string plain = gs["output"].get<std::string>();
   for (const Json& t : gs["tests"]) plain += t["output"].get<std::string>();
-  for (const Json& t : prairielearn_results(f.report)["tests"]) plain += t["output"].get<std::string>();
+  for (const Json& t : prairielearn_results(f.report)["tests"])
+    plain += t["output"].get<std::string>();
   EXPECT_EQ(lines_starting(plain, "Total:"), 0) << plain;
   EXPECT_TRUE(only_behind_the_gutter(plain, fake)) << plain;
   const std::string md = markdown_report(f.report);
@@ -296,8 +296,9 @@ TEST(GraderReport, TheSummaryTableLinesUpByDisplayWidth) {
   Fixture f;
   f.book.rubric.tasks[0].title = "Implicit Euler (predictor-corrector)";
   f.book.rubric.tasks[1].title = "Cloth–sphere collision";
-  for (const std::string& text : {terminal_summary(f.report, false),
-                                  gradescope_results(f.report, f.book)["output"].get<std::string>()}) {
+  for (const std::string& text :
+       {terminal_summary(f.report, false),
+        gradescope_results(f.report, f.book)["output"].get<std::string>()}) {
     std::istringstream in(text);
     std::vector<std::string> rows;
     for (std::string line; std::getline(in, line);)

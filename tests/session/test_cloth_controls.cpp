@@ -124,7 +124,8 @@ TEST(ClothControls, NothingToDriveOrPinWithoutACloth) {
   EXPECT_FALSE(toggle_corner_pin(empty, 0).has_value());
 }
 
-// The frame's caption counts the spheres in words that agree with the count (issue 28: "1 spheres").
+// The frame's caption counts the spheres in words that agree with the count (issue 28: "1
+// spheres").
 TEST(ClothCaption, SaysOneSphereAndTwoSpheres) {
   SceneSpec scene;
   scene.body_kind = BodyKind::Cloth;

@@ -23,11 +23,11 @@ inline int codepoint_width(char32_t cp) {
                                     {0x1AB0, 0x1AFF}, {0x1DC0, 0x1DFF}, {0x200B, 0x200F},
                                     {0x2060, 0x2064}, {0x20D0, 0x20FF}, {0xFE00, 0xFE0F},
                                     {0xFE20, 0xFE2F}, {0xFEFF, 0xFEFF}};
-  static constexpr Range kWide[] = {
-      {0x1100, 0x115F},   {0x2E80, 0x303E},   {0x3041, 0x33FF},   {0x3400, 0x4DBF},
-      {0x4E00, 0x9FFF},   {0xA000, 0xA4CF},   {0xAC00, 0xD7A3},   {0xF900, 0xFAFF},
-      {0xFE30, 0xFE4F},   {0xFF00, 0xFF60},   {0xFFE0, 0xFFE6},   {0x1F300, 0x1F64F},
-      {0x1F900, 0x1F9FF}, {0x20000, 0x2FFFD}, {0x30000, 0x3FFFD}};
+  static constexpr Range kWide[] = {{0x1100, 0x115F},   {0x2E80, 0x303E},   {0x3041, 0x33FF},
+                                    {0x3400, 0x4DBF},   {0x4E00, 0x9FFF},   {0xA000, 0xA4CF},
+                                    {0xAC00, 0xD7A3},   {0xF900, 0xFAFF},   {0xFE30, 0xFE4F},
+                                    {0xFF00, 0xFF60},   {0xFFE0, 0xFFE6},   {0x1F300, 0x1F64F},
+                                    {0x1F900, 0x1F9FF}, {0x20000, 0x2FFFD}, {0x30000, 0x3FFFD}};
   const auto in = [cp](const auto& ranges) {
     return std::any_of(std::begin(ranges), std::end(ranges),
                        [cp](const Range& r) { return cp >= r.lo && cp <= r.hi; });
@@ -43,10 +43,11 @@ inline std::size_t display_width(std::string_view text) {
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
     const unsigned lead = byte(i);
-    const std::size_t n = lead < 0x80 ? 1 : lead >= 0xF0 && lead <= 0xF4 ? 4
-                                        : lead >= 0xE0 && lead <= 0xEF   ? 3
-                                        : lead >= 0xC2 && lead <= 0xDF   ? 2
-                                                                         : 0;
+    const std::size_t n = lead < 0x80                    ? 1
+                          : lead >= 0xF0 && lead <= 0xF4 ? 4
+                          : lead >= 0xE0 && lead <= 0xEF ? 3
+                          : lead >= 0xC2 && lead <= 0xDF ? 2
+                                                         : 0;
     char32_t cp = n == 1 ? lead : lead & (0x7F >> n);
     bool ok = n > 0 && i + n <= text.size();
     for (std::size_t k = 1; ok && k < n; ++k) {
@@ -94,7 +95,9 @@ class TextTable {
       const bool last = c + 1 == cells.size();
       const bool right = c < right_.size() && right_[c];
       if (c > 0) out += gap_;
-      out += right ? pad_left(cells[c], widths[c]) : last ? cells[c] : pad_right(cells[c], widths[c]);
+      out += right  ? pad_left(cells[c], widths[c])
+             : last ? cells[c]
+                    : pad_right(cells[c], widths[c]);
     }
     return out;
   }
