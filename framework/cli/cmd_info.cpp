@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "jelly/cli_common/command_line.hpp"
+#include "jelly/cli_common/text_table.hpp"
 #include "jelly/params.hpp"
 #include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
@@ -54,13 +55,12 @@ int params_command(int argc, char** argv) {
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const auto scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
-  std::printf("%-34s %-22s %-9s %-7s %-22s %s\n", "key", "value", "unit", "type", "range",
-              "description");
-  for (const ParamInfo& p : scene_parameters(*scene)) {
-    const std::string value = get_parameter(*scene, p.key).value_or("");
-    std::printf("%-34s %-22s %-9s %-7s %-22s %s\n", p.key.c_str(), value.c_str(), p.unit.c_str(),
-                type_name(p.type), range_text(p).c_str(), p.description.c_str());
-  }
+  TextTable table(" ");
+  table.add_row({"key", "value", "unit", "type", "range", "description"});
+  for (const ParamInfo& p : scene_parameters(*scene))
+    table.add_row({p.key, get_parameter(*scene, p.key).value_or(""), p.unit, type_name(p.type),
+                   range_text(p), p.description});
+  std::printf("%s", table.str().c_str());
   return kExitOk;
 }
 
@@ -95,8 +95,9 @@ int check_command(int argc, char** argv) {
     long long pinned = 0;
     for (Eigen::Index i = 0; i < world->cloth_particle_count(); ++i)
       pinned += world->is_pinned(static_cast<int>(i)) ? 1 : 0;
-    std::printf(" (%lld pinned); gravity %s; %d spheres", pinned, scene->gravity ? "on" : "off",
-                world->sphere_count());
+    const int spheres = world->sphere_count();
+    std::printf(" (%lld pinned); gravity %s; %d %s", pinned, scene->gravity ? "on" : "off", spheres,
+                spheres == 1 ? "sphere" : "spheres");
     for (int k = 0; k < world->sphere_count(); ++k) {
       const SphereBody b = world->sphere(k);
       if (world->sphere_is_kinematic(k)) {
@@ -118,7 +119,8 @@ int check_command(int argc, char** argv) {
       "linearised at rest: omega_max = %.4g rad/s, tau = kd/ks = %.4g s, top-mode damping "
       "ratio %.3g\n",
       e.omega_max, e.tau, e.zeta_top);
-  std::printf("%-18s %-14s %-14s %s\n", "integrator", "limit h [s]", "recommended", "scene h");
+  TextTable table(" ");
+  table.add_row({"integrator", "limit h [s]", "recommended", "scene h"});
   for (IntegratorKind k : kAllIntegrators) {
     const double crit = e.critical_step(k), rec = e.recommended_step(k);
     auto fmt = [](double v) {
@@ -130,9 +132,11 @@ int check_command(int argc, char** argv) {
     const char* verdict = scene->dt <= rec   ? "ok"
                           : scene->dt < crit ? "near the limit"
                                              : "UNSTABLE";
-    std::printf("%-18s %-14s %-14s %g: %s\n", std::string(to_string(k)).c_str(), fmt(crit).c_str(),
-                fmt(rec).c_str(), scene->dt, verdict);
+    char h[64];
+    std::snprintf(h, sizeof h, "%g: %s", scene->dt, verdict);
+    table.add_row({std::string(to_string(k)), fmt(crit), fmt(rec), h});
   }
+  std::printf("%s", table.str().c_str());
   std::printf(cloth ? "(limit: the linearised rest state's modes leave the stability region; "
                       "recommended: half of it, since the cloth stretches as it sags and hits "
                       "spheres)\n"
@@ -152,9 +156,11 @@ int probe_command(int argc, char** argv) {
     const auto statuses = session::probe_assignment(a);
     std::printf("student tasks of %s (%s) linked into this build (%s):\n", manifest.id.c_str(),
                 manifest.title.c_str(), std::string(a.tasks().origin).c_str());
+    TextTable table(" ");
     for (const TaskStatus& s : statuses)
-      std::printf("  %-6s %-28s %s  %s\n", s.id.c_str(), s.name.c_str(),
-                  s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence.c_str());
+      table.add_row(
+          {s.id, s.name, s.implemented ? "looks implemented" : "NOT implemented yet", s.evidence});
+    std::printf("%s", table.str("  ").c_str());
   }
   return kExitOk;
 }

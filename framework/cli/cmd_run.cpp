@@ -66,14 +66,14 @@ void print_cloth_end(const SceneSpec& scene, const Simulator& sim, double wall) 
   const FrameSummary& c = end.cloth;
   std::printf(
       "%s: %ld steps of %s, h = %g s, %g s simulated in %.3f s (%.0f steps/s)\n"
-      "  cloth of %lld particles, %zu springs, %d spheres; %ld acceleration evaluations\n"
+      "  cloth of %lld particles, %zu springs, %d %s; %ld acceleration evaluations\n"
       "  cloth: final centre of mass (%.6f, %.6f, %.6f), lowest y %.6f, largest speed %.4g m/s\n"
       "  energy: cloth kinetic %.6g J, cloth gravitational %.6g J, spring %.6g J\n",
       scene.name.c_str(), sim.steps(), std::string(to_string(scene.integrator)).c_str(),
       sim.options().dt, sim.time(), wall, wall > 0 ? static_cast<double>(sim.steps()) / wall : 0.0,
       static_cast<long long>(w.cloth_particle_count()), w.spring_count(), w.sphere_count(),
-      sim.evaluations(), c.com.x(), c.com.y(), c.com.z(), end.lowest_y, c.max_speed, c.kinetic,
-      c.potential, c.spring);
+      w.sphere_count() == 1 ? "sphere" : "spheres", sim.evaluations(), c.com.x(), c.com.y(),
+      c.com.z(), end.lowest_y, c.max_speed, c.kinetic, c.potential, c.spring);
   for (int k = 0; k < w.sphere_count(); ++k) {
     const Vec3& p = end.sphere_centers[static_cast<std::size_t>(k)];
     const Vec3& u = end.sphere_velocities[static_cast<std::size_t>(k)];

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "files.hpp"
+#include "jelly/cli_common/text_table.hpp"
 #include "plot.hpp"
 #include "text_safety.hpp"
 
@@ -52,17 +53,21 @@ std::string file_failure_headline(const GradeReport& r, const FileFailure& f) {
                      : "");
 }
 
-// What the compile step says, for every format: each unusable file with its cost and message.
+// What the compile step says, for the plain-text formats (terminal, Gradescope, PrairieLearn,
+// JUnit): each unusable file with its cost, then the compiler's messages about it set apart (they
+// quote the student's code: no line of them may pass for the report's own).
 std::string compile_summary(const GradeReport& r) {
   if (r.compiled) return "Your code compiled.\n";
   std::string o;
   for (const FileFailure& f : r.failed_files)
-    o += file_failure_headline(r, f) + ".\n" + f.message + "\n";
+    o += file_failure_headline(r, f) + ".\n  the compiler's messages:\n" +
+         set_apart(f.message, "    ");
   if (r.build.ok && r.build.runner.empty())
     o += "Your files do not link together; each file was graded alone with the other files' "
-         "stubs:\n" +
-         r.build.link_errors;
-  if (o.empty()) o = "Your code did not compile:\n" + r.build.errors;
+         "stubs. The linker's messages:\n" +
+         set_apart(r.build.link_errors, "    ");
+  if (o.empty())
+    o = "Your code did not compile. The compiler's messages:\n" + set_apart(r.build.errors, "    ");
   return o;
 }
 
@@ -229,36 +234,50 @@ std::string case_output(const CaseResult& c, const std::string& terms_page) {
   if (c.status == "passed") o = "Passed.\n";
   std::vector<std::string> shown;
   for (std::size_t i = 0; i < c.failures.size() && i < 6; ++i)
-    o += "- " + c.failures[i] + "\n", shown.push_back(c.failures[i]);
+    o += "- " + hanging(c.failures[i], "  ") + "\n", shown.push_back(c.failures[i]);
   if (c.failures.size() > 6) o += "- … and " + std::to_string(c.failures.size() - 6) + " more\n";
   if (!c.hints.empty()) o += "Hint: " + hint_text(c) + "\n";
   for (const std::string& p : term_pointers(shown, terms_page)) o += "Words: see " + p + "\n";
   if (!c.printed.empty())
-    o += "\nYour code printed (first lines):\n" + cut_utf8(c.printed, 1500) + "\n";
+    o += "\nYour code printed (first lines):\n" + set_apart(cut_utf8(c.printed, 1500), "  ");
   return o;
 }
 
-// The summary of one task as text (terminal and Gradescope's output): its line, its first failed
-// test expanded (at most two messages unless `verbose`, its hint, the handout's words), its other
-// failed tests one line each (expanded with `verbose`), its passed tests only with `verbose`.
-// With `public_only` (Gradescope's output while hidden tests are not yet visible) the hidden
-// tests are left out, and the points and counts are those of the public tests.
-void task_block(std::ostream& o, const GradeReport& r, const TaskResult& t, bool verbose,
-                bool public_only = false) {
+// A task's row in the plain-text summary (terminal and Gradescope's output): id, title, points,
+// verdict, tests passed; none when none of its tests ran. With `public_only` (Gradescope's output
+// while hidden tests are not yet visible) the points and counts are those of the public tests.
+std::vector<std::string> task_row(const TaskResult& t, bool public_only) {
   TaskCount n;
   double score = 0.0, max_score = 0.0;
   for (const CaseResult* c : ordered_cases(t))
     if (!public_only || !c->spec->hidden)
       ++n.run, n.passed += c->status == "passed", score += c->score, max_score += c->max_score;
-  if (n.run == 0) return;
+  if (n.run == 0) return {};
   if (!public_only) score = t.score, max_score = t.max_score;
   const bool full = max_score == 0 ? n.passed == n.run : score >= max_score - 1e-9;
-  char line[200];
-  std::snprintf(line, sizeof line, "%-8s %-34s %6s / %-6s %-4s (%zu/%zu %s)\n", t.spec->id.c_str(),
-                t.spec->title.c_str(), ((t.spec->bonus ? "+" : "") + pts(score)).c_str(),
-                pts(max_score).c_str(), full ? (max_score == 0 ? "ok" : "PASS") : "FAIL", n.passed,
-                n.run, public_only ? "public tests" : "tests");
-  o << line;
+  return {t.spec->id,
+          t.spec->title,
+          (t.spec->bonus ? "+" : "") + pts(score),
+          "/",
+          pts(max_score),
+          full ? (max_score == 0 ? "ok" : "PASS") : "FAIL",
+          "(" + std::to_string(n.passed) + "/" + std::to_string(n.run) +
+              (public_only ? " public tests)" : " tests)")};
+}
+
+// A failed test's messages in the plain-text summary: the first line after the indent, every
+// further line (the student's text, an exception's message) set apart below it.
+void failure_lines(std::ostream& o, const std::string& message) {
+  const std::string indent = "               ";
+  o << indent << hanging(message, indent + "  ") << "\n";
+}
+
+// The tests of one task under its row: its first failed test expanded (at most two messages
+// unless `verbose`, its hint, the handout's words), its other failed tests one line each
+// (expanded with `verbose`), its passed tests only with `verbose`.
+void task_details(std::ostream& o, const GradeReport& r, const TaskResult& t, bool verbose,
+                  bool public_only) {
+  std::size_t passed = 0;
   bool first = true;
   for (const CaseResult* c : ordered_cases(t)) {
     if (public_only && c->spec->hidden) continue;
@@ -267,7 +286,7 @@ void task_block(std::ostream& o, const GradeReport& r, const TaskResult& t, bool
       if (!first && !verbose) continue;  // collapsed: the report files show its messages
       std::vector<std::string> shown;
       for (std::size_t i = 0; i < c->failures.size() && (verbose || i < 2); ++i)
-        o << "               " << c->failures[i] << "\n", shown.push_back(c->failures[i]);
+        failure_lines(o, c->failures[i]), shown.push_back(c->failures[i]);
       // Every way this summary is made takes --verbose (jelly-grade grade, tools/selfcheck), and
       // the IDE's selfcheck target (which takes no options) has its twin selfcheck-verbose. One
       // text for every path: the self-check's report is the grader's, line for line.
@@ -278,12 +297,32 @@ void task_block(std::ostream& o, const GradeReport& r, const TaskResult& t, bool
       for (const std::string& p : term_pointers(shown, r.terms_page))
         o << "               words: see " << p << "\n";
       first = false;
-    } else if (verbose) {
-      o << "           ✓ " << c->spec->title << "\n";
+    } else {
+      passed += c->status == "passed";
+      if (verbose) o << "           ✓ " << c->spec->title << "\n";
     }
   }
-  if (!verbose && !first && n.passed > 0)
-    o << "           ✓ " << n.passed << " passed (--verbose lists them)\n";
+  if (!verbose && !first && passed > 0)
+    o << "           ✓ " << passed << " passed (--verbose lists them)\n";
+}
+
+// The summary of the tasks as text (terminal and Gradescope's output): a row per task, its
+// columns as wide as their widest cell (by display width: "Cloth–sphere" lines up with
+// "Sphere–sphere"), each followed by its tests (task_details).
+void task_blocks(std::ostream& o, const GradeReport& r, bool verbose, bool public_only = false) {
+  jelly::cli::TextTable table(" ");
+  table.align_right(2);
+  std::vector<const TaskResult*> shown;
+  for (const TaskResult& t : r.tasks) {
+    std::vector<std::string> row = task_row(t, public_only);
+    if (row.empty()) continue;
+    table.add_row(std::move(row));
+    shown.push_back(&t);
+  }
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    o << table.row(i) << "\n";
+    task_details(o, r, *shown[i], verbose, public_only);
+  }
 }
 
 const TaskSpec* task_of(const GradeReport& r, const CaseResult& c) {
@@ -322,16 +361,16 @@ std::string dump_json(const Json& j) {
 
 std::string terminal_summary(const GradeReport& r, bool verbose) {
   std::ostringstream o;
-  o << "Jelly Lab autograder — " << r.submission << " (" << r.visibility << " tests)\n";
+  o << "Jelly Lab autograder — " << one_line(r.submission) << " (" << r.visibility << " tests)\n";
   // "none" alone unless the description says more than the name (the self-check says why).
   const bool plain =
       r.isolation_description.empty() || r.isolation_description.rfind("none", 0) == 0;
   o << "  sandbox: " << r.isolation << (plain ? "" : " — ")
     << (plain ? "" : r.isolation_description) << "\n";
-  for (const std::string& n : r.notes) o << "  note: " << n << "\n";
+  for (const std::string& n : r.notes) o << "  note: " << hanging(n, "        ") << "\n";
   if (!r.compiled) o << "\n" << compile_summary(r);
   o << "\n";
-  for (const TaskResult& t : r.tasks) task_block(o, r, t, verbose);
+  task_blocks(o, r, verbose);
   o << "\nTotal: " << total_text(r);
   if (r.build.ok) {
     char t[64];
@@ -369,13 +408,17 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
   j["execution_time"] = static_cast<long>(std::lround(r.grading_seconds + r.build.seconds));
   std::string out = "Jelly Lab autograder: " + total_text(r) + "\n";
   out += "Sandbox: " + r.isolation + "\n";
-  for (const std::string& n : r.notes) out += "Note: " + n + "\n";
+  for (const std::string& n : r.notes) out += "Note: " + hanging(n, "      ") + "\n";
   // The summary first, in the terminal's words and order (the tests below follow the same order).
   std::ostringstream tasks;
   const bool public_only = book.rubric.hidden_visibility != "visible";
-  for (const TaskResult& t : r.tasks) task_block(tasks, r, t, false, public_only);
+  task_blocks(tasks, r, false, public_only);
   out += "\n" + tasks.str();
   j["output"] = out;
+  // Shown as plain text, whatever Gradescope's default: the outputs quote the student's code and
+  // what it printed, which must never be rendered as markup.
+  j["output_format"] = "text";
+  j["test_output_format"] = "text";
   j["stdout_visibility"] = "hidden";
   j["extra_data"] = {{"isolation", r.isolation},
                      {"isolation_description", r.isolation_description}};
@@ -414,7 +457,7 @@ Json prairielearn_results(const GradeReport& r) {
   // message and per test (max_points 0), not folded into the fraction.
   j["message"] = r.build.ok ? "Graded " + total_text(r) : std::string("Your code did not compile.");
   std::string out = "Sandbox: " + r.isolation + "\n";
-  for (const std::string& n : r.notes) out += "Note: " + n + "\n";
+  for (const std::string& n : r.notes) out += "Note: " + hanging(n, "      ") + "\n";
   if (!r.compiled) out += compile_summary(r);
   j["output"] = out;
   j["isolation"] = r.isolation;
@@ -539,7 +582,7 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
     if (frames && frames->shown) {
       o << "### Frames: yours beside the reference\n\n";
       if (!frames->unavailable.empty()) {
-        o << "Frames not available: " << frames->unavailable << "\n\n";
+        o << "Frames not available: " << markdown_inline(frames->unavailable) << "\n\n";
       } else {
         o << "| t [s] | yours | reference |\n|---|---|---|\n";
         for (const FrameRow& row : frames->rows)
@@ -553,7 +596,7 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
             << " |\n";
         o << "\n";
       }
-      for (const std::string& n : frames->notes) o << "- " << n << "\n";
+      for (const std::string& n : frames->notes) o << "- " << markdown_inline(n) << "\n";
       if (!frames->notes.empty()) o << "\n";
     }
   };

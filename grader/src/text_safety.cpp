@@ -179,4 +179,34 @@ std::string markdown_code_block(const std::string& s) {
   return fence + "text\n" + body + fence + "\n";
 }
 
+namespace {
+const char* const kGutter = "\xE2\x94\x82 ";  // "│ "
+}
+
+std::string set_apart(const std::string& s, const std::string& indent) {
+  std::string out = indent + kGutter;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    out += s[i];
+    if (s[i] == '\n' && i + 1 < s.size()) out += indent + kGutter;
+  }
+  if (out.back() != '\n') out += '\n';
+  return out;
+}
+
+std::string hanging(const std::string& s, const std::string& indent) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    out += s[i];
+    if (s[i] == '\n' && i + 1 < s.size()) out += indent + kGutter;
+  }
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+std::string one_line(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '\n' ? std::string("\xE2\x90\xA4") : std::string(1, c);
+  return out;
+}
+
 }  // namespace jelly::grade

@@ -37,4 +37,16 @@ std::string markdown_inline(const std::string& s);
 /// backticks in `s`, so nothing in it can end the block.
 std::string markdown_code_block(const std::string& s);
 
+/// Student text (what a test printed, the compiler's messages) set apart in a plain-text report
+/// (the terminal, Gradescope, PrairieLearn, JUnit): every line after `indent` and "│ ", so that
+/// no line of it starts where the report's own lines do ("Total: …" at the left edge).
+std::string set_apart(const std::string& s, const std::string& indent);
+
+/// A message whose first line follows a label on the report's line: every further line after
+/// `indent` and "│ " (the text after a line break is the student's, or the grader's table).
+std::string hanging(const std::string& s, const std::string& indent);
+
+/// `s` on one line (a name in a heading): each line break as "␤".
+std::string one_line(const std::string& s);
+
 }  // namespace jelly::grade

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -253,6 +254,45 @@ TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
   const Result params = jelly("params course-2023.toml");
   EXPECT_EQ(params.code, 0) << params.output;
   EXPECT_NE(params.output.find("scene.name"), std::string::npos) << params.output;
+}
+
+// The display column where `what` starts in `line`: its code points before it (every text jelly
+// prints is one column a character), counted here without the CLI's own helper.
+std::size_t column_of(const std::string& line, const std::string& what) {
+  const std::size_t at = line.find(what);
+  if (at == std::string::npos) return std::string::npos;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < at; ++i) n += (static_cast<unsigned char>(line[i]) & 0xC0) != 0x80;
+  return n;
+}
+
+// Issue 28: `jelly probe`'s table lines up by display width (a task name with an en dash, three
+// bytes, one column) and its name column is as wide as the longest name ("implicit Euler
+// (predictor-corrector)" does not push its row out of line).
+TEST_F(Cli, TheProbeTableLinesUpByDisplayWidth) {
+  const Result r = jelly("probe");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::istringstream in(r.output);
+  std::vector<std::size_t> columns;
+  std::size_t rows = 0;
+  const auto check_block = [&] {
+    for (std::size_t c : columns) EXPECT_EQ(c, columns.front()) << r.output;
+    columns.clear();
+  };
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("student tasks of", 0) == 0) check_block();
+    const std::size_t status =
+        std::min(column_of(line, "looks implemented"), column_of(line, "NOT implemented yet"));
+    if (line.rfind("  ", 0) == 0 && status != std::string::npos) {
+      columns.push_back(status), ++rows;
+      // A space between the name and the status, however long the name.
+      const std::size_t byte =
+          std::min(line.find("looks implemented"), line.find("NOT implemented"));
+      EXPECT_EQ(line[byte - 1], ' ') << line;
+    }
+  }
+  check_block();
+  EXPECT_GE(rows, 10u) << r.output;
 }
 
 TEST_F(Cli, AnUnknownSceneSaysWhatWasTriedAndListsTheKnownNames) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,10 +18,13 @@
 #include "grade.hpp"
 #include "hints.hpp"
 #include "report.hpp"
+#include "report_text.hpp"
 
 namespace {
 
 using namespace jelly::grade;
+using jelly::testing::lines_starting;
+using jelly::testing::outside_code_blocks;
 
 const std::string kPage = "assignments/p/handout/reading-your-report.md";
 
@@ -204,6 +208,107 @@ TEST(GraderReport, HostileTextStaysEscapedAndMakesNoLink) {
   EXPECT_NE(md.find("\\[link\\](javascript:"), std::string::npos) << md;
   EXPECT_EQ(md.find("[link](javascript:"), std::string::npos) << md;
   EXPECT_EQ(md.find("#tolerance-a"), std::string::npos);
+}
+
+// Every line of `text` that holds `needle` has the gutter "│ " before it (student text set apart).
+bool only_behind_the_gutter(const std::string& text, const std::string& needle) {
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t at = line.find(needle);
+    if (at == std::string::npos) continue;
+    const std::size_t gutter = line.find("\xE2\x94\x82 ");
+    if (gutter == std::string::npos || gutter > at || line.find_first_not_of(' ') != gutter)
+      return false;
+  }
+  return true;
+}
+
+// Issue 28: what a submission controls (an exception's message, what its tests printed, the
+// compiler's messages, its notes) never passes for the grader's own text: no line of it in the
+// plain-text formats starts where the summary's lines do ("Total: 80.00 / 80.00"), and in
+// Markdown and HTML its markup stays text.
+TEST(GraderReport, StudentTextCannotPassForTheGradersSummary) {
+  Fixture f;
+  const std::string fake = "Total: 80.00 / 80.00";
+  const std::string img = "<img src=x onerror=alert(1)>";
+  f.report.cases[1].failures.insert(f.report.cases[1].failures.begin(),
+                                    "an exception was thrown: oops\n" + fake + "\n" + img);
+  f.report.cases[1].printed = fake + "\n" + img + "\n```\n~~~\n" + img + "\n";
+  f.report.notes.push_back("a note naming\n" + fake);
+  f.report.submission = "sub\n" + fake;
+  for (const bool verbose : {false, true}) {
+    const std::string term = terminal_summary(f.report, verbose);
+    EXPECT_EQ(lines_starting(term, "Total:"), 1) << term;
+    // (the first line names the submission: its folder's name on that one line)
+    EXPECT_TRUE(only_behind_the_gutter(term.substr(term.find('\n') + 1), fake)) << term;
+    EXPECT_EQ(term.rfind("Jelly Lab autograder — sub\xE2\x90\xA4Total: 80.00", 0), 0u) << term;
+  }
+  const Json gs = gradescope_results(f.report, f.book);
+  EXPECT_EQ(gs.value("output_format", ""), "text");
+  EXPECT_EQ(gs.value("test_output_format", ""), "text");
+  std::string plain = gs["output"].get<std::string>();
+  for (const Json& t : gs["tests"]) plain += t["output"].get<std::string>();
+  for (const Json& t : prairielearn_results(f.report)["tests"])
+    plain += t["output"].get<std::string>();
+  EXPECT_EQ(lines_starting(plain, "Total:"), 0) << plain;
+  EXPECT_TRUE(only_behind_the_gutter(plain, fake)) << plain;
+  const std::string md = markdown_report(f.report);
+  EXPECT_EQ(outside_code_blocks(md).find("<img"), std::string::npos) << md;
+  EXPECT_EQ(lines_starting(outside_code_blocks(md), "Total:"), 0) << md;
+  const std::string html = html_report(f.report);
+  EXPECT_EQ(html.find(img), std::string::npos);
+  EXPECT_NE(html.find("&lt;img src=x onerror=alert(1)&gt;"), std::string::npos);
+}
+
+// The compiler's messages quote the student's code: set apart in every plain-text format.
+TEST(GraderReport, CompilerMessagesAreSetApart) {
+  Fixture f;
+  const std::string fake = "Total: 80.00 / 80.00";
+  f.report.compiled = false;
+  f.report.failed_files.push_back(
+      {"a.cpp", "did not compile", "a.cpp:1:2: error: #error\n" + fake + "\n", {"P.T1"}, 60.0});
+  const std::string term = terminal_summary(f.report, false);
+  EXPECT_EQ(lines_starting(term, "Total:"), 1) << term;
+  EXPECT_TRUE(only_behind_the_gutter(term, fake)) << term;
+  EXPECT_NE(term.find("a.cpp did not compile"), std::string::npos) << term;
+  const std::string compile = gradescope_results(f.report, f.book)["tests"][0]["output"];
+  EXPECT_TRUE(only_behind_the_gutter(compile, fake)) << compile;
+  EXPECT_TRUE(only_behind_the_gutter(junit_xml(f.report), fake));
+  f.report.failed_files.clear();
+  f.report.build.ok = false;
+  f.report.build.errors = "x.cpp:1: error\n" + fake + "\n";
+  EXPECT_TRUE(only_behind_the_gutter(terminal_summary(f.report, false), fake));
+}
+
+// The display column of `what` in `line`: its code points before it (the texts here are one
+// column each), counted without the project's own helper.
+std::size_t column_of(const std::string& line, const std::string& what) {
+  const std::size_t at = line.find(what);
+  if (at == std::string::npos) return std::string::npos;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < at; ++i) n += (static_cast<unsigned char>(line[i]) & 0xC0) != 0x80;
+  return n;
+}
+
+// Issue 28: the summary's rows line up by display width ("Cloth–sphere" has a three-byte en dash)
+// and a long title widens its column instead of pushing its row out of line.
+TEST(GraderReport, TheSummaryTableLinesUpByDisplayWidth) {
+  Fixture f;
+  f.book.rubric.tasks[0].title = "Implicit Euler (predictor-corrector)";
+  f.book.rubric.tasks[1].title = "Cloth–sphere collision";
+  for (const std::string& text :
+       {terminal_summary(f.report, false),
+        gradescope_results(f.report, f.book)["output"].get<std::string>()}) {
+    std::istringstream in(text);
+    std::vector<std::string> rows;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("P.T", 0) == 0) rows.push_back(line);
+    ASSERT_EQ(rows.size(), 2u) << text;
+    EXPECT_EQ(column_of(rows[0], " / "), column_of(rows[1], " / ")) << text;
+    EXPECT_EQ(column_of(rows[0], "FAIL"), column_of(rows[1], "PASS")) << text;
+    EXPECT_EQ(column_of(rows[0], "Implicit"), column_of(rows[1], "Cloth")) << text;
+    EXPECT_NE(rows[0].find("(predictor-corrector) "), std::string::npos) << text;
+  }
 }
 
 TEST(GraderReport, GradescopesSummaryLeavesTheHiddenTestsOut) {

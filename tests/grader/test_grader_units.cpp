@@ -66,6 +66,27 @@ TEST(GraderText, HtmlAndMarkdownEscapes) {
   EXPECT_EQ(g::markdown_code_block("x\n"), "```text\nx\n```\n");
 }
 
+// Issue 28: a student's line "Total: 80.00 / 80.00" never starts a line of a plain-text report:
+// what the student controls is indented behind a gutter, names stay on one line.
+TEST(GraderText, StudentTextIsSetApartInPlainText) {
+  EXPECT_EQ(g::set_apart("Total: 80.00 / 80.00\nok\n", "  "),
+            "  \xE2\x94\x82 Total: 80.00 / 80.00\n  \xE2\x94\x82 ok\n");
+  EXPECT_EQ(g::set_apart("no newline", ""), "\xE2\x94\x82 no newline\n");
+  EXPECT_EQ(g::hanging("thrown: x\nTotal: 80.00 / 80.00\n", "    "),
+            "thrown: x\n    \xE2\x94\x82 Total: 80.00 / 80.00");
+  EXPECT_EQ(g::hanging("one line", "    "), "one line");
+  EXPECT_EQ(g::one_line("sub\nTotal: 80"), "sub\xE2\x90\xA4Total: 80");
+}
+
+// In Markdown the student's text is a fenced block no line of it can close: the fence is longer
+// than its longest run of backticks (a tilde line cannot close a backtick fence).
+TEST(GraderText, NoStudentLineClosesItsCodeBlock) {
+  const std::string text = "```\n~~~~\n`````` <img src=x onerror=alert(1)>\n";
+  const std::string block = g::markdown_code_block(text);
+  EXPECT_EQ(block.substr(0, 12), "```````text\n") << block;
+  EXPECT_EQ(block.substr(block.size() - 8), "```````\n") << block;
+}
+
 TEST(GraderCsv, FieldsAreQuotedAndFormulasMarkedAsText) {
   EXPECT_EQ(g::csv_field("alice"), "alice");
   EXPECT_EQ(g::csv_field("a,b"), "\"a,b\"");

@@ -34,6 +34,7 @@
 
 #include "jelly/manifest.hpp"
 
+#include "report_text.hpp"
 #include "shell_quote.hpp"
 
 namespace fs = std::filesystem;
@@ -298,6 +299,14 @@ const Route kRoutes[] = {
    " \\xe2\\x80\\xae <script>alert('x')</script> <img src=x onerror=alert(1)> ```` | **bold** [link](javascript:x) \\xf0\\x9f\\x98\\x80 end\\n\";"
    " std::fwrite(b, 1, sizeof b - 1, stdout); std::fwrite(b, 1, sizeof b - 1, stderr); for (int k = 0; k < 3000; ++k) std::fputs(\"\\xe2\\x86\\x92\\xc2\\xb0\", stdout); std::fputs(\"\\xe2\\x86\", stdout); }\n",
    "jelly bytes:", true, false},
+  // Text that would pass for the grader's own (issue 28): a total line, HTML and Markdown fences
+  // in what a test prints and in an exception's message. The report sets it apart and keeps it
+  // text (checked in check_batch).
+  {"report_injection", Where::InRunFunction,
+   "{ static const char t[] = \"jelly injection\\nTotal: 80.00 / 80.00\\n<img src=x onerror=alert(1)>\\n"
+   "```\\n~~~\\n<script>alert(2)</script>\\n\"; std::fputs(t, stdout); std::fflush(stdout); std::fputs(t, stderr);"
+   " throw std::runtime_error(t); }\n",
+   "jelly injection", true, true},
   {"result_garbage", Where::InRunFunction,
    "{ static const char g[] = \"\\xff\\x00{not json\"; write(3, g, sizeof g - 1); }\n",
    "the test's result could not be read", true, true},
@@ -370,6 +379,7 @@ fs::path make_submission(const fs::path& in, const Route& r) {
         "static bool jelly_once = false;\nif (!jelly_once) {\njelly_once = true;\n" + code + "}\n");
     std::ofstream(dir / T->run_file, std::ios::binary)
         << "#include <fcntl.h>\n#include <sys/syscall.h>\n#include <unistd.h>\n#include <cstdio>\n"
+        << "#include <stdexcept>\n"
         << text;
   } else if (r.where == Where::WellBehaved) {
     if (std::string(r.name) == "nonstatic_helper") {
@@ -612,6 +622,29 @@ void check_batch(const BatchRun& b, const std::vector<const Route*>& routes,
         EXPECT_NEAR(task_score(j, task), task_score(good, task), 1e-6) << task;
     }
   }
+  // Issue 28: the injection route's text is set apart and stays text. No line of the plain-text
+  // outputs starts with its "Total:" (Gradescope shows them as text); Markdown renders none of
+  // its markup outside a fenced block; HTML escapes it.
+  for (const Route* r : routes)
+    if (std::string(r->name) == "report_injection") {
+      const fs::path dir = b.out / "students" / r->name;
+      const Json j = Json::parse(read_text(dir / "results.json"));
+      EXPECT_EQ(j.value("output_format", ""), "text");
+      EXPECT_EQ(j.value("test_output_format", ""), "text");
+      std::string plain = j["output"].get<std::string>();
+      for (const Json& t : j["tests"]) plain += t["output"].get<std::string>() + "\n";
+      EXPECT_NE(plain.find("Total: 80.00 / 80.00"), std::string::npos) << plain.substr(0, 4000);
+      EXPECT_EQ(jelly::testing::lines_starting(plain, "Total:"), 0) << plain.substr(0, 4000);
+      const std::string md = read_text(dir / "report.md");
+      const std::string rendered = jelly::testing::outside_code_blocks(md);
+      EXPECT_EQ(rendered.find("<img"), std::string::npos) << md.substr(0, 4000);
+      EXPECT_EQ(rendered.find("<script"), std::string::npos) << md.substr(0, 4000);
+      EXPECT_EQ(jelly::testing::lines_starting(rendered, "Total:"), 0) << md.substr(0, 4000);
+      const std::string html = read_text(dir / "report.html");
+      EXPECT_EQ(html.find("<img src=x"), std::string::npos);
+      EXPECT_EQ(html.find("<script>alert(2)"), std::string::npos);
+      EXPECT_NE(html.find("&lt;img src=x onerror=alert(1)&gt;"), std::string::npos);
+    }
   // What the bytes route printed reached the report, made safe.
   for (const Route* r : routes)
     if (std::string(r->name) == "printed_bytes") {

@@ -192,7 +192,7 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
        f + "2: namespace: expected a C++ identifier, not \"p-1\""},
       {replaced("id = \"p1\"\n", ""),
        "assignments/p1/assignment.toml: id: expected the assignment's "
-       "id, a lower-case name such as \"a1\" (the key is missing)"},
+       "id, a lower-case name such as \"hw1\" (the key is missing)"},
       {replaced("points = 4", "points = = 4"), f + "14: not valid TOML: "},
       // A bonus flag that is not a boolean (line 22, after points).
       {replaced("points = 6", "points = 6\nbonus = \"yes\""),

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/session/captions.hpp"
 #include "jelly/session/cloth_controls.hpp"
 #include "jelly/simulator.hpp"
 
@@ -121,6 +122,21 @@ TEST(ClothControls, NothingToDriveOrPinWithoutACloth) {
   EXPECT_FALSE(drive_first_kinematic_sphere(*plain, Vec3(1.0, 0.0, 0.0)));
   World empty(a2::task_table());
   EXPECT_FALSE(toggle_corner_pin(empty, 0).has_value());
+}
+
+// The frame's caption counts the spheres in words that agree with the count (issue 28: "1
+// spheres").
+TEST(ClothCaption, SaysOneSphereAndTwoSpheres) {
+  SceneSpec scene;
+  scene.body_kind = BodyKind::Cloth;
+  SphereSpec kinematic;
+  kinematic.kinematic = true;
+  scene.spheres = {kinematic};
+  const std::string one = caption(RunSetup::from_scene(scene), 0.0);
+  EXPECT_NE(one.find("\n1 sphere (1 kinematic)"), std::string::npos) << one;
+  scene.spheres.push_back(SphereSpec{});
+  const std::string two = caption(RunSetup::from_scene(scene), 0.0);
+  EXPECT_NE(two.find("\n2 spheres (1 kinematic)"), std::string::npos) << two;
 }
 
 }  // namespace

@@ -190,7 +190,7 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   Reader r(root, source, "");
   r.only_keys({"id", "namespace", "title", "files", "reference_files", "bodies", "default_scene",
                "handout", "studies", "grading", "task"});
-  m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"a1\"");
+  m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
   if (!is_name(m.id, true))
     fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
   m.ns = r.string("namespace", true, "the C++ namespace of the tasks (jelly::<namespace>)");
@@ -251,7 +251,7 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
     tr.only_keys({"id", "title", "short", "category", "file", "functions", "points", "handout",
                   "probe", "bonus"});
     ManifestTask task;
-    task.id = tr.string("id", true, "a task id such as \"A1.T4\"");
+    task.id = tr.string("id", true, "a task id such as \"HW.T1\"");
     if (!ids.insert(task.id).second)
       fail(source, tr.node("id"), prefix + "id", "a unique id (\"" + task.id + "\" is used twice)");
     task.title = tr.string("title", true, "a one-line title");

@@ -56,10 +56,11 @@ std::string caption(const RunSetup& s, double time, bool with_integrator) {
     const ClothCollisionSettings& k = sc.collisions;
     std::size_t kinematic = 0;
     for (const SphereSpec& sp : sc.spheres) kinematic += sp.kinematic ? 1 : 0;
-    out += "\n" + std::to_string(sc.spheres.size()) + " spheres (" + std::to_string(kinematic) +
-           " kinematic): e_cloth " + fmt("%g", k.cloth_restitution) + " e_sphere " +
-           fmt("%g", k.sphere_restitution) + " eps " + fmt("%g", k.tolerance) + " mu " +
-           fmt("%g", k.friction) + " beta " + fmt("%g", k.push_out) + "   ";
+    const std::size_t n = sc.spheres.size();
+    out += "\n" + std::to_string(n) + (n == 1 ? " sphere (" : " spheres (") +
+           std::to_string(kinematic) + " kinematic): e_cloth " + fmt("%g", k.cloth_restitution) +
+           " e_sphere " + fmt("%g", k.sphere_restitution) + " eps " + fmt("%g", k.tolerance) +
+           " mu " + fmt("%g", k.friction) + " beta " + fmt("%g", k.push_out) + "   ";
   }
   if (sc.gravity) out += "g = " + fmt("%g", sc.gravity->y()) + " m/s2";
   return out;

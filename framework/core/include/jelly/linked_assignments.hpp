@@ -12,7 +12,7 @@
 namespace jelly {
 
 struct LinkedAssignment {
-  std::string_view id;             ///< "a1"
+  std::string_view id;             ///< "hw1"
   std::string_view manifest_text;  ///< the assignment.toml the program was built with
   std::string_view manifest_path;  ///< where it was (for messages)
   TaskTable (*tasks)();            ///< the task table of the implementation JELLY_TASKS chose

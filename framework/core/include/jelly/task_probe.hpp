@@ -1,6 +1,6 @@
 // Which student tasks look implemented: each task function called once on a tiny input whose
 // correct answer is never the stub's neutral value. The viewer's hint and `jelly` use this to say
-// "A1.T4 spring force is not implemented yet" instead of letting a student guess why nothing moves.
+// "HW.T4 spring force is not implemented yet" instead of letting a student guess why nothing moves.
 // The probes belong to the framework's TaskTable slots; an assignment's manifest says which of its
 // tasks fills which slot (`probe = "spring_force"`) and gives the task's id and short name.
 //
@@ -19,7 +19,7 @@ namespace jelly {
 
 /// The probe's verdict on one task.
 struct TaskStatus {
-  std::string id;    ///< the task's id in its manifest, e.g. "A1.T1"
+  std::string id;    ///< the task's id in its manifest, e.g. "HW.T1"
   std::string name;  ///< its short name, e.g. "structural springs"
   bool implemented = false;
   std::string evidence;  ///< what the probe saw, e.g. "no springs for a 3×3×3 lattice"
@@ -38,7 +38,7 @@ TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
 /// The slots the framework can probe (what a manifest's `probe` may name).
 std::vector<std::string_view> probe_slots();
 
-/// The ids of the tasks that look missing, e.g. {"A1.T4", "A1.T5"}.
+/// The ids of the tasks that look missing, e.g. {"HW.T4", "HW.T5"}.
 std::vector<std::string> missing_task_ids(const std::vector<TaskStatus>& statuses);
 
 }  // namespace jelly

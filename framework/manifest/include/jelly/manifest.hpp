@@ -16,7 +16,7 @@
 namespace jelly {
 
 /// A manifest that cannot be used: the message names the file, the line and key, and what was
-/// expected ("assignments/a1/assignment.toml:12: task[3].points: expected a number ≥ 0").
+/// expected ("assignments/hw1/assignment.toml:12: task[3].points: expected a number ≥ 0").
 class ManifestError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -24,7 +24,7 @@ class ManifestError : public std::runtime_error {
 
 /// One task of an assignment.
 struct ManifestTask {
-  std::string id;                      ///< "A1.T4"
+  std::string id;                      ///< "HW.T1"
   std::string title;                   ///< "Spring force" (reports, handout)
   std::string short_name;              ///< "spring force" (the viewer's hint); title if absent
   std::string category;                ///< "forces" (the report groups by it)
@@ -43,7 +43,7 @@ struct ManifestTask {
 };
 
 struct AssignmentManifest {
-  std::string id;                            ///< folder name and CLI name: "a1"
+  std::string id;                            ///< folder name and CLI name: "hw1"
   std::string ns;                            ///< C++ namespace of the tasks: jelly::<ns>
   std::string title;                         ///< "The jelly cube"
   std::vector<std::string> files;            ///< the files a student edits, in build order
@@ -64,7 +64,7 @@ struct AssignmentManifest {
 
   /// The task with this id, or nullptr.
   const ManifestTask* find_task(std::string_view task_id) const;
-  /// The common prefix of the task IDs, e.g. "A1." (what the self-check and the release use to
+  /// The common prefix of the task IDs, e.g. "HW." (what the self-check and the release use to
   /// tell this assignment's tests from another's).
   std::string task_prefix() const;
 };

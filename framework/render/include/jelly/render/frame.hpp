@@ -15,7 +15,7 @@ struct FrameOptions {
   DrawOptions draw;
   bool caption = true;  ///< print the parameters (bottom-left)
   bool labels = true;   ///< label each viewport with its integrator and cost (comparison mode)
-  std::vector<std::string> hints;  ///< lines shown at the top (e.g. "A1.T4 not implemented yet")
+  std::vector<std::string> hints;  ///< lines shown at the top (e.g. "HW.T4 not implemented yet")
   /// Space kept free at the left edge [px] (the app's side panel).
   int left_margin = 0;
 };
