@@ -85,6 +85,48 @@ std::vector<SceneEntry> list_scenes(const fs::path& dir) {
   return out;
 }
 
+std::string example_scene(const fs::path& dir) {
+  std::vector<SceneEntry> files = list_scenes(dir);
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [](const SceneEntry& e) { return e.path.empty(); }),
+              files.end());
+  for (const LinkedAssignment& a : linked_assignments()) {
+    const std::string& name = manifest_of(a).default_scene;
+    if (std::any_of(files.begin(), files.end(),
+                    [&](const SceneEntry& e) { return e.name == name; }))
+      return name;
+  }
+  if (!files.empty()) return files.front().name;
+  return default_scene_name();
+}
+
+std::string scenes_line(const fs::path& dir) {
+  std::string names;
+  std::string folder;  // the sub-folder whose scenes are being counted
+  int in_folder = 0;
+  const auto flush = [&] {
+    if (in_folder == 0) return;
+    names += (names.empty() ? "" : ", ") + folder + "/ (" + std::to_string(in_folder) +
+             (in_folder == 1 ? " scene)" : " scenes)");
+    in_folder = 0;
+  };
+  for (const SceneEntry& e : list_scenes(dir)) {
+    if (e.path.empty()) continue;  // a built-in copy: not a file of `dir`
+    const std::size_t slash = e.name.find('/');
+    if (slash == std::string::npos) {
+      flush();
+      names += (names.empty() ? "" : ", ") + e.name;
+      continue;
+    }
+    if (e.name.compare(0, slash, folder) != 0 || folder.size() != slash) flush();
+    folder = e.name.substr(0, slash);
+    ++in_folder;
+  }
+  flush();
+  if (names.empty()) return "no scenes in " + dir.string();
+  return "scenes in " + dir.string() + ": " + names;
+}
+
 SceneResult load_entry(const SceneEntry& e) {
   if (e.path.empty()) {
     if (std::optional<SceneResult> r = builtin_scene(e.name)) return *r;
