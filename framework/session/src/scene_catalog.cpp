@@ -101,13 +101,13 @@ std::string example_scene(const fs::path& dir) {
 }
 
 std::string scenes_line(const fs::path& dir) {
-  std::string names;
-  std::string folder;  // the sub-folder whose scenes are being counted
+  std::vector<std::string> items;  // top-level names, and "folder/ (N scenes)" per sub-folder
+  std::string folder;
   int in_folder = 0;
   const auto flush = [&] {
-    if (in_folder == 0) return;
-    names += (names.empty() ? "" : ", ") + folder + "/ (" + std::to_string(in_folder) +
-             (in_folder == 1 ? " scene)" : " scenes)");
+    if (in_folder > 0)
+      items.push_back(folder + "/ (" + std::to_string(in_folder) +
+                      (in_folder == 1 ? " scene)" : " scenes)"));
     in_folder = 0;
   };
   for (const SceneEntry& e : list_scenes(dir)) {
@@ -115,16 +115,28 @@ std::string scenes_line(const fs::path& dir) {
     const std::size_t slash = e.name.find('/');
     if (slash == std::string::npos) {
       flush();
-      names += (names.empty() ? "" : ", ") + e.name;
+      items.push_back(e.name);
       continue;
     }
-    if (e.name.compare(0, slash, folder) != 0 || folder.size() != slash) flush();
+    if (e.name.substr(0, slash) != folder) flush();
     folder = e.name.substr(0, slash);
     ++in_folder;
   }
   flush();
-  if (names.empty()) return "no scenes in " + dir.string();
-  return "scenes in " + dir.string() + ": " + names;
+  if (items.empty()) return "no scenes in " + dir.string();
+  // Wrapped for a terminal: lines of at most about 100 columns, the next ones indented.
+  std::string out = "scenes in " + dir.string() + ":";
+  std::size_t column = out.size();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const std::string item = items[k] + (k + 1 < items.size() ? "," : "");
+    if (column + 1 + item.size() > 100 && column > 2) {
+      out += "\n ";
+      column = 1;
+    }
+    out += " " + item;
+    column += 1 + item.size();
+  }
+  return out;
 }
 
 SceneResult load_entry(const SceneEntry& e) {
