@@ -22,8 +22,8 @@ namespace {
 
 constexpr const char* kRunHelp = R"(usage: jelly run SCENE [options]
 
-Runs SCENE (a .toml scene file, or a scene's name under scenes/ such as hard/stiff-springs)
-without a window and writes what happened as CSV.
+Runs SCENE (a .toml scene file, or a scene's name in the scenes folder; the end of this text
+names them) without a window and writes what happened as CSV.
 
 options:
   --integrator NAME   explicit_euler | implicit_euler | midpoint | rk4 (the course's four, your
@@ -32,7 +32,7 @@ options:
   --duration T        simulated time [s], > 0; default: the scene's simulation.duration
   --set KEY=VALUE     overrides any declared parameter (repeatable), e.g.
                         --set body.center=-5,11,0   --set springs.shear.ks=5000
-                        --set terrain.floor.restitution=0.5   --set gravity.enabled=false
+                        --set simulation.integrator=rk4   --set gravity.enabled=false
                       `jelly params SCENE` lists every key with its unit, range and meaning.
   --auto-dt           choose the step from the stability estimate (as simulation.auto_dt = true):
                       the largest h ≤ the scene's dt that is at most half of the integrator's
@@ -57,6 +57,16 @@ written so far.
 exit codes: 0 finished; 2 bad command line or scene input (nothing is written); 3 stopped by the
 stability detector; 1 unexpected failure (e.g. an output file could not be written).
 )";
+
+/// The help with the scenes this build finds (a release ships only its assignments' scenes).
+std::string run_help() {
+  const std::filesystem::path dir = session::default_scenes_dir();
+  const std::string example = session::example_scene(dir);
+  std::string text = kRunHelp;
+  if (!example.empty())
+    text += "\nexample: jelly run " + example + " --integrator rk4 --summary summary.csv\n";
+  return text + session::scenes_line(dir) + "\n";
+}
 
 /// The end of a cloth scene's run (cloth contract decision 12): the cloth's centre of mass
 /// (pinned particles included), kinetic energy, largest speed and lowest y, and each sphere.
@@ -86,7 +96,7 @@ void print_cloth_end(const SceneSpec& scene, const Simulator& sim, double wall) 
 }  // namespace
 
 int run_command(int argc, char** argv) {
-  Command cmd("jelly run", kRunHelp, "(see jelly run --help)\n");
+  Command cmd("jelly run", run_help(), "(see jelly run --help)\n");
   std::string scene_path, out_path, summary_path;
   SceneOverrides overrides;
   long every = 0, threads = 0;  // 0: not given

@@ -1,9 +1,11 @@
 // `jelly`: the headless command line of Jelly Lab.
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include "commands.hpp"
+#include "jelly/session/scene_catalog.hpp"
 
 #ifdef JELLY_HAVE_RENDER
 #include "jelly/movie/render_command.hpp"
@@ -24,9 +26,20 @@ commands:
   render SCENE   draw frames (or --replay a recorded run) to PNG without a display (OSMesa)   [when built with the viewer]
   study ...      accuracy against cost; what a parameter does (effects)   [numerics study]
 
-SCENE is a .toml file or the name of one under scenes/ (course-2023, hard/stiff-springs), for
-every command. `jelly COMMAND --help` tells more; the scene format is in docs/scenes.md.
+SCENE is a .toml file or the name of one in the scenes folder, for every command.
+`jelly COMMAND --help` tells more; the scene format is in docs/scenes.md.
 )";
+
+/// The help, its examples computed from the scenes this build finds (a release ships only the
+/// scenes its assignments run).
+std::string help_text() {
+  namespace session = jelly::session;
+  const std::filesystem::path dir = session::default_scenes_dir();
+  const std::string example = session::example_scene(dir);
+  std::string text = kHelp;
+  if (!example.empty()) text += "For example: jelly run " + example + "\n";
+  return text + session::scenes_line(dir) + "\n";
+}
 
 }  // namespace
 
@@ -34,7 +47,7 @@ int main(int argc, char** argv) {
   using namespace jelly::cli;
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
       !std::strcmp(argv[1], "help")) {
-    std::fputs(kHelp, argc < 2 ? stderr : stdout);
+    std::fputs(help_text().c_str(), argc < 2 ? stderr : stdout);
     return argc < 2 ? kExitUsage : kExitOk;
   }
   const std::string command = argv[1];
@@ -59,6 +72,6 @@ int main(int argc, char** argv) {
                  command.c_str());
     return kExitUsage;
   }
-  std::fprintf(stderr, "jelly: unknown command '%s'\n%s", command.c_str(), kHelp);
+  std::fprintf(stderr, "jelly: unknown command '%s'\n%s", command.c_str(), help_text().c_str());
   return kExitUsage;
 }

@@ -136,5 +136,32 @@ TEST_F(SceneCatalog, AFileWithErrorsGivesTheLoadersMessageNotNoSuchScene) {
   EXPECT_NE(folder.error->text().find("is a directory"), std::string::npos) << folder.error->text();
 }
 
+// The help texts name only the scenes the build finds (a release ships only its assignments'
+// scenes): the list is the folder's files, sub-folders counted, never a linked default scene that
+// the folder lacks; the example is a scene of the folder.
+/// scenes_line() as one line (it wraps long lists for a terminal, indenting the next lines).
+std::string unwrapped(std::string s) {
+  for (std::size_t at; (at = s.find("\n  ")) != std::string::npos;) s.replace(at, 3, " ");
+  return s;
+}
+
+TEST_F(SceneCatalog, TheHelpLineNamesTheFolderScenesOnly) {
+  write(dir_ / "sub" / "c.toml", "gamma");
+  EXPECT_EQ(unwrapped(scenes_line(dir_)), "scenes in " + dir_.string() + ": a, sub/ (2 scenes)");
+  EXPECT_EQ(example_scene(dir_), "a");
+  const fs::path empty = dir_ / "empty";
+  fs::create_directories(empty);
+  EXPECT_EQ(scenes_line(empty), "no scenes in " + empty.string());
+  EXPECT_EQ(example_scene(empty), default_scene_name());  // the built-in copy still runs
+}
+
+TEST_F(SceneCatalog, TheHelpExampleIsALinkedDefaultSceneWhenTheFolderHasIt) {
+  const std::string name = default_scene_name();
+  if (name.empty()) GTEST_SKIP() << "no linked assignment names a default scene";
+  fs::copy_file(kScenes / (name + ".toml"), dir_ / (name + ".toml"));
+  EXPECT_EQ(example_scene(dir_), name);  // not "a", which sorts first
+  EXPECT_NE(unwrapped(scenes_line(dir_)).find(name), std::string::npos);
+}
+
 }  // namespace
 }  // namespace jelly::session

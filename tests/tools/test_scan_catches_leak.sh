@@ -2,9 +2,11 @@
 # The release's content scan is a test that can fail: make a release without the build check, prove
 # the scan passes on it and that no hidden case entry is left, then plant leaks one at a time and
 # prove the scan fails each time, naming the leaked file.
-#   test_scan_catches_leak.sh SOURCE_DIR WORK_DIR
+#   test_scan_catches_leak.sh SOURCE_DIR WORK_DIR [JELLY]
+# With JELLY (this build's jelly CLI), also: the help of a release of one assignment, whose examples
+# come from its scenes folder, names none of the scenes that release leaves out.
 set -uo pipefail
-src="${1:?source dir}"; work="${2:?work dir}"
+src="${1:?source dir}"; work="${2:?work dir}"; jelly="${3:-}"
 tool="$src/tools/make-student-release"
 failures=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi; }
@@ -56,6 +58,33 @@ check_scenes() {
   check "the release of $* ships some scenes ($kept kept, $left left out)" '[ "$kept" -gt 0 ]'
 }
 check_scenes "$rel" "$id"
+# What a release says about scenes names only the ones it ships: its scenes/README.md, and the help of
+# jelly, jelly run and jelly render (run here with the release's scenes folder, JELLY_SCENES, as the
+# release's own build finds it). check_scene_names RELEASE ID...
+check_scene_names() {
+  local r="$1" f name help out; shift
+  local left=()
+  while IFS= read -r f; do [ -e "$r/$f" ] || left+=("$(printf '%s' "${f#scenes/}" | sed 's/\.toml$//')"); done \
+    < <(cd "$src" && git ls-files -- 'scenes/*.toml')
+  check "the release of $* leaves scenes out (${#left[@]})" '[ "${#left[@]}" -gt 0 ]'
+  names() {  # names FILE: the lines of FILE naming a left-out scene
+    for name in "${left[@]}"; do grep -nE "(^|[^A-Za-z0-9_.-])$name(\.toml)?([^A-Za-z0-9_/-]|$)" "$1"; done
+  }
+  check "the release of $*: scenes/README.md names no scene it leaves out" \
+    'out="$(names "$r/scenes/README.md")"; [ -z "$out" ] || { printf "%s\n" "$out"; false; }'
+  check "the release of $*: scenes/README.md still has a row for each scene it ships" \
+    '[ "$(grep -c "^| \`" "$r/scenes/README.md")" -ge "$(cd "$r/scenes" && ls *.toml | wc -l)" ]'
+  [ -n "$jelly" ] || return 0
+  for help in "" run render; do
+    if [ "$help" = render ] && ! "$jelly" render --help >/dev/null 2>&1; then continue; fi  # no viewer
+    JELLY_SCENES="$r/scenes" "$jelly" $help --help >"$work/help.txt" 2>&1
+    check "the release of $*: jelly $help --help names no scene it leaves out" \
+      'out="$(names "$work/help.txt")"; [ -z "$out" ] || { printf "%s\n" "$out"; false; }'
+    check "the release of $*: jelly $help --help names a scene it ships" \
+      'grep -qE "(^|[ /])$(cd "$r/scenes" && ls *.toml | head -1 | sed "s/\.toml$//")([ ,.]|$)" "$work/help.txt"'
+  done
+}
+check_scene_names "$rel" "$id"
 # Every other assignment on its own: its folder and scenes only, none of the others' folders, and a
 # clean scan (A2 on its own: the cloth scenes and assignments/a2/ only).
 for m in "$src"/assignments/*/assignment.toml; do
@@ -67,6 +96,7 @@ for m in "$src"/assignments/*/assignment.toml; do
   check "the release of $other has assignments/$other/ and not assignments/$id/" '[ -d "$r/assignments/$other" ] && [ ! -e "$r/assignments/$id" ]'
   check "the release of $other has no solutions/" '[ ! -e "$r/solutions" ]'
   check_scenes "$r" "$other"
+  check_scene_names "$r" "$other"
   rm -rf "$work/out-$other"
 done
 

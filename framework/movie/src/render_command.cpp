@@ -42,7 +42,7 @@ constexpr const char* kUsage =
     "       jelly render SCENE --replay FILE.csv --frames DIR [--label TEXT] [--width W] [--height "
     "H]\n"
     "                    [--camera ...] [--particles] [--no-caption] [--samples 0|2|4]\n"
-    "  SCENE    a scene name under scenes/ (course-2023) or a .toml path\n"
+    "  SCENE    a scene's name in the scenes folder (listed at the end) or a .toml path\n"
     "  --replay   draw recorded positions instead of simulating: one PNG per recorded frame; the\n"
     "             CSV is frame,time,particle,x,y,z[,...] as `jelly run --out` writes it, and the\n"
     "             scene gives the terrains and the body the particles belong to; a cloth\n"
@@ -51,6 +51,15 @@ constexpr const char* kUsage =
     "  --label    text printed top-left of every replayed frame, before the time\n"
     "  --compare  2 to 4 integrators side by side, e.g. explicit_euler,midpoint,rk4\n"
     "  --benchmark N  draw N frames of the first state and print frames per second\n";
+
+/// The usage with the scenes this build finds (a release ships only its assignments' scenes).
+std::string usage_text() {
+  const fs::path dir = default_scenes_dir();
+  const std::string example = example_scene(dir);
+  std::string text = kUsage;
+  if (!example.empty()) text += "example: jelly render " + example + " --frames out/frames\n";
+  return text + scenes_line(dir) + "\n";
+}
 
 struct Args {
   std::string scene;
@@ -100,7 +109,8 @@ bool apply_camera(const std::string& text, OrbitCamera& camera) {
 
 /// Reads argv (argv[0] = "render") into `a`. nullopt: go on; else the exit code to return.
 std::optional<int> parse(int argc, char** argv, Args& a) {
-  Command cmd("jelly render", kUsage, kUsage);
+  const std::string usage = usage_text();
+  Command cmd("jelly render", usage, usage);
   std::string compare, frames, replay;
   cmd.add_option("SCENE", a.scene)->required();
   cmd.add_option("--frames", frames)->type_name("DIR");

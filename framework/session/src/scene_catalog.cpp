@@ -85,6 +85,60 @@ std::vector<SceneEntry> list_scenes(const fs::path& dir) {
   return out;
 }
 
+std::string example_scene(const fs::path& dir) {
+  std::vector<SceneEntry> files = list_scenes(dir);
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [](const SceneEntry& e) { return e.path.empty(); }),
+              files.end());
+  for (const LinkedAssignment& a : linked_assignments()) {
+    const std::string& name = manifest_of(a).default_scene;
+    if (std::any_of(files.begin(), files.end(),
+                    [&](const SceneEntry& e) { return e.name == name; }))
+      return name;
+  }
+  if (!files.empty()) return files.front().name;
+  return default_scene_name();
+}
+
+std::string scenes_line(const fs::path& dir) {
+  std::vector<std::string> items;  // top-level names, and "folder/ (N scenes)" per sub-folder
+  std::string folder;
+  int in_folder = 0;
+  const auto flush = [&] {
+    if (in_folder > 0)
+      items.push_back(folder + "/ (" + std::to_string(in_folder) +
+                      (in_folder == 1 ? " scene)" : " scenes)"));
+    in_folder = 0;
+  };
+  for (const SceneEntry& e : list_scenes(dir)) {
+    if (e.path.empty()) continue;  // a built-in copy: not a file of `dir`
+    const std::size_t slash = e.name.find('/');
+    if (slash == std::string::npos) {
+      flush();
+      items.push_back(e.name);
+      continue;
+    }
+    if (e.name.substr(0, slash) != folder) flush();
+    folder = e.name.substr(0, slash);
+    ++in_folder;
+  }
+  flush();
+  if (items.empty()) return "no scenes in " + dir.string();
+  // Wrapped for a terminal: lines of at most about 100 columns, the next ones indented.
+  std::string out = "scenes in " + dir.string() + ":";
+  std::size_t column = out.size();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const std::string item = items[k] + (k + 1 < items.size() ? "," : "");
+    if (column + 1 + item.size() > 100 && column > 2) {
+      out += "\n ";
+      column = 1;
+    }
+    out += " " + item;
+    column += 1 + item.size();
+  }
+  return out;
+}
+
 SceneResult load_entry(const SceneEntry& e) {
   if (e.path.empty()) {
     if (std::optional<SceneResult> r = builtin_scene(e.name)) return *r;

@@ -32,6 +32,14 @@ std::vector<SceneEntry> list_scenes(const std::filesystem::path& dir);
 /// else "builtin:<scene>", or a default scene's plain name when `dir` lacks its file: the built-in
 /// copy. When nothing fits, the error names the argument, every place tried and the known names.
 SceneResult resolve_scene(std::string_view name_or_path, const std::filesystem::path& dir);
+/// For help texts, which must name only scenes that this build can run: the example scene, the
+/// default_scene of the first linked assignment (by id) that `dir` holds, else the first scene in
+/// `dir`, else the first linked default scene (built in); "" when there is none of these.
+std::string example_scene(const std::filesystem::path& dir);
+/// For help texts: one line naming the scenes in `dir` (its files only, never a scene of an
+/// assignment this build does not link), each sub-folder as "hard/ (15 scenes)":
+/// "scenes in DIR: a, b, hard/ (15 scenes)", or "no scenes in DIR".
+std::string scenes_line(const std::filesystem::path& dir);
 /// Loads one catalogue entry.
 SceneResult load_entry(const SceneEntry& entry);
 /// The built-in copy of `name` ("course-2023" or "builtin:course-2023"): the linked assignment's
