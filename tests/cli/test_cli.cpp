@@ -2,6 +2,7 @@
 // and key and writes nothing; an unstable run stops with exit code 3 and keeps what it wrote.
 #include <gtest/gtest.h>
 
+#include "display_column.hpp"
 #include "run_jelly.hpp"
 
 #include <cstdio>
@@ -256,15 +257,7 @@ TEST_F(Cli, ASceneByNameIsTheSameSceneAsByPath) {
   EXPECT_NE(params.output.find("scene.name"), std::string::npos) << params.output;
 }
 
-// The display column where `what` starts in `line`: its code points before it (every text jelly
-// prints is one column a character), counted here without the CLI's own helper.
-std::size_t column_of(const std::string& line, const std::string& what) {
-  const std::size_t at = line.find(what);
-  if (at == std::string::npos) return std::string::npos;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < at; ++i) n += (static_cast<unsigned char>(line[i]) & 0xC0) != 0x80;
-  return n;
-}
+using jelly::test::column_of;
 
 // Issue 28: `jelly probe`'s table lines up by display width (a task name with an en dash, three
 // bytes, one column) and its name column is as wide as the longest name ("implicit Euler

@@ -18,6 +18,7 @@
 #include "grade.hpp"
 #include "hints.hpp"
 #include "report.hpp"
+#include "display_column.hpp"
 #include "report_text.hpp"
 
 namespace {
@@ -280,15 +281,7 @@ TEST(GraderReport, CompilerMessagesAreSetApart) {
   EXPECT_TRUE(only_behind_the_gutter(terminal_summary(f.report, false), fake));
 }
 
-// The display column of `what` in `line`: its code points before it (the texts here are one
-// column each), counted without the project's own helper.
-std::size_t column_of(const std::string& line, const std::string& what) {
-  const std::size_t at = line.find(what);
-  if (at == std::string::npos) return std::string::npos;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < at; ++i) n += (static_cast<unsigned char>(line[i]) & 0xC0) != 0x80;
-  return n;
-}
+using jelly::test::column_of;
 
 // Issue 28: the summary's rows line up by display width ("Cloth–sphere" has a three-byte en dash)
 // and a long title widens its column instead of pushing its row out of line.
