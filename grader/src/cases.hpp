@@ -62,7 +62,7 @@ struct TaskSpec {
 };
 
 struct Rubric {
-  double autograded_total = 80.0;                    ///< the points the score is scaled to
+  double autograded_total = 80.0;   ///< the points the score is scaled to
   double hand_graded_points = 0.0;  ///< graded by hand, apart (manifest grading.hand_graded_points)
   std::string hidden_visibility = "after_due_date";  ///< Gradescope visibility of hidden tests
   std::vector<TaskSpec> tasks;                       ///< in report order

@@ -766,7 +766,8 @@ std::vector<Submission> lms_submissions(
       if (!s.problem.empty()) break;
       const bool folder = is_folder(e->path);
       if (!folder && lower(e->path.extension().string()) == ".zip")
-        s.notes.push_back(e->key + " is a zip the student handed in: it is not unpacked, so no "
+        s.notes.push_back(e->key +
+                          " is a zip the student handed in: it is not unpacked, so no "
                           "file inside it is graded");
       fs::copy(e->path, s.dir / e->key,
                fs::copy_options::recursive | fs::copy_options::copy_symlinks, ec);
@@ -834,8 +835,8 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
   // A Canvas or Moodle download zipped or unpacked into one folder of its own.
   if (!fs::exists(root / kMetadata, ec)) {
     const std::vector<Entry> top = entries_of(root);
-    if (top.size() == 1 && fs::symlink_status(top.front().path, ec).type() ==
-                               fs::file_type::directory &&
+    if (top.size() == 1 &&
+        fs::symlink_status(top.front().path, ec).type() == fs::file_type::directory &&
         !is_lms_download(top) && is_lms_download(entries_of(top.front().path)))
       root = top.front().path;
   }

@@ -1084,7 +1084,8 @@ std::map<std::string, std::vector<std::string>> rows_but_names(const fs::path& f
   std::string header;
   std::getline(in, header);
   const auto at = header.find(",name,");
-  const auto column = static_cast<std::size_t>(std::count(header.begin(), header.begin() + at, ','));
+  const auto column =
+      static_cast<std::size_t>(std::count(header.begin(), header.begin() + at, ','));
   for (auto& [id, row] : rows)
     if (row.size() > column + 1) row.erase(row.begin() + static_cast<long>(column) + 1);
   return rows;
@@ -1123,9 +1124,9 @@ TEST(Grader, BatchReadsCanvasAndMoodleDownloadsAsTheSameStudentsInFolders) {
   // Canvas: <name>[_LATE]_<user id>_<file id>_<file>, one flat folder.
   std::vector<ZipEntry> canvas;
   int file_id = 90000;
-  const std::map<std::string, std::string> canvas_prefix = {
-      {"11111", "liddellalice_11111_"}, {"22222", "odebob_late_22222_"},
-      {"33333", "smithcarol_LATE_33333_"}};
+  const std::map<std::string, std::string> canvas_prefix = {{"11111", "liddellalice_11111_"},
+                                                            {"22222", "odebob_late_22222_"},
+                                                            {"33333", "smithcarol_LATE_33333_"}};
   for (const auto& [id, files] : students)
     for (const auto& [f, text] : files) {
       const std::string name = canvas_prefix.at(id) + std::to_string(++file_id) + "_" + f;

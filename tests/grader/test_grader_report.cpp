@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 
 #include "cases.hpp"
+#include "display_column.hpp"
 #include "grade.hpp"
 #include "hints.hpp"
 #include "report.hpp"
-#include "display_column.hpp"
 #include "report_text.hpp"
 
 namespace {

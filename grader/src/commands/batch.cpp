@@ -52,8 +52,8 @@ std::string last_line(const std::vector<Json>& records, std::size_t students, st
   std::string line = "jelly-grade: " + std::to_string(graded) + " graded, " +
                      std::to_string(not_graded) + " not graded";
   if (args.shard_count > 1)
-    line += " (shard " + std::to_string(args.shard_index) + "/" +
-            std::to_string(args.shard_count) + ")";
+    line += " (shard " + std::to_string(args.shard_index) + "/" + std::to_string(args.shard_count) +
+            ")";
   if (not_graded > 0) line += " (scores.csv's error column says why)";
   if (run < students)
     line += "; this run took " + std::to_string(run) + ", kept " + std::to_string(students - run);
