@@ -45,7 +45,7 @@ std::string scores_csv(const std::vector<Json>& records, const CaseBook& book);
 /// Writes the class files into `out` from `records`, each file whole or not at all: scores.csv and
 /// the class report (class_report.hpp): class.json (all of it, for the instructor), class.md and
 /// class.html (the lecture's view: no student, no hidden test) and class-instructor.md and
-/// class-instructor.html (the instructor's). `title` is the assignment's ("The jelly cube").
+/// class-instructor.html (the instructor's). `title` is the manifest's title.
 void write_class_files(const std::filesystem::path& out, const std::vector<Json>& records,
                        const CaseBook& book, const std::string& title);
 

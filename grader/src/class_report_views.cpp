@@ -78,7 +78,7 @@ bool task_failed(const Json& t) {
          t["hidden_failed"].value("students", 0) > 0;
 }
 
-// The tasks nobody failed, as one line: "A1.T1 Structural springs, A1.T2 Shear springs".
+// The tasks nobody failed, as one line: "HW.T1 First task, HW.T2 Second task".
 std::string tasks_without_failure(const Json& s) {
   std::string names;
   for (const Json& t : s["tasks"])
