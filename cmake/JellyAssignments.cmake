@@ -11,39 +11,46 @@
 # read the global property JELLY_ASSIGNMENTS and the per-assignment properties set here.
 # The reference and student code never go into one binary.
 #
-# CMake reads only the manifest's top-level keys id, namespace, files, reference_files and
-# default_scene, each on one line; the programs read the whole manifest (framework/manifest).
+# CMake takes only the manifest's top-level keys id, namespace, files, reference_files and
+# default_scene, from tools/jelly_manifest.py; the programs read the whole manifest (framework/manifest).
 
 set(JELLY_ASSIGNMENTS_ROOT ${PROJECT_SOURCE_DIR}/assignments)
 set(JELLY_SOLUTIONS_ROOT ${PROJECT_SOURCE_DIR}/solutions)
 
-# _jelly_manifest_value(<out> <manifest text> <key> <file>): a top-level `key = "value"` line.
-function(_jelly_manifest_value out text key file)
-  if(text MATCHES "(^|\n)${key}[ \t]*=[ \t]*\"([^\"\n]*)\"")
-    set(${out} "${CMAKE_MATCH_2}" PARENT_SCOPE)
-  else()
-    message(FATAL_ERROR "${file}: ${key}: expected a line `${key} = \"...\"` (docs/new-assignment.md)")
-  endif()
-endfunction()
+# The manifest's keys come from one reader, tools/jelly_manifest.py (tomllib), which the tools
+# import too. CMake runs it and includes the file it writes. A machine without Python 3.11 (a
+# student's Windows or macOS) builds a student release all the same: the release ships each
+# manifest's keys as the reader wrote them (assignments/<id>/assignment.keys.cmake, with the
+# manifest's hash, which CMake checks). docs/new-assignment.md, "The manifest's reader".
+find_package(Python3 3.11 COMPONENTS Interpreter QUIET)
+set(JELLY_MANIFEST_READER ${PROJECT_SOURCE_DIR}/tools/jelly_manifest.py)
 
-# _jelly_manifest_list(<out> <text> <key> <file> <required>): a top-level `key = ["a", "b"]` line.
-function(_jelly_manifest_list out text key file required)
-  if(text MATCHES "(^|\n)${key}[ \t]*=[ \t]*\\[([^]\n]*)\\]")
-    set(items "${CMAKE_MATCH_2}")
-    string(REGEX MATCHALL "\"[^\"]+\"" quoted "${items}")
-    set(result)
-    foreach(q IN LISTS quoted)
-      string(REPLACE "\"" "" q "${q}")
-      list(APPEND result "${q}")
-    endforeach()
-    set(${out} "${result}" PARENT_SCOPE)
-  elseif(required)
-    message(FATAL_ERROR "${file}: ${key}: expected a one-line list `${key} = [\"...\", ...]` "
-                        "(docs/new-assignment.md)")
+# _jelly_read_manifest(<manifest>): sets JELLY_MANIFEST_ID, _NAMESPACE, _FILES, _REFERENCE_FILES
+# and _DEFAULT_SCENE in the caller's scope (a macro: the included file sets them there).
+macro(_jelly_read_manifest manifest)
+  get_filename_component(_jm_dir "${manifest}" DIRECTORY)
+  get_filename_component(_jm_name "${_jm_dir}" NAME)
+  if(Python3_Interpreter_FOUND AND EXISTS ${JELLY_MANIFEST_READER})
+    set(_jm_keys ${CMAKE_BINARY_DIR}/jelly-manifests/${_jm_name}.cmake)
+    execute_process(COMMAND ${Python3_EXECUTABLE} -B ${JELLY_MANIFEST_READER} cmake ${manifest} ${_jm_keys}
+                    RESULT_VARIABLE _jm_rc ERROR_VARIABLE _jm_err)
+    if(NOT _jm_rc EQUAL 0)
+      message(FATAL_ERROR "${_jm_err}")
+    endif()
+    set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${JELLY_MANIFEST_READER})
+  elseif(EXISTS ${_jm_dir}/assignment.keys.cmake)
+    set(_jm_keys ${_jm_dir}/assignment.keys.cmake)
   else()
-    set(${out} "" PARENT_SCOPE)
+    message(FATAL_ERROR "${manifest}: reading it needs Python 3.11 or newer (python3, for "
+                        "tools/jelly_manifest.py), which CMake did not find (set Python3_EXECUTABLE)")
   endif()
-endfunction()
+  include(${_jm_keys})
+  file(SHA256 ${manifest} _jm_sha)
+  if(NOT _jm_sha STREQUAL JELLY_MANIFEST_SHA256)
+    message(FATAL_ERROR "${manifest}: changed since ${_jm_keys} was written from it: install Python "
+                        "3.11 or newer (python3) so that CMake reads it again")
+  endif()
+endmacro()
 
 # _jelly_add_task_library(<target> <id> <ns> <origin> <sources...>): one implementation of an
 # assignment's tasks, with the assignment's bindings compiled for it.
@@ -69,11 +76,11 @@ function(jelly_add_assignment dir)
                         "docs/new-assignment.md)")
   endif()
   set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${manifest})
-  file(READ ${manifest} text)
-  _jelly_manifest_value(id "${text}" id ${manifest})
-  _jelly_manifest_value(ns "${text}" namespace ${manifest})
-  _jelly_manifest_list(files "${text}" files ${manifest} TRUE)
-  _jelly_manifest_list(reference_files "${text}" reference_files ${manifest} FALSE)
+  _jelly_read_manifest(${manifest})
+  set(id "${JELLY_MANIFEST_ID}")
+  set(ns "${JELLY_MANIFEST_NAMESPACE}")
+  set(files "${JELLY_MANIFEST_FILES}")
+  set(reference_files "${JELLY_MANIFEST_REFERENCE_FILES}")
   get_filename_component(folder_name "${dir}" NAME)
   if(NOT id STREQUAL folder_name)
     message(FATAL_ERROR "${manifest}: id: expected the folder's name \"${folder_name}\", not \"${id}\"")
@@ -148,6 +155,7 @@ function(jelly_add_assignment dir)
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_NAMESPACE ${ns})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_FILES "${files}")
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_REFERENCE_FILES "${reference_files}")
+  set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_DEFAULT_SCENE "${JELLY_MANIFEST_DEFAULT_SCENE}")
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_HAVE_SOLUTIONS ${have_solutions})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_SOLUTIONS_DIR ${solutions_dir})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_CHOSEN_DIR ${chosen})
@@ -181,15 +189,11 @@ function(jelly_add_assignments)
   _jelly_make_registry()
 endfunction()
 
-# _jelly_default_scene(<out> <manifest text> <folder>): the file of the manifest's optional
+# _jelly_default_scene(<out> <name> <folder>): the file of the manifest's optional
 # `default_scene = "name"`: <folder>/scenes/name.toml, else the top-level scenes/name.toml; "" when
 # the manifest names none. A name that is in neither folder stops the configuration.
-function(_jelly_default_scene out text dir)
+function(_jelly_default_scene out name dir)
   set(${out} "" PARENT_SCOPE)
-  if(NOT text MATCHES "(^|\n)default_scene[ \t]*=[ \t]*\"([^\"\n]*)\"")
-    return()
-  endif()
-  set(name "${CMAKE_MATCH_2}")
   if(name STREQUAL "")
     return()
   endif()
@@ -218,7 +222,8 @@ function(_jelly_make_registry)
     string(APPEND manifests "const char kManifest_${id}[] = R\"jelly-manifest(${text})jelly-manifest\";\n")
     # Its default scene's file, compiled in: the programs' built-in copy of that scene (used when
     # the scenes folder lacks it, and by name as builtin:<scene>).
-    _jelly_default_scene(scene_file "${text}" ${dir})
+    get_property(scene_name GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_DEFAULT_SCENE)
+    _jelly_default_scene(scene_file "${scene_name}" ${dir})
     set(scene_text "")
     if(scene_file)
       set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${scene_file})
