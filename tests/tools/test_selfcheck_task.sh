@@ -11,7 +11,7 @@ failures=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi; }
 
 rm -rf "$work"; mkdir -p "$work/tree/tools"
-cp "$src/tools/selfcheck" "$work/tree/tools/"
+cp "$src/tools/selfcheck" "$src/tools/jelly_manifest.py" "$work/tree/tools/"
 ids=()
 for m in "$src"/assignments/*/assignment.toml; do
   id="$(basename "$(dirname "$m")")"; ids+=("$id")
