@@ -137,10 +137,12 @@ def _cmake_quote(path, key, value):
 
 def cmake_keys(manifest):
     """The text of a .cmake file setting JELLY_MANIFEST_<KEY> for each key CMake reads, and
-    JELLY_MANIFEST_SHA256, the manifest's hash (CMake checks it against the file it read)."""
+    JELLY_MANIFEST_SHA256, the manifest's hash without its "\r"s (CMake checks it against the file it
+    reads; a Windows checkout may have CR LF line ends)."""
+    digest = hashlib.sha256(manifest.path.read_bytes().replace(b"\r", b"")).hexdigest()
     lines = [
         f"# Written by tools/jelly_manifest.py from {manifest.path.name}; do not edit.",
-        f"set(JELLY_MANIFEST_SHA256 {hashlib.sha256(manifest.path.read_bytes()).hexdigest()})",
+        f"set(JELLY_MANIFEST_SHA256 {digest})",
     ]
     for key, kind, required in CMAKE_KEYS:
         var = "JELLY_MANIFEST_" + key.upper()
