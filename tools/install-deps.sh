@@ -13,6 +13,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake g++ pkg-config git
+  python3  # tools/make-student-release, tools/selfcheck and CMake's manifest reader (tools/jelly_manifest.py)
   libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
@@ -35,7 +36,7 @@ PACKAGES=(
 # A student's machine: the compiler, the libraries of the framework, its tests and viewer, and the
 # self-check's sandbox; none of the instructor's cross-compilers, emulators or formatters.
 STUDENT_PACKAGES=(
-  build-essential cmake g++ pkg-config
+  build-essential cmake g++ pkg-config python3
   libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
@@ -52,7 +53,7 @@ STUDENT_PACKAGES=(
 # 6 MB to download and 30 MB installed; the default set pulls 91 packages, 259 MB and 1.4 GB
 # (with ffmpeg the demo set would be 102 packages, 60 MB and 180 MB).
 DEMO_PACKAGES=(
-  g++ make cmake pkg-config
+  g++ make cmake pkg-config python3
   libeigen3-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev
   libglfw3-dev libimgui-dev libgl-dev libstb-dev libosmesa6
 )
