@@ -21,7 +21,7 @@ set(JELLY_SOLUTIONS_ROOT ${PROJECT_SOURCE_DIR}/solutions)
 # import too. CMake runs it and includes the file it writes. A machine without Python 3.11 (a
 # student's Windows or macOS) builds a student release all the same: the release ships each
 # manifest's keys as the reader wrote them (assignments/<id>/assignment.keys.cmake, with the
-# manifest's hash, which CMake checks). docs/new-assignment.md, "The manifest's reader".
+# manifest's hash, which CMake checks). docs/instructor-guide.md, "The tool and Python".
 find_package(Python3 3.11 COMPONENTS Interpreter QUIET)
 set(JELLY_MANIFEST_READER ${PROJECT_SOURCE_DIR}/tools/jelly_manifest.py)
 
