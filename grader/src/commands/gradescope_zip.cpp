@@ -102,6 +102,13 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   const fs::path assignments = stage / "source" / "assignments";
   fs::create_directories(assignments);
   fs::copy(assignment.dir, assignments / assignment.id, fs::copy_options::recursive);
+  // The manifest's keys as tools/jelly_manifest.py wrote them for this build: the zip has no tools/
+  // and Gradescope's image may have no Python 3.11, so its CMake reads them from this file.
+  fs::path keys_name = assignment.dir.filename();
+  keys_name += ".cmake";
+  const fs::path keys = config.binary_dir / "jelly-manifests" / keys_name;
+  if (fs::exists(keys))
+    fs::copy_file(keys, assignments / assignment.id / "assignment.keys.cmake", fs::copy_options::overwrite_existing);
   // Not needed to grade: the grader's own tests, the other assignments' hidden data; and never
   // anything derived from a reference: solutions/, every assignment's mutants (they quote it).
   fs::remove_all(stage / "source" / "grader" / "tests");
