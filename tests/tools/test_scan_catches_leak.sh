@@ -15,7 +15,8 @@ rm -rf "$work"; mkdir -p "$work"
 # The first assignment of the tree (its folder has the manifest; its reference is solutions/ID/).
 id="$(basename "$(dirname "$(ls "$src"/assignments/*/assignment.toml | head -1)")")"
 asg="assignments/$id"
-files="$(awk '/^[ \t]*\[/ { exit } /^files[ \t]*=/ { v = $0; while (match(v, /"[^"]*"/)) { print substr(v, RSTART + 1, RLENGTH - 2); v = substr(v, RSTART + RLENGTH) } }' "$src/$asg/assignment.toml")"
+manifest_key() { python3 "$src/tools/jelly_manifest.py" get "$@"; }  # the manifest's one reader
+files="$(manifest_key "$src/$asg/assignment.toml" files)"
 check "the manifest $asg/assignment.toml lists the student's files" '[ -n "$files" ]'
 
 "$tool" "$work/out" --assignments no-such-assignment --no-verify >"$work/bad.log" 2>&1
@@ -43,7 +44,7 @@ fi
 # The scenes follow the assignments: a release ships exactly the scenes whose body kind ([body] type,
 # "cube" when absent) one of its assignments simulates (its manifest's `bodies`), so that an A1
 # release has no cloth scene and an A2 release no cube. check_scenes RELEASE ID...
-bodies_of() { awk '/^[ \t]*\[/ { exit } /^bodies[ \t]*=/ { v = $0; while (match(v, /"[^"]*"/)) { print substr(v, RSTART + 1, RLENGTH - 2); v = substr(v, RSTART + RLENGTH) } }' "$src/assignments/$1/assignment.toml"; }
+bodies_of() { manifest_key "$src/assignments/$1/assignment.toml" bodies; }
 kind_of() { awk '/^[ \t]*\[/ { body = ($0 ~ /^[ \t]*\[body\]/); next } body && /^[ \t]*type[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); k = v } END { print (k == "" ? "cube" : k) }' "$1"; }
 check_scenes() {
   local r="$1" kinds="" i f rel_path want kept=0 left=0; shift

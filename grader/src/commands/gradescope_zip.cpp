@@ -108,7 +108,8 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   keys_name += ".cmake";
   const fs::path keys = config.binary_dir / "jelly-manifests" / keys_name;
   if (fs::exists(keys))
-    fs::copy_file(keys, assignments / assignment.id / "assignment.keys.cmake", fs::copy_options::overwrite_existing);
+    fs::copy_file(keys, assignments / assignment.id / "assignment.keys.cmake",
+                  fs::copy_options::overwrite_existing);
   // Not needed to grade: the grader's own tests, the other assignments' hidden data; and never
   // anything derived from a reference: solutions/, every assignment's mutants (they quote it).
   fs::remove_all(stage / "source" / "grader" / "tests");
