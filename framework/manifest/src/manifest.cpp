@@ -202,7 +202,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   check_files(source, r.node("files"), "files", m.files);
   m.reference_files = r.strings("reference_files", false, "a list of file names");
   check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
-  m.task_modules = r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
+  m.task_modules =
+      r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
   m.bodies = r.strings("bodies", false, "a list of scene body kinds, e.g. [\"cube\"]");
   m.default_scene = r.string("default_scene", false, "a scene name");
   m.handout = r.string("handout", false, "a file in the assignment's folder");
