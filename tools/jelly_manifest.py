@@ -28,6 +28,7 @@ CMAKE_KEYS = (
     ("namespace", "string", True),
     ("files", "list", True),
     ("reference_files", "list", False),
+    ("task_modules", "list", False),
     ("default_scene", "string", False),
 )
 

@@ -16,6 +16,14 @@
 # (assignments/<id>/include/jelly/<folder>/), never another assignment's. General code (the
 # framework, grader/src, grader/runner) includes no assignment's header at all. The manifest
 # library (framework/manifest) is layer 0: its own headers, the standard library and toml++ only.
+# A task module's reference (solutions/tasks/<module>/: tasks that several assignments share,
+# compiled for each assignment that uses it) is layer `task_module`: it names no assignment, so it
+# includes the core only.
+#
+# A quoted include the compiler finds next to the including file (`#include "../a1/x.cpp"`,
+# `#include "detail.hpp"`) is checked by the file it reaches: that file's layer must be one the
+# includer may include, and a file of another assignment (assignments/<x>/, solutions/<x>/) is
+# never included.
 cmake_minimum_required(VERSION 3.16)
 if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<source tree> -P check_layers.cmake")
@@ -41,6 +49,7 @@ set(_may_manifest manifest)
 set(_may_core    manifest core)
 set(_may_assignment core assignment)
 set(_may_assignment_grader core assignment)
+set(_may_task_module core)
 set(_may_session manifest core session)
 set(_may_cli_common cli_common)
 set(_may_render  manifest core session render)
@@ -52,7 +61,7 @@ set(_may_bench   manifest core assignment)
 # General code: it names no assignment, so it includes no assignment's header.
 set(_general manifest core session cli_common render movie cli app grader)
 # Layers that must stay free of GL (and of windowing and GUI libraries).
-set(_no_gl manifest core assignment assignment_grader session cli_common movie cli grader bench)
+set(_no_gl manifest core assignment assignment_grader task_module session cli_common movie cli grader bench)
 set(_gl_regex "^(GL|GLFW|KHR|EGL|OpenGL)/|^imgui|osmesa")
 # Layer 0 includes, besides its own headers, only the standard library (<vector>, <cstdio>) and
 # toml++ (<toml++/toml.h>).
@@ -94,7 +103,10 @@ endfunction()
 # assignment the file belongs to (assignments/<id>/..., solutions/<id>/...).
 function(_file_layer f out own)
   set(${own} "" PARENT_SCOPE)
-  if(f MATCHES "^assignments/([^/]+)/grader/")
+  if(f MATCHES "^solutions/tasks/")
+    set(${out} task_module PARENT_SCOPE)
+    return()
+  elseif(f MATCHES "^assignments/([^/]+)/grader/")
     set(${out} assignment_grader PARENT_SCOPE)
     set(${own} ${CMAKE_MATCH_1} PARENT_SCOPE)
     return()
@@ -127,6 +139,35 @@ function(_line_of text needle out)
   list(LENGTH newlines n)
   math(EXPR n "${n} + 1")
   set(${out} ${n} PARENT_SCOPE)
+endfunction()
+
+# A quoted include that reaches a file beside the includer (the compiler looks there first): the
+# reached file's layer must be one `layer` may include, and never another assignment's file.
+function(_relative_include f header layer own out)
+  set(${out} "" PARENT_SCOPE)
+  get_filename_component(dir "${f}" DIRECTORY)
+  get_filename_component(reached "${ROOT}/${dir}/${header}" ABSOLUTE)
+  if(NOT EXISTS "${reached}" OR IS_DIRECTORY "${reached}")
+    return()
+  endif()
+  file(RELATIVE_PATH rel "${ROOT}" "${reached}")
+  if(rel MATCHES "^\\.\\./")
+    set(${out} "${layer} includes ${header}, outside the source tree" PARENT_SCOPE)
+    return()
+  endif()
+  _file_layer("${rel}" to to_own)
+  if(to STREQUAL "")
+    return()
+  endif()
+  if(to_own AND NOT to_own STREQUAL own)
+    set(${out} "${f} includes ${header} (${rel}), a file of assignment ${to_own}: an assignment includes only its own files and the core (code that two assignments share is a task module, solutions/tasks/)" PARENT_SCOPE)
+  elseif(to MATCHES "^assignment" AND layer IN_LIST _general)
+    set(${out} "${layer} includes ${header} (${rel}), a file of assignment ${to_own}: general code names no assignment" PARENT_SCOPE)
+  elseif(NOT to STREQUAL layer AND NOT to IN_LIST _may_${layer}
+         AND NOT (layer STREQUAL "assignment_grader" AND to STREQUAL "assignment"))
+    string(REPLACE ";" ", " may "${_may_${layer}}")
+    set(${out} "${layer} includes ${header} (${rel}, layer ${to}), but ${layer} may include only: ${may}" PARENT_SCOPE)
+  endif()
 endfunction()
 
 set(_problems "")
@@ -162,6 +203,11 @@ foreach(f IN LISTS _files)
         string(REPLACE ";" ", " may "${_may_${layer}}")
         string(REPLACE "assignment" "its own assignment's headers" may "${may}")
         set(why "${layer} includes ${header} (layer ${to}), but ${layer} may include only: ${may}")
+      endif()
+    elseif(inc MATCHES "\"$")
+      _relative_include("${f}" "${header}" "${layer}" "${own}" why)
+      if(NOT why AND layer IN_LIST _no_gl AND header MATCHES "${_gl_regex}")
+        set(why "${layer} includes ${header}: the ${layer} layer has no GL, window or GUI code")
       endif()
     elseif(layer IN_LIST _no_gl AND header MATCHES "${_gl_regex}")
       set(why "${layer} includes ${header}: the ${layer} layer has no GL, window or GUI code")

@@ -1,8 +1,9 @@
 # check_layers.cmake must be able to fail: a small tree with one planted include per rule (a lower
 # layer including a higher one, a header in no layer, GL in a GL-free layer, the manifest library
 # reaching past the standard library and toml++, general code including an assignment's header, an
-# assignment including another's, a framework folder with no layer) must fail naming each file and
-# line, and the same tree without them, including every allowed kind, must pass.
+# assignment including another's, by its header or by a relative path to its file, a task module
+# naming an assignment, a framework folder with no layer) must fail naming each file and line, and
+# the same tree without them, including every allowed kind, must pass.
 #
 #   cmake -DCHECK=<check_layers.cmake> -DWORK=<scratch folder> -P check_layers_selftest.cmake
 cmake_minimum_required(VERSION 3.16)
@@ -20,6 +21,10 @@ set(_good
   "assignments/a1/bindings/task_table.cpp|#include \"jelly/task_table.hpp\"\n#include \"jelly/a1/forces.hpp\""
   "assignments/a1/grader/runner/cases_forces.cpp|#include \"harness.hpp\"\n#include \"jelly/world.hpp\"\n#include \"jelly/a1/forces.hpp\""
   "solutions/a1/forces.cpp|#include \"jelly/a1/forces.hpp\"\n#include \"jelly/spring_pass.hpp\""
+  "solutions/a1/detail.hpp|#pragma once\n#include \"jelly/types.hpp\""
+  "solutions/a1/engine.cpp|#include \"detail.hpp\"\n#include \"../a1/detail.hpp\""
+  "solutions/tasks/mass/engine.cpp|#include \"jelly/spring.hpp\"\n#include \"engine_detail.hpp\""
+  "solutions/tasks/mass/engine_detail.hpp|#pragma once\n#include \"jelly/types.hpp\""
   "assignments/a2/include/jelly/a2/cloth.hpp|#pragma once\n#include \"jelly/types.hpp\""
   "assignments/a2/cloth.cpp|#include \"jelly/a2/cloth.hpp\""
   "bench/bench_a1.cpp|#include \"jelly/a1/forces.hpp\"\n#include \"jelly/world.hpp\""
@@ -48,6 +53,12 @@ set(_bad
   "assignments/a2/bindings/bad.cpp|#include \"jelly/a1/forces.hpp\"|assignments/a2/bindings/bad.cpp:1:"
   "assignments/a2/include/jelly/a2/bad.hpp|#pragma once\n#include \"jelly/a1/forces.hpp\"|assignments/a2/include/jelly/a2/bad.hpp:2:"
   "solutions/a2/cloth.cpp|#include \"jelly/a2/cloth.hpp\"\n#include \"jelly/a1/forces.hpp\"|solutions/a2/cloth.cpp:2:"
+  "solutions/a2/engine.cpp|#include \"jelly/a2/cloth.hpp\"\n#define NS a2\n#include \"../a1/engine.cpp\"|solutions/a2/engine.cpp:3:"
+  "assignments/a2/grader/runner/reuse.cpp|#include \"../../../a1/grader/runner/cases_forces.cpp\"|assignments/a2/grader/runner/reuse.cpp:1:"
+  "solutions/tasks/mass/named.cpp|#include \"jelly/a1/forces.hpp\"|solutions/tasks/mass/named.cpp:1:"
+  "solutions/tasks/mass/reach.cpp|#include \"../../a1/forces.cpp\"|solutions/tasks/mass/reach.cpp:1:"
+  "framework/core/src/reach.cpp|#include \"../../../assignments/a1/forces.cpp\"|framework/core/src/reach.cpp:1:"
+  "framework/core/src/up.cpp|#include \"../../session/src/a.cpp\"|framework/core/src/up.cpp:1:"
   "assignments/a2/grader/runner/cases.cpp|#include \"harness.hpp\"\n#include \"jelly/a1/forces.hpp\"|assignments/a2/grader/runner/cases.cpp:2:"
   "assignments/a1/bindings/session.cpp|#include \"jelly/session/simulation_run.hpp\"|assignments/a1/bindings/session.cpp:1:"
   "assignments/a1/grader/runner/gl.cpp|#include <GL/glcorearb.h>|assignments/a1/grader/runner/gl.cpp:1:"

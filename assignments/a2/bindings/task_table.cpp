@@ -7,7 +7,6 @@
 #include "jelly/a2/forces.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/integrators.hpp"
-#include "jelly/a2/spring_engine.hpp"
 #include "jelly/a2/springs.hpp"
 
 #ifndef JELLY_TASKS_ORIGIN
@@ -23,9 +22,6 @@ TaskTable task_table() {
   t.add_grid_bending_springs = &add_bending_springs;
   t.spring_force = &spring_force;
   t.damper_force = &damper_force;
-#if JELLY_TASKS_REFERENCE  // set by the build for the reference library: it has a spring engine
-  t.make_spring_group_pass = &make_spring_group_pass;
-#endif
   t.collide_particle_sphere = &collide_particle_sphere;
   t.collide_spheres = &collide_spheres;
   t.friction_impulse = &friction_impulse;
@@ -33,6 +29,7 @@ TaskTable task_table() {
   t.implicit_euler_step = &implicit_euler_step;
   t.midpoint_step = &midpoint_step;
   t.rk4_step = &rk4_step;
+  add_library_slots(t);
   t.origin = JELLY_TASKS_ORIGIN;
   return t;
 }

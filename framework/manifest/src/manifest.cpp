@@ -188,8 +188,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   }
   AssignmentManifest m;
   Reader r(root, source, "");
-  r.only_keys({"id", "namespace", "title", "files", "reference_files", "bodies", "default_scene",
-               "handout", "studies", "grading", "task"});
+  r.only_keys({"id", "namespace", "title", "files", "reference_files", "task_modules", "bodies",
+               "default_scene", "handout", "studies", "grading", "task"});
   m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
   if (!is_name(m.id, true))
     fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
@@ -202,6 +202,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   check_files(source, r.node("files"), "files", m.files);
   m.reference_files = r.strings("reference_files", false, "a list of file names");
   check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
+  m.task_modules =
+      r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
   m.bodies = r.strings("bodies", false, "a list of scene body kinds, e.g. [\"cube\"]");
   m.default_scene = r.string("default_scene", false, "a scene name");
   m.handout = r.string("handout", false, "a file in the assignment's folder");

@@ -1,8 +1,8 @@
 // An optional spring engine a task library may provide: the spring pass over all of a world's
 // spring groups at once. Not a task: students never write it. The reference provides one
-// (solutions/a1/spring_engine.cpp) so that one evaluation turns the state into structure-of-arrays
-// once (not once per group) and runs one parallel region; without it the World calls
-// accumulate_spring_forces group by group.
+// (solutions/tasks/mass_spring/spring_engine.cpp) so that one evaluation turns the state into
+// structure-of-arrays once (not once per group) and runs one parallel region; without it the World
+// calls accumulate_spring_forces group by group.
 #pragma once
 
 #include <cstddef>

@@ -48,6 +48,7 @@ struct AssignmentManifest {
   std::string title;                         ///< "The jelly cube"
   std::vector<std::string> files;            ///< the files a student edits, in build order
   std::vector<std::string> reference_files;  ///< the reference's extra files
+  std::vector<std::string> task_modules;     ///< shared tasks' modules (solutions/tasks/<module>/)
   std::vector<std::string> bodies;           ///< scene bodies it simulates ("cube")
   std::string default_scene;                 ///< a scene name ("course-2023"); may be empty
   std::string handout;                       ///< the handout's front page, relative

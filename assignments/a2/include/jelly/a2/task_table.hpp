@@ -8,4 +8,9 @@ namespace jelly::a2 {
 
 TaskTable task_table();
 
+/// The slots the linked task library fills besides the tasks above (none for the student's code):
+/// task_table() calls it. The build defines it for each task library
+/// (cmake/JellyAssignments.cmake).
+void add_library_slots(TaskTable& t);
+
 }  // namespace jelly::a2

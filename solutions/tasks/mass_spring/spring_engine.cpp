@@ -1,7 +1,12 @@
 // The reference's fast spring engine: the spring pass over all of a world's spring groups in one
 // call (jelly/spring_group_pass.hpp), for the viewer, the CLI and the grader's reference data.
-// Framework machinery of the reference, not a task; it computes the answer of A1.T4–A1.T5, so it
-// lives here and is never shipped to students. Speed: docs/performance.md.
+// Framework machinery of the reference, not a task; it computes the answer of the shared spring
+// and damper force tasks, so it lives with the reference and is never shipped to students.
+// Speed: docs/performance.md.
+//
+// Part of the task module mass_spring (solutions/tasks/mass_spring/): compiled once for each
+// assignment whose manifest lists the module in `task_modules`, in that assignment's namespace
+// (the build defines JELLY_TASKS_NAMESPACE), with that assignment's spring_force and damper_force.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -15,14 +20,24 @@
 #include <omp.h>
 #endif
 
-// The engine serves more than one assignment without a copy: another assignment's reference
-// defines JELLY_SPRING_ENGINE_NAMESPACE (its namespace), includes its own forces.hpp and
-// spring_engine.hpp, then includes this file (solutions/a2/spring_engine.cpp).
-#ifndef JELLY_SPRING_ENGINE_NAMESPACE
-#define JELLY_SPRING_ENGINE_NAMESPACE a1
-#include "jelly/a1/forces.hpp"
-#include "jelly/a1/spring_engine.hpp"
+#include "jelly/spring_group_pass.hpp"
+#include "jelly/task_table.hpp"
+#include "jelly/types.hpp"
+
+#ifndef JELLY_TASKS_NAMESPACE
+#error "a task module is compiled for an assignment: the build defines JELLY_TASKS_NAMESPACE"
 #endif
+
+namespace jelly::JELLY_TASKS_NAMESPACE {
+
+// The module's tasks, as the assignment declares them (same signatures, same contract section:
+// physics contract §2); the assignment's reference defines them.
+Vec3 spring_force(const Vec3& xa, const Vec3& xb, double ks, double rest_length,
+                  double degenerate_length);
+Vec3 damper_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double kd,
+                  double degenerate_length);
+
+}  // namespace jelly::JELLY_TASKS_NAMESPACE
 
 // The hot loops below are compiled twice, for the baseline x86-64 vector width (SSE2) and for
 // AVX2, and the loader picks the one the processor supports, so that the default build runs the
@@ -35,7 +50,7 @@
 #define JELLY_VECTOR_CLONES
 #endif
 
-namespace jelly::JELLY_SPRING_ENGINE_NAMESPACE {
+namespace jelly::JELLY_TASKS_NAMESPACE {
 namespace {
 
 #ifdef _OPENMP
@@ -327,4 +342,8 @@ std::unique_ptr<SpringGroupPass> make_spring_group_pass() {
   return std::make_unique<SpringEngine>();
 }
 
-}  // namespace jelly::JELLY_SPRING_ENGINE_NAMESPACE
+// What the module's reference adds to the assignment's task table beyond its tasks (the build's
+// generated task_table_slots.cpp calls it for the reference library only).
+void add_mass_spring_slots(TaskTable& t) { t.make_spring_group_pass = &make_spring_group_pass; }
+
+}  // namespace jelly::JELLY_TASKS_NAMESPACE
