@@ -72,9 +72,9 @@ render::ViewerContext AppState::viewer_context() const {
   return {run_pointers(), camera.yaw_degrees, edited.name};
 }
 
-void make_body_controls(AppState& s) {
+void add_body_controls(AppState& s) {
   for (const BodyView* view : body_views())
-    if (auto controls = view->make_controls())
+    if (auto controls = render::make_body_controls(*view))
       s.body_controls.emplace_back(view, std::move(controls));
 }
 

@@ -108,7 +108,7 @@ void rebuild_runs(AppState& state);
 /// Starts or stops recording PNG frames (and an MP4 when ffmpeg is installed).
 void toggle_recording(AppState& state);
 /// Makes the controls of every registered body kind that has some (state.body_controls).
-void make_body_controls(AppState& state);
+void add_body_controls(AppState& state);
 /// The registered views whose kinds the shown world (the first run's) holds.
 std::vector<const render::BodyView*> shown_views(const AppState& state);
 

@@ -1,13 +1,12 @@
 // The cloth kind's view: framing, caption lines, replay points and the viewer's names and help
-// for a cloth scene (its drawable: cloth_drawable.cpp; its keys and panel: cloth_viewer.cpp).
+// for a cloth scene (its drawable: cloth_drawable.cpp; its keys and panel: cloth_viewer.cpp, in
+// jelly_cloth_view_controls).
 #include <string>
 
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
 #include "jelly/session/captions.hpp"
 
 namespace jelly::cloth_view {
-
-std::unique_ptr<render::BodyControls> make_viewer_controls();  // cloth_viewer.cpp
 
 namespace {
 
@@ -60,9 +59,6 @@ class ClothView final : public render::BodyView {
   std::string_view keys_help() const override {
     return "cloth scenes: 1-4 pin/unpin a corner, arrows drive the kinematic sphere (2 m/s), S "
            "stops it";
-  }
-  std::unique_ptr<render::BodyControls> make_controls() const override {
-    return make_viewer_controls();
   }
 };
 

@@ -173,8 +173,6 @@ int ClothControls::check_arrows(const ViewerContext& c, std::string& said) {
 
 }  // namespace
 
-std::unique_ptr<render::BodyControls> make_viewer_controls() {
-  return std::make_unique<ClothControls>();
-}
+std::unique_ptr<render::BodyControls> make_controls() { return std::make_unique<ClothControls>(); }
 
 }  // namespace jelly::cloth_view

@@ -1,6 +1,6 @@
 // A body kind's view module: what the renderer, the viewer and `jelly render` ask a kind for (its
 // meshes and draw calls, its share of the scene's bounds, its caption lines, the extra points of
-// its replays, its panel, keys and help lines). Each kind's module is a folder,
+// its replays, its panel, keys and help lines, its live controls). Each kind's module is a folder,
 // framework/bodies/<kind>/view/ (a library jelly_<kind>_view defining
 // jelly::<kind>_view::body_view()); CMake registers every such folder (framework/render/
 // CMakeLists.txt writes the list), and general code walks body_views() without naming a kind.
@@ -107,13 +107,17 @@ class BodyView {
   virtual std::string_view panel_title() const { return {}; }
   virtual std::string_view panel_id() const { return {}; }
   virtual std::string_view keys_help() const { return {}; }
-  /// Its viewer controls (null: none).
-  virtual std::unique_ptr<BodyControls> make_controls() const { return nullptr; }
 };
 
 /// Every registered view module, in folder order (written by CMake into the jelly::body_views
 /// library, which every program that links the renderer links).
 const std::vector<const BodyView*>& body_views();
+
+/// The live controls of `view`'s kind in jelly-lab, null when it has none: a view folder's
+/// optional second library jelly_<kind>_view_controls (ImGui and GLFW's key codes) defines
+/// jelly::<kind>_view::make_controls(), and CMake writes this function into
+/// jelly_body_view_controls, which only jelly-lab links.
+std::unique_ptr<BodyControls> make_body_controls(const BodyView& view);
 
 /// The view of the scene's body kind; null when its kind has no view module.
 const BodyView* view_of(const SceneSpec& scene);

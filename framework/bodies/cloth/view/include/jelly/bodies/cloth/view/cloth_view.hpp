@@ -91,5 +91,8 @@ class ClothDrawable : public render::BodyDrawable {
 
 /// The registered view of the cloth kind.
 const render::BodyView& body_view();
+/// Its live controls in jelly-lab (keys 1–4, arrows, S; the Cloth panel section): library
+/// jelly_cloth_view_controls, which only jelly-lab links.
+std::unique_ptr<render::BodyControls> make_controls();
 
 }  // namespace jelly::cloth_view
