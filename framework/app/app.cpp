@@ -65,48 +65,22 @@ void rebuild_runs(AppState& s) {
         std::make_unique<SimulationRun>(RunSetup{s.edited, s.integrator, s.dt, {}}, tasks));
   }
   s.clock.restart();
-  s.driving = false;  // new worlds: the spheres follow their schedules again
-  s.drive = Vec3::Zero();
+  for (auto& [view, controls] : s.body_controls) controls->reset();  // new worlds
 }
 
-bool has_cloth(const AppState& s) {
-  return !s.runs.empty() && s.runs.front()->ok() &&
-         !s.runs.front()->simulator()->world().cloths().empty();
+render::ViewerContext AppState::viewer_context() const {
+  return {run_pointers(), camera.yaw_degrees, edited.name};
 }
 
-bool has_kinematic_sphere(const AppState& s) {
-  return !s.runs.empty() && s.runs.front()->ok() &&
-         first_kinematic_sphere(s.runs.front()->simulator()->world()) >= 0;
+void add_body_controls(AppState& s) {
+  for (const BodyView* view : body_views())
+    if (auto controls = render::make_body_controls(*view))
+      s.body_controls.emplace_back(view, std::move(controls));
 }
 
-bool toggle_pin(AppState& s, int corner) {
-  bool any = false;
-  for (const auto& r : s.runs)
-    if (r->ok()) any = toggle_corner_pin(r->simulator()->world(), corner).has_value() || any;
-  return any;
-}
-
-namespace {
-bool drive_all(AppState& s, const Vec3& velocity) {
-  bool any = false;
-  for (const auto& r : s.runs)
-    if (r->ok()) any = drive_first_kinematic_sphere(r->simulator()->world(), velocity) || any;
-  if (any) {
-    s.driving = true;
-    s.drive = velocity;
-  }
-  return any;
-}
-}  // namespace
-
-bool press_arrow(AppState& s, Arrow arrow) {
-  if (!has_kinematic_sphere(s)) return false;
-  return drive_all(s, arrow_drive(s.drive, arrow, s.camera.yaw_degrees));
-}
-
-bool stop_sphere(AppState& s) {
-  if (!has_kinematic_sphere(s)) return false;
-  return drive_all(s, Vec3::Zero());
+std::vector<const BodyView*> shown_views(const AppState& s) {
+  if (s.runs.empty() || !s.runs.front()->ok()) return {};
+  return views_in(s.runs.front()->simulator()->world());
 }
 
 int run_app(const AppOptions& opt) {

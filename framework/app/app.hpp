@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
+#include "jelly/render/body_view.hpp"
 #include "jelly/render/camera.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/window_backend.hpp"
 #include "jelly/session/assignments.hpp"
-#include "jelly/session/cloth_controls.hpp"
 #include "jelly/session/real_time_clock.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
@@ -73,9 +73,9 @@ struct AppState {
   bool reset_requested = false;
   session::RealTimeClock clock;
   std::vector<std::unique_ptr<session::SimulationRun>> runs;
-  // cloth scenes: the arrow keys' drive of the first kinematic sphere (zero and off after a reset)
-  bool driving = false;
-  Vec3 drive{0.0, 0.0, 0.0};
+  // the body kinds' live controls (keys, panel section), one per registered view that has them
+  std::vector<std::pair<const render::BodyView*, std::unique_ptr<render::BodyControls>>>
+      body_controls;
   // comparison
   bool comparing = false;
   std::vector<CompareSlot> slots;
@@ -97,6 +97,8 @@ struct AppState {
   bool scripted = false;  ///< --smoke-test / --shot-at: time is not driven by the clock
 
   std::vector<session::SimulationRun*> run_pointers() const;
+  /// What the body kinds' controls act on: the runs, the camera's yaw, the scene's name.
+  render::ViewerContext viewer_context() const;
 };
 
 /// Loads scene `index` of state.scenes (or the path in open_path when index < 0) into the state.
@@ -105,17 +107,10 @@ bool load_scene_into(AppState& state, int index, const std::string& path = {});
 void rebuild_runs(AppState& state);
 /// Starts or stops recording PNG frames (and an MP4 when ffmpeg is installed).
 void toggle_recording(AppState& state);
-/// Cloth scenes (keys 1–4, arrows, S): pins or frees corner `corner` (0–3) of the cloth in every
-/// run; false when the scene has no cloth.
-bool toggle_pin(AppState& state, int corner);
-/// Arrow key: the first kinematic sphere of every run moves at the new drive velocity
-/// (session::arrow_drive, relative to the camera); false when there is none.
-bool press_arrow(AppState& state, session::Arrow arrow);
-/// S: the driven sphere stops (velocity zero; its schedule stays off until a reset).
-bool stop_sphere(AppState& state);
-/// Whether the runs' world has a cloth / a kinematic sphere (what the keys need).
-bool has_cloth(const AppState& state);
-bool has_kinematic_sphere(const AppState& state);
+/// Makes the controls of every registered body kind that has some (state.body_controls).
+void add_body_controls(AppState& state);
+/// The registered views whose kinds the shown world (the first run's) holds.
+std::vector<const render::BodyView*> shown_views(const AppState& state);
 
 /// Draws the ImGui side panel.
 void draw_panels(AppState& state, double fps);

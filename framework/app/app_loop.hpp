@@ -25,7 +25,7 @@ int init_state(AppState& state, const AppOptions& options);
 // ---- input (input.cpp) ----
 
 /// Keys and mouse outside ImGui's windows: play/pause, step, reset, camera, screenshot, orbit,
-/// zoom; in cloth scenes the corner pins (1–4) and the kinematic sphere's drive (arrows, S).
+/// zoom; and the body kinds' own keys (BodyControls::handle_keys).
 class ViewInput {
  public:
   /// Applies this frame's keys and mouse to `state`; true when Esc asked to quit.
@@ -39,7 +39,7 @@ class ViewInput {
 // ---- the smoke test (smoke_script.cpp) ----
 
 /// --smoke-test: every integrator for 2 s of simulated time (0.25 s per frame, no wall clock, so
-/// reproducible), then every scene for 3 frames (in cloth scenes, with the pin and arrow keys),
+/// reproducible), then every scene for 3 frames (with the keys of the scene's body kind),
 /// then the course scene at 1.5 s for the screenshot.
 class SmokeScript {
  public:
@@ -51,9 +51,9 @@ class SmokeScript {
   int failures() const { return failures_; }
 
  private:
-  /// In a cloth scene: keys 1–4 flip each corner's pin (and back), the right arrow moves the
-  /// kinematic sphere by speed × time, S stops it. A failure is counted and printed.
-  void check_cloth_keys(AppState& state);
+  /// In a scene of a body kind with controls: its keys, checked (BodyControls::smoke_check, e.g.
+  /// the pins and the drive of a sheet's scene). A failure is counted and printed.
+  void check_body_keys(AppState& state);
   std::vector<IntegratorKind> integrators_{kAllIntegrators.begin(), kAllIntegrators.end()};
   std::size_t integrator_ = 0;
   std::size_t scene_ = 0;

@@ -17,16 +17,9 @@ bool ViewInput::handle(AppState& s) {
     if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) s.camera_reset_requested = true;
     if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) s.screenshot_requested = true;
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit = true;
-    // Cloth scenes: 1–4 pin and unpin the corners, the arrows drive the kinematic sphere, S stops
-    // it (Space stays play/pause). Ignored in scenes without a cloth or such a sphere.
-    static constexpr int kPinKeys[4] = {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4};
-    for (int corner = 0; corner < 4; ++corner)
-      if (ImGui::IsKeyPressed(kPinKeys[corner], false)) toggle_pin(s, corner);
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, false)) press_arrow(s, session::Arrow::Left);
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, false)) press_arrow(s, session::Arrow::Right);
-    if (ImGui::IsKeyPressed(GLFW_KEY_UP, false)) press_arrow(s, session::Arrow::Up);
-    if (ImGui::IsKeyPressed(GLFW_KEY_DOWN, false)) press_arrow(s, session::Arrow::Down);
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) stop_sphere(s);
+    // The body kinds' own keys (each ignores them in scenes without its bodies).
+    const render::ViewerContext context = s.viewer_context();
+    for (auto& [view, controls] : s.body_controls) controls->handle_keys(context);
   }
   if (!io.WantCaptureMouse) {
     if (ImGui::IsMouseClicked(0)) {

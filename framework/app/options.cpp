@@ -4,25 +4,40 @@
 
 #include "app.hpp"
 #include "jelly/cli_common/command_line.hpp"
+#include "jelly/render/body_view.hpp"
 
 namespace jelly::app {
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare a,b[,c[,d]]]\n"
-    "                 [--slot-set K:key=value ...] (run K of --compare gets its own parameter)\n"
-    "                 [--size WxH] [--backend window|auto] [--factor F] [--particles] [--springs]\n"
-    "                 [--smoke-test] [--screenshot FILE] [--shot-at T] [--benchmark N] [--samples "
-    "0|2|4]\n"
-    "                 [--open scene,simulation,cloth,comparison,parameters,draw,plots,recording]\n"
-    "       jelly-lab --headless SCENE --frames DIR ...   (same as `jelly render`, no display)\n"
-    "keys: space play/pause, N single step, R reset, C reset camera, P screenshot, Esc quit\n"
-    "cloth scenes: 1-4 pin/unpin a corner, arrows drive the kinematic sphere (2 m/s), S stops it\n"
-    "mouse: left-drag orbit, wheel zoom\n"
-    "exit codes: 0 closed normally; 1 no window could be opened, a screenshot could not be written "
-    "or\n"
-    "the smoke test failed; 2 bad command line or scene input.\n";
+/// The usage; each body kind with a view adds its panel to --open's list and its line of keys.
+std::string usage_text() {
+  std::string panels, keys;
+  for (const render::BodyView* view : render::body_views()) {
+    if (!view->panel_id().empty()) panels += std::string(view->panel_id()) + ",";
+    if (!view->keys_help().empty()) keys += std::string(view->keys_help()) + "\n";
+  }
+  return "usage: jelly-lab [SCENE] [--scenes DIR] [--integrator NAME] [--dt H] [--compare "
+         "a,b[,c[,d]]]\n"
+         "                 [--slot-set K:key=value ...] (run K of --compare gets its own "
+         "parameter)\n"
+         "                 [--size WxH] [--backend window|auto] [--factor F] [--particles] "
+         "[--springs]\n"
+         "                 [--smoke-test] [--screenshot FILE] [--shot-at T] [--benchmark N] "
+         "[--samples 0|2|4]\n"
+         "                 [--open scene,simulation," +
+         panels +
+         "comparison,parameters,draw,plots,recording]\n"
+         "       jelly-lab --headless SCENE --frames DIR ...   (same as `jelly render`, no "
+         "display)\n"
+         "keys: space play/pause, N single step, R reset, C reset camera, P screenshot, Esc "
+         "quit\n" +
+         keys +
+         "mouse: left-drag orbit, wheel zoom\n"
+         "exit codes: 0 closed normally; 1 no window could be opened, a screenshot could not be "
+         "written or\n"
+         "the smoke test failed; 2 bad command line or scene input.\n";
+}
 
 /// An integrator's name, e.g. for --integrator and each of --compare a,b.
 CLI::Validator integrator_name() {
@@ -41,7 +56,8 @@ CLI::Validator integrator_name() {
 
 std::optional<int> parse_options(int argc, char** argv, AppOptions& o) {
   using namespace jelly::cli;
-  Command cmd("jelly-lab", kUsage, kUsage);
+  const std::string usage = usage_text();
+  Command cmd("jelly-lab", usage, usage);
   std::string scenes_dir, screenshot, size, open;
   std::vector<std::string> slot_sets;
   cmd.add_option("SCENE", o.scene);

@@ -368,40 +368,32 @@ void parameters_section(AppState& s) {
   }
 }
 
-/// Cloth: the corner pins (keys 1–4) and the kinematic sphere's drive (arrows, S), shown only in
-/// a cloth scene.
-void cloth_section(AppState& s) {
-  if (!has_cloth(s) || !header(s, "Cloth", "cloth", true)) return;
-  World& world = s.runs.front()->simulator()->world();
-  const ClothGrid& grid = world.cloths().front();
-  ImGui::TextUnformatted("pinned corners (keys 1-4):");
-  static const char* corners[4] = {"1 (0,0)", "2 (0,n-1)", "3 (n-1,0)", "4 (n-1,n-1)"};
-  for (int corner = 0; corner < 4; ++corner) {
-    bool pinned = world.is_pinned(session::corner_particle(grid, corner));
-    if (corner > 0) ImGui::SameLine();
-    if (ImGui::Checkbox(corners[corner], &pinned)) toggle_pin(s, corner);
+/// The body kinds' sections (their controls), each shown only in a scene of its kind.
+void body_sections(AppState& s) {
+  const std::vector<const BodyView*> shown = shown_views(s);
+  for (auto& [view, controls] : s.body_controls) {
+    if (std::find(shown.begin(), shown.end(), view) == shown.end()) continue;
+    if (view->panel_title().empty()) continue;
+    const std::string title(view->panel_title()), id(view->panel_id());
+    if (header(s, title.c_str(), id.c_str(), true)) controls->draw_panel(s.viewer_context());
   }
-  if (!has_kinematic_sphere(s)) return;
-  ImGui::Text("arrows: drive the sphere (%.3g m/s along x/z), S: stop", session::kDriveSpeed);
-  if (s.driving)
-    ImGui::Text("driven at (%.3g, %.3g, %.3g) m/s; Reset (R) restores its schedule", s.drive.x(),
-                s.drive.y(), s.drive.z());
-  else
-    ImGui::TextDisabled("following the scene's schedule");
-  if (ImGui::Button("Stop sphere (S)")) stop_sphere(s);
 }
 
 /// Draw: what the frame shows (each spring type in its colour).
 void draw_section(AppState& s) {
   if (!header(s, "Draw", "draw", false)) return;
-  const bool cloth = has_cloth(s);
-  ImGui::Checkbox(cloth ? "cloth surface" : "jelly surface", &s.frame.draw.surface);
+  // The shown body kind names its surface and markers, and the spring types it has.
+  const std::vector<const BodyView*> shown = shown_views(s);
+  const BodyView* view = shown.empty() ? nullptr : shown.front();
+  const std::string surface(view ? view->surface_label() : "jelly surface");
+  const std::string markers(view ? view->markers_label() : "");
+  ImGui::Checkbox(surface.c_str(), &s.frame.draw.surface);
   ImGui::Checkbox("particles", &s.frame.draw.particles);
-  if (cloth) ImGui::Checkbox("pinned particles", &s.frame.draw.pins);
+  if (!markers.empty()) ImGui::Checkbox(markers.c_str(), &s.frame.draw.markers);
   static const char* names[4] = {"structural springs", "shear springs", "body-diagonal shear",
                                  "bending springs"};
   for (int i = 0; i < 4; ++i) {
-    if (cloth && static_cast<SpringType>(i) == SpringType::ShearBody) continue;  // a 3D lattice's
+    if (view && !view->shows_spring_type(static_cast<SpringType>(i))) continue;
     const auto& c = colors::kSprings[i];
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.x(), c.y(), c.z(), 1.0f));
     ImGui::Checkbox(names[i], &s.frame.draw.springs[i]);
@@ -451,7 +443,7 @@ void draw_panels(AppState& s, double fps) {
   scene_section(s);  // may load another scene, which rebuilds the runs: take them after it
   const std::vector<SimulationRun*> runs = s.run_pointers();
   simulation_section(s, runs, fps);
-  cloth_section(s);
+  body_sections(s);
   comparison_section(s);
   parameters_section(s);
   draw_section(s);

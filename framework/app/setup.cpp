@@ -35,6 +35,7 @@ void shutdown_imgui() {
 int init_state(AppState& s, const AppOptions& opt) {
   s.scripted = opt.smoke_test || opt.shot_at >= 0.0;
   s.open_panels = opt.open_panels;
+  add_body_controls(s);
   s.scenes_dir = opt.scenes_dir.empty() ? default_scenes_dir() : opt.scenes_dir;
   s.scenes = list_scenes(s.scenes_dir);
   s.clock.factor = std::clamp(opt.factor, RealTimeClock::kMinFactor, RealTimeClock::kMaxFactor);

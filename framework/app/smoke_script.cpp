@@ -1,4 +1,5 @@
 // jelly-lab --smoke-test: a scripted, reproducible tour of every integrator and every scene.
+#include <algorithm>
 #include <cstdio>
 
 #include "app_loop.hpp"
@@ -40,7 +41,7 @@ bool SmokeScript::frame(AppState& s, bool screenshot) {
     }
     return false;
   }
-  if (scene_frames_ == 0 && has_cloth(s)) check_cloth_keys(s);
+  if (scene_frames_ == 0) check_body_keys(s);
   for (SimulationRun* r : runs) r->advance_to(r->time() + 0.1);
   if (++scene_frames_ < 3) return false;
   std::printf("smoke: scene %-35s ok, t = %.2f s\n", s.edited.name.c_str(), runs.front()->time());
@@ -68,55 +69,11 @@ bool SmokeScript::frame(AppState& s, bool screenshot) {
   return true;
 }
 
-void SmokeScript::check_cloth_keys(AppState& s) {
-  SimulationRun& run = *s.runs.front();
-  World& world = run.simulator()->world();
-  const ClothGrid& grid = world.cloths().front();
-  const auto fail = [&](const std::string& what) {
-    std::printf("smoke: scene %s: %s\n", s.edited.name.c_str(), what.c_str());
-    ++failures_;
-  };
-  // Keys 1–4: each corner flips, and flips back.
-  for (int corner = 0; corner < 4; ++corner) {
-    const int p = session::corner_particle(grid, corner);
-    const bool before = world.is_pinned(p);
-    toggle_pin(s, corner);
-    if (world.is_pinned(p) == before)
-      fail("key " + std::to_string(corner + 1) + " did not change the pin of particle " +
-           std::to_string(p));
-    toggle_pin(s, corner);
-    if (world.is_pinned(p) != before)
-      fail("key " + std::to_string(corner + 1) + " twice did not restore particle " +
-           std::to_string(p));
-  }
-  std::string arrows;
-  if (has_kinematic_sphere(s)) {
-    // Right arrow for 0.1 s: the sphere moves speed × 0.1 s along the view's right axis; S stops
-    // it. Steps are whole, so the distance is within one step's travel.
-    const int sphere = session::first_kinematic_sphere(world);
-    const Vec3 expected =
-        session::arrow_drive(Vec3::Zero(), session::Arrow::Right, s.camera.yaw_degrees);
-    const Vec3 c0 = world.sphere(sphere).center;
-    const double t0 = run.time();
-    press_arrow(s, session::Arrow::Right);
-    run.advance_to(t0 + 0.1);
-    const Vec3 moved = world.sphere(sphere).center - c0;
-    const double tolerance = 1.5 * run.step() * session::kDriveSpeed + 1e-9;
-    if ((moved - expected * (run.time() - t0)).norm() > tolerance)
-      fail("the right arrow moved the sphere by (" + std::to_string(moved.x()) + ", " +
-           std::to_string(moved.y()) + ", " + std::to_string(moved.z()) + ") m in " +
-           std::to_string(run.time() - t0) + " s");
-    stop_sphere(s);
-    const Vec3 c1 = world.sphere(sphere).center;
-    run.advance_to(run.time() + 0.1);
-    if ((world.sphere(sphere).center - c1).norm() > 1e-12) fail("S did not stop the sphere");
-    char buf[128];
-    std::snprintf(buf, sizeof buf, ", right arrow moved the sphere %.3f m, S stopped it",
-                  moved.norm());
-    arrows = buf;
-  }
-  std::printf("smoke: scene %-35s keys 1-4 toggled the corner pins%s\n", s.edited.name.c_str(),
-              arrows.c_str());
+void SmokeScript::check_body_keys(AppState& s) {
+  const std::vector<const render::BodyView*> shown = shown_views(s);
+  for (auto& [view, controls] : s.body_controls)
+    if (std::find(shown.begin(), shown.end(), view) != shown.end())
+      failures_ += controls->smoke_check(s.viewer_context());
 }
 
 }  // namespace jelly::app

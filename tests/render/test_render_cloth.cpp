@@ -18,12 +18,12 @@
 #include <Eigen/Geometry>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/bodies/cloth/view/cloth_view.hpp"
 #include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/meshes.hpp"
 #include "jelly/session/assignments.hpp"
-#include "jelly/session/captions.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -76,7 +76,7 @@ std::unique_ptr<World> cloth_2024() {
 
 TEST(ClothMeshes, OneVertexPerParticleTwoTrianglesPerCellFrontFacingUp) {
   constexpr int n = 4, first = 3;
-  ClothSurface surface(n, first);
+  cloth_view::ClothSurface surface(n, first);
   const Mesh& m = surface.mesh();
   EXPECT_EQ(m.positions.size(), std::size_t(n * n));
   EXPECT_EQ(m.indices.size(), std::size_t(2 * 3 * (n - 1) * (n - 1)));
@@ -108,9 +108,11 @@ TEST(ClothMeshes, DrawablesFollowTheClothAndTheSpheres) {
   Renderer renderer(nullptr);
   auto w = cloth_2022();
   auto d = renderer.make_drawable(*w);
-  ASSERT_EQ(d->cloth_surfaces().size(), 1u);
-  ASSERT_EQ(d->spheres().size(), 4u);
-  EXPECT_TRUE(d->surfaces().empty());  // no cube
+  ASSERT_EQ(d->bodies().size(), 1u);  // the cloth's only: no cube
+  const auto* cloth = d->body<cloth_view::ClothDrawable>();
+  ASSERT_NE(cloth, nullptr);
+  ASSERT_EQ(cloth->cloth_surfaces().size(), 1u);
+  ASSERT_EQ(cloth->spheres().size(), 4u);
   // The framing holds the cloth and the spheres above it.
   EXPECT_LE(d->bounds().lo.x(), -2.0);
   EXPECT_GE(d->bounds().hi.x(), 2.0);
@@ -119,11 +121,11 @@ TEST(ClothMeshes, DrawablesFollowTheClothAndTheSpheres) {
   renderer.draw(*d, *w, cam, DrawOptions{}, Viewport{0, 0, 640, 360});
   for (int i = 0; i < 4; ++i) {
     const SphereBody s = w->sphere(i);
-    for (const auto& p : d->spheres()[static_cast<std::size_t>(i)].mesh().positions)
+    for (const auto& p : cloth->spheres()[static_cast<std::size_t>(i)].mesh().positions)
       EXPECT_NEAR((p.cast<double>() - s.center).norm(), s.radius, 1e-5);
   }
   const ClothGrid& grid = w->cloths().front();
-  EXPECT_EQ(d->cloth_surfaces()[0].mesh().positions[7], grid.position(0, 7).cast<float>());
+  EXPECT_EQ(cloth->cloth_surfaces()[0].mesh().positions[7], grid.position(0, 7).cast<float>());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -156,11 +158,11 @@ Hue classify(const std::array<std::uint8_t, 4>& p) {
   if (sum < 45.0) return Hue::Other;
   const Eigen::Vector3d c = Eigen::Vector3d(p[0], p[1], p[2]) / sum;
   const std::array<std::pair<Hue, Eigen::Vector3f>, 10> refs = {{
-      {Hue::ClothFront, colors::kClothFront},
-      {Hue::ClothBack, colors::kClothBack},
-      {Hue::Pin, colors::kPin},
-      {Hue::Dynamic, colors::kDynamicSphere},
-      {Hue::Kinematic, colors::kKinematicSphere},
+      {Hue::ClothFront, cloth_view::kClothFront},
+      {Hue::ClothBack, cloth_view::kClothBack},
+      {Hue::Pin, cloth_view::kPin},
+      {Hue::Dynamic, cloth_view::kDynamicSphere},
+      {Hue::Kinematic, cloth_view::kKinematicSphere},
       {Hue::Structural, colors::kSprings[0]},
       {Hue::Shear, colors::kSprings[1]},
       {Hue::Bending, colors::kSprings[3]},
@@ -339,7 +341,7 @@ TEST_F(HeadlessCloth, PinnedCornersAreMarkedAndAFreedOneIsNot) {
   EXPECT_NE(hue_at(freed, camera_, world_->state().x.col(visible[0])), Hue::Pin);
   EXPECT_EQ(hue_at(freed, camera_, world_->state().x.col(visible[1])), Hue::Pin);
   DrawOptions no_pins;
-  no_pins.pins = false;
+  no_pins.markers = false;
   EXPECT_EQ(count_hue(render("cloth-no-pins.png", no_pins), Hue::Pin), 0);
   EXPECT_GT(count_hue(pinned, Hue::Pin), 3 * 40);  // three or four dots of ≥ 40 px
 }
@@ -348,7 +350,7 @@ TEST_F(HeadlessCloth, EachSpringTypeIsDrawnInItsColourWhenToggled) {
   use(cloth_2022());
   DrawOptions lines;
   lines.surface = false;
-  lines.pins = false;
+  lines.markers = false;
   const Image none = render("cloth-springs-none.png", lines);
   const std::array<std::pair<SpringType, Hue>, 3> types = {
       {{SpringType::Structural, Hue::Structural},

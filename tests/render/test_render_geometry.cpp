@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/bodies/cube/view/cube_view.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/meshes.hpp"
@@ -69,7 +70,7 @@ TEST(RenderMeshes, JellySurfaceCoversTheOuterFacesWithOutwardNormals) {
   spec.center = Vec3(1.0, 5.0, -2.0);
   spec.rotation_degrees = 30.0;
   const CubeLattice lattice(spec, 7);
-  JellySurface surface(lattice);
+  cube_view::JellySurface surface(lattice);
   const Mesh& m = surface.mesh();
   EXPECT_EQ(m.positions.size(), 6u * 4 * 4);
   EXPECT_EQ(m.indices.size(), 6u * 3 * 3 * 6);
@@ -147,12 +148,14 @@ TEST(RenderNullBackend, DrawsWithoutGlAndFollowsTheState) {
   std::vector<SimulationRun*> runs{&run};
   draw_frame(renderer, runs, cam, FrameOptions{}, 320, 200);
   ASSERT_NE(drawable_of(run), nullptr);
-  ASSERT_EQ(drawable_of(run)->surfaces().size(), 1u);
+  const auto* cube = drawable_of(run)->body<cube_view::CubeDrawable>();
+  ASSERT_NE(cube, nullptr);
+  ASSERT_EQ(cube->surfaces().size(), 1u);
   EXPECT_EQ(drawable_of(run)->terrain_meshes().size(), run.simulator()->world().terrains().size());
-  const int p0 = drawable_of(run)->surfaces()[0].particles()[0];
+  const int p0 = cube->surfaces()[0].particles()[0];
   run.simulator()->world().state().x.col(p0) += Vec3(0, 1, 0);
   draw_frame(renderer, runs, cam, FrameOptions{}, 320, 200);
-  EXPECT_FLOAT_EQ(drawable_of(run)->surfaces()[0].mesh().positions[0].y(),
+  EXPECT_FLOAT_EQ(cube->surfaces()[0].mesh().positions[0].y(),
                   static_cast<float>(run.simulator()->world().state().x(1, p0)));
   EXPECT_EQ(backend.backend->read_pixels().width, 320);
 }

@@ -13,8 +13,8 @@
 #include "jelly/a1/task_table.hpp"
 #include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
+#include "jelly/render/captions.hpp"
 #include "jelly/render/frame.hpp"
-#include "jelly/session/captions.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
 

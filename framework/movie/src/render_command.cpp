@@ -45,9 +45,10 @@ constexpr const char* kUsage =
     "  SCENE    a scene's name in the scenes folder (listed at the end) or a .toml path\n"
     "  --replay   draw recorded positions instead of simulating: one PNG per recorded frame; the\n"
     "             CSV is frame,time,particle,x,y,z[,...] as `jelly run --out` writes it, and the\n"
-    "             scene gives the terrains and the body the particles belong to; a cloth\n"
-    "             scene's frames may end with its kinematic spheres' centres (as the grader\n"
-    "             records them)\n"
+    "             scene gives the terrains and the body the particles belong to";
+/// After the replay text of each body kind (BodyView::replay_help).
+constexpr const char* kUsageEnd =
+    "\n"
     "  --label    text printed top-left of every replayed frame, before the time\n"
     "  --compare  2 to 4 integrators side by side, e.g. explicit_euler,midpoint,rk4\n"
     "  --benchmark N  draw N frames of the first state and print frames per second\n";
@@ -57,6 +58,8 @@ std::string usage_text() {
   const fs::path dir = default_scenes_dir();
   const std::string example = example_scene(dir);
   std::string text = kUsage;
+  for (const BodyView* view : body_views()) text += view->replay_help();
+  text += kUsageEnd;
   if (!example.empty()) text += "example: jelly render " + example + " --frames out/frames\n";
   return text + scenes_line(dir) + "\n";
 }
@@ -180,9 +183,18 @@ bool save_frame(Backend& be, const fs::path& dir, std::size_t k) {
   return true;
 }
 
-/// --replay: the scene's world (terrains, cube topology) drawn at each recorded frame's positions,
-/// one PNG per frame (frame_00000.png, ... in file order). Nothing is simulated and no task code
-/// runs but the spring builders the scene's world is built with.
+/// Each body kind's replay points of frame `x`, after the state's `n` particles.
+void place_replay_points(World& world, const Vec3Array& x, long n) {
+  long first = n;
+  for (const BodyView* view : views_in(world)) {
+    view->place_replay_points(world, x, first);
+    first += view->replay_points(world);
+  }
+}
+
+/// --replay: the scene's world (terrains, the bodies' topology) drawn at each recorded frame's
+/// positions, one PNG per frame (frame_00000.png, ... in file order). Nothing is simulated and no
+/// task code runs but the spring builders the scene's world is built with.
 int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& renderer) {
   const ReplayResult loaded = load_replay(a.replay);
   if (!loaded) {
@@ -197,20 +209,19 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
     std::cerr << "jelly render: cannot build the scene's world: " << e.what() << "\n";
     return 1;
   }
-  // A frame holds the state's particles (a cloth's, then its dynamic spheres'), and may go on
-  // with the centre of every kinematic sphere in scene order (the grader records them: cloth-2024's
-  // driven sphere); without them those spheres stay where the scene starts them.
+  // A frame holds the state's particles, and may go on with the points a body kind records after
+  // them (BodyView::replay_points: the grader records those of the course scenes); without them
+  // those stay where the scene starts them.
   const long n = static_cast<long>(world->state().x.cols());
-  std::vector<int> kinematic;
-  for (int i = 0; i < world->sphere_count(); ++i)
-    if (world->sphere_is_kinematic(i)) kinematic.push_back(i);
-  const long with_spheres = n + static_cast<long>(kinematic.size());
-  if (replay.particles() != n && replay.particles() != with_spheres) {
+  long extra = 0;
+  for (const BodyView* view : views_in(*world)) extra += view->replay_points(*world);
+  if (replay.particles() != n && replay.particles() != n + extra) {
     std::cerr << "jelly render: " << a.replay.string() << ": " << replay.particles()
               << " particles per frame, but scene '" << scene.name << "' has " << n;
-    if (!kinematic.empty())
-      std::cerr << " (or " << with_spheres << " with its " << kinematic.size()
-                << " kinematic sphere centres after them)";
+    for (const BodyView* view : views_in(*world))
+      if (const long k = view->replay_points(*world); k > 0)
+        std::cerr << " (or " << n + k << " with its " << k << " " << view->replay_points_name()
+                  << " after them)";
     std::cerr << "\n";
     return 2;
   }
@@ -231,9 +242,7 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
     const ReplayFrame& f = replay.frames[k];
     world->state().x = f.x.leftCols(n);
     world->state().v.setZero(3, n);
-    if (f.x.cols() == with_spheres)
-      for (std::size_t j = 0; j < kinematic.size(); ++j)
-        world->place_sphere(kinematic[j], f.x.col(n + static_cast<long>(j)));
+    if (extra > 0 && f.x.cols() == n + extra) place_replay_points(*world, f.x, n);
     renderer.begin_frame(a.width, a.height);
     renderer.draw(*drawable, *world, camera, draw, vp);
     char when[48];

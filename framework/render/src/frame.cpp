@@ -180,7 +180,7 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
     // Comparison mode: the shared parameters in their own strip below every view.
     double t = 0.0;
     for (session::SimulationRun* r : runs) t = std::max(t, r->time());
-    const std::string raw = session::caption(runs.front()->setup(), t, false);
+    const std::string raw = caption(runs.front()->setup(), t, false);
     const int top = height - bands.caption;
     renderer.draw_rect(o.left_margin, top, width - o.left_margin, bands.caption,
                        {0.06f, 0.07f, 0.10f, 1.0f});
@@ -197,7 +197,7 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
   } else if (o.caption && !runs.empty()) {
     double t = 0.0;  // the furthest run (a stopped run stays behind)
     for (session::SimulationRun* r : runs) t = std::max(t, r->time());
-    const std::string text = session::caption(runs.front()->setup(), t, runs.size() == 1);
+    const std::string text = caption(runs.front()->setup(), t, runs.size() == 1);
     // Shrink the caption to fit the width left of the panel.
     const int room = width - o.left_margin - 3 * pad;
     const float cs =

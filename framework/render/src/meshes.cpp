@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "jelly/render/body_view.hpp"
+
 namespace jelly::render {
 
 namespace {
@@ -14,12 +16,12 @@ constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Vector3f f3(const Vec3& v) { return v.cast<float>(); }
 
+}  // namespace
+
 void add_quad(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
   m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
 }
 
-// Vertex normals from the triangles (area-weighted sum of their normals, normalised; +y where a
-// vertex's sum vanishes). The normals must be zero on entry.
 void smooth_normals(Mesh& m) {
   for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
     const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
@@ -34,8 +36,6 @@ void smooth_normals(Mesh& m) {
     nrm = len > 0.0f && std::isfinite(len) ? Eigen::Vector3f(nrm / len) : Eigen::Vector3f::UnitY();
   }
 }
-
-}  // namespace
 
 void plane_basis(const Vec3& n, Vec3& u, Vec3& w) {
   // For the floor (n = +y) this gives u = −x, w = +z: grid lines along the world axes.
@@ -136,100 +136,6 @@ Mesh sphere_mesh(const Sphere& s) {
   return m;
 }
 
-JellySurface::JellySurface(const CubeLattice& lat) {
-  const int n = lat.n();
-  Vec3 centre = Vec3::Zero();
-  for (Eigen::Index i = 0; i < lat.initial_positions().cols(); ++i)
-    centre += lat.initial_positions().col(i);
-  centre /= static_cast<double>(lat.particle_count());
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side : {0, n - 1}) {
-      const auto base = static_cast<std::uint32_t>(particle_of_vertex_.size());
-      // Grid (a, b) over the two other axes.
-      for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) {
-          int ijk[3];
-          ijk[axis] = side;
-          ijk[(axis + 1) % 3] = a;
-          ijk[(axis + 2) % 3] = b;
-          particle_of_vertex_.push_back(lat.index(ijk[0], ijk[1], ijk[2]));
-        }
-      // Wind outwards: compare the first quad's normal with the direction away from the centre.
-      const auto pos = [&](std::uint32_t v) {
-        return lat.initial_positions().col(particle_of_vertex_[v] - lat.first_index()).eval();
-      };
-      const Vec3 face_normal = (pos(base + n) - pos(base)).cross(pos(base + 1) - pos(base));
-      const bool flip = face_normal.dot(pos(base) - centre) < 0.0;
-      for (int a = 0; a + 1 < n; ++a)
-        for (int b = 0; b + 1 < n; ++b) {
-          const std::uint32_t v00 = base + a * n + b, v10 = v00 + n, v11 = v10 + 1, v01 = v00 + 1;
-          if (flip)
-            add_quad(mesh_, v00, v01, v11, v10);
-          else
-            add_quad(mesh_, v00, v10, v11, v01);
-        }
-    }
-  mesh_.positions.resize(particle_of_vertex_.size());
-  mesh_.normals.resize(particle_of_vertex_.size());
-  Vec3Array x(3, lat.first_index() + lat.particle_count());
-  x.rightCols(lat.particle_count()) = lat.initial_positions();
-  update(x);
-}
-
-void JellySurface::update(const Vec3Array& x) {
-  for (std::size_t v = 0; v < particle_of_vertex_.size(); ++v) {
-    mesh_.positions[v] = x.col(particle_of_vertex_[v]).cast<float>();
-    mesh_.normals[v].setZero();
-  }
-  smooth_normals(mesh_);
-}
-
-ClothSurface::ClothSurface(int n, int first_index) : n_(n), first_(first_index) {
-  const auto count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  mesh_.positions.assign(count, Eigen::Vector3f::Zero());
-  mesh_.normals.assign(count, Eigen::Vector3f::UnitY());
-  const auto at = [n](int i, int k) { return static_cast<std::uint32_t>(i * n + k); };
-  // Cell (i, k): (i,k), (i,k+1), (i+1,k+1), (i+1,k). For the flat cloth, +z × +x = +y: the
-  // triangles wind counter-clockwise seen from above.
-  for (int i = 0; i + 1 < n; ++i)
-    for (int k = 0; k + 1 < n; ++k)
-      add_quad(mesh_, at(i, k), at(i, k + 1), at(i + 1, k + 1), at(i + 1, k));
-}
-
-void ClothSurface::update(const Vec3Array& x) {
-  for (std::size_t v = 0; v < mesh_.positions.size(); ++v) {
-    mesh_.positions[v] = x.col(first_ + static_cast<Eigen::Index>(v)).cast<float>();
-    mesh_.normals[v].setZero();
-  }
-  smooth_normals(mesh_);
-}
-
-MovingSphere::MovingSphere() {
-  constexpr int kRings = 24, kSegments = 48;
-  for (int ring = 0; ring <= kRings; ++ring) {
-    const double phi = kPi * ring / kRings;
-    for (int k = 0; k <= kSegments; ++k) {
-      const double a = 2.0 * kPi * k / kSegments;
-      directions_.emplace_back(
-          Vec3(std::sin(phi) * std::cos(a), -std::cos(phi), std::sin(phi) * std::sin(a))
-              .cast<float>());
-    }
-  }
-  for (int ring = 0; ring < kRings; ++ring)
-    for (int k = 0; k < kSegments; ++k) {
-      const auto i = static_cast<std::uint32_t>(ring * (kSegments + 1) + k);
-      add_quad(mesh_, i, i + kSegments + 1, i + kSegments + 2, i + 1);
-    }
-  mesh_.normals = directions_;
-  mesh_.positions = directions_;
-}
-
-void MovingSphere::update(const Vec3& center, double radius) {
-  const Eigen::Vector3f c = center.cast<float>();
-  const auto r = static_cast<float>(radius);
-  for (std::size_t v = 0; v < directions_.size(); ++v) mesh_.positions[v] = c + r * directions_[v];
-}
-
 Bounds scene_bounds(const World& world) {
   Bounds b;
   const Vec3Array& x = world.state().x;
@@ -241,29 +147,12 @@ Bounds scene_bounds(const World& world) {
     b.hi = b.hi.cwiseMax(p);
     any = true;
   };
-  // Cubes where they were built (so the framing does not depend on when it is computed); other
-  // particles where they are now.
-  for (const CubeLattice& c : world.cubes())
-    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i)
-      grow(c.initial_positions().col(i));
-  if (world.cubes().empty())
+  // Each body as its kind frames it; particles no kind covers where they are now.
+  bool covered = false;
+  for (const BodyView* view : body_views())
+    if (view->present(world)) covered = view->frame(world, grow) || covered;
+  if (!covered)
     for (Eigen::Index i = 0; i < x.cols(); ++i) grow(x.col(i));
-  // A cloth where it was built, with room below it for its sag (half its side) and around it for
-  // its swing (a tenth of its side).
-  for (const ClothGrid& c : world.cloths()) {
-    const double side = c.spacing() * (c.n() - 1);
-    const Vec3 swing = Vec3::Constant(0.1 * side);
-    for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) {
-      const Vec3 p = c.initial_positions().col(i);
-      grow(p + swing);
-      grow(p - swing - Vec3(0.0, 0.5 * side, 0.0));
-    }
-  }
-  for (int i = 0; i < world.sphere_count(); ++i) {  // cloth scenes
-    const SphereBody sb = world.sphere(i);
-    grow(sb.center - Vec3::Constant(sb.radius));
-    grow(sb.center + Vec3::Constant(sb.radius));
-  }
   for (const Terrain& t : world.terrains()) {
     if (const auto* bowl = std::get_if<Bowl>(&t.shape)) {
       const double rr = bowl->rim_radius();

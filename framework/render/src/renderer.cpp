@@ -25,27 +25,14 @@ namespace jelly::render {
 
 namespace {
 
-/// How a lit surface shines: the Blinn-Phong specular strength and exponent of the lit shader.
-struct Material {
-  float specular;
-  float shininess;
-};
+/// How the terrains shine (a body's material is its view module's).
 constexpr Material kGroundMaterial{0.08f, 24.0f};  ///< planes and spheres: nearly matte
 constexpr Material kBowlMaterial{0.25f, 40.0f};    ///< the bowl: a glazed dish
-constexpr Material kJellyMaterial{0.45f, 48.0f};   ///< the jelly: wet and glossy
-constexpr Material kClothMaterial{0.12f, 20.0f};   ///< the cloth: fabric, a soft sheen
-constexpr Material kSphereMaterial{0.35f, 40.0f};  ///< the spheres of a cloth scene
-/// Pinned particles: this many times the particle dot size, never below the minimum.
-constexpr float kPinSizeFactor = 2.2f;
-constexpr float kMinPinSize = 6.0f;
 /// Opacity of spring lines (the surface and other springs show through a little).
 constexpr float kSpringAlpha = 0.85f;
 /// Particle dots: `point_size` is in pixels at this viewport height, and never below the minimum.
 constexpr float kPointSizeReferenceHeight = 720.0f;
 constexpr float kMinPointSize = 2.0f;
-/// Surfaces are pushed back by this polygon offset (factor and units) so that lines drawn on them
-/// (springs) stay visible.
-constexpr float kSurfaceOffset = 1.0f;
 
 GLuint compile(const Gl& gl, GLenum type, const char* source) {
   const GLuint s = gl.CreateShader(type);
@@ -79,82 +66,20 @@ GLuint link(const Gl& gl, const char* vs, const char* fs) {
   return p;
 }
 
-/// Vertex array with a position buffer, an optional normal buffer and an optional index buffer.
-struct GpuMesh {
-  GLuint vao = 0, positions = 0, normals = 0, indices = 0;
-  GLsizei index_count = 0;
-  GLsizei vertex_count = 0;
-
-  void create(const Gl& gl, bool with_normals, bool with_indices) {
-    gl.GenVertexArrays(1, &vao);
-    gl.BindVertexArray(vao);
-    gl.GenBuffers(1, &positions);
-    gl.BindBuffer(GL_ARRAY_BUFFER, positions);
-    gl.EnableVertexAttribArray(0);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    if (with_normals) {
-      gl.GenBuffers(1, &normals);
-      gl.BindBuffer(GL_ARRAY_BUFFER, normals);
-      gl.EnableVertexAttribArray(1);
-      gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    }
-    if (with_indices) {
-      gl.GenBuffers(1, &indices);
-      gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);
-    }
-    gl.BindVertexArray(0);
-  }
-  void upload_vertices(const Gl& gl, const std::vector<Eigen::Vector3f>& p,
-                       const std::vector<Eigen::Vector3f>* n, GLenum usage) {
-    gl.BindBuffer(GL_ARRAY_BUFFER, positions);
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.size() * sizeof(Eigen::Vector3f)),
-                  p.data(), usage);
-    if (n && normals) {
-      gl.BindBuffer(GL_ARRAY_BUFFER, normals);
-      gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n->size() * sizeof(Eigen::Vector3f)),
-                    n->data(), usage);
-    }
-    vertex_count = static_cast<GLsizei>(p.size());
-  }
-  void upload_indices(const Gl& gl, const std::vector<std::uint32_t>& idx) {
-    gl.BindVertexArray(vao);
-    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
-                  static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(),
-                  GL_STATIC_DRAW);
-    gl.BindVertexArray(0);
-    index_count = static_cast<GLsizei>(idx.size());
-  }
-  void destroy(const Gl& gl) {
-    if (positions) gl.DeleteBuffers(1, &positions);
-    if (normals) gl.DeleteBuffers(1, &normals);
-    if (indices) gl.DeleteBuffers(1, &indices);
-    if (vao) gl.DeleteVertexArrays(1, &vao);
-    *this = GpuMesh{};
-  }
-};
-
 }  // namespace
 
 // ------------------------------------------------------------------------------------------------
 struct SceneDrawable::Gpu {
   const Gl* gl = nullptr;
+  SceneDrawable* owner = nullptr;
   std::vector<GpuMesh> terrains;
-  std::vector<GpuMesh> surfaces;
-  std::vector<GpuMesh> cloths;
-  std::vector<GpuMesh> spheres;
-  GpuMesh pins;  // indices of the pinned particles into `particles`
-  std::vector<std::uint32_t> pin_indices;
   GpuMesh particles;                  // positions of every particle (points)
   std::vector<GpuMesh> spring_lines;  // per spring group: particle positions + pair indices
   std::vector<SpringType> spring_types;
   std::vector<Eigen::Vector3f> scratch;
   ~Gpu() {
     for (auto& m : terrains) m.destroy(*gl);
-    for (auto& m : surfaces) m.destroy(*gl);
-    for (auto& m : cloths) m.destroy(*gl);
-    for (auto& m : spheres) m.destroy(*gl);
-    pins.destroy(*gl);
+    for (auto& b : owner->bodies_) b->destroy_gpu(*gl);
     particles.destroy(*gl);
     for (auto& m : spring_lines) m.destroy(*gl);
   }
@@ -218,14 +143,14 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
     else
       d->terrain_meshes_.push_back(sphere_mesh(std::get<Sphere>(t.shape)));
   }
-  for (const CubeLattice& c : world.cubes()) d->surfaces_.emplace_back(c);
-  for (const ClothGrid& c : world.cloths()) d->cloth_surfaces_.emplace_back(c);
-  d->spheres_.resize(static_cast<std::size_t>(world.sphere_count()));
+  for (const BodyView* view : body_views())
+    if (view->present(world)) d->bodies_.push_back(view->make_drawable(world));
   if (!gl_) return d;
 
   const Gl& g = *gl_;
   d->gpu_ = std::make_unique<SceneDrawable::Gpu>();
   d->gpu_->gl = gl_;
+  d->gpu_->owner = d.get();
   for (const Mesh& m : d->terrain_meshes_) {
     GpuMesh gm;
     gm.create(g, true, true);
@@ -233,46 +158,12 @@ std::unique_ptr<SceneDrawable> Renderer::make_drawable(const World& world) {
     gm.upload_indices(g, m.indices);
     d->gpu_->terrains.push_back(gm);
   }
-  for (const JellySurface& s : d->surfaces_) {
-    GpuMesh gm;
-    gm.create(g, true, true);
-    gm.upload_indices(g, s.mesh().indices);
-    d->gpu_->surfaces.push_back(gm);
-  }
-  for (const ClothSurface& c : d->cloth_surfaces_) {
-    GpuMesh gm;
-    gm.create(g, true, true);
-    gm.upload_indices(g, c.mesh().indices);
-    d->gpu_->cloths.push_back(gm);
-  }
-  for (const MovingSphere& sphere : d->spheres_) {
-    GpuMesh gm;
-    gm.create(g, true, true);
-    gm.upload_indices(g, sphere.mesh().indices);
-    d->gpu_->spheres.push_back(gm);
-  }
   d->gpu_->particles.create(g, false, false);
-  if (!world.cloths().empty()) {
-    // Pin markers read the particle positions buffer, as the springs do.
-    GpuMesh& gm = d->gpu_->pins;
-    gm.create(g, false, true);
-    g.BindVertexArray(gm.vao);
-    g.DeleteBuffers(1, &gm.positions);
-    gm.positions = 0;
-    g.BindBuffer(GL_ARRAY_BUFFER, d->gpu_->particles.positions);
-    g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    g.BindVertexArray(0);
-  }
+  for (auto& body : d->bodies_) body->create_gpu(g, d->gpu_->particles.positions);
   for (const SpringGroup& group : world.spring_groups()) {
     GpuMesh gm;
-    gm.create(g, false, true);
-    // Lines read the particle positions buffer: point this VAO's attribute 0 at it.
-    g.BindVertexArray(gm.vao);
-    g.DeleteBuffers(1, &gm.positions);
-    gm.positions = 0;
-    g.BindBuffer(GL_ARRAY_BUFFER, d->gpu_->particles.positions);
-    g.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    g.BindVertexArray(0);
+    // Lines read the particle positions buffer.
+    gm.create_on(g, d->gpu_->particles.positions);
     std::vector<std::uint32_t> idx;
     idx.reserve(group.springs.size() * 2);
     for (const Spring& s : group.springs)
@@ -344,18 +235,9 @@ void Renderer::begin_frame(int width, int height) {
 void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam,
                     const DrawOptions& opt, const Viewport& vp) {
   // CPU side first (also with the null backend): follow the particles.
-  const Vec3Array& x = world.state().x;
-  if (opt.surface) {
-    for (JellySurface& s : d.surfaces_) s.update(x);
-    for (ClothSurface& c : d.cloth_surfaces_) c.update(x);
-  }
-  for (std::size_t i = 0; i < d.spheres_.size(); ++i) {
-    const SphereBody sb = world.sphere(static_cast<int>(i));
-    d.spheres_[i].update(sb.center, sb.radius);
-  }
+  for (auto& body : d.bodies_) body->update(world, opt);
   if (!gl_ || !d.gpu_) return;
   const Gl& g = *gl_;
-  SceneDrawable::Gpu& gpu = *d.gpu_;
 
   g.Viewport(vp.x, frame_h_ - vp.y - vp.height, vp.width, vp.height);
   g.Enable(GL_SCISSOR_TEST);
@@ -367,166 +249,114 @@ void Renderer::draw(SceneDrawable& d, const World& world, const OrbitCamera& cam
   const Eigen::Matrix4f vpm = cam.projection(vp.aspect()) * cam.view();
   const Vec3 eye = cam.eye();
   const GLuint sp = programs_->surface;
-  const auto loc = [&](GLuint p, const char* name) { return g.GetUniformLocation(p, name); };
-  const auto set3 = [&](GLuint p, const char* name, const Eigen::Vector3f& v) {
-    g.Uniform3f(loc(p, name), v.x(), v.y(), v.z());
-  };
-  const auto set_material = [&](const Material& m) {
-    g.Uniform1f(loc(sp, "u_specular"), m.specular);
-    g.Uniform1f(loc(sp, "u_shininess"), m.shininess);
-  };
+  const SurfacePass pass(g, sp);
   g.UseProgram(sp);
-  g.UniformMatrix4fv(loc(sp, "u_view_projection"), 1, GL_FALSE, vpm.data());
-  set3(sp, "u_eye", eye.cast<float>());
-  set3(sp, "u_sky", colors::kSkyHorizon);
-  g.Uniform1i(loc(sp, "u_grid"), opt.grid ? 1 : 0);
+  g.UniformMatrix4fv(g.GetUniformLocation(sp, "u_view_projection"), 1, GL_FALSE, vpm.data());
+  pass.set_color("u_eye", eye.cast<float>());
+  pass.set_color("u_sky", colors::kSkyHorizon);
+  pass.set_int("u_grid", opt.grid ? 1 : 0);
+  draw_terrains(d, world, pass);
 
-  // Terrains.
-  const auto& terrains = world.terrains();
-  for (std::size_t i = 0; i < terrains.size() && i < gpu.terrains.size(); ++i) {
-    const Terrain& t = terrains[i];
-    g.Uniform1i(loc(sp, "u_plane"), 0);
-    g.Uniform1i(loc(sp, "u_has_hole"), 0);
-    set_material(kGroundMaterial);
-    g.Uniform2f(loc(sp, "u_cavity"), 0.0f, 0.0f);
-    if (const auto* p = std::get_if<Plane>(&t.shape)) {
-      Vec3 u, w;
-      const Vec3 n = p->normal.normalized();
-      plane_basis(n, u, w);
-      g.Uniform1i(loc(sp, "u_plane"), 1);
-      set3(sp, "u_color", colors::kFloor);
-      set3(sp, "u_axis_u", u.cast<float>());
-      set3(sp, "u_axis_w", w.cast<float>());
-      set3(sp, "u_plane_normal", n.cast<float>());
-      g.Uniform1i(loc(sp, "u_has_hole"), p->has_hole ? 1 : 0);
-      set3(sp, "u_hole_center", p->hole_center.cast<float>());
-      g.Uniform1f(loc(sp, "u_hole_radius"), static_cast<float>(p->hole_radius));
-      const Vec3 centre = p->has_hole ? p->hole_center : d.bounds_.center();
-      set3(sp, "u_fade_center", centre.cast<float>());
-      g.Uniform1f(loc(sp, "u_fade_radius"), static_cast<float>(plane_half_extent(d.bounds_)));
-    } else if (const auto* b = std::get_if<Bowl>(&t.shape)) {
-      set3(sp, "u_color", colors::kBowl);
-      g.Uniform2f(loc(sp, "u_cavity"), static_cast<float>(b->center.y() - b->radius),
-                  static_cast<float>(b->rim_height));
-      set_material(kBowlMaterial);
-    } else {
-      set3(sp, "u_color", colors::kSphere);
-    }
-    g.BindVertexArray(gpu.terrains[i].vao);
-    g.DrawElements(GL_TRIANGLES, gpu.terrains[i].index_count, GL_UNSIGNED_INT, nullptr);
-  }
-
-  // The moving surfaces (jelly, cloth): uploaded every frame, pushed back a little so that lines
-  // drawn on them (springs) stay visible.
-  const auto draw_moving = [&](const auto& surfaces, auto& buffers) {
-    g.Enable(GL_POLYGON_OFFSET_FILL);
-    g.PolygonOffset(kSurfaceOffset, kSurfaceOffset);
-    for (std::size_t i = 0; i < surfaces.size(); ++i) {
-      const Mesh& m = surfaces[i].mesh();
-      buffers[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
-      g.BindVertexArray(buffers[i].vao);
-      g.DrawElements(GL_TRIANGLES, buffers[i].index_count, GL_UNSIGNED_INT, nullptr);
-    }
-    g.Disable(GL_POLYGON_OFFSET_FILL);
-  };
-
-  // Jelly surfaces.
-  g.Uniform2f(loc(sp, "u_cavity"), 0.0f, 0.0f);
-  if (opt.surface) {
-    g.Uniform1i(loc(sp, "u_plane"), 0);
-    g.Uniform1i(loc(sp, "u_has_hole"), 0);
-    set3(sp, "u_color", colors::kJelly);
-    set_material(kJellyMaterial);
-    draw_moving(d.surfaces_, gpu.surfaces);
-  }
-
-  // Cloth scenes: the cloth's two sides and the spheres.
-  if (opt.surface && !d.cloth_surfaces_.empty()) {
-    g.Uniform1i(loc(sp, "u_plane"), 0);
-    g.Uniform1i(loc(sp, "u_has_hole"), 0);
-    g.Uniform1i(loc(sp, "u_two_tone"), 1);
-    set3(sp, "u_color", colors::kClothFront);
-    set3(sp, "u_back_color", colors::kClothBack);
-    set_material(kClothMaterial);
-    draw_moving(d.cloth_surfaces_, gpu.cloths);
-    g.Uniform1i(loc(sp, "u_two_tone"), 0);
-  }
-  if (!d.spheres_.empty()) {
-    g.Uniform1i(loc(sp, "u_plane"), 0);
-    g.Uniform1i(loc(sp, "u_has_hole"), 0);
-    set_material(kSphereMaterial);
-    for (std::size_t i = 0; i < d.spheres_.size(); ++i) {
-      set3(sp, "u_color",
-           world.sphere_is_kinematic(static_cast<int>(i)) ? colors::kKinematicSphere
-                                                          : colors::kDynamicSphere);
-      const Mesh& m = d.spheres_[i].mesh();
-      gpu.spheres[i].upload_vertices(g, m.positions, &m.normals, GL_STREAM_DRAW);
-      g.BindVertexArray(gpu.spheres[i].vao);
-      g.DrawElements(GL_TRIANGLES, gpu.spheres[i].index_count, GL_UNSIGNED_INT, nullptr);
-    }
-  }
-
-  // Particles, springs and pin markers share one position buffer.
-  const bool any_springs =
-      std::any_of(opt.springs.begin(), opt.springs.end(), [](bool b) { return b; });
-  const bool pins = opt.pins && !d.cloth_surfaces_.empty();
-  if (opt.particles || any_springs || pins) {
-    gpu.scratch.resize(static_cast<std::size_t>(x.cols()));
-    for (Eigen::Index i = 0; i < x.cols(); ++i) gpu.scratch[i] = x.col(i).cast<float>();
-    gpu.particles.upload_vertices(g, gpu.scratch, nullptr, GL_STREAM_DRAW);
-    const GLuint fp = programs_->flat;
-    g.UseProgram(fp);
-    g.UniformMatrix4fv(loc(fp, "u_view_projection"), 1, GL_FALSE, vpm.data());
-    g.Uniform1i(loc(fp, "u_round"), 0);
-    g.Enable(GL_BLEND);
-    g.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    for (std::size_t i = 0; i < gpu.spring_lines.size(); ++i) {
-      const auto type = static_cast<std::size_t>(gpu.spring_types[i]);
-      if (!opt.springs[type]) continue;
-      const Eigen::Vector3f& c = colors::kSprings[type];
-      g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), kSpringAlpha);
-      g.BindVertexArray(gpu.spring_lines[i].vao);
-      g.DrawElements(GL_LINES, gpu.spring_lines[i].index_count, GL_UNSIGNED_INT, nullptr);
-    }
-    g.Disable(GL_BLEND);
-    if (opt.particles) {
-      g.Enable(GL_PROGRAM_POINT_SIZE);
-      g.Uniform1i(loc(fp, "u_round"), 1);
-      g.Uniform1f(loc(fp, "u_point_size"),
-                  std::max(kMinPointSize, opt.point_size * vp.height / kPointSizeReferenceHeight));
-      const Eigen::Vector3f& c = colors::kParticle;
-      g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 1.0f);
-      g.BindVertexArray(gpu.particles.vao);
-      // A cloth scene's dynamic spheres are particles of the state too: only the cloth's are dots.
-      const auto count = d.cloth_surfaces_.empty()
-                             ? gpu.particles.vertex_count
-                             : static_cast<GLsizei>(world.cloth_particle_count());
-      g.DrawArrays(GL_POINTS, 0, count);
-      g.Disable(GL_PROGRAM_POINT_SIZE);
-    }
-    if (pins) {
-      gpu.pin_indices.clear();
-      for (const ClothGrid& c : world.cloths())
-        for (int p = c.first_index(); p < c.first_index() + c.particle_count(); ++p)
-          if (world.is_pinned(p)) gpu.pin_indices.push_back(static_cast<std::uint32_t>(p));
-      if (!gpu.pin_indices.empty()) {
-        g.Enable(GL_PROGRAM_POINT_SIZE);
-        g.Uniform1i(loc(fp, "u_round"), 1);
-        const float dot = opt.point_size * vp.height / kPointSizeReferenceHeight;
-        g.Uniform1f(loc(fp, "u_point_size"), std::max(kMinPinSize, kPinSizeFactor * dot));
-        const Eigen::Vector3f& c = colors::kPin;
-        g.Uniform4f(loc(fp, "u_color"), c.x(), c.y(), c.z(), 1.0f);
-        gpu.pins.upload_indices(g, gpu.pin_indices);
-        g.BindVertexArray(gpu.pins.vao);
-        g.DrawElements(GL_POINTS, gpu.pins.index_count, GL_UNSIGNED_INT, nullptr);
-        g.Disable(GL_PROGRAM_POINT_SIZE);
-      }
-    }
-  }
+  // The bodies' surfaces (each kind's view module), then the particles, springs and markers.
+  g.Uniform2f(g.GetUniformLocation(sp, "u_cavity"), 0.0f, 0.0f);
+  for (auto& body : d.bodies_) body->draw_surfaces(pass, world, opt);
+  draw_particles(d, world, opt, vp, vpm);
   g.BindVertexArray(0);
   g.Disable(GL_SCISSOR_TEST);
   g.Disable(GL_DEPTH_TEST);
   g.Viewport(0, 0, frame_w_, frame_h_);
+}
+
+void Renderer::draw_terrains(SceneDrawable& d, const World& world, const SurfacePass& pass) {
+  const Gl& g = *gl_;
+  const GLuint sp = programs_->surface;
+  const auto& terrains = world.terrains();
+  for (std::size_t i = 0; i < terrains.size() && i < d.gpu_->terrains.size(); ++i) {
+    const Terrain& t = terrains[i];
+    pass.set_int("u_plane", 0);
+    pass.set_int("u_has_hole", 0);
+    pass.set_material(kGroundMaterial);
+    g.Uniform2f(g.GetUniformLocation(sp, "u_cavity"), 0.0f, 0.0f);
+    if (const auto* p = std::get_if<Plane>(&t.shape)) {
+      Vec3 u, w;
+      const Vec3 n = p->normal.normalized();
+      plane_basis(n, u, w);
+      pass.set_int("u_plane", 1);
+      pass.set_color("u_color", colors::kFloor);
+      pass.set_color("u_axis_u", u.cast<float>());
+      pass.set_color("u_axis_w", w.cast<float>());
+      pass.set_color("u_plane_normal", n.cast<float>());
+      pass.set_int("u_has_hole", p->has_hole ? 1 : 0);
+      pass.set_color("u_hole_center", p->hole_center.cast<float>());
+      g.Uniform1f(g.GetUniformLocation(sp, "u_hole_radius"), static_cast<float>(p->hole_radius));
+      const Vec3 centre = p->has_hole ? p->hole_center : d.bounds_.center();
+      pass.set_color("u_fade_center", centre.cast<float>());
+      g.Uniform1f(g.GetUniformLocation(sp, "u_fade_radius"),
+                  static_cast<float>(plane_half_extent(d.bounds_)));
+    } else if (const auto* b = std::get_if<Bowl>(&t.shape)) {
+      pass.set_color("u_color", colors::kBowl);
+      g.Uniform2f(g.GetUniformLocation(sp, "u_cavity"),
+                  static_cast<float>(b->center.y() - b->radius), static_cast<float>(b->rim_height));
+      pass.set_material(kBowlMaterial);
+    } else {
+      pass.set_color("u_color", colors::kSphere);
+    }
+    g.BindVertexArray(d.gpu_->terrains[i].vao);
+    g.DrawElements(GL_TRIANGLES, d.gpu_->terrains[i].index_count, GL_UNSIGNED_INT, nullptr);
+  }
+}
+
+void Renderer::draw_particles(SceneDrawable& d, const World& world, const DrawOptions& opt,
+                              const Viewport& vp, const Eigen::Matrix4f& vpm) {
+  // Particles, springs and the bodies' markers share one position buffer.
+  const Gl& g = *gl_;
+  SceneDrawable::Gpu& gpu = *d.gpu_;
+  const bool any_springs =
+      std::any_of(opt.springs.begin(), opt.springs.end(), [](bool b) { return b; });
+  const bool markers = std::any_of(d.bodies_.begin(), d.bodies_.end(),
+                                   [&](const auto& b) { return b->has_markers(opt); });
+  if (!opt.particles && !any_springs && !markers) return;
+  const Vec3Array& x = world.state().x;
+  gpu.scratch.resize(static_cast<std::size_t>(x.cols()));
+  for (Eigen::Index i = 0; i < x.cols(); ++i) gpu.scratch[i] = x.col(i).cast<float>();
+  gpu.particles.upload_vertices(g, gpu.scratch, nullptr, GL_STREAM_DRAW);
+  const GLuint fp = programs_->flat;
+  const auto loc = [&](const char* name) { return g.GetUniformLocation(fp, name); };
+  g.UseProgram(fp);
+  g.UniformMatrix4fv(loc("u_view_projection"), 1, GL_FALSE, vpm.data());
+  g.Uniform1i(loc("u_round"), 0);
+  g.Enable(GL_BLEND);
+  g.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (std::size_t i = 0; i < gpu.spring_lines.size(); ++i) {
+    const auto type = static_cast<std::size_t>(gpu.spring_types[i]);
+    if (!opt.springs[type]) continue;
+    const Eigen::Vector3f& c = colors::kSprings[type];
+    g.Uniform4f(loc("u_color"), c.x(), c.y(), c.z(), kSpringAlpha);
+    g.BindVertexArray(gpu.spring_lines[i].vao);
+    g.DrawElements(GL_LINES, gpu.spring_lines[i].index_count, GL_UNSIGNED_INT, nullptr);
+  }
+  g.Disable(GL_BLEND);
+  if (opt.particles) {
+    g.Enable(GL_PROGRAM_POINT_SIZE);
+    g.Uniform1i(loc("u_round"), 1);
+    g.Uniform1f(loc("u_point_size"),
+                std::max(kMinPointSize, opt.point_size * vp.height / kPointSizeReferenceHeight));
+    const Eigen::Vector3f& c = colors::kParticle;
+    g.Uniform4f(loc("u_color"), c.x(), c.y(), c.z(), 1.0f);
+    g.BindVertexArray(gpu.particles.vao);
+    // A body kind may draw only some of the state's particles as dots (its first ones).
+    GLsizei count = gpu.particles.vertex_count;
+    for (const auto& body : d.bodies_)
+      if (const long n = body->dot_count(world); n >= 0) {
+        count = static_cast<GLsizei>(n);
+        break;
+      }
+    g.DrawArrays(GL_POINTS, 0, count);
+    g.Disable(GL_PROGRAM_POINT_SIZE);
+  }
+  const PointPass points(g, fp, opt.point_size * vp.height / kPointSizeReferenceHeight);
+  for (auto& body : d.bodies_)
+    if (body->has_markers(opt)) body->draw_markers(points, world, opt);
 }
 
 Eigen::Vector2i Renderer::text_size(std::string_view text, float scale) {

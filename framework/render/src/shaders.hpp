@@ -3,9 +3,9 @@
 
 namespace jelly::render::shaders {
 
-// Lit surfaces: terrains, the jelly, the cloth and its spheres. Double-sided: the normal is turned
-// towards the viewer, or, for the cloth (u_two_tone), flipped on back faces, which get their own
-// tint.
+// Lit surfaces: terrains and the bodies' surfaces. Double-sided: the normal is turned
+// towards the viewer, or, for a two-toned sheet (u_two_tone), flipped on back faces, which get
+// their own tint.
 inline constexpr const char* kSurfaceVertex = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -38,7 +38,7 @@ uniform vec3 u_fade_center;    // the plane fades into the sky towards its drawn
 uniform float u_fade_radius;
 uniform vec3 u_sky;
 uniform vec2 u_cavity;         // bowl: (bottom y, rim y); deeper is darker (fake occlusion)
-uniform int u_two_tone;        // 1: a cloth, front (u_color) and back (u_back_color) differ
+uniform int u_two_tone;        // 1: a sheet, front (u_color) and back (u_back_color) differ
 uniform vec3 u_back_color;
 out vec4 frag_color;
 
@@ -72,7 +72,7 @@ void main() {
   vec3 n = normalize(v_normal);
   vec3 v = normalize(u_eye - v_world);
   if (u_two_tone == 1) {
-    // A cloth: the back faces (by winding) take the flipped normal and their own tint.
+    // A sheet: the back faces (by winding) take the flipped normal and their own tint.
     if (!gl_FrontFacing) {
       n = -n;
       base = u_back_color;
@@ -85,7 +85,7 @@ void main() {
   float hemi = 0.5 + 0.5 * n.y;
   vec3 ambient = mix(vec3(0.20, 0.19, 0.18), vec3(0.36, 0.39, 0.45), hemi);
   vec3 c = base * (ambient + 0.78 * max(dot(n, key), 0.0) + 0.22 * max(dot(n, fill), 0.0));
-  if (u_two_tone == 1) c += base * 0.45 * max(-n.y, 0.0);  // light bounced up onto a cloth's underside
+  if (u_two_tone == 1) c += base * 0.45 * max(-n.y, 0.0);  // light bounced up onto a sheet's underside
   vec3 h = normalize(key + v);
   c += u_specular * pow(max(dot(n, h), 0.0), u_shininess) * vec3(1.0);
   float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0);

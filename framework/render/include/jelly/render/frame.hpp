@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "jelly/render/captions.hpp"
 #include "jelly/render/renderer.hpp"
 #include "jelly/session/captions.hpp"
 #include "jelly/session/simulation_run.hpp"

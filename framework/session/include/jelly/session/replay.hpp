@@ -2,8 +2,8 @@
 // trajectory CSV that `jelly run --out` writes, `frame,time,particle,x,y,z[,vx,vy,vz]`, one row
 // per particle per frame. The grader writes the same format for the course scene's frames, so a
 // run that happened elsewhere (the sandboxed grading runner) is drawn without running its code.
-// For a cloth scene a frame may go on, after the state's particles, with the centre of every
-// kinematic sphere in scene order (`jelly render --replay` puts the spheres there).
+// A frame may go on, after the state's particles, with points a body kind records there (its
+// view module's replay points, which `jelly render --replay` places).
 #pragma once
 
 #include <filesystem>

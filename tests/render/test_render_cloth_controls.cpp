@@ -1,16 +1,21 @@
-// The viewer's cloth controls without a window: keys 1–4 flip the corner pins of a World built in
-// code, the arrows' drive follows the view and moves the first kinematic sphere, S stops it.
+// The cloth view module's controls without a window (jelly/bodies/cloth/view/cloth_controls.hpp):
+// keys 1–4 flip the corner pins of a World built in code, the arrows' drive follows the view and
+// moves the first kinematic sphere, S stops it.
 #include <gtest/gtest.h>
 
 #include <memory>
 
 #include "jelly/a2/task_table.hpp"
-#include "jelly/session/captions.hpp"
-#include "jelly/session/cloth_controls.hpp"
+#include "jelly/bodies/cloth/view/cloth_controls.hpp"
+#include "jelly/render/captions.hpp"
 #include "jelly/simulator.hpp"
 
-namespace jelly::session {
+namespace jelly::cloth_view {
 namespace {
+
+using render::caption;
+using session::RunSetup;
+using session::SimulationRun;
 
 /// A 5×5 cloth (corners pinned) and, when asked, a kinematic sphere below it and a dynamic one.
 std::unique_ptr<World> cloth_world(bool spheres) {
@@ -140,4 +145,4 @@ TEST(ClothCaption, SaysOneSphereAndTwoSpheres) {
 }
 
 }  // namespace
-}  // namespace jelly::session
+}  // namespace jelly::cloth_view

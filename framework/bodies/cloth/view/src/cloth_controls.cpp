@@ -1,8 +1,8 @@
-#include "jelly/session/cloth_controls.hpp"
+#include "jelly/bodies/cloth/view/cloth_controls.hpp"
 
 #include <cmath>
 
-namespace jelly::session {
+namespace jelly::cloth_view {
 
 int corner_particle(const ClothGrid& grid, int corner) {
   const int last = grid.n() - 1;
@@ -50,4 +50,4 @@ bool drive_first_kinematic_sphere(World& world, const Vec3& velocity) {
   return true;
 }
 
-}  // namespace jelly::session
+}  // namespace jelly::cloth_view

@@ -1,13 +1,14 @@
 // The viewer's live controls of a cloth scene (assignment A2), as the 2024 course had them: keys
 // 1–4 pin and unpin the cloth's four corners, the arrow keys drive the first kinematic sphere.
-// No GL and no window: the app maps keys onto these, the tests call them directly.
+// No GL and no window: the view's controls (cloth_view.cpp) map keys onto these, the tests call
+// them directly.
 #pragma once
 
 #include <optional>
 
 #include "jelly/world.hpp"
 
-namespace jelly::session {
+namespace jelly::cloth_view {
 
 /// Speed of the arrow keys' drive [m/s]: the cloth-2024 scene's scheduled speed. (The course set
 /// ±5 m/s, but its framework ran at about a quarter of real time: about 1.25 m/s on screen.)
@@ -38,4 +39,4 @@ Vec3 arrow_drive(const Vec3& current, Arrow arrow, double yaw_degrees, double sp
 /// its schedule is ignored until the world is rebuilt). False when there is none.
 bool drive_first_kinematic_sphere(World& world, const Vec3& velocity);
 
-}  // namespace jelly::session
+}  // namespace jelly::cloth_view
