@@ -6,6 +6,9 @@
 #
 #   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE [HOST_HASH]]]
 #   (HOST_HASH may also come from the environment, JELLY_HOST_HASH: CTest sets it)
+#   JELLY_PLATFORM_PHASE=build in the environment: configure and build only, then exit 0. CTest runs
+#   that phase alone (it compiles with JOBS jobs) and then the whole script, whose build finds
+#   everything up to date, beside other tests (the runs under wine or qemu take one core).
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
 #                     under wine; also runs the unit tests that exist on Windows (stubs, session,
@@ -154,6 +157,10 @@ cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCM
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >"$work/build.log" 2>&1 ||
   { grep -E 'error|Error' "$work/build.log" | head -30; die "the $platform build failed (log: $work/build.log)"; }
 say "configured and built ${targets[*]} in $(timer "$t0")"
+if [ "${JELLY_PLATFORM_PHASE:-}" = build ]; then
+  say "build phase done (JELLY_PLATFORM_PHASE=build): the runs and comparisons are the next test's"
+  exit 0
+fi
 jelly="$(find "$build" -name "jelly$exe" -type f | head -1)"
 [ -n "$jelly" ] || die "no jelly$exe under $build"
 
