@@ -200,7 +200,8 @@ for id in "${ids[@]}"; do
     for entry in "${!list}"; do runs+=("$id-${entry}"); done
   else
     # An assignment with no runs of its own here: its default scene for one second.
-    default="$(awk '/^[ \t]*\[/ { exit } /^default_scene[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); print v }' "$src/assignments/$id/assignment.toml")"
+    default="$(python3 "$src/tools/jelly_manifest.py" get "$src/assignments/$id/assignment.toml" default_scene)" ||
+      die "assignments/$id/assignment.toml could not be read (above)"
     [ -n "$default" ] || die "assignments/$id/assignment.toml has no default_scene and check_platform.sh no runs for $id"
     runs+=("$id-default-summary|run %S/scenes/$default.toml --duration 1 --summary @/$id-default.csv")
   fi
