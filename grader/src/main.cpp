@@ -34,10 +34,10 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
+#include "commands/commands.hpp"
 #include "commands/common.hpp"
 #include "jelly/cli_common/command_line.hpp"
-#include "submissions.hpp"
+#include "inputs/submissions.hpp"
 
 #ifdef _WIN32
 #ifndef NOMINMAX

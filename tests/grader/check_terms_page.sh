@@ -8,7 +8,7 @@
 #     or "cloth " before it, or nothing) in the case files and the runner's case code;
 #   - the handout's README links the page.
 # The report's links point at these headings' anchors (tolerance-NAME, contract-N,
-# cloth-contract-N: grader/src/report.cpp, find_terms).
+# cloth-contract-N: grader/src/reports/report.cpp, find_terms).
 #
 #   check_terms_page.sh SOURCE_DIR ID
 set -euo pipefail

@@ -1,4 +1,4 @@
-// The class report (grader/src/class_report.cpp) on made-up student records: no compiler, no
+// The class report (grader/src/class/class_report.cpp) on made-up student records: no compiler, no
 // runner. What it counts, which student it takes as the example, that the same records in
 // another order give the same bytes, that a student's text cannot inject HTML or Markdown, and
 // that the lecture's view names no student and shows no hidden test.
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "class_report.hpp"
-#include "text_safety.hpp"
+#include "class/class_report.hpp"
+#include "reports/text_safety.hpp"
 
 namespace g = jelly::grade;
 using g::Json;

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
-#include "grade.hpp"
-#include "report.hpp"
+#include "inputs/cases.hpp"
+#include "grading/grade.hpp"
+#include "reports/report.hpp"
 
 namespace {
 

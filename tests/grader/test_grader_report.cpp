@@ -2,7 +2,7 @@
 // with its hint, the other failed tests and the passed ones folded; the same order in the terminal,
 // report.md, report.html and Gradescope's results; the messages' words (tolerance 'step',
 // contract §9) linked to the handout page that explains them; hostile text still escaped. And the
-// hints' matching (hints.hpp) on made-up outputs. grader/src/report.cpp and hints.cpp on a made-up
+// hints' matching (hints.hpp) on made-up outputs. grader/src/reports/report.cpp and hints.cpp on a made-up
 // report: no runner, no compiler.
 #include <algorithm>
 #include <cmath>
@@ -14,11 +14,11 @@
 
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "inputs/cases.hpp"
 #include "display_column.hpp"
-#include "grade.hpp"
-#include "hints.hpp"
-#include "report.hpp"
+#include "grading/grade.hpp"
+#include "grading/hints.hpp"
+#include "reports/report.hpp"
 #include "report_text.hpp"
 
 namespace {

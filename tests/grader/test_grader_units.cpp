@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "csv.hpp"
-#include "parallel.hpp"
-#include "symbols.hpp"
-#include "text_safety.hpp"
+#include "class/csv.hpp"
+#include "grading/parallel.hpp"
+#include "build/symbols.hpp"
+#include "reports/text_safety.hpp"
 
 namespace g = jelly::grade;
 

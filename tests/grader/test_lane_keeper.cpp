@@ -1,5 +1,5 @@
 // The keeper of a grader's lanes and the sweep of a dead grader's cgroup
-// (grader/src/lane_keeper.cpp) on a cgroup folder of their own: a process a run detached (setsid +
+// (grader/src/sandbox/lane_keeper.cpp) on a cgroup folder of their own: a process a run detached (setsid +
 // double fork) ends when the grader that owns the folder is killed with SIGKILL, and the folder
 // goes. Needs a writable cgroup (root on cgroup v1 or v2); skipped elsewhere. A second or two.
 #include <signal.h>
@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lane_keeper.hpp"
+#include "sandbox/lane_keeper.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-// The sandbox's secret list (grader/src/isolation.cpp, secrets_of, as choose_isolation hands it
+// The sandbox's secret list (grader/src/sandbox/isolation.cpp, secrets_of, as choose_isolation hands it
 // to every sandbox): every assignment's hidden data, cases, mutants, reference and reference
 // runner, whichever assignment is graded. A submission of one assignment must not read another's.
 // Checked on this build's grade-config.json, and on a copy of it with a second assignment beside
@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "config.hpp"
-#include "isolation.hpp"
+#include "inputs/config.hpp"
+#include "sandbox/isolation.hpp"
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;

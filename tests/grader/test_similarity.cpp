@@ -1,4 +1,4 @@
-// `jelly-grade similarity` (grader/src/similarity.hpp) on a synthetic class: a copy of the
+// `jelly-grade similarity` (grader/src/class/similarity.hpp) on a synthetic class: a copy of the
 // reference with its identifiers renamed, its indentation changed and its comments replaced is
 // found; an independent correct solution (tests/grader/similarity/independent/) and a submission of
 // the bare stubs are not; hostile names and text reach the page escaped. Needs sim_c++ (Debian

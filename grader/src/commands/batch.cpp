@@ -1,4 +1,4 @@
-#include "commands.hpp"
+#include "commands/commands.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -12,13 +12,13 @@
 #define JELLY_STDERR_IS_TTY() (isatty(2) != 0)
 #endif
 
-#include "class_record.hpp"
+#include "class/class_record.hpp"
 #include "commands/common.hpp"
-#include "csv.hpp"
-#include "parallel.hpp"
-#include "report.hpp"
-#include "submissions.hpp"
-#include "text_safety.hpp"
+#include "class/csv.hpp"
+#include "grading/parallel.hpp"
+#include "reports/report.hpp"
+#include "inputs/submissions.hpp"
+#include "reports/text_safety.hpp"
 
 namespace jelly::grade {
 

@@ -5,11 +5,11 @@
 #include <iostream>
 #include <mutex>
 
-#include "commands.hpp"
+#include "commands/commands.hpp"
 #include "commands/common.hpp"
-#include "files.hpp"
-#include "hints.hpp"
-#include "parallel.hpp"
+#include "inputs/files.hpp"
+#include "grading/hints.hpp"
+#include "grading/parallel.hpp"
 
 namespace jelly::grade {
 

@@ -3,11 +3,11 @@
 #include <set>
 #include <stdexcept>
 
-#include "class_record.hpp"
-#include "commands.hpp"
-#include "csv.hpp"
-#include "files.hpp"
-#include "text_safety.hpp"
+#include "class/class_record.hpp"
+#include "commands/commands.hpp"
+#include "class/csv.hpp"
+#include "inputs/files.hpp"
+#include "reports/text_safety.hpp"
 
 namespace jelly::grade {
 

@@ -1,4 +1,4 @@
-#include "commands.hpp"
+#include "commands/commands.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,8 @@
 #include <toml++/toml.h>
 
 #include "commands/common.hpp"
-#include "files.hpp"
-#include "parallel.hpp"
+#include "inputs/files.hpp"
+#include "grading/parallel.hpp"
 
 namespace jelly::grade {
 
