@@ -1,9 +1,9 @@
 // The shared artefacts of the object cache (the stubs' objects, the precompiled task headers) are
 // built once when many workers need them at the same time, as at the start of a batch: the others
-// wait for that build and take its result (grader/src/build/build.cpp, ArtefactLock). Proved by counting
-// the compiler's runs through a wrapper that logs each one and sleeps, so that every worker starts
-// while the cache is still empty; two processes of three workers each share one cache, as shards
-// on one machine do. A made-up two-file assignment keeps each compile short.
+// wait for that build and take its result (grader/src/build/build.cpp, ArtefactLock). Proved by
+// counting the compiler's runs through a wrapper that logs each one and sleeps, so that every
+// worker starts while the cache is still empty; two processes of three workers each share one
+// cache, as shards on one machine do. A made-up two-file assignment keeps each compile short.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,9 +17,9 @@
 #include <gtest/gtest.h>
 
 #include "build/build.hpp"
+#include "grading/parallel.hpp"
 #include "inputs/config.hpp"
 #include "inputs/files.hpp"
-#include "grading/parallel.hpp"
 
 namespace g = jelly::grade;
 namespace fs = std::filesystem;

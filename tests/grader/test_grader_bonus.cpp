@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "inputs/cases.hpp"
 #include "grading/grade.hpp"
+#include "inputs/cases.hpp"
 #include "reports/report.hpp"
 
 namespace {

@@ -2,8 +2,8 @@
 // with its hint, the other failed tests and the passed ones folded; the same order in the terminal,
 // report.md, report.html and Gradescope's results; the messages' words (tolerance 'step',
 // contract §9) linked to the handout page that explains them; hostile text still escaped. And the
-// hints' matching (hints.hpp) on made-up outputs. grader/src/reports/report.cpp and hints.cpp on a made-up
-// report: no runner, no compiler.
+// hints' matching (hints.hpp) on made-up outputs. grader/src/reports/report.cpp and hints.cpp on a
+// made-up report: no runner, no compiler.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -14,12 +14,12 @@
 
 #include <gtest/gtest.h>
 
-#include "inputs/cases.hpp"
 #include "display_column.hpp"
 #include "grading/grade.hpp"
 #include "grading/hints.hpp"
-#include "reports/report.hpp"
+#include "inputs/cases.hpp"
 #include "report_text.hpp"
+#include "reports/report.hpp"
 
 namespace {
 

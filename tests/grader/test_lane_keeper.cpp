@@ -1,7 +1,8 @@
 // The keeper of a grader's lanes and the sweep of a dead grader's cgroup
-// (grader/src/sandbox/lane_keeper.cpp) on a cgroup folder of their own: a process a run detached (setsid +
-// double fork) ends when the grader that owns the folder is killed with SIGKILL, and the folder
-// goes. Needs a writable cgroup (root on cgroup v1 or v2); skipped elsewhere. A second or two.
+// (grader/src/sandbox/lane_keeper.cpp) on a cgroup folder of their own: a process a run detached
+// (setsid + double fork) ends when the grader that owns the folder is killed with SIGKILL, and the
+// folder goes. Needs a writable cgroup (root on cgroup v1 or v2); skipped elsewhere. A second or
+// two.
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>

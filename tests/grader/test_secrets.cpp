@@ -1,9 +1,9 @@
-// The sandbox's secret list (grader/src/sandbox/isolation.cpp, secrets_of, as choose_isolation hands it
-// to every sandbox): every assignment's hidden data, cases, mutants, reference and reference
-// runner, whichever assignment is graded. A submission of one assignment must not read another's.
-// Checked on this build's grade-config.json, and on a copy of it with a second assignment beside
-// a1 (a folder with its own manifest, solutions and reference runner): grading a1, the other's
-// secrets are hidden too, and grading the other, a1's.
+// The sandbox's secret list (grader/src/sandbox/isolation.cpp, secrets_of, as choose_isolation
+// hands it to every sandbox): every assignment's hidden data, cases, mutants, reference and
+// reference runner, whichever assignment is graded. A submission of one assignment must not read
+// another's. Checked on this build's grade-config.json, and on a copy of it with a second
+// assignment beside a1 (a folder with its own manifest, solutions and reference runner): grading
+// a1, the other's secrets are hidden too, and grading the other, a1's.
 #include <filesystem>
 #include <fstream>
 #include <sstream>

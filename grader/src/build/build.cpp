@@ -15,12 +15,12 @@
 #include <set>
 #include <sstream>
 
+#include "build/symbols.hpp"
+#include "grading/parallel.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/files.hpp"
-#include "grading/parallel.hpp"
-#include "sandbox/process.hpp"
-#include "build/symbols.hpp"
 #include "reports/text_safety.hpp"
+#include "sandbox/process.hpp"
 
 namespace jelly::grade {
 
@@ -288,6 +288,26 @@ const FrameworkSymbols& framework_symbols(const GradeConfig& config, const std::
 
 namespace {
 
+// A refused symbol as the student reads it: its C++ name from a line of `nm -p -C -P` ("NAME
+// TYPE VALUE [SIZE]", spaces in NAME) with the mangled name after it, or the mangled name alone.
+std::string shown_symbol_name(std::string cxx, const DefinedSymbol& symbol) {
+  // Drop the hexadecimal fields, then the type.
+  for (int field = 0; field < 2; ++field) {
+    const auto sp = cxx.rfind(' ');
+    if (sp == std::string::npos ||
+        cxx.find_first_not_of("0123456789abcdef", sp + 1) != std::string::npos)
+      break;
+    cxx.resize(sp);
+  }
+  const std::string type_field = std::string(" ") + symbol.type;
+  if (cxx.size() > type_field.size() &&
+      cxx.compare(cxx.size() - type_field.size(), type_field.size(), type_field) == 0)
+    cxx.resize(cxx.size() - type_field.size());
+  else
+    cxx.clear();
+  return cxx.empty() || cxx == symbol.name ? symbol.name : cxx + " (" + symbol.name + ")";
+}
+
 // One submission's build: what its steps share, and the steps, in the order build_submission
 // takes them.
 class SubmissionBuild {
@@ -359,81 +379,17 @@ class SubmissionBuild {
   //    stubs. Throws when a stub does not compile (a grader error).
   void compile_all(int jobs) {
     choose_flags();
-    struct Job {
-      std::string name;
-      bool stub;
-    };
-    std::vector<Job> compiles;  // started in this order
+    std::vector<CompileJob> compiles;  // started in this order
     for (const std::string& name : files_) {
       if (!broken_.count(name)) compiles.push_back({name, false});
       compiles.push_back({name, true});
     }
     std::mutex mutex;
     std::map<std::string, std::string> stub_failed;  // stub → what the compiler (or system) said
-    auto compile = [&](const Job& job) {
-      const fs::path dir = job.stub ? stubs_ : src_;
-      const std::string text = read_file(dir / job.name);
-      const fs::path cached =
-          config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + job.name + "\n" + text) + ".o");
-      const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
-      std::error_code ec;
-      const auto reuse = [&] {
-        return fs::exists(cached, ec) &&
-               fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
-      };
-      if (reuse()) return;
-      // Not cached: whoever else needs the same object now (the stubs, at the start of a batch)
-      // waits for this compile and copies its result.
-      const ArtefactLock building(cached);
-      if (reuse()) return;
-      std::vector<std::string> argv = base_;
-      argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
-      SandboxView view;
-      view.writable = {work_dir_};
-      view.read_only = include_views_;
-      view.cwd = dir;
-      view.gid = gid_;
-      const ChildResult c = run_isolated(iso_, argv, view, tool_limits());
-      const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
-      // An object that compiled goes to the cache: a stub's too, or every submission that hands in
-      // all five files would compile the five stubs again (only a submission that handed in a
-      // stub unchanged used to put it there).
-      const auto keep = [&] {
-        const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + job.name +
-                             (job.stub ? ".stub" : "");
-        fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
-        if (!ec) fs::rename(tmp, cached, ec);
-      };
-      if (job.stub) {
-        if (ok) keep();
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!ok) {
-          const std::string hit = limit_hit("compiling the stub " + job.name, c, c.err, limits_);
-          stub_failed[job.name] = !c.started ? "the compiler could not be started: " + c.start_error
-                                  : !hit.empty() ? hit
-                                                 : cut_utf8(c.err + c.out, 600);
-        }
-        return;
-      }
-      std::string msg = filter_diagnostics(c.err + c.out, src_, allowed_);
-      const std::string hit = limit_hit("compiling " + job.name, c, c.err + c.out, limits_);
-      if (!hit.empty()) msg = job.name + ": error: " + hit + hint(hit) + "\n" + msg;
-      if (!c.started)
-        msg +=
-            job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!ok) {
-        broken_[job.name] = "did not compile";
-        messages_[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
-      } else {
-        if (!msg.empty()) messages_[job.name] = msg;  // warnings
-        keep();
-      }
-    };
     parallel_for(compiles.size(), std::max(1, jobs), [&](std::size_t k) {
-      const Job& job = compiles[k];
+      const CompileJob& job = compiles[k];
       try {
-        compile(job);
+        compile(job, mutex, stub_failed);
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex);
         if (job.stub) {
@@ -514,23 +470,8 @@ class SubmissionBuild {
           std::istringstream in(d.out);
           for (std::string l; std::getline(in, l);) demangled.push_back(l);
         }
-        // "NAME TYPE VALUE [SIZE]" with spaces in NAME: drop the hexadecimal fields, then the type.
-        std::string cxx = k < demangled.size() ? demangled[k] : "";
-        for (int field = 0; field < 2; ++field) {
-          const auto sp = cxx.rfind(' ');
-          if (sp == std::string::npos ||
-              cxx.find_first_not_of("0123456789abcdef", sp + 1) != std::string::npos)
-            break;
-          cxx.resize(sp);
-        }
-        const std::string type_field = std::string(" ") + syms[k].type;
-        if (cxx.size() > type_field.size() &&
-            cxx.compare(cxx.size() - type_field.size(), type_field.size(), type_field) == 0)
-          cxx.resize(cxx.size() - type_field.size());
-        else
-          cxx.clear();
         const std::string shown_symbol =
-            cxx.empty() || cxx == syms[k].name ? syms[k].name : cxx + " (" + syms[k].name + ")";
+            shown_symbol_name(k < demangled.size() ? demangled[k] : "", syms[k]);
         why += shown_[name] + ": error: defines the external symbol " + shown_symbol + ", which " +
                reason + ".\n";
         if (why.size() > 4000) break;
@@ -595,6 +536,75 @@ class SubmissionBuild {
   }
 
  private:
+  struct CompileJob {
+    std::string name;
+    bool stub;
+  };
+
+  // One compile of compile_all: from the cache when the same text was compiled with the same
+  // flags, else in the sandbox; a stub's failure goes to `stub_failed`, a submission file's to
+  // broken_ and messages_ (under `mutex`).
+  void compile(const CompileJob& job, std::mutex& mutex,
+               std::map<std::string, std::string>& stub_failed) {
+    const fs::path dir = job.stub ? stubs_ : src_;
+    const std::string text = read_file(dir / job.name);
+    const fs::path cached =
+        config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + job.name + "\n" + text) + ".o");
+    const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
+    std::error_code ec;
+    const auto reuse = [&] {
+      return fs::exists(cached, ec) &&
+             fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec);
+    };
+    if (reuse()) return;
+    // Not cached: whoever else needs the same object now (the stubs, at the start of a batch)
+    // waits for this compile and copies its result.
+    const ArtefactLock building(cached);
+    if (reuse()) return;
+    std::vector<std::string> argv = base_;
+    argv.insert(argv.end(), {"-c", job.name, "-o", out.string()});
+    SandboxView view;
+    view.writable = {work_dir_};
+    view.read_only = include_views_;
+    view.cwd = dir;
+    view.gid = gid_;
+    const ChildResult c = run_isolated(iso_, argv, view, tool_limits());
+    const bool ok = c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started;
+    // An object that compiled goes to the cache: a stub's too, or every submission that hands in
+    // all five files would compile the five stubs again (only a submission that handed in a
+    // stub unchanged used to put it there).
+    const auto keep = [&] {
+      const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + job.name +
+                           (job.stub ? ".stub" : "");
+      fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
+      if (!ec) fs::rename(tmp, cached, ec);
+    };
+    if (job.stub) {
+      if (ok) keep();
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!ok) {
+        const std::string hit = limit_hit("compiling the stub " + job.name, c, c.err, limits_);
+        stub_failed[job.name] = !c.started ? "the compiler could not be started: " + c.start_error
+                                : !hit.empty() ? hit
+                                               : cut_utf8(c.err + c.out, 600);
+      }
+      return;
+    }
+    std::string msg = filter_diagnostics(c.err + c.out, src_, allowed_);
+    const std::string hit = limit_hit("compiling " + job.name, c, c.err + c.out, limits_);
+    if (!hit.empty()) msg = job.name + ": error: " + hit + hint(hit) + "\n" + msg;
+    if (!c.started)
+      msg += job.name + ": error: the grader could not start the compiler: " + c.start_error + "\n";
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!ok) {
+      broken_[job.name] = "did not compile";
+      messages_[job.name] = msg.empty() ? job.name + ": error: compiling failed\n" : msg;
+    } else {
+      if (!msg.empty()) messages_[job.name] = msg;  // warnings
+      keep();
+    }
+  }
+
   // The compiler's command line and the cache key of what an object was compiled from; what the
   // compiler may see and what of its messages a student may see.
   void choose_flags() {

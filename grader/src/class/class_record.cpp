@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "class/class_report.hpp"
-#include "commands/common.hpp"
 #include "class/csv.hpp"
 #include "inputs/files.hpp"
+#include "reports/points.hpp"
 #include "reports/text_safety.hpp"
 
 namespace jelly::grade {

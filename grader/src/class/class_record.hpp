@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "inputs/cases.hpp"
 #include "grading/grade.hpp"
+#include "inputs/cases.hpp"
 #include "inputs/submissions.hpp"
 
 namespace jelly::grade {

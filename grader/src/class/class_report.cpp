@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "class/class_report_fields.hpp"
-#include "commands/common.hpp"
+#include "reports/points.hpp"
 #include "reports/text_safety.hpp"
 
 namespace jelly::grade {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "class/class_report_fields.hpp"
-#include "commands/common.hpp"
+#include "reports/points.hpp"
 #include "reports/text_safety.hpp"
 
 // The two views of the class summary (class_report.hpp), in Markdown and in HTML: the lecture's

@@ -14,8 +14,8 @@
 
 #include "class/csv.hpp"
 #include "inputs/files.hpp"
-#include "sandbox/process.hpp"
 #include "reports/text_safety.hpp"
+#include "sandbox/process.hpp"
 
 namespace jelly::grade {
 

@@ -1,5 +1,5 @@
 // The jelly-grade commands, one file each in commands/ (main.cpp reads the command line and calls
-// one of them; commands/common.hpp holds what they share).
+// one of them; reports/points.hpp writes the points they print).
 #pragma once
 
 #include <filesystem>
@@ -8,9 +8,9 @@
 #include <tuple>
 #include <vector>
 
-#include "inputs/cases.hpp"
-#include "grading/grade.hpp"
 #include "class/similarity.hpp"
+#include "grading/grade.hpp"
+#include "inputs/cases.hpp"
 #include "inputs/submissions.hpp"
 
 namespace jelly::grade {

@@ -16,6 +16,7 @@
 
 #include "grading/hints.hpp"
 #include "grading/parallel.hpp"
+#include "grading/tolerance.hpp"
 #include "reports/text_safety.hpp"
 
 namespace jelly::grade {
@@ -102,9 +103,9 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   std::size_t bad = 0, first = 0, worst = 0;
   double worst_excess = -1.0;
   for (std::size_t k = 0; k < a.size(); ++k) {
-    const double allowed = tol.atol + tol.rtol * std::abs(b[k]);
+    const double allowed = allowed_difference(b[k], tol.atol, tol.rtol);
     const double diff = std::abs(a[k] - b[k]);
-    if (!std::isfinite(a[k]) || !(diff <= allowed)) {
+    if (!std::isfinite(a[k]) || !within_tolerance(a[k], b[k], tol.atol, tol.rtol)) {
       if (bad == 0) first = k;
       ++bad;
       const double excess =
@@ -119,7 +120,7 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
       (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity (not a number)"));
   if (std::isfinite(a[k]))
     msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " +
-           fmt(tol.atol + tol.rtol * std::abs(b[k])) + " by tolerance '" + tol.name + "')";
+           fmt(allowed_difference(b[k], tol.atol, tol.rtol)) + " by tolerance '" + tol.name + "')";
   if (a.size() > 1)
     msg += "; " + std::to_string(bad) + " of " + std::to_string(a.size()) + " numbers differ";
   // What the value is made of, when the case says (e.g. which springs are missing or extra).
@@ -216,6 +217,93 @@ void say_blow_up_plainly(CaseResult& r) {
                         "test's other failures follow from that");
 }
 
+// The runner's result channel (file descriptor 3) read as JSON; `parsed` when it is an object.
+Json read_result(const ChildResult& c, bool& parsed) {
+  Json result;
+  parsed = false;
+  if (!c.result.empty()) {
+    try {
+      result = Json::parse(c.result);
+      parsed = result.is_object();
+    } catch (const std::exception&) {
+    }
+  }
+  return result;
+}
+
+// Why a run is no result to judge ("" when it is one): it did not start, was stopped, crashed,
+// ended early, threw, or its result is unreadable.
+std::string run_problem(const ChildResult& c, const Json& result, bool parsed, double timeout,
+                        const std::string& in_task) {
+  const bool malformed = !c.result.empty() && !parsed;
+  if (!c.started) return "the grader could not start your program: " + c.start_error;
+  if (parsed && result.contains("forbidden_syscall") &&
+      result["forbidden_syscall"].is_number_integer()) {
+    const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
+    return "your code tried to " + describe_syscall_purpose(name) + " (system call " + name + ")" +
+           in_task +
+           "; reading or writing files, starting programs and networking are not allowed "
+           "while grading";
+  }
+  if (c.timed_out)
+    return "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" + in_task;
+  if (c.output_flood)
+    return "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
+#ifdef SIGXCPU
+  if (c.signal == SIGXCPU) return "used more than its CPU time limit (an infinite loop?)" + in_task;
+#endif
+  if (c.signal != 0) return "crashed with " + describe_signal(c.signal) + in_task;
+  if (malformed)
+    return "the test's result could not be read (something wrote to the grader's result "
+           "channel, file descriptor 3?)" +
+           in_task;
+  if (!parsed && c.exit_code == 0)
+    return "your code ended the program before the test finished (exit() called?)" + in_task;
+  if (!parsed)
+    return "the program ended with exit code " + std::to_string(c.exit_code) +
+           " before the test finished (exit() called, or out of memory?)" + in_task;
+  if (result.contains("error")) {
+    std::string e =
+        result["error"].is_string() ? result["error"].get<std::string>() : result["error"].dump();
+    if (e.find("bad_alloc") != std::string::npos) e += " (more than the memory limit of 1 GiB?)";
+    return e + in_task;
+  }
+  if (!result.contains("outputs") || !result["outputs"].is_object())
+    return "the test's result has no outputs (something wrote to the grader's result channel, "
+           "file descriptor 3?)" +
+           in_task;
+  return "";
+}
+
+// The kind of an abnormal end, as the reports group them ("" when none of them).
+std::string abnormal_kind(const ChildResult& c, const Json& result, bool parsed,
+                          const std::vector<std::string>& caps) {
+  if (c.timed_out) return "timed out";
+#ifdef SIGXCPU
+  if (c.signal == SIGXCPU) return "timed out";
+#endif
+  if (!caps.empty() || (parsed && result.contains("forbidden_syscall")) || c.output_flood)
+    return "refused";
+  if (c.signal != 0) return "crashed";
+  if (!parsed) return "ended early";
+  if (result.contains("error")) return "threw";
+  return "";
+}
+
+// Judges every reference output of `r` against its outputs.
+void judge_outputs(CaseResult& r, const CaseBook& book) {
+  bool ok = true;
+  for (const auto& [name, refout] : r.reference.items()) {
+    const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
+    ok = judge(name, mine.is_object() ? mine : Json(), refout, r.spec->rule_for(name),
+               book.tolerances, r.failures) &&
+         ok;
+  }
+  if (!ok) say_blow_up_plainly(r);
+  r.status = ok ? "passed" : "failed";
+  r.score = ok ? r.max_score : 0.0;
+}
+
 // Runs case `r` with `runner` and judges it against `ref`. Throws on a result it cannot digest;
 // the caller makes that the test's failure.
 void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const CaseBook& book,
@@ -232,92 +320,21 @@ void run_and_judge(CaseResult& r, const Json& ref, const fs::path& runner, const
   // Cut on a character boundary; made safe to show by make_safe.
   r.printed = safe_excerpt(c.out, 2000);
   if (!c.err.empty()) r.printed += (r.printed.empty() ? "" : "\n") + safe_excerpt(c.err, 2000);
-  Json result;
   bool parsed = false;
-  if (!c.result.empty()) {
-    try {
-      result = Json::parse(c.result);
-      parsed = result.is_object();
-    } catch (const std::exception&) {
-    }
-  }
-  const bool malformed = !c.result.empty() && !parsed;
-  std::string problem;
-  if (!c.started)
-    problem = "the grader could not start your program: " + c.start_error;
-  else if (parsed && result.contains("forbidden_syscall") &&
-           result["forbidden_syscall"].is_number_integer()) {
-    const std::string name = syscall_name(result["forbidden_syscall"].get<int>());
-    problem = "your code tried to " + describe_syscall_purpose(name) + " (system call " + name +
-              ")" + in_task +
-              "; reading or writing files, starting programs and networking are not allowed "
-              "while grading";
-  } else if (c.timed_out) {
-    problem =
-        "took longer than " + fmt(timeout) + " s and was stopped (an infinite loop?)" + in_task;
-  } else if (c.output_flood) {
-    problem = "printed more than 64 MiB and was stopped (printing inside a loop?)" + in_task;
-  }
-#ifdef SIGXCPU
-  else if (c.signal == SIGXCPU) {
-    problem = "used more than its CPU time limit (an infinite loop?)" + in_task;
-  }
-#endif
-  else if (c.signal != 0) {
-    problem = "crashed with " + describe_signal(c.signal) + in_task;
-  } else if (malformed) {
-    problem =
-        "the test's result could not be read (something wrote to the grader's result "
-        "channel, file descriptor 3?)" +
-        in_task;
-  } else if (!parsed && c.exit_code == 0) {
-    problem = "your code ended the program before the test finished (exit() called?)" + in_task;
-  } else if (!parsed) {
-    problem = "the program ended with exit code " + std::to_string(c.exit_code) +
-              " before the test finished (exit() called, or out of memory?)" + in_task;
-  } else if (result.contains("error")) {
-    std::string e =
-        result["error"].is_string() ? result["error"].get<std::string>() : result["error"].dump();
-    if (e.find("bad_alloc") != std::string::npos) e += " (more than the memory limit of 1 GiB?)";
-    problem = e + in_task;
-  } else if (!result.contains("outputs") || !result["outputs"].is_object()) {
-    problem =
-        "the test's result has no outputs (something wrote to the grader's result channel, "
-        "file descriptor 3?)" +
-        in_task;
-  }
+  const Json result = read_result(c, parsed);
+  const std::string problem = run_problem(c, result, parsed, timeout, in_task);
   // What the run did to the machine fails the test whatever its outputs.
   const std::vector<std::string> caps = sandbox_problems(c, options.memory_bytes, in_task);
   if (!problem.empty() || !caps.empty()) {
     r.status = "failed";
-    if (c.timed_out) r.abnormal = "timed out";
-#ifdef SIGXCPU
-    else if (c.signal == SIGXCPU)
-      r.abnormal = "timed out";
-#endif
-    else if (!caps.empty() || (parsed && result.contains("forbidden_syscall")) || c.output_flood)
-      r.abnormal = "refused";
-    else if (c.signal != 0)
-      r.abnormal = "crashed";
-    else if (!parsed)
-      r.abnormal = "ended early";
-    else if (result.contains("error"))
-      r.abnormal = "threw";
+    if (const std::string kind = abnormal_kind(c, result, parsed, caps); !kind.empty())
+      r.abnormal = kind;
     r.failures = caps;
     if (!problem.empty()) r.failures.push_back(problem);
     return;
   }
   r.outputs = result.at("outputs");
-  bool ok = true;
-  for (const auto& [name, refout] : r.reference.items()) {
-    const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
-    ok = judge(name, mine.is_object() ? mine : Json(), refout, r.spec->rule_for(name),
-               book.tolerances, r.failures) &&
-         ok;
-  }
-  if (!ok) say_blow_up_plainly(r);
-  r.status = ok ? "passed" : "failed";
-  r.score = ok ? r.max_score : 0.0;
+  judge_outputs(r, book);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "grading/tolerance.hpp"
 #include "inputs/files.hpp"
 
 namespace jelly::grade {
@@ -28,7 +29,7 @@ bool same_value(const Json& mine, const Json& theirs, double atol, double rtol) 
       if (std::isfinite(b[k]) != std::isfinite(a[k])) return false;
       continue;
     }
-    if (!(std::abs(a[k] - b[k]) <= atol + rtol * std::abs(b[k]))) return false;
+    if (!within_tolerance(a[k], b[k], atol, rtol)) return false;
   }
   return true;
 }

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "inputs/cases.hpp"
 #include "grading/grade.hpp"
+#include "inputs/cases.hpp"
 
 namespace jelly::grade {
 

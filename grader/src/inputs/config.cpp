@@ -25,7 +25,10 @@ fs::path GradeConfig::cache_dir() const {
   return binary_dir / "grader" / "object-cache";
 }
 
-GradeConfig load_config(const std::string& path) {
+namespace {
+
+// The config file: `path`, else $JELLY_GRADE_CONFIG, else the one this build wrote.
+std::string config_file(const std::string& path) {
   std::string p = path;
   if (p.empty()) {
     if (const char* env = std::getenv("JELLY_GRADE_CONFIG")) p = env;
@@ -33,6 +36,10 @@ GradeConfig load_config(const std::string& path) {
 #ifdef JELLY_GRADE_DEFAULT_CONFIG
   if (p.empty()) p = JELLY_GRADE_DEFAULT_CONFIG;
 #endif
+  return p;
+}
+
+nlohmann::json read_json(const std::string& p) {
   std::ifstream in(p);
   if (!in)
     throw std::runtime_error("cannot read the grader config " + p +
@@ -43,32 +50,60 @@ GradeConfig load_config(const std::string& path) {
   } catch (const std::exception& e) {
     throw std::runtime_error(p + ": not valid JSON: " + e.what());
   }
-  auto strings = [&](const char* key) {
-    std::vector<std::string> out;
-    if (!j.contains(key) || !j[key].is_array())
-      throw std::runtime_error(p + ": missing array '" + key + "'");
-    for (const auto& s : j[key]) {
-      const std::string v = s.get<std::string>();
-      // /usr/include is searched anyway; naming it with -I breaks libstdc++'s #include_next.
-      if (!v.empty() && v != "/usr/include") out.push_back(v);
-    }
-    return out;
-  };
-  auto field = [&](const nlohmann::json& o, const char* key, const std::string& where) {
+  return j;
+}
+
+// The strings of a JSON array of paths or flags, without the empty ones and /usr/include.
+std::vector<std::string> string_list(const nlohmann::json& array) {
+  std::vector<std::string> out;
+  for (const auto& s : array) {
+    const std::string v = s.get<std::string>();
+    // /usr/include is searched anyway; naming it with -I breaks libstdc++'s #include_next.
+    if (!v.empty() && v != "/usr/include") out.push_back(v);
+  }
+  return out;
+}
+
+// One entry of "assignments" (`where`: "assignments.<id>." for the errors), with its manifest.
+AssignmentConfig read_assignment(const std::string& p, const std::string& id,
+                                 const nlohmann::json& o) {
+  const std::string where = "assignments." + id + ".";
+  auto field = [&](const char* key) {
     if (!o.contains(key) || !o[key].is_string())
       throw std::runtime_error(p + ": " + where + key + ": expected a string");
     return o[key].get<std::string>();
   };
-  auto list = [&](const nlohmann::json& o, const char* key, const std::string& where) {
-    std::vector<std::string> out;
+  auto list = [&](const char* key) {
     if (!o.contains(key) || !o[key].is_array())
       throw std::runtime_error(p + ": " + where + key + ": expected an array");
-    for (const auto& s : o[key]) {
-      const std::string v = s.get<std::string>();
-      // /usr/include is searched anyway; naming it with -I breaks libstdc++'s #include_next.
-      if (!v.empty() && v != "/usr/include") out.push_back(v);
-    }
-    return out;
+    return string_list(o[key]);
+  };
+  AssignmentConfig a;
+  a.id = id;
+  a.dir = field("dir");
+  a.solutions_dir = field("solutions_dir");
+  a.include_dirs = list("include_dirs");
+  a.link_objects = list("link_objects");
+  a.link_libraries = list("link_libraries");
+  a.reference_runner = o.value("reference_runner", "");
+  a.student_runner = o.value("student_runner", "");
+  try {
+    a.manifest = read_manifest(a.dir / "assignment.toml");
+  } catch (const ManifestError& e) {
+    throw std::runtime_error(e.what());
+  }
+  return a;
+}
+
+}  // namespace
+
+GradeConfig load_config(const std::string& path) {
+  const std::string p = config_file(path);
+  nlohmann::json j = read_json(p);
+  auto strings = [&](const char* key) {
+    if (!j.contains(key) || !j[key].is_array())
+      throw std::runtime_error(p + ": missing array '" + key + "'");
+    return string_list(j[key]);
   };
   GradeConfig c;
   c.compiler = j.at("compiler").get<std::string>();
@@ -85,24 +120,8 @@ GradeConfig load_config(const std::string& path) {
     throw std::runtime_error(p +
                              ": assignments: expected an object with one entry per assignment "
                              "(rebuild: this config predates assignments as plug-ins)");
-  for (const auto& [id, o] : j["assignments"].items()) {
-    const std::string where = "assignments." + id + ".";
-    AssignmentConfig a;
-    a.id = id;
-    a.dir = field(o, "dir", where);
-    a.solutions_dir = field(o, "solutions_dir", where);
-    a.include_dirs = list(o, "include_dirs", where);
-    a.link_objects = list(o, "link_objects", where);
-    a.link_libraries = list(o, "link_libraries", where);
-    a.reference_runner = o.value("reference_runner", "");
-    a.student_runner = o.value("student_runner", "");
-    try {
-      a.manifest = read_manifest(a.dir / "assignment.toml");
-    } catch (const ManifestError& e) {
-      throw std::runtime_error(e.what());
-    }
-    c.assignments.push_back(std::move(a));
-  }
+  for (const auto& [id, o] : j["assignments"].items())
+    c.assignments.push_back(read_assignment(p, id, o));
   std::sort(c.assignments.begin(), c.assignments.end(),
             [](const AssignmentConfig& x, const AssignmentConfig& y) { return x.id < y.id; });
   return c;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "inputs/files.hpp"
+#include "reports/text_safety.hpp"
 #include "sandbox/process.hpp"
 
 namespace jelly::grade {
@@ -32,24 +33,6 @@ struct Line {
 
 [[noreturn]] void yaml_error(const std::string& file, int line, const std::string& what) {
   throw std::runtime_error(file + ":" + std::to_string(line) + ": " + what);
-}
-
-void append_utf8(std::string& out, std::uint32_t c) {
-  if (c < 0x80) {
-    out += static_cast<char>(c);
-  } else if (c < 0x800) {
-    out += static_cast<char>(0xC0 | (c >> 6));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else if (c < 0x10000) {
-    out += static_cast<char>(0xE0 | (c >> 12));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (c >> 18));
-    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  }
 }
 
 std::string trim(const std::string& s) {

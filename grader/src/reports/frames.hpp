@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "inputs/config.hpp"
 #include "grading/grade.hpp"
+#include "inputs/config.hpp"
 
 namespace jelly::grade {
 

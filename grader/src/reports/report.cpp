@@ -11,17 +11,12 @@
 #include "inputs/files.hpp"
 #include "jelly/cli_common/text_table.hpp"
 #include "reports/plot.hpp"
+#include "reports/points.hpp"
 #include "reports/text_safety.hpp"
 
 namespace jelly::grade {
 
 namespace {
-
-std::string pts(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
 
 // "72.50 / 80.00", and with a bonus task "72.50 / 80.00 + bonus 5.00 / 5.00": the bonus is never
 // part of the total it is added to (an assignment without one reads as before).

@@ -6,8 +6,8 @@
 #include <set>
 #include <string>
 
-#include "reports/frames.hpp"
 #include "grading/grade.hpp"
+#include "reports/frames.hpp"
 
 namespace jelly::grade {
 

@@ -8,6 +8,9 @@
 
 namespace jelly::grade {
 
+/// Appends the code point `cp` (at most U+10FFFF) to `out` in UTF-8.
+void append_utf8(std::string& out, unsigned cp);
+
 /// `s` as valid UTF-8: every byte that does not start a well-formed character (invalid lead bytes,
 /// truncated or overlong sequences, UTF-16 surrogates, code points above U+10FFFF) becomes U+FFFD.
 std::string valid_utf8(const std::string& s);

@@ -191,96 +191,114 @@ bool quota_writable(const fs::path& parent, bool v2) {
   return ok;
 }
 
+// Where the cgroup file systems are mounted (/proc/self/mountinfo): cgroup v2's mount and root,
+// and the v1 memory, pids and cpu hierarchies' (controller -> (mount, root)).
+struct CgroupMounts {
+  fs::path v2_mount;
+  std::string v2_root;
+  std::map<std::string, std::pair<fs::path, std::string>> v1;
+};
+
+CgroupMounts cgroup_mounts() {
+  CgroupMounts m;
+  std::istringstream in(read_small("/proc/self/mountinfo"));
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto dash = line.find(" - ");
+    if (dash == std::string::npos) continue;
+    std::istringstream a(line.substr(0, dash)), b(line.substr(dash + 3));
+    std::string id, parent, dev, root, mount, fstype, source, super;
+    a >> id >> parent >> dev >> root >> mount;
+    b >> fstype >> source >> super;
+    if (fstype == "cgroup2") {
+      m.v2_mount = mount;
+      m.v2_root = root;
+    } else if (fstype == "cgroup") {
+      std::istringstream opts(super);
+      std::string o;
+      while (std::getline(opts, o, ','))
+        if (o == "memory" || o == "pids" || o == "cpu") m.v1[o] = {mount, root};
+    }
+  }
+  return m;
+}
+
+// The cgroups this process is in (/proc/self/cgroup): controller ("" for v2) -> path.
+std::map<std::string, std::string> own_cgroups() {
+  std::map<std::string, std::string> own;
+  std::istringstream in(read_small("/proc/self/cgroup"));
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto c1 = line.find(':'), c2 = line.find(':', c1 + 1);
+    if (c1 == std::string::npos || c2 == std::string::npos) continue;
+    const std::string ctrls = line.substr(c1 + 1, c2 - c1 - 1), path = line.substr(c2 + 1);
+    if (ctrls.empty()) own[""] = path;
+    std::istringstream cs(ctrls);
+    std::string c;
+    while (std::getline(cs, c, ',')) own[c] = path;
+  }
+  return own;
+}
+
+// Our folder `mine` under the cgroup `path` of the hierarchy mounted at `mount` (whose root is
+// `root`); "" when it cannot be made. The folders of a jelly-grade that is gone go first, every
+// process in them killed (its keeper, killed with it, could not).
+fs::path our_cgroup_folder(const fs::path& mount, const std::string& root, const std::string& path,
+                           const std::string& mine) {
+  std::string rel = path;
+  if (root != "/" && rel.compare(0, root.size(), root) == 0) rel = rel.substr(root.size());
+  const fs::path parent = mount / fs::path(rel).relative_path();
+  std::error_code ec;
+  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string n = it->path().filename().string();
+    if (n.rfind("jelly-grade-", 0) != 0 || n == mine) continue;
+    const std::string pid = n.substr(12);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (kill(std::stoi(pid), 0) == 0 || errno != ESRCH) continue;
+    end_cgroup_tree(it->path());
+  }
+  fs::path dir = parent / mine;
+  if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) return fs::path();
+  if (!fs::exists(dir / "cgroup.procs")) return fs::path();
+  return dir;
+}
+
+// The v2 folder and the controllers it has: asks for the controllers our children need (refused
+// where this cgroup holds processes and is not the root: then v2 only lists and kills).
+void make_v2_cgroup(Cgroups& cg, const CgroupMounts& m, const std::string& own_path,
+                    const std::string& mine) {
+  const fs::path parent = m.v2_mount / fs::path(own_path).relative_path();
+  for (const char* c : {"+memory", "+pids", "+cpu"})
+    write_small(parent / "cgroup.subtree_control", c);
+  cg.unified = our_cgroup_folder(m.v2_mount, m.v2_root, own_path, mine);
+  if (cg.unified.empty()) return;
+  for (const char* c : {"+memory", "+pids", "+cpu"})
+    write_small(cg.unified / "cgroup.subtree_control", c);
+  const std::string have = read_small(cg.unified / "cgroup.subtree_control");
+  std::istringstream words(have);
+  for (std::string w; words >> w;) {
+    cg.v2_memory = cg.v2_memory || w == "memory";
+    cg.v2_pids = cg.v2_pids || w == "pids";
+    cg.v2_cpu = cg.v2_cpu || w == "cpu";
+  }
+}
+
 // Our cgroups, made under the ones this process is in (so that a container's own limits still
 // hold), when the kernel and our privileges allow: cgroup v2 where it has the controllers, else
 // the v1 memory, pids and cpu hierarchies (as on a root shell of a cgroup v1 machine); a v2 folder
 // is made even without controllers, to find and kill every process of a run.
 Cgroups make_cgroups() {
   Cgroups cg;
-  std::map<std::string, std::pair<fs::path, std::string>> v1;  // controller -> (mount, root)
-  fs::path v2_mount;
-  std::string v2_root;
-  {
-    std::istringstream in(read_small("/proc/self/mountinfo"));
-    std::string line;
-    while (std::getline(in, line)) {
-      const auto dash = line.find(" - ");
-      if (dash == std::string::npos) continue;
-      std::istringstream a(line.substr(0, dash)), b(line.substr(dash + 3));
-      std::string id, parent, dev, root, mount, fstype, source, super;
-      a >> id >> parent >> dev >> root >> mount;
-      b >> fstype >> source >> super;
-      if (fstype == "cgroup2") {
-        v2_mount = mount;
-        v2_root = root;
-      } else if (fstype == "cgroup") {
-        std::istringstream opts(super);
-        std::string o;
-        while (std::getline(opts, o, ','))
-          if (o == "memory" || o == "pids" || o == "cpu") v1[o] = {mount, root};
-      }
-    }
-  }
-  std::map<std::string, std::string> own;  // controller ("" for v2) -> our cgroup path
-  {
-    std::istringstream in(read_small("/proc/self/cgroup"));
-    std::string line;
-    while (std::getline(in, line)) {
-      const auto c1 = line.find(':'), c2 = line.find(':', c1 + 1);
-      if (c1 == std::string::npos || c2 == std::string::npos) continue;
-      const std::string ctrls = line.substr(c1 + 1, c2 - c1 - 1), path = line.substr(c2 + 1);
-      if (ctrls.empty()) own[""] = path;
-      std::istringstream cs(ctrls);
-      std::string c;
-      while (std::getline(cs, c, ',')) own[c] = path;
-    }
-  }
+  CgroupMounts m = cgroup_mounts();
+  std::map<std::string, std::string> own = own_cgroups();
   const std::string mine = "jelly-grade-" + std::to_string(getpid());
-  auto folder = [&](const fs::path& mount, const std::string& root, const std::string& path) {
-    std::string rel = path;
-    if (root != "/" && rel.compare(0, root.size(), root) == 0) rel = rel.substr(root.size());
-    const fs::path parent = mount / fs::path(rel).relative_path();
-    // The folders of a jelly-grade that is gone go, every process in them killed first (its
-    // keeper, killed with it, could not).
-    std::error_code ec;
-    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
-      const std::string n = it->path().filename().string();
-      if (n.rfind("jelly-grade-", 0) != 0 || n == mine) continue;
-      const std::string pid = n.substr(12);
-      if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (kill(std::stoi(pid), 0) == 0 || errno != ESRCH) continue;
-      end_cgroup_tree(it->path());
-    }
-    fs::path dir = parent / mine;
-    if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) return fs::path();
-    if (!fs::exists(dir / "cgroup.procs")) return fs::path();
-    return dir;
+  if (!m.v2_mount.empty() && own.count("")) make_v2_cgroup(cg, m, own[""], mine);
+  auto v1 = [&](const std::string& c) {
+    return our_cgroup_folder(m.v1[c].first, m.v1[c].second, own[c], mine);
   };
-  if (!v2_mount.empty() && own.count("")) {
-    const fs::path parent = v2_mount / fs::path(own[""]).relative_path();
-    // Ask for the controllers our children need (refused where this cgroup holds processes and
-    // is not the root: then v2 only lists and kills).
-    for (const char* c : {"+memory", "+pids", "+cpu"})
-      write_small(parent / "cgroup.subtree_control", c);
-    cg.unified = folder(v2_mount, v2_root, own[""]);
-    if (!cg.unified.empty()) {
-      for (const char* c : {"+memory", "+pids", "+cpu"})
-        write_small(cg.unified / "cgroup.subtree_control", c);
-      const std::string have = read_small(cg.unified / "cgroup.subtree_control");
-      std::istringstream words(have);
-      for (std::string w; words >> w;) {
-        cg.v2_memory = cg.v2_memory || w == "memory";
-        cg.v2_pids = cg.v2_pids || w == "pids";
-        cg.v2_cpu = cg.v2_cpu || w == "cpu";
-      }
-    }
-  }
-  if (!cg.v2_memory && v1.count("memory") && own.count("memory"))
-    cg.memory = folder(v1["memory"].first, v1["memory"].second, own["memory"]);
-  if (!cg.v2_pids && v1.count("pids") && own.count("pids"))
-    cg.pids = folder(v1["pids"].first, v1["pids"].second, own["pids"]);
-  if (!cg.v2_cpu && v1.count("cpu") && own.count("cpu"))
-    cg.cpu = folder(v1["cpu"].first, v1["cpu"].second, own["cpu"]);
+  if (!cg.v2_memory && m.v1.count("memory") && own.count("memory")) cg.memory = v1("memory");
+  if (!cg.v2_pids && m.v1.count("pids") && own.count("pids")) cg.pids = v1("pids");
+  if (!cg.v2_cpu && m.v1.count("cpu") && own.count("cpu")) cg.cpu = v1("cpu");
   // The CPU share is said to be in force only where a lane's quota can be written.
   cg.v2_cpu = cg.v2_cpu && quota_writable(cg.unified, true);
   if (!cg.cpu.empty() && !quota_writable(cg.cpu, false)) {

@@ -1,4 +1,4 @@
-// What several jelly-grade commands share (commands.hpp lists the commands).
+// Points as the grader writes them, in every report and every command's lines.
 #pragma once
 
 #include <string>

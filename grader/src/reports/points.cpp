@@ -1,4 +1,4 @@
-#include "commands/common.hpp"
+#include "reports/points.hpp"
 
 #include <cstdio>
 
