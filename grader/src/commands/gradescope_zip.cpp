@@ -115,7 +115,7 @@ bool bundle_third_party(const fs::path& stage) {
 }
 
 /// setup.sh and run_autograder at the top of the zip. setup.sh's compiler check sits between its
-/// "# BEGIN compiler check" and "# END compiler check" lines (tests/grader/setup_compiler_check.sh
+/// "# BEGIN compiler check" and "# END compiler check" lines (tests/grader/commands/setup_compiler_check.sh
 /// runs the block alone with stand-in compilers): the framework needs GCC 11 or newer
 /// (floating-point std::to_chars) and CMake 3.16 or newer. Gradescope's Ubuntu 22.04 base image
 /// has GCC 11.4 and CMake 3.22; on an older image the block installs g++-11 where the archive has

@@ -1,6 +1,6 @@
 // `jelly-grade similarity` (grader/src/class/similarity.hpp) on a synthetic class: a copy of the
 // reference with its identifiers renamed, its indentation changed and its comments replaced is
-// found; an independent correct solution (tests/grader/similarity/independent/) and a submission of
+// found; an independent correct solution (tests/grader/class/similarity/independent/) and a submission of
 // the bare stubs are not; hostile names and text reach the page escaped. Needs sim_c++ (Debian
 // package similarity-tester, installed by tools/install-deps.sh): without it these tests fail,
 // saying so.
@@ -133,7 +133,7 @@ void make_class(const fs::path& root) {
     // The independent student solved T1–T5 (springs.cpp, forces.cpp); the rest are the stubs.
     const bool solved = std::string(f) == "springs.cpp" || std::string(f) == "forces.cpp";
     write(root / "indep" / f,
-          read(solved ? kSource / "tests" / "grader" / "similarity" / "independent" / f
+          read(solved ? kSource / "tests" / "grader" / "class" / "similarity" / "independent" / f
                       : kSource / "assignments" / "a1" / f));
     // The hostile text mid-file, in a comment: the shared region runs across it (sim_c++ skips
     // comments), so the page shows it.
@@ -322,7 +322,7 @@ TEST(Similarity, IndependentSolutionIsCorrect) {
   fs::remove_all(sub);
   fs::remove_all(out);
   for (const char* f : {"springs.cpp", "forces.cpp"})
-    write(sub / f, read(kSource / "tests" / "grader" / "similarity" / "independent" / f));
+    write(sub / f, read(kSource / "tests" / "grader" / "class" / "similarity" / "independent" / f));
   const Cmd r =
       run("grade " + q(sub) + " --assignment a1 --no-frames --format gradescope --out " + q(out));
   ASSERT_EQ(r.status, 0) << r.out;
