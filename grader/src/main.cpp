@@ -34,10 +34,10 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
-#include "commands/common.hpp"
+#include "commands/commands.hpp"
+#include "inputs/submissions.hpp"
 #include "jelly/cli_common/command_line.hpp"
-#include "submissions.hpp"
+#include "reports/points.hpp"
 
 #ifdef _WIN32
 #ifndef NOMINMAX
@@ -184,9 +184,8 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   }
 }
 
-int run(const std::string& command, const Options& o, const Command& cmd) {
-  GradeConfig config = load_config(o.config_path);
-  // The folder whose files name the assignment when --assignment is not given.
+/// The folder whose files name the assignment when --assignment is not given.
+fs::path submission_of(const std::string& command, const Options& o) {
   fs::path submission;
   if (command == "grade")
     submission = o.positional;
@@ -199,6 +198,92 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
         break;
       }
   }
+  return submission;
+}
+
+/// The tasks' points do not add up to autograded_total: every task is scaled. Says what each one
+/// is worth now, so that changing one task's points cannot silently move the others.
+void say_scaled_rubric(const GradeConfig& config, const CaseBook& book, const Options& o) {
+  const double scale = book.rubric.scale();
+  if (!(std::abs(scale - 1.0) > 1e-12 && scale > 0.0)) return;
+  std::ostringstream say;
+  say << "jelly-grade: " << (o.rubric_path.empty() ? config.rubric_path().string() : o.rubric_path)
+      << ": the tasks' points add up to " << pts(book.rubric.raw_total())
+      << ", not autograded_total = " << pts(book.rubric.autograded_total)
+      << ", so every task is scaled by " << pts(book.rubric.autograded_total) << "/"
+      << pts(book.rubric.raw_total()) << ". Each task is graded out of:";
+  for (const TaskSpec& t : book.rubric.tasks)
+    say << "\n  " << t.id << " " << pts(t.points * scale) << " (written " << pts(t.points)
+        << (t.bonus ? ", bonus" : "") << ")";
+  std::cerr << say.str() << "\n";
+}
+
+/// The grading options of the command line (the sandbox is chosen in run()).
+GradeOptions grade_options(const Options& o) {
+  GradeOptions options;
+  options.include_hidden = o.visibility == "all";
+  options.timeout_s = o.timeout;
+  options.jobs = o.jobs;
+  options.build_limits.memory_bytes = static_cast<std::size_t>(o.compile_memory_mib * (1 << 20));
+  options.build_limits.cpu_s = o.compile_cpu;
+  return options;
+}
+
+/// --shard I/N with 1 <= I <= N into `args`; false when it is not that.
+bool read_shard(const std::string& shard, BatchArgs& args) {
+  const auto slash = shard.find('/');
+  const auto whole = [](const std::string& t) {
+    return !t.empty() && t.size() <= 6 && t.find_first_not_of("0123456789") == std::string::npos;
+  };
+  const std::string i = slash == std::string::npos ? "" : shard.substr(0, slash);
+  const std::string n = slash == std::string::npos ? "" : shard.substr(slash + 1);
+  if (!whole(i) || !whole(n) || std::stoi(i) < 1 || std::stoi(i) > std::stoi(n)) return false;
+  args.shard_index = std::stoi(i);
+  args.shard_count = std::stoi(n);
+  return true;
+}
+
+int run_grade(const GradeConfig& config, const CaseBook& book, const Options& o,
+              const GradeOptions& options) {
+  GradeOneArgs args;
+  args.submission = o.positional;
+  args.out = o.out;
+  args.formats = std::set<std::string>(o.formats.begin(), o.formats.end());
+  args.verbose = o.verbose;
+  args.frames = !o.no_frames;
+  args.strict = o.strict;
+  return grade_one(config, book, args, options);
+}
+
+int run_batch(const GradeConfig& config, const CaseBook& book, const Options& o,
+              const GradeOptions& options, const Command& cmd) {
+  BatchArgs args;
+  args.in = o.positional;
+  args.out = o.out;
+  args.jobs = o.jobs;
+  args.frames = !o.no_frames;
+  args.resume = o.resume;
+  if (!o.shard.empty() && !read_shard(o.shard, args))
+    return cmd.error("--shard " + o.shard +
+                     ": expected I/N, the I-th of N parts with 1 <= I <= N (e.g. 2/4)");
+  if (o.similarity) {
+    similarity_tool();  // missing: say so before grading
+    args.similarity = o.threshold;
+  }
+  // Every grading run says which sandbox it grades in (grade: its summary's second line).
+  const Isolation& iso = options.isolation;
+  std::cout << "jelly-grade: sandbox: "
+            << (iso.description.rfind("none", 0) == 0 || iso.description.empty()
+                    ? (iso.description.empty() ? iso.name : iso.description)
+                    : iso.name + " — " + iso.description)
+            << "\n"
+            << std::flush;
+  return batch(config, book, args, options);
+}
+
+int run(const std::string& command, const Options& o, const Command& cmd) {
+  GradeConfig config = load_config(o.config_path);
+  const fs::path submission = submission_of(command, o);
   // merge: the assignment the batches were graded for.
   select_assignment(
       config,
@@ -211,27 +296,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
       !notice.empty() && command != "gradescope-zip")
     std::cerr << notice << "\n";
   const CaseBook book = load_case_book(config, o.rubric_path);
-  if (const double scale = book.rubric.scale(); std::abs(scale - 1.0) > 1e-12 && scale > 0.0) {
-    // The tasks' points do not add up to autograded_total: every task is scaled. Say what each
-    // one is worth now, so that changing one task's points cannot silently move the others.
-    std::ostringstream say;
-    say << "jelly-grade: "
-        << (o.rubric_path.empty() ? config.rubric_path().string() : o.rubric_path)
-        << ": the tasks' points add up to " << pts(book.rubric.raw_total())
-        << ", not autograded_total = " << pts(book.rubric.autograded_total)
-        << ", so every task is scaled by " << pts(book.rubric.autograded_total) << "/"
-        << pts(book.rubric.raw_total()) << ". Each task is graded out of:";
-    for (const TaskSpec& t : book.rubric.tasks)
-      say << "\n  " << t.id << " " << pts(t.points * scale) << " (written " << pts(t.points)
-          << (t.bonus ? ", bonus" : "") << ")";
-    std::cerr << say.str() << "\n";
-  }
-  GradeOptions options;
-  options.include_hidden = o.visibility == "all";
-  options.timeout_s = o.timeout;
-  options.jobs = o.jobs;
-  options.build_limits.memory_bytes = static_cast<std::size_t>(o.compile_memory_mib * (1 << 20));
-  options.build_limits.cpu_s = o.compile_cpu;
+  say_scaled_rubric(config, book, o);
+  GradeOptions options = grade_options(o);
   // Student code is compiled and run only by these commands: the sandbox is chosen once for them.
   if (!o.runner.empty() && o.isolation != "auto" && o.isolation != "none")
     return cmd.error(
@@ -242,52 +308,8 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   else if (command == "grade" || command == "batch" || command == "prairielearn" ||
            command == "mutants" || (command == "hints" && !o.hints.digest))
     options.isolation = choose_isolation(config, o.isolation);
-  if (command == "grade") {
-    GradeOneArgs args;
-    args.submission = o.positional;
-    args.out = o.out;
-    args.formats = std::set<std::string>(o.formats.begin(), o.formats.end());
-    args.verbose = o.verbose;
-    args.frames = !o.no_frames;
-    args.strict = o.strict;
-    return grade_one(config, book, args, options);
-  }
-  if (command == "batch") {
-    BatchArgs args;
-    args.in = o.positional;
-    args.out = o.out;
-    args.jobs = o.jobs;
-    args.frames = !o.no_frames;
-    args.resume = o.resume;
-    if (!o.shard.empty()) {
-      // I/N with 1 <= I <= N.
-      const auto slash = o.shard.find('/');
-      const auto whole = [](const std::string& t) {
-        return !t.empty() && t.size() <= 6 &&
-               t.find_first_not_of("0123456789") == std::string::npos;
-      };
-      const std::string i = slash == std::string::npos ? "" : o.shard.substr(0, slash);
-      const std::string n = slash == std::string::npos ? "" : o.shard.substr(slash + 1);
-      if (!whole(i) || !whole(n) || std::stoi(i) < 1 || std::stoi(i) > std::stoi(n))
-        return cmd.error("--shard " + o.shard +
-                         ": expected I/N, the I-th of N parts with 1 <= I <= N (e.g. 2/4)");
-      args.shard_index = std::stoi(i);
-      args.shard_count = std::stoi(n);
-    }
-    if (o.similarity) {
-      similarity_tool();  // missing: say so before grading
-      args.similarity = o.threshold;
-    }
-    // Every grading run says which sandbox it grades in (grade: its summary's second line).
-    const Isolation& iso = options.isolation;
-    std::cout << "jelly-grade: sandbox: "
-              << (iso.description.rfind("none", 0) == 0 || iso.description.empty()
-                      ? (iso.description.empty() ? iso.name : iso.description)
-                      : iso.name + " — " + iso.description)
-              << "\n"
-              << std::flush;
-    return batch(config, book, args, options);
-  }
+  if (command == "grade") return run_grade(config, book, o, options);
+  if (command == "batch") return run_batch(config, book, o, options, cmd);
   if (command == "merge") return merge(config, book, o.parts, o.out);
   if (command == "generate-reference") return generate_reference(config, book);
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);

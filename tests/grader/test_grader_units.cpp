@@ -1,8 +1,10 @@
 // Unit tests of the grader's small pure modules: what a report may show of a student's bytes
 // (text_safety), the class file's fields (csv), which symbols a task file may define (symbols),
-// and the worker pool every parallel step goes through (parallel).
+// the worker pool every parallel step goes through (parallel), and the tolerance test every
+// comparison with the reference makes (tolerance).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -10,10 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include "csv.hpp"
-#include "parallel.hpp"
-#include "symbols.hpp"
-#include "text_safety.hpp"
+#include "build/symbols.hpp"
+#include "class/csv.hpp"
+#include "grading/parallel.hpp"
+#include "grading/tolerance.hpp"
+#include "reports/text_safety.hpp"
 
 namespace g = jelly::grade;
 
@@ -26,6 +29,17 @@ TEST(GraderText, InvalidUtf8BecomesOneReplacementPerMaximalSubpart) {
   EXPECT_EQ(g::valid_utf8("\xED\xA0\x80"), fffd + fffd + fffd);  // a UTF-16 surrogate
   EXPECT_EQ(g::valid_utf8("\xF4\x90\x80\x80"), fffd + fffd + fffd + fffd);  // above U+10FFFF
   EXPECT_EQ(g::valid_utf8("\xE2\x86"), fffd);                               // cut at the end
+}
+
+TEST(GraderText, CodePointsAreEncodedInOneToFourBytes) {
+  std::string s;
+  for (const unsigned cp : {0x41u, 0xE9u, 0x20ACu, 0x1F600u, 0x7Fu, 0x80u, 0x7FFu, 0x800u, 0xFFFFu,
+                            0x10000u, 0x10FFFFu})
+    g::append_utf8(s, cp);
+  EXPECT_EQ(s,
+            "A\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80\x7F\xC2\x80\xDF\xBF\xE0\xA0\x80"
+            "\xEF\xBF\xBF\xF0\x90\x80\x80\xF4\x8F\xBF\xBF");
+  EXPECT_EQ(g::valid_utf8(s), s);
 }
 
 TEST(GraderText, ControlsBecomeVisibleAndNewlinesStay) {
@@ -85,6 +99,21 @@ TEST(GraderText, NoStudentLineClosesItsCodeBlock) {
   const std::string block = g::markdown_code_block(text);
   EXPECT_EQ(block.substr(0, 12), "```````text\n") << block;
   EXPECT_EQ(block.substr(block.size() - 8), "```````\n") << block;
+}
+
+// |a − b| ≤ atol + rtol·|b|: the relative part scales with the reference b, not with a; the edge
+// passes; NaN never does.
+TEST(GraderTolerance, AbsoluteAndRelativePartsAddUpAgainstTheReference) {
+  EXPECT_TRUE(g::within_tolerance(1.5, 1.0, 0.5, 0.0));
+  EXPECT_FALSE(g::within_tolerance(1.5000001, 1.0, 0.5, 0.0));
+  EXPECT_TRUE(g::within_tolerance(110.0, 100.0, 0.0, 0.1));
+  EXPECT_FALSE(g::within_tolerance(100.0, 110.0, 0.0, 0.05));
+  EXPECT_TRUE(g::within_tolerance(-2.0, -2.0, 0.0, 0.0));
+  EXPECT_TRUE(g::within_tolerance(2.5, 2.0, 0.25, 0.125));
+  EXPECT_FALSE(g::within_tolerance(std::nan(""), 1.0, 1.0, 1.0));
+  EXPECT_FALSE(g::within_tolerance(1.0, std::nan(""), 1.0, 1.0));
+  EXPECT_FALSE(g::within_tolerance(INFINITY, INFINITY, 1.0, 1.0));
+  EXPECT_EQ(g::allowed_difference(-4.0, 1.0, 0.5), 3.0);
 }
 
 TEST(GraderCsv, FieldsAreQuotedAndFormulasMarkedAsText) {

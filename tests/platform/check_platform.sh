@@ -326,7 +326,7 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
     if [ -n "$host_grade" ]; then
       "$host_grade" grade "$dir" --assignment "$id" --visibility public --format terminal --out "$out/grader-$name" \
         >"$out/grader-$name.txt" 2>&1
-      if bash "$src/tests/grader/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
+      if bash "$src/tests/grader/grading/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
         say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check $where on $name"
       else
         cat "$out/same-$name.txt"; say "FAILED: the self-check's report on $name differs from the Linux grader's"; failed=1

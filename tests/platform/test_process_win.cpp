@@ -1,7 +1,7 @@
-// run_child on Windows (grader/src/process_win.cpp): the piece the Windows self-check runs each
-// grading case through. This program is its own child: `--child MODE ...` behaves as a case would
-// (print, write a result, crash, loop, flood), anything else runs the tests. Built by the MinGW
-// cross-build and run under wine by tests/platform/check_platform.sh.
+// run_child on Windows (grader/src/sandbox/process_win.cpp): the piece the Windows self-check runs
+// each grading case through. This program is its own child: `--child MODE ...` behaves as a case
+// would (print, write a result, crash, loop, flood), anything else runs the tests. Built by the
+// MinGW cross-build and run under wine by tests/platform/check_platform.sh.
 #include <fcntl.h>
 #include <io.h>
 #include <windows.h>
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "process.hpp"
+#include "sandbox/process.hpp"
 
 namespace {
 

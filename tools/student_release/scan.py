@@ -223,7 +223,7 @@ def _hidden_case_names(contents, secrets):
     """Hidden case ids anywhere in the release, the grader's runner code included: an assignment's
     runner (assignments/ID/grader/runner/) holds generic case generators only, and a case's inputs
     are its params in assignments/ID/grader/cases/*.toml, whose hidden entries the copy drops
-    (tests/grader/test_hidden_cases_not_in_code.cpp checks the runners for hidden parameters too).
+    (tests/grader/inputs/test_hidden_cases_not_in_code.cpp checks the runners for hidden parameters too).
     Case code kept in assignments/ID/grader/runner/hidden/ is left out altogether."""
     hits = []
     texts = [(p, d) for p, d in contents.items() if _is_text(d) and "/.git/" not in "/" + p]

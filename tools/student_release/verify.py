@@ -14,12 +14,12 @@ from . import Die, say, warn
 
 # The student targets the verification builds (nothing else: the time is CI's).
 VERIFY_TARGETS = ["jelly", "jelly-lab", "jelly-grade"]
-# The framework's unit tests a release runs (stubs, session, CLI) are written on this scene and its
+# The framework's unit tests a release runs (stubs, scene reading, session, CLI) are written on this scene and its
 # assignment's stubs: they are built and run when the release ships the scene (a release without
 # it, such as one of the cloth alone, is checked by its layers tests, each assignment's self-check
 # and default scene instead, and says so).
 FRAMEWORK_TEST_SCENE = "course-2023"
-FRAMEWORK_TEST_TARGETS = ["jelly_tests_stubs", "jelly_tests_session", "jelly_tests_cli"]
+FRAMEWORK_TEST_TARGETS = ["jelly_tests_stubs", "jelly_tests_scene", "jelly_tests_session", "jelly_tests_cli"]
 BUNDLED_LIBS = ["Eigen", "toml++", "nlohmann/json", "CLI11", "GoogleTest", "GLFW", "GL headers", "stb", "Dear ImGui"]
 COMPILERS = {"gcc": ("gcc", "g++", []), "clang-libc++": ("clang", "clang++", ["-DCMAKE_CXX_FLAGS=-stdlib=libc++"])}
 
@@ -128,7 +128,7 @@ class Verifier:
         if (self.fresh / "scenes" / f"{FRAMEWORK_TEST_SCENE}.toml").is_file():
             framework_tests = True
             targets += FRAMEWORK_TEST_TARGETS
-            labels = "^(jelly_tests_stubs|jelly_tests_session|cli|house)$"
+            labels = "^(jelly_tests_stubs|jelly_tests_scene|jelly_tests_session|cli|house)$"
         for i in self.chosen:
             targets.insert(0, f"jelly_{i}_tasks_assignments")
         say(f"verify {name}: building {' '.join(targets)}")

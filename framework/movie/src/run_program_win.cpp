@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// One argument quoted for CommandLineToArgvW (as grader/src/process_win.cpp does).
+// One argument quoted for CommandLineToArgvW (as grader/src/sandbox/process_win.cpp does).
 void append_quoted(std::wstring& line, const std::wstring& arg) {
   if (!line.empty()) line += L' ';
   if (!arg.empty() && arg.find_first_of(L" \t\n\v\"") == std::wstring::npos) {

@@ -1,9 +1,9 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "commands.hpp"
+#include "commands/commands.hpp"
 #include "jelly/cli_common/exit_codes.hpp"
-#include "report.hpp"
+#include "reports/report.hpp"
 
 namespace jelly::grade {
 

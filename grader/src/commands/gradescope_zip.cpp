@@ -1,4 +1,4 @@
-#include "commands.hpp"
+#include "commands/commands.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -72,26 +72,12 @@ std::string with_sandbox_setup(std::string_view text, const std::string& lines,
   return out;
 }
 
-}  // namespace
-
-int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
-  const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
-  fs::remove_all(stage);
-  // The staging folder holds the hidden data and cases: it goes as soon as the zip is written (or
-  // failed), whatever happens.
-  struct RemoveStage {
-    fs::path dir;
-    ~RemoveStage() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } remove_stage{stage};
-  fs::create_directories(stage / "source");
-  // The framework as a student release has it (scenes included), with ONE assignment (the selected
-  // one: its folder with its manifest, cases, runner and public data) plus its hidden data; never
-  // solutions/. Everything, setup.sh and run_autograder included, sits at the zip's top level:
-  // Gradescope extracts the zip into /autograder/source, where both scripts expect the framework's
-  // CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
+/// The framework as a student release has it (scenes included), with ONE assignment (the selected
+/// one: its folder with its manifest, cases, runner and public data) plus its hidden data; never
+/// solutions/. Everything, setup.sh and run_autograder included, sits at the zip's top level:
+/// Gradescope extracts the zip into /autograder/source, where both scripts expect the framework's
+/// CMakeLists.txt (and copies run_autograder to /autograder/run_autograder).
+void stage_source(const GradeConfig& config, const fs::path& stage) {
   const AssignmentConfig& assignment = config.assignment();
   // scenes/: the assignment's default scene is compiled into the programs (the report's frames).
   for (const char* item : {"CMakeLists.txt", "cmake", "framework", "grader", "scenes"}) {
@@ -120,35 +106,62 @@ int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
   fs::remove_all(stage / "source" / "solutions");
   for (const fs::directory_entry& e : fs::directory_iterator(assignments))
     fs::remove_all(e.path() / "grader" / "mutants");
-  // toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
-  // (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
-  // this machine, with their licences.
-  if (!bundle_headers(stage, "tomlplusplus", JELLY_TOMLPLUSPLUS_INCLUDE_DIR, "toml++", "toml.h",
-                      {"/usr/share/doc/libtomlplusplus-dev/copyright",
-                       JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
-                      "libtomlplusplus-dev") ||
-      !bundle_headers(
-          stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
-          {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
-          "libcli11-dev"))
-    return 2;
-  // setup.sh's compiler check sits between its "# BEGIN compiler check" and "# END compiler check"
-  // lines (tests/grader/setup_compiler_check.sh runs the block alone with stand-in compilers): the
-  // framework needs GCC 11 or newer (floating-point std::to_chars) and CMake 3.16 or newer.
-  // Gradescope's Ubuntu 22.04 base image has GCC 11.4 and CMake 3.22; on an older image the block
-  // installs g++-11 where the archive has it, else it stops naming what to choose. The compiler it
-  // settles on is exported as CXX for CMake.
+}
+
+/// toml++'s and CLI11's headers, for an image without libtomlplusplus-dev or libcli11-dev
+/// (Gradescope's Ubuntu): the build then uses them header-only (cmake/JellyDeps.cmake). Taken from
+/// this machine, with their licences. False (said) when they are not here.
+bool bundle_third_party(const fs::path& stage) {
+  return bundle_headers(stage, "tomlplusplus", JELLY_TOMLPLUSPLUS_INCLUDE_DIR, "toml++", "toml.h",
+                        {"/usr/share/doc/libtomlplusplus-dev/copyright",
+                         JELLY_TOMLPLUSPLUS_INCLUDE_DIR "/../LICENSE"},
+                        "libtomlplusplus-dev") &&
+         bundle_headers(
+             stage, "cli11", JELLY_CLI11_INCLUDE_DIR, "CLI", "CLI.hpp",
+             {"/usr/share/doc/libcli11-dev/copyright", JELLY_CLI11_INCLUDE_DIR "/../LICENSE"},
+             "libcli11-dev");
+}
+
+/// setup.sh and run_autograder at the top of the zip. setup.sh's compiler check sits between its
+/// "# BEGIN compiler check" and "# END compiler check" lines (tests/grader/commands/setup_compiler_check.sh
+/// runs the block alone with stand-in compilers): the framework needs GCC 11 or newer
+/// (floating-point std::to_chars) and CMake 3.16 or newer. Gradescope's Ubuntu 22.04 base image
+/// has GCC 11.4 and CMake 3.22; on an older image the block installs g++-11 where the archive has
+/// it, else it stops naming what to choose. The compiler it settles on is exported as CXX for
+/// CMake.
+void write_scripts(const fs::path& stage, const std::string& assignment) {
   const std::string sandbox = sandbox_setup_lines("/autograder/source");
   const std::string setup =
-      with_sandbox_setup(gradescope_setup_template(), sandbox, assignment.id, "setup.sh.in");
+      with_sandbox_setup(gradescope_setup_template(), sandbox, assignment, "setup.sh.in");
   const std::string run = with_sandbox_setup(gradescope_run_autograder_template(), sandbox,
-                                             assignment.id, "run_autograder.in");
+                                             assignment, "run_autograder.in");
   std::ofstream(stage / "source" / "setup.sh", std::ios::binary) << setup;
   std::ofstream(stage / "source" / "run_autograder", std::ios::binary) << run;
   fs::permissions(stage / "source" / "setup.sh",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   fs::permissions(stage / "source" / "run_autograder",
                   fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+}
+
+}  // namespace
+
+int gradescope_zip(const GradeConfig& config, const std::string& zip_path) {
+  const fs::path stage = config.binary_dir / "grader" / "gradescope-zip";
+  fs::remove_all(stage);
+  // The staging folder holds the hidden data and cases: it goes as soon as the zip is written (or
+  // failed), whatever happens.
+  struct RemoveStage {
+    fs::path dir;
+    ~RemoveStage() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } remove_stage{stage};
+  fs::create_directories(stage / "source");
+  const AssignmentConfig& assignment = config.assignment();
+  stage_source(config, stage);
+  if (!bundle_third_party(stage)) return 2;
+  write_scripts(stage, assignment.id);
   const fs::path zip = fs::absolute(zip_path);
   fs::remove(zip);
   const Limits lim = trusted_tool_limits(300.0);

@@ -5,11 +5,11 @@
 #include <iostream>
 #include <mutex>
 
-#include "commands.hpp"
-#include "commands/common.hpp"
-#include "files.hpp"
-#include "hints.hpp"
-#include "parallel.hpp"
+#include "commands/commands.hpp"
+#include "grading/hints.hpp"
+#include "grading/parallel.hpp"
+#include "inputs/files.hpp"
+#include "reports/points.hpp"
 
 namespace jelly::grade {
 
@@ -118,45 +118,48 @@ std::vector<std::string> all_hints(const GradeReport& r) {
   return out;
 }
 
-}  // namespace
-
-int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
-          const GradeOptions& options) {
-  const fs::path file = args.out.empty() ? hints_path(config) : fs::path(args.out);
-  const std::string regenerate = "run `jelly-grade hints --assignment " + config.assignment().id +
-                                 "` and commit " + file.string();
-  if (args.digest || args.check) {
-    if (!fs::is_regular_file(file)) {
-      std::cerr << "jelly-grade: " << file.string() << " is missing; " << regenerate << "\n";
-      return 1;
-    }
-    const Json stored = Json::parse(read_file(file));
-    if (stored.value("sources_digest", std::string()) != sources_digest(config, book)) {
-      std::cerr << "jelly-grade: " << file.string()
-                << " is stale: the mutants, the reference, the stubs, the public cases or the "
-                   "case code changed since it was made; "
-                << regenerate << "\n";
-      return 1;
-    }
-    if (args.digest) {
-      std::cout << "jelly-grade: " << file.string() << " is up to date\n";
-      return 0;
-    }
+/// --digest and the first step of --check: whether `file` is there and made from today's sources.
+/// 1 when it is missing or stale (said), 0 when --digest is all (said), -1 to go on.
+int check_digest(const GradeConfig& config, const CaseBook& book, const HintsArgs& args,
+                 const fs::path& file, const std::string& regenerate) {
+  if (!fs::is_regular_file(file)) {
+    std::cerr << "jelly-grade: " << file.string() << " is missing; " << regenerate << "\n";
+    return 1;
   }
-  const fs::path root = args.work.empty()
-                            ? config.binary_dir / "grader" / "hints" / config.assignment().id
-                            : fs::absolute(args.work);
-  fs::remove_all(root);
+  const Json stored = Json::parse(read_file(file));
+  if (stored.value("sources_digest", std::string()) != sources_digest(config, book)) {
+    std::cerr << "jelly-grade: " << file.string()
+              << " is stale: the mutants, the reference, the stubs, the public cases or the "
+                 "case code changed since it was made; "
+              << regenerate << "\n";
+    return 1;
+  }
+  if (args.digest) {
+    std::cout << "jelly-grade: " << file.string() << " is up to date\n";
+    return 0;
+  }
+  return -1;
+}
+
+/// The reference, the stubs, the mutants (their folders made under root/mutants) and, after
+/// them, the controls (--controls, under root/controls); `n_mutants` counts all but the controls.
+std::vector<Graded> hint_list(const GradeConfig& config, const HintsArgs& args,
+                              const fs::path& root, std::size_t& n_mutants) {
   std::vector<Graded> list;
   list.push_back({"reference", "", "", config.solutions_dir(), {}, {}});
   list.push_back({"stubs", "", "", config.assignments_dir(), {}, {}});
   for (const MutantSpec& m : make_mutant_folders(config, config.mutants_dir(), root / "mutants"))
     list.push_back({m.name, m.task, m.description, m.dir, {}, {}});
-  const std::size_t n_mutants = list.size();
+  n_mutants = list.size();
   if (!args.controls.empty())
     for (const MutantSpec& m : make_mutant_folders(config, args.controls, root / "controls"))
       list.push_back({"control " + m.name, m.task, m.description, m.dir, {}, {}});
+  return list;
+}
 
+/// Grades every entry on the public cases, without hints.
+void grade_public(const GradeConfig& config, const CaseBook& book, std::vector<Graded>& list,
+                  const fs::path& root, int jobs, const GradeOptions& options) {
   GradeOptions per = options;
   per.jobs = 1;
   per.include_hidden = false;  // only public-case data goes into the file
@@ -172,6 +175,11 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
     std::lock_guard<std::mutex> lock(mutex);
     std::cerr << "  graded " << list[i].name << ": " << pts(list[i].report.score) << "\n";
   });
+}
+
+/// Whether every entry was graded and the reference passes every public test (said when not).
+/// 0 when so, else the exit status.
+int check_grading(const std::vector<Graded>& list) {
   for (const Graded& g : list)
     if (!g.error.empty()) {
       std::cerr << "jelly-grade: grading " << g.name << ": " << g.error << "\n";
@@ -187,23 +195,54 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
                   << (c.failures.empty() ? std::string("failed") : c.failures.front()) << "\n";
     return 1;
   }
-  const std::string text =
-      make_hints_json(config, book, std::vector<Graded>(list.begin(), list.begin() + n_mutants));
-  if (!args.check) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out.flush()) {
-      std::cerr << "jelly-grade: cannot write " << file.string() << "\n";
-      return 2;
-    }
-    out.close();
-    const HintBook made = load_hints(file);
-    std::cout << "jelly-grade: wrote " << file.string() << " (" << made.signatures.size() << " of "
-              << n_mutants - 2 << " mutants have a public signature)\n";
-    return 0;
-  }
+  return 0;
+}
 
-  // --check: the file is what the sources make today, and it recognises what it should.
+/// Writes hints.json; the exit status.
+int write_hints(const fs::path& file, const std::string& text, std::size_t n_mutants) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out.flush()) {
+    std::cerr << "jelly-grade: cannot write " << file.string() << "\n";
+    return 2;
+  }
+  out.close();
+  const HintBook made = load_hints(file);
+  std::cout << "jelly-grade: wrote " << file.string() << " (" << made.signatures.size() << " of "
+            << n_mutants - 2 << " mutants have a public signature)\n";
+  return 0;
+}
+
+/// --check of one entry with the file's hints applied: what is wrong ("" when nothing).
+/// `recognised` counts the mutants with a signature that got their own hint.
+std::string hint_problem(const HintBook& book_of_file, const Graded& g, std::size_t i,
+                         std::size_t n_mutants, const std::vector<std::string>& got,
+                         std::size_t& recognised) {
+  const bool has_signature =
+      std::any_of(book_of_file.signatures.begin(), book_of_file.signatures.end(),
+                  [&](const HintSignature& s) { return s.mutant == g.name; });
+  std::string problem;
+  if (i < 2 || i >= n_mutants) {
+    // The reference, the stubs and the honest mistakes: no hint at all.
+    if (!got.empty()) problem = "got a hint it must not get: " + got.front();
+    if (i >= n_mutants && g.report.score >= g.report.max_score - 1e-9)
+      problem = "fails no public test, so it proves nothing (make it a real mistake)";
+  } else if (has_signature) {
+    bool own = false;
+    for (const CaseResult& c : g.report.cases)
+      own = own || std::find(c.hints.begin(), c.hints.end(), g.description) != c.hints.end();
+    if (!own)
+      problem = "has a signature but was not recognised";
+    else
+      ++recognised;
+  }
+  return problem;
+}
+
+/// --check: the file is what the sources make today, and it recognises what it should.
+int check_hints(const GradeConfig& config, const CaseBook& book, const fs::path& file,
+                const std::string& text, const std::string& regenerate, std::vector<Graded>& list,
+                std::size_t n_mutants) {
   bool ok = true;
   if (read_file(file) != text) {
     std::cerr << "FAIL: " << file.string() << " differs from what the mutants give today; "
@@ -217,24 +256,7 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
     Graded& g = list[i];
     apply_hints(book_of_file, book, harness, g.report);
     const std::vector<std::string> got = all_hints(g.report);
-    const bool has_signature =
-        std::any_of(book_of_file.signatures.begin(), book_of_file.signatures.end(),
-                    [&](const HintSignature& s) { return s.mutant == g.name; });
-    std::string problem;
-    if (i < 2 || i >= n_mutants) {
-      // The reference, the stubs and the honest mistakes: no hint at all.
-      if (!got.empty()) problem = "got a hint it must not get: " + got.front();
-      if (i >= n_mutants && g.report.score >= g.report.max_score - 1e-9)
-        problem = "fails no public test, so it proves nothing (make it a real mistake)";
-    } else if (has_signature) {
-      bool own = false;
-      for (const CaseResult& c : g.report.cases)
-        own = own || std::find(c.hints.begin(), c.hints.end(), g.description) != c.hints.end();
-      if (!own)
-        problem = "has a signature but was not recognised";
-      else
-        ++recognised;
-    }
+    const std::string problem = hint_problem(book_of_file, g, i, n_mutants, got, recognised);
     std::cout << "  " << (problem.empty() ? "ok  " : "FAIL") << " " << g.name << ": "
               << (problem.empty() ? (got.empty() ? std::string("no hint")
                                                  : std::to_string(got.size()) + " hinted test(s)")
@@ -247,6 +269,31 @@ int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args
             << " honest mistakes, the reference and the stubs without a hint\n"
             << (ok ? "jelly-grade: hints check passed\n" : "jelly-grade: hints check FAILED\n");
   return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
+          const GradeOptions& options) {
+  const fs::path file = args.out.empty() ? hints_path(config) : fs::path(args.out);
+  const std::string regenerate = "run `jelly-grade hints --assignment " + config.assignment().id +
+                                 "` and commit " + file.string();
+  if (args.digest || args.check) {
+    const int status = check_digest(config, book, args, file, regenerate);
+    if (status >= 0) return status;
+  }
+  const fs::path root = args.work.empty()
+                            ? config.binary_dir / "grader" / "hints" / config.assignment().id
+                            : fs::absolute(args.work);
+  fs::remove_all(root);
+  std::size_t n_mutants = 0;
+  std::vector<Graded> list = hint_list(config, args, root, n_mutants);
+  grade_public(config, book, list, root, jobs, options);
+  if (const int status = check_grading(list); status != 0) return status;
+  const std::string text =
+      make_hints_json(config, book, std::vector<Graded>(list.begin(), list.begin() + n_mutants));
+  if (!args.check) return write_hints(file, text, n_mutants);
+  return check_hints(config, book, file, text, regenerate, list, n_mutants);
 }
 
 }  // namespace jelly::grade

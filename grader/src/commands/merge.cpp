@@ -3,11 +3,11 @@
 #include <set>
 #include <stdexcept>
 
-#include "class_record.hpp"
-#include "commands.hpp"
-#include "csv.hpp"
-#include "files.hpp"
-#include "text_safety.hpp"
+#include "class/class_record.hpp"
+#include "class/csv.hpp"
+#include "commands/commands.hpp"
+#include "inputs/files.hpp"
+#include "reports/text_safety.hpp"
 
 namespace jelly::grade {
 
@@ -35,18 +35,11 @@ Json read_batch_manifest(const fs::path& part) {
   return m;
 }
 
-}  // namespace
-
-std::string batch_assignment(const fs::path& part) {
-  return read_batch_manifest(part).value("assignment", "");
-}
-
-int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std::string>& parts,
-          const fs::path& out) {
-  if (parts.empty()) throw std::runtime_error("merge: no batch folders given");
-  // Every part must come from the same class, graded the same way.
-  std::vector<Json> manifests;
-  for (const std::string& p : parts) manifests.push_back(read_batch_manifest(p));
+/// Every part must come from the same class, graded the same way, and no student may be in two
+/// parts. Returns who graded whom: student id → the part.
+std::map<std::string, std::string> check_parts(const GradeConfig& config,
+                                               const std::vector<std::string>& parts,
+                                               const std::vector<Json>& manifests) {
   const Json& first = manifests.front();
   std::map<std::string, std::string> owner;  // student id → the part that graded them
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -71,44 +64,59 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
                                  " and " + parts[k] + ": were two parts given the same --shard?");
     }
   }
+  return owner;
+}
+
+/// When the parts are shards of one count N, the shards that were not given ("2/4, 4/4");
+/// otherwise "".
+std::string shards_not_given(const std::vector<Json>& manifests) {
+  std::set<std::string> given;
+  std::string count;
+  bool one_count = true;
+  for (const Json& m : manifests) {
+    const std::string shard = m.value("shard", "");
+    const auto slash = shard.find('/');
+    if (slash == std::string::npos) {
+      one_count = false;
+      continue;
+    }
+    if (!count.empty() && count != shard.substr(slash + 1)) one_count = false;
+    count = shard.substr(slash + 1);
+    given.insert(shard);
+  }
+  std::string shards;
+  if (one_count && !count.empty() && count.size() < 6 &&
+      count.find_first_not_of("0123456789") == std::string::npos) {
+    const int n = std::stoi(count);
+    for (int i = 1; i <= n; ++i)
+      if (!given.count(shard_label(i, n)))
+        shards += (shards.empty() ? "" : ", ") + shard_label(i, n);
+  }
+  return shards;
+}
+
+/// Every student of the class must be in a part: throws naming the missing ones (and shards).
+void check_whole_class(const std::vector<Json>& manifests,
+                       const std::map<std::string, std::string>& owner) {
+  const Json& first = manifests.front();
   std::vector<std::string> missing;
   for (const Json& id : first["class"])
     if (!owner.count(id.get<std::string>())) missing.push_back(id.get<std::string>());
-  if (!missing.empty()) {
-    std::string list;
-    for (std::size_t k = 0; k < missing.size() && k < 5; ++k)
-      list += (k ? ", " : "") + safe_text(missing[k]);
-    // When the parts are shards of one count N, name the shards that were not given.
-    std::set<std::string> given;
-    std::string count;
-    bool one_count = true;
-    for (const Json& m : manifests) {
-      const std::string shard = m.value("shard", "");
-      const auto slash = shard.find('/');
-      if (slash == std::string::npos) {
-        one_count = false;
-        continue;
-      }
-      if (!count.empty() && count != shard.substr(slash + 1)) one_count = false;
-      count = shard.substr(slash + 1);
-      given.insert(shard);
-    }
-    std::string shards;
-    if (one_count && !count.empty() && count.size() < 6 &&
-        count.find_first_not_of("0123456789") == std::string::npos) {
-      const int n = std::stoi(count);
-      for (int i = 1; i <= n; ++i)
-        if (!given.count(shard_label(i, n)))
-          shards += (shards.empty() ? "" : ", ") + shard_label(i, n);
-    }
-    throw std::runtime_error(
-        (shards.empty() ? std::string("a part is missing") : "shard " + shards + " is missing") +
-        ": " + std::to_string(missing.size()) + " of the class's " +
-        std::to_string(first["class"].size()) + " students are in none of the parts (" + list +
-        (missing.size() > 5 ? ", ..." : "") +
-        "); give every part's --out folder (the shard of a part is in its batch.json)");
-  }
-  // Every part's records must be there and whole before anything is copied.
+  if (missing.empty()) return;
+  std::string list;
+  for (std::size_t k = 0; k < missing.size() && k < 5; ++k)
+    list += (k ? ", " : "") + safe_text(missing[k]);
+  const std::string shards = shards_not_given(manifests);
+  throw std::runtime_error(
+      (shards.empty() ? std::string("a part is missing") : "shard " + shards + " is missing") +
+      ": " + std::to_string(missing.size()) + " of the class's " +
+      std::to_string(first["class"].size()) + " students are in none of the parts (" + list +
+      (missing.size() > 5 ? ", ..." : "") +
+      "); give every part's --out folder (the shard of a part is in its batch.json)");
+}
+
+/// Every part's records, in class order; each must be there and whole before anything is copied.
+std::vector<Json> read_records(const Json& first, const std::map<std::string, std::string>& owner) {
   std::vector<Json> records;
   for (const Json& id : first["class"]) {
     const std::string s = id.get<std::string>();
@@ -121,6 +129,13 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
                                "batch into " +
                                owner.at(s) + " was stopped?): finish that part with --resume");
   }
+  return records;
+}
+
+/// Each student's folder into out/students/, whole or not at all; and batch --similarity's
+/// report (the first shard compared the whole class).
+void copy_results(const std::vector<std::string>& parts,
+                  const std::map<std::string, std::string>& owner, const fs::path& out) {
   fs::create_directories(out / "students");
   for (const auto& [id, part] : owner) {
     const fs::path from = fs::path(part) / "students" / id;
@@ -133,7 +148,6 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
     fs::remove_all(to);
     fs::rename(tmp, to);
   }
-  // batch --similarity: the first shard compared the whole class; its report comes along.
   for (const std::string& p : parts)
     for (const char* name : {"similarity.html", "similarity.json"}) {
       const fs::path from = fs::path(p) / name;
@@ -141,6 +155,24 @@ int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std
       if (fs::is_regular_file(from, ec) && !fs::equivalent(from, out / name, ec))
         write_file_atomically(out / name, read_file(from));
     }
+}
+
+}  // namespace
+
+std::string batch_assignment(const fs::path& part) {
+  return read_batch_manifest(part).value("assignment", "");
+}
+
+int merge(const GradeConfig& config, const CaseBook& book, const std::vector<std::string>& parts,
+          const fs::path& out) {
+  if (parts.empty()) throw std::runtime_error("merge: no batch folders given");
+  std::vector<Json> manifests;
+  for (const std::string& p : parts) manifests.push_back(read_batch_manifest(p));
+  const Json& first = manifests.front();
+  const std::map<std::string, std::string> owner = check_parts(config, parts, manifests);
+  check_whole_class(manifests, owner);
+  const std::vector<Json> records = read_records(first, owner);
+  copy_results(parts, owner, out);
   Json manifest = first;
   manifest["shard"] = "1/1";
   manifest["students"] = first["class"];

@@ -1,11 +1,11 @@
-#include "similarity.hpp"
+#include "class/similarity.hpp"
 
 #include <iostream>
 #include <set>
 #include <stdexcept>
 
-#include "commands.hpp"
-#include "submissions.hpp"
+#include "commands/commands.hpp"
+#include "inputs/submissions.hpp"
 
 namespace jelly::grade {
 

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <string>
 
-#include "commands.hpp"
-#include "files.hpp"
+#include "commands/commands.hpp"
+#include "inputs/files.hpp"
 
 namespace jelly::grade {
 

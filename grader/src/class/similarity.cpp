@@ -1,0 +1,620 @@
+#include "class/similarity.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "class/csv.hpp"
+#include "inputs/files.hpp"
+#include "reports/text_safety.hpp"
+#include "sandbox/process.hpp"
+
+namespace jelly::grade {
+
+namespace {
+
+constexpr std::size_t kMaxFileBytes = 1ULL << 20;  // as the build's source_bytes: larger is refused
+constexpr int kMaxShownLines = 60;                 // per side of one region in the HTML page
+constexpr std::size_t kMaxShownPairs = 200;        // pairs shown in full (all are in the table)
+
+// sim_c++ on PATH, or "".
+fs::path find_sim() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    std::size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    const std::string dir = dirs.substr(start, end - start);
+    start = end + 1;
+    if (dir.empty()) continue;
+    std::error_code ec;
+    const fs::path p = fs::path(dir) / "sim_c++";
+    if (fs::is_regular_file(p, ec) &&
+        (fs::status(p, ec).permissions() & fs::perms::others_exec) != fs::perms::none)
+      return p;
+  }
+  return {};
+}
+
+// The file the build grades as task file `name` (build.cpp: find_named, find_lms_named): the
+// shallowest one called `name`; else the shallowest LMS bulk-download name for it, the latest
+// resubmission first. Empty when there is none.
+fs::path find_task_file(const fs::path& root, const std::string& name) {
+  const std::vector<fs::path> exact = find_named(root, name);
+  return exact.empty() ? find_lms_named(root, name) : exact.front();
+}
+
+// The bytes of a submitted file, or "" with `why` set: a symbolic link, a hard link (a second name
+// of some other file), anything but a regular file, or a file above kMaxFileBytes is not read.
+std::string read_task_file(const fs::path& p, std::string& why) {
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(p, ec);
+  if (ec || fs::is_symlink(st)) {
+    why = ec ? "cannot be read" : "is a symbolic link";
+    return "";
+  }
+  if (!fs::is_regular_file(st)) {
+    why = "is not a regular file";
+    return "";
+  }
+  if (fs::hard_link_count(p, ec) > 1) {
+    why = "is a hard link";
+    return "";
+  }
+  if (fs::file_size(p, ec) > kMaxFileBytes) {
+    why = "is larger than " + std::to_string(kMaxFileBytes >> 10) + " KiB";
+    return "";
+  }
+  std::string text = read_file(p);
+  if (text.size() > kMaxFileBytes) {
+    why = "is larger than " + std::to_string(kMaxFileBytes >> 10) + " KiB";
+    return "";
+  }
+  return text;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// A line without its white space: how a line is compared with the stub's lines.
+std::string squeeze(const std::string& line) {
+  std::string s;
+  for (const char c : line)
+    if (c != ' ' && c != '\t' && c != '\r' && c != '\v' && c != '\f') s += c;
+  return s;
+}
+
+// For each line: does it hold code (something besides white space, comments and a preprocessor
+// directive, which sim_c++ ignores too)? A small C++ scanner: comments, string and character
+// literals (raw strings included), so that "//" in a string is not a comment.
+std::vector<char> code_lines(const std::vector<std::string>& lines) {
+  std::vector<char> code(lines.size(), 0);
+  enum { Normal, Block, Str, Chr, Raw } state = Normal;
+  std::string raw_end;  // )delim" of the raw string being read
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    const std::string& l = lines[n];
+    bool directive = false, seen = false;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const char c = l[i];
+      const char next = i + 1 < l.size() ? l[i + 1] : '\0';
+      switch (state) {
+        case Normal:
+          if (c == ' ' || c == '\t' || c == '\v' || c == '\f') break;
+          if (c == '/' && next == '/') {
+            i = l.size();
+            break;
+          }
+          if (c == '/' && next == '*') {
+            state = Block;
+            ++i;
+            break;
+          }
+          if (!seen && c == '#') directive = true;
+          seen = true;
+          code[n] = 1;
+          if (c == 'R' && next == '"' &&
+              (i == 0 ||
+               !(std::isalnum(static_cast<unsigned char>(l[i - 1])) || l[i - 1] == '_'))) {
+            const std::size_t open = l.find('(', i + 2);
+            if (open != std::string::npos && open - (i + 2) <= 16) {
+              raw_end = ")" + l.substr(i + 2, open - (i + 2)) + "\"";
+              state = Raw;
+              i = open;
+            }
+          } else if (c == '"') {
+            state = Str;
+          } else if (c == '\'' && !(i > 0 && std::isxdigit(static_cast<unsigned char>(l[i - 1])))) {
+            state = Chr;  // (not a digit separator: 1'000)
+          }
+          break;
+        case Block:
+          if (c == '*' && next == '/') {
+            state = Normal;
+            ++i;
+          }
+          break;
+        case Str:
+        case Chr:
+          code[n] = 1;
+          if (c == '\\')
+            ++i;
+          else if (c == (state == Str ? '"' : '\''))
+            state = Normal;
+          break;
+        case Raw:
+          code[n] = 1;
+          if (l.compare(i, raw_end.size(), raw_end) == 0) {
+            i += raw_end.size() - 1;
+            state = Normal;
+          }
+          break;
+      }
+    }
+    if (state == Str || state == Chr) state = Normal;  // an unterminated literal ends at the line
+    if (directive) code[n] = 0;
+  }
+  return code;
+}
+
+// The C++ code blocks (```cpp, ```c++, ```cc, ```cxx, ```c) of the assignment's handout pages
+// (the folder of the manifest's `handout`): given code, as the stubs are.
+std::vector<std::string> handout_code(const GradeConfig& config) {
+  std::vector<std::string> blocks;
+  const std::string& front = config.assignment().manifest.handout;
+  if (front.empty()) return blocks;
+  std::vector<fs::path> pages;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it((config.assignments_dir() / front).parent_path(), ec),
+       end;
+       !ec && it != end; it.increment(ec))
+    if (it->path().extension() == ".md" && it->is_regular_file(ec)) pages.push_back(it->path());
+  std::sort(pages.begin(), pages.end());
+  for (const fs::path& page : pages) {
+    std::string block;
+    bool in = false, cxx = false;
+    for (const std::string& l : split_lines(read_file(page))) {
+      const std::size_t start = l.find_first_not_of(' ');
+      if (start != std::string::npos && l.compare(start, 3, "```") == 0) {
+        if (in && cxx && !block.empty()) blocks.push_back(block);
+        if (!in) {
+          std::string info = l.substr(start + 3);
+          info = info.substr(0, info.find_first_of(" {"));
+          cxx = info == "cpp" || info == "c++" || info == "cc" || info == "cxx" || info == "c";
+        }
+        in = !in;
+        block.clear();
+      } else if (in) {
+        block += l + "\n";
+      }
+    }
+  }
+  return blocks;
+}
+
+// One submission's copy of one task file.
+struct TaskCopy {
+  bool present = false;
+  std::string shown;               // its path in the submission (student-controlled)
+  std::string why;                 // why it was not compared (missing, refused)
+  std::vector<std::string> lines;  // as submitted
+  std::vector<char> stub;  // given code: identical to a line of the stub or of the handout's code,
+                           // or in a run with either
+  std::vector<char> code;  // the line holds code
+  bool counts(std::size_t line) const {  // 1-based
+    return line >= 1 && line <= lines.size() && code[line - 1] && !stub[line - 1];
+  }
+};
+
+// One region two submissions share: lines [a1, a2] of a's copy of task file `task` and [b1, b2] of
+// b's, `tokens` tokens long.
+struct Run {
+  std::size_t a = 0, b = 0, task = 0;
+  long a1 = 0, a2 = 0, b1 = 0, b2 = 0, tokens = 0;
+};
+
+// "NAME: line A-B" (one side of a sim_c++ -n line, trailing blanks allowed). False when it is not.
+bool parse_side(const std::string& s, std::string& name, long& from, long& to) {
+  const std::size_t colon = s.find(": line ");
+  if (colon == std::string::npos || colon == 0) return false;
+  name = s.substr(0, colon);
+  const char* p = s.c_str() + colon + 7;
+  char* end = nullptr;
+  from = std::strtol(p, &end, 10);
+  if (end == p || *end != '-') return false;
+  p = end + 1;
+  to = std::strtol(p, &end, 10);
+  if (end == p) return false;
+  for (; *end; ++end)
+    if (*end != ' ') return false;
+  return from >= 1 && to >= from;
+}
+
+// sim_c++'s -n output: "A.cpp: line 4-59      |B.cpp: line 4-59      [577]". Every file name in it
+// is one the grader chose ("<index>.cpp", "stub.cpp"), so no submitted text can take part in it.
+struct SimLine {
+  std::string left, right;
+  long l1 = 0, l2 = 0, r1 = 0, r2 = 0, tokens = 0;
+};
+bool parse_sim_line(const std::string& line, SimLine& out) {
+  const std::size_t bar = line.find('|');
+  const std::size_t open = line.rfind('[');
+  if (bar == std::string::npos || open == std::string::npos || open < bar) return false;
+  const std::size_t close = line.find(']', open);
+  if (close == std::string::npos) return false;
+  if (!parse_side(line.substr(0, bar), out.left, out.l1, out.l2)) return false;
+  if (!parse_side(line.substr(bar + 1, open - bar - 1), out.right, out.r1, out.r2)) return false;
+  out.tokens = std::strtol(line.c_str() + open + 1, nullptr, 10);
+  return out.tokens > 0;
+}
+
+std::string percent(double p) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(0);
+  s << p;
+  return s.str();
+}
+
+std::string shown(const std::string& student_text) { return safe_excerpt(student_text, 200); }
+
+// Lines [from, to] of a copy as an HTML <pre>: line numbers, escaped text, stub lines dimmed.
+std::string html_lines(const TaskCopy& f, long from, long to) {
+  std::ostringstream o;
+  o << "<pre>";
+  long shown_lines = 0;
+  for (long n = from; n <= to && n <= static_cast<long>(f.lines.size()); ++n) {
+    if (shown_lines++ == kMaxShownLines) {
+      o << "<i>… " << (to - n + 1) << " more lines</i>\n";
+      break;
+    }
+    const bool stub = f.stub[static_cast<std::size_t>(n - 1)];
+    o << (stub ? "<span class=\"stub\">" : "") << "<span class=\"n\">" << n << "</span> "
+      << html_escape(safe_excerpt(f.lines[static_cast<std::size_t>(n - 1)], 240))
+      << (stub ? "</span>" : "") << "\n";
+  }
+  o << "</pre>";
+  return o.str();
+}
+
+struct Pair {
+  std::size_t a = 0, b = 0;
+  double pa = 0.0, pb = 0.0;  // percent of a's (b's) counted lines in shared regions
+  long la = 0, lb = 0;        // those lines
+  std::vector<Run> runs;
+  double top() const { return std::max(pa, pb); }
+};
+
+// Why a submission's task file was not compared (student id: file: why), for the report.
+std::vector<std::string> notes_for(const std::vector<SimilarityInput>& inputs,
+                                   const std::vector<std::string>& tasks,
+                                   const std::vector<std::vector<TaskCopy>>& copies) {
+  std::vector<std::string> notes;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    for (std::size_t t = 0; t < tasks.size(); ++t)
+      if (!copies[i][t].present)
+        notes.push_back(shown(inputs[i].id) + ": " + tasks[t] +
+                        (copies[i][t].shown.empty() ? "" : " (" + shown(copies[i][t].shown) + ")") +
+                        " " + copies[i][t].why);
+  return notes;
+}
+
+constexpr const char* kEvidence =
+    "This is evidence for a person to read, never a verdict. A high percentage says only that two "
+    "submissions share long regions of the same token sequence (identifiers, numbers, strings, "
+    "layout and comments are ignored). A short task with one natural solution, code both took "
+    "from a lecture or a book, and permitted work in pairs produce such regions too. Read the "
+    "regions side by side, and hear the students, before deciding anything.";
+
+int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+           const std::vector<std::vector<TaskCopy>>& copies, const std::vector<Run>& runs,
+           const std::vector<std::string>& notes, std::size_t handout_blocks, const fs::path& out,
+           const SimilarityOptions& options) {
+  const std::vector<std::string>& tasks = config.task_files();
+  // Each submission's own code lines: lines with code that are not stub lines.
+  std::vector<long> own(inputs.size(), 0);
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    for (const TaskCopy& c : copies[i])
+      if (c.present)
+        for (std::size_t n = 1; n <= c.lines.size(); ++n) own[i] += c.counts(n);
+  std::map<std::pair<std::size_t, std::size_t>, Pair> by_pair;
+  for (const Run& r : runs) {
+    Pair& p = by_pair[{r.a, r.b}];
+    p.a = r.a;
+    p.b = r.b;
+    p.runs.push_back(r);
+  }
+  std::vector<Pair> flagged, below;
+  for (auto& [key, p] : by_pair) {
+    std::set<std::pair<std::size_t, long>> in_a, in_b;
+    for (const Run& r : p.runs) {
+      for (long n = r.a1; n <= r.a2; ++n)
+        if (copies[p.a][r.task].counts(static_cast<std::size_t>(n))) in_a.insert({r.task, n});
+      for (long n = r.b1; n <= r.b2; ++n)
+        if (copies[p.b][r.task].counts(static_cast<std::size_t>(n))) in_b.insert({r.task, n});
+    }
+    p.la = static_cast<long>(in_a.size());
+    p.lb = static_cast<long>(in_b.size());
+    p.pa = own[p.a] ? 100.0 * static_cast<double>(p.la) / static_cast<double>(own[p.a]) : 0.0;
+    p.pb = own[p.b] ? 100.0 * static_cast<double>(p.lb) / static_cast<double>(own[p.b]) : 0.0;
+    if ((p.la > 0 || p.lb > 0) && p.top() >= options.threshold)
+      flagged.push_back(std::move(p));
+    else
+      below.push_back(std::move(p));
+  }
+  const auto order = [&](const Pair& x, const Pair& y) {
+    if (x.top() != y.top()) return x.top() > y.top();
+    if (std::min(x.pa, x.pb) != std::min(y.pa, y.pb))
+      return std::min(x.pa, x.pb) > std::min(y.pa, y.pb);
+    return std::tie(inputs[x.a].id, inputs[x.b].id) < std::tie(inputs[y.a].id, inputs[y.b].id);
+  };
+  std::sort(flagged.begin(), flagged.end(), order);
+  std::sort(below.begin(), below.end(), order);
+  if (below.size() > 10) below.resize(10);
+  for (Pair& p : flagged)
+    std::sort(p.runs.begin(), p.runs.end(), [](const Run& x, const Run& y) {
+      return std::tie(x.task, x.a1, x.b1) < std::tie(y.task, y.a1, y.b1);
+    });
+  const std::size_t compared = inputs.size() * (inputs.size() - (inputs.empty() ? 0 : 1)) / 2;
+  const std::string settings =
+      "sim_c++ -e -r" + std::to_string(options.min_run) +
+      " on each task file over the whole class, the stub and the handout's "
+      "C++ code blocks (" +
+      std::to_string(handout_blocks) + ") as old files";
+
+  nlohmann::json j;
+  j["assignment"] = config.assignment().id;
+  j["evidence_not_verdict"] = kEvidence;
+  j["threshold_percent"] = options.threshold;
+  j["min_run_tokens"] = options.min_run;
+  j["submissions"] = inputs.size();
+  j["pairs_compared"] = compared;
+  j["pairs_flagged"] = flagged.size();
+  j["pairs"] = nlohmann::json::array();
+  for (const Pair& p : flagged) {
+    nlohmann::json jp;
+    jp["a"] = shown(inputs[p.a].id);
+    jp["b"] = shown(inputs[p.b].id);
+    jp["percent_a"] = std::round(p.pa * 10.0) / 10.0;
+    jp["percent_b"] = std::round(p.pb * 10.0) / 10.0;
+    jp["shared_lines_a"] = p.la;
+    jp["shared_lines_b"] = p.lb;
+    jp["own_lines_a"] = own[p.a];
+    jp["own_lines_b"] = own[p.b];
+    jp["regions"] = nlohmann::json::array();
+    for (const Run& r : p.runs)
+      jp["regions"].push_back({{"task_file", tasks[r.task]},
+                               {"a_file", shown(copies[p.a][r.task].shown)},
+                               {"a_lines", {r.a1, r.a2}},
+                               {"b_file", shown(copies[p.b][r.task].shown)},
+                               {"b_lines", {r.b1, r.b2}},
+                               {"tokens", r.tokens}});
+    j["pairs"].push_back(jp);
+  }
+  // How close the rest came: the threshold is a choice, and this shows what it left out.
+  j["highest_below_threshold"] = nlohmann::json::array();
+  for (const Pair& p : below)
+    j["highest_below_threshold"].push_back({{"a", shown(inputs[p.a].id)},
+                                            {"b", shown(inputs[p.b].id)},
+                                            {"percent_a", std::round(p.pa * 10.0) / 10.0},
+                                            {"percent_b", std::round(p.pb * 10.0) / 10.0}});
+  j["not_compared"] = notes;
+
+  std::ostringstream h;
+  h << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab: similar "
+       "submissions</title><style>body{font-family:sans-serif;max-width:80em;margin:auto}"
+       "td,th{padding:2px 8px;vertical-align:top}table.side{table-layout:fixed;width:100%}"
+       "table.side td{width:50%}pre{margin:0;white-space:pre-wrap;overflow-wrap:anywhere;"
+       "font-size:85%}.n{color:#888}.stub{color:#aaa}.evidence{border:2px solid #c60;padding:"
+       "0.5em 1em;background:#fff8f0}</style></head><body>\n";
+  h << "<h1>Similar submissions: " << html_escape(config.assignment().id) << "</h1>\n";
+  h << "<p class=\"evidence\"><b>Evidence, not a verdict.</b> " << html_escape(kEvidence)
+    << "</p>\n";
+  h << "<p>" << inputs.size() << " submissions, " << compared << " pairs compared, "
+    << flagged.size() << " at or above " << options.threshold
+    << " %. A&nbsp;% is the share of A's own code lines (lines with code that are not the "
+       "stub's) inside regions B shares; a pair is listed when A&nbsp;% or B&nbsp;% reaches the "
+       "threshold. Given lines (identical to a line of the stub or of the handout's C++ code, or "
+       "in "
+       "a run of "
+    << options.min_run
+    << " tokens or more shared with them) do not count; they are shown grey. Settings: "
+    << html_escape(settings) << ".</p>\n";
+  if (!flagged.empty()) {
+    h << "<table border=\"1\" style=\"border-collapse:collapse\"><tr><th>#</th><th>A</th>"
+         "<th>B</th><th>A %</th><th>B %</th><th>shared lines (A / B)</th></tr>\n";
+    for (std::size_t k = 0; k < flagged.size(); ++k) {
+      const Pair& p = flagged[k];
+      h << "<tr><td>"
+        << (k < kMaxShownPairs ? "<a href=\"#pair-" + std::to_string(k + 1) + "\">" +
+                                     std::to_string(k + 1) + "</a>"
+                               : std::to_string(k + 1))
+        << "</td><td>" << html_escape(shown(inputs[p.a].id)) << "</td><td>"
+        << html_escape(shown(inputs[p.b].id)) << "</td><td>" << percent(p.pa) << "</td><td>"
+        << percent(p.pb) << "</td><td>" << p.la << " / " << p.lb << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+  for (std::size_t k = 0; k < flagged.size() && k < kMaxShownPairs; ++k) {
+    const Pair& p = flagged[k];
+    h << "<h2 id=\"pair-" << (k + 1) << "\">" << (k + 1) << ". "
+      << html_escape(shown(inputs[p.a].id)) << " (" << percent(p.pa) << " %) and "
+      << html_escape(shown(inputs[p.b].id)) << " (" << percent(p.pb) << " %)</h2>\n";
+    for (const Run& r : p.runs) {
+      const TaskCopy& fa = copies[p.a][r.task];
+      const TaskCopy& fb = copies[p.b][r.task];
+      h << "<table class=\"side\" border=\"1\" style=\"border-collapse:collapse\"><tr><th>"
+        << html_escape(shown(inputs[p.a].id)) << ": " << html_escape(shown(fa.shown)) << " lines "
+        << r.a1 << "–" << r.a2 << "</th><th>" << html_escape(shown(inputs[p.b].id)) << ": "
+        << html_escape(shown(fb.shown)) << " lines " << r.b1 << "–" << r.b2 << " (" << r.tokens
+        << " tokens)</th></tr>\n<tr><td>" << html_lines(fa, r.a1, r.a2) << "</td><td>"
+        << html_lines(fb, r.b1, r.b2) << "</td></tr></table><br>\n";
+    }
+  }
+  if (flagged.size() > kMaxShownPairs)
+    h << "<p>The regions of the first " << kMaxShownPairs
+      << " pairs are shown; similarity.json lists those of every pair.</p>\n";
+  if (!notes.empty()) {
+    h << "<h2>Files not compared</h2><ul>\n";
+    for (const std::string& n : notes) h << "<li>" << html_escape(n) << "</li>\n";
+    h << "</ul>\n";
+  }
+  h << "</body></html>\n";
+  write_file_atomically(out / "similarity.json", j.dump(1) + "\n");
+  write_file_atomically(out / "similarity.html", h.str());
+  return static_cast<int>(flagged.size());
+}
+
+}  // namespace
+
+fs::path similarity_tool() {
+  const fs::path sim = find_sim();
+  if (sim.empty())
+    throw std::runtime_error(
+        "similarity: sim_c++ (Dick Grune's similarity tester) was not found on PATH: install the "
+        "Debian package similarity-tester (sudo apt-get install similarity-tester, or sudo "
+        "tools/install-deps.sh)");
+  return sim;
+}
+
+int write_similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+                     const fs::path& out, const SimilarityOptions& options) {
+  const fs::path sim = similarity_tool();
+  const std::vector<std::string>& tasks = config.task_files();
+  fs::create_directories(out);
+  const fs::path work = out / "similarity-work";
+  struct RemoveWork {
+    fs::path dir;
+    ~RemoveWork() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } remove_work{work};
+  fs::remove_all(work);
+
+  // Every submission's copy of every task file, its stub lines blanked in the copy sim_c++ reads.
+  std::vector<std::vector<TaskCopy>> copies(inputs.size(), std::vector<TaskCopy>(tasks.size()));
+  std::vector<Run> runs;
+  const std::vector<std::string> handout = handout_code(config);
+  for (std::size_t t = 0; t < tasks.size(); ++t) {
+    const std::string stub_text = read_file(config.assignments_dir() / tasks[t]);
+    if (stub_text.empty())
+      throw std::runtime_error("similarity: cannot read the stub " +
+                               (config.assignments_dir() / tasks[t]).string());
+    std::set<std::string> stub_lines;
+    for (const std::string& l : split_lines(stub_text))
+      if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
+    for (const std::string& block : handout)
+      for (const std::string& l : split_lines(block))
+        if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
+    const fs::path dir = work / std::to_string(t);
+    fs::create_directories(dir);
+    write_file_atomically(dir / "stub.cpp", stub_text);
+    for (std::size_t h = 0; h < handout.size(); ++h)
+      write_file_atomically(dir / ("handout" + std::to_string(h) + ".cpp"), handout[h]);
+    std::vector<std::string> argv = {sim.string(), "-e",     "-n",
+                                     "-s",         "-T",     "-r" + std::to_string(options.min_run),
+                                     "-o",         "sim.out"};
+    std::size_t present = 0;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      TaskCopy& c = copies[i][t];
+      const fs::path file = find_task_file(inputs[i].folder, tasks[t]);
+      if (file.empty()) {
+        c.why = "not found";
+        continue;
+      }
+      // Lexically: fs::relative would follow a symbolic link and show where it points.
+      const fs::path rel = file.lexically_relative(inputs[i].folder);
+      c.shown = (rel.empty() ? file.filename() : rel).generic_string();
+      const std::string text = read_task_file(file, c.why);
+      if (!c.why.empty()) continue;
+      c.lines = split_lines(text);
+      c.code = code_lines(c.lines);
+      c.stub.assign(c.lines.size(), 0);
+      std::string for_sim;
+      for (std::size_t n = 0; n < c.lines.size(); ++n) {
+        const std::string s = squeeze(c.lines[n]);
+        c.stub[n] = !s.empty() && stub_lines.count(s);
+        // Controls (NUL among them) become blanks: sim_c++ and this file keep the same lines.
+        if (!c.stub[n])
+          for (const char ch : c.lines[n])
+            for_sim += static_cast<unsigned char>(ch) < 0x20 && ch != '\t' ? ' ' : ch;
+        for_sim += '\n';
+      }
+      bool own = false;  // anything but stub lines?
+      for (std::size_t n = 0; n < c.lines.size(); ++n) own = own || (c.code[n] && !c.stub[n]);
+      if (!own) {
+        c.why = "holds only given lines (the stub's, the handout's code)";
+        continue;
+      }
+      c.present = true;
+      ++present;
+      std::ofstream(dir / (std::to_string(i) + ".cpp"), std::ios::binary) << for_sim;
+    }
+    if (present < 2) continue;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+      if (copies[i][t].present) argv.push_back(std::to_string(i) + ".cpp");
+    argv.push_back("/");  // the given code are "old" files: runs against them mark it
+    argv.push_back("stub.cpp");
+    for (std::size_t h = 0; h < handout.size(); ++h)
+      argv.push_back("handout" + std::to_string(h) + ".cpp");
+    Limits lim = trusted_tool_limits(options.timeout_s);
+    lim.memory_bytes = 4ULL << 30;
+    const ChildResult r = run_child(argv, lim, dir);
+    if (!r.started || r.timed_out || r.signal != 0 || r.exit_code != 0)
+      throw std::runtime_error(
+          "similarity: sim_c++ on the class's " + tasks[t] + " " +
+          (!r.started    ? "did not start: " + r.start_error
+           : r.timed_out ? "took longer than " + percent(options.timeout_s) + " s"
+           : r.signal    ? "was ended by " + describe_signal(r.signal)
+                         : "failed with exit status " + std::to_string(r.exit_code)) +
+          (r.err.empty() ? "" : ": " + safe_excerpt(r.err, 400)));
+    // Runs against the stub or the handout mark given code the student moved or reformatted; the
+    // others are the shared regions.
+    std::istringstream simout(read_file(dir / "sim.out"));
+    std::string line;
+    const auto index = [&](const std::string& name, std::size_t& i) {
+      if (name.size() < 5 || name.compare(name.size() - 4, 4, ".cpp") != 0) return false;
+      const std::string digits = name.substr(0, name.size() - 4);
+      if (digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+      i = std::stoul(digits);
+      return i < inputs.size() && copies[i][t].present;
+    };
+    while (std::getline(simout, line)) {
+      SimLine s;
+      if (!parse_sim_line(line, s)) continue;
+      std::size_t a = 0, b = 0;
+      const bool left = index(s.left, a), right = index(s.right, b);
+      if (left && (s.right == "stub.cpp" || s.right.rfind("handout", 0) == 0)) {
+        for (long n = s.l1; n <= s.l2 && n <= static_cast<long>(copies[a][t].stub.size()); ++n)
+          copies[a][t].stub[static_cast<std::size_t>(n - 1)] = 1;
+      } else if (left && right && a != b) {
+        Run run{a, b, t, s.l1, s.l2, s.r1, s.r2, s.tokens};
+        if (a > b) run = Run{b, a, t, s.r1, s.r2, s.l1, s.l2, s.tokens};
+        runs.push_back(run);
+      }
+    }
+  }
+  return report(config, inputs, copies, runs, notes_for(inputs, tasks, copies), handout.size(), out,
+                options);
+}
+
+}  // namespace jelly::grade
