@@ -17,6 +17,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
+  # the instructor's grader: class exports (submission_metadata.yml, zips); the HTML reports' templates
+  libyaml-cpp-dev libzip-dev libkainjow-mustache-dev
   gnuplot-nox xvfb xauth zip unzip
   similarity-tester  # sim_c++: `jelly-grade similarity` (who copied) and its test
   ccache    # run-tests compiles through it when present: repeated runs and the release builds reuse objects
