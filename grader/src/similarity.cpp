@@ -25,26 +25,6 @@ constexpr std::size_t kMaxFileBytes = 1ULL << 20;  // as the build's source_byte
 constexpr int kMaxShownLines = 60;                 // per side of one region in the HTML page
 constexpr std::size_t kMaxShownPairs = 200;        // pairs shown in full (all are in the table)
 
-// sim_c++ on PATH, or "".
-fs::path find_sim() {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    std::size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    const std::string dir = dirs.substr(start, end - start);
-    start = end + 1;
-    if (dir.empty()) continue;
-    std::error_code ec;
-    const fs::path p = fs::path(dir) / "sim_c++";
-    if (fs::is_regular_file(p, ec) &&
-        (fs::status(p, ec).permissions() & fs::perms::others_exec) != fs::perms::none)
-      return p;
-  }
-  return {};
-}
-
 // The file the build grades as task file `name` (build.cpp: find_named, find_lms_named): the
 // shallowest one called `name`; else the shallowest LMS bulk-download name for it, the latest
 // resubmission first. Empty when there is none.
@@ -484,7 +464,7 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
 }  // namespace
 
 fs::path similarity_tool() {
-  const fs::path sim = find_sim();
+  const fs::path sim = find_on_path("sim_c++").value_or(fs::path());
   if (sim.empty())
     throw std::runtime_error(
         "similarity: sim_c++ (Dick Grune's similarity tester) was not found on PATH: install the "

@@ -140,30 +140,6 @@ std::string common_dash_prefix(const std::vector<Entry>& es) {
   return dash == std::string::npos ? "" : p.substr(0, dash + 1);
 }
 
-/// unzip on the PATH (run_child does not search it), else /usr/bin/unzip.
-std::string find_unzip() {
-#ifdef _WIN32
-  const char sep = ';';
-  const char* exe = "unzip.exe";
-#else
-  const char sep = ':';
-  const char* exe = "unzip";
-#endif
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t pos = 0;
-  while (pos <= dirs.size()) {
-    auto end = dirs.find(sep, pos);
-    if (end == std::string::npos) end = dirs.size();
-    const std::string d = dirs.substr(pos, end - pos);
-    pos = end + 1;
-    std::error_code ec;
-    if (!d.empty() && fs::is_regular_file(fs::path(d) / exe, ec))
-      return (fs::path(d) / exe).string();
-  }
-  return "/usr/bin/unzip";
-}
-
 /// Extracts `zip` into `scratch` with unzip, its entries listed with libzip. Entries with an
 /// absolute path or a ".." component are refused: returned as (where unzip's own sanitising puts them, relative to `scratch`, the
 /// message); unzip itself keeps every file inside `scratch` and makes symlinks last, so that no
@@ -175,7 +151,7 @@ std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
   fs::create_directories(scratch);
   const std::string shown = zip.filename().string();
   const Limits lim = trusted_tool_limits(600.0, std::size_t{256} << 20);
-  const std::string unzip = find_unzip();
+  const std::string unzip = find_on_path("unzip").value_or("/usr/bin/unzip").string();
   std::vector<std::pair<fs::path, std::string>> refused;
   for (const std::string& name : zip_entry_names(zip, shown)) {
     if (name.empty()) continue;

@@ -1,4 +1,4 @@
-#include "process.hpp"
+#include "jelly/process/process.hpp"
 
 #include <fcntl.h>
 #include <grp.h>
@@ -18,7 +18,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace jelly::grade {
+namespace jelly::process {
 
 namespace {
 
@@ -260,4 +260,4 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   return r;
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process

@@ -18,9 +18,9 @@
 #include <mutex>
 #include <thread>
 
-#include "process.hpp"
+#include "jelly/process/process.hpp"
 
-namespace jelly::grade {
+namespace jelly::process {
 
 namespace {
 
@@ -276,4 +276,4 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   return r;
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process

@@ -4,9 +4,9 @@
 #include <cstring>
 #include <string>
 
-#include "process.hpp"
+#include "jelly/process/process.hpp"
 
-namespace jelly::grade {
+namespace jelly::process {
 
 std::string describe_signal(int sig) {
   switch (sig) {
@@ -28,4 +28,4 @@ std::string describe_signal(int sig) {
   }
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process
