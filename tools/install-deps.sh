@@ -42,6 +42,7 @@ STUDENT_PACKAGES=(
   libgtest-dev libgmock-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
+  libkainjow-mustache-dev libyaml-cpp-dev libzip-dev  # jelly-grade (the self-check's)
 )
 
 # tools/run-demo: what the targets jelly and jelly-lab need with tests, benchmarks and the grader
