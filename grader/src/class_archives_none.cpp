@@ -1,6 +1,6 @@
-// A jelly-grade built without yaml-cpp and libzip: a student's self-check (JELLY_GRADER_SECCOMP=OFF,
-// Windows, macOS), which grades the student's own folder and never a class's export. Reading a
-// Gradescope export or a zip of a class says which build can.
+// A jelly-grade built without yaml-cpp and libzip: a student's self-check
+// (JELLY_GRADER_SECCOMP=OFF, Windows, macOS), which grades the student's own folder and never a
+// class's export. Reading a Gradescope export or a zip of a class says which build can.
 #include <stdexcept>
 
 #include "class_archives.hpp"

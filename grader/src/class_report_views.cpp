@@ -412,7 +412,8 @@ std::string class_html(const Json& s, ClassView view) {
   const double graded = std::max(1, s.value("graded", 0));
   HtmlList failed;
   for (const Json& t : s["tasks"])
-    if (task_failed(t)) failed.push_back(lecture ? html_lecture_task(t) : html_instructor_task(t, graded));
+    if (task_failed(t))
+      failed.push_back(lecture ? html_lecture_task(t) : html_instructor_task(t, graded));
   page.set("failed_tasks", failed);
   const std::string fine = tasks_without_failure(s);
   page.set("has_fine", !fine.empty());

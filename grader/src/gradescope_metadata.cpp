@@ -1,9 +1,9 @@
 // submission_metadata.yml of a Gradescope export (Ruby's Psych writes it), read with yaml-cpp.
 // Only the instructor's grader reads class exports: a build without yaml-cpp (a student's
 // self-check) has class_archives_none.cpp instead.
+#include <yaml-cpp/yaml.h>
 #include <set>
 #include <stdexcept>
-#include <yaml-cpp/yaml.h>
 
 #include "submissions.hpp"
 
@@ -11,8 +11,8 @@ namespace jelly::grade {
 
 namespace {
 
-
-[[noreturn]] void yaml_error(const std::string& file, const YAML::Mark& at, const std::string& what) {
+[[noreturn]] void yaml_error(const std::string& file, const YAML::Mark& at,
+                             const std::string& what) {
   throw std::runtime_error(file + ":" + std::to_string(at.line + 1) + ": " + what);
 }
 
@@ -56,9 +56,9 @@ GradescopeEntry read_entry(const std::string& folder, const YAML::Node& key,
   entry.line = key.Mark().line + 1;
   if (value.IsNull()) return entry;
   if (!value.IsMap())
-    yaml_error(file, value.Mark(),
-               "expected the submission's keys (:submitters:, ...) on the lines below " + folder +
-                   ":");
+    yaml_error(
+        file, value.Mark(),
+        "expected the submission's keys (:submitters:, ...) on the lines below " + folder + ":");
   for (const auto& kv : value) {
     if (!is_key(kv.first, "submitters") || kv.second.IsNull()) continue;
     if (!kv.second.IsSequence())

@@ -1,5 +1,5 @@
-// The grader's child processes go through the one launcher of the framework (jelly/process/process.hpp):
-// its names, in the grader's namespace.
+// The grader's child processes go through the one launcher of the framework
+// (jelly/process/process.hpp): its names, in the grader's namespace.
 #pragma once
 
 #include <jelly/process/process.hpp>

@@ -691,7 +691,8 @@ HtmlData html_failed_test(const CaseResult& c, const std::string& page) {
   HtmlList failures;
   for (const std::string& f : c.failures) {
     const bool pre = f.find('\n') != std::string::npos;
-    failures.push_back(HtmlObject{{"pre", pre}, {"text", f}, {"html", pre ? "" : html_with_links(f, page)}});
+    failures.push_back(
+        HtmlObject{{"pre", pre}, {"text", f}, {"html", pre ? "" : html_with_links(f, page)}});
   }
   return HtmlObject{{"title", c.spec->title},
                     {"id", c.spec->id},
@@ -703,12 +704,10 @@ HtmlData html_failed_test(const CaseResult& c, const std::string& page) {
 // One task's row of the summary (and the head of its section).
 HtmlData html_task_row(const TaskResult& t) {
   const TaskCount n = count(t);
-  return HtmlObject{{"anchor", task_anchor(t)},
-                    {"name", t.spec->id + " " + t.spec->title},
-                    {"points", task_points(t)},
-                    {"ok", n.passed == n.run},
-                    {"passed", std::to_string(n.passed)},
-                    {"run", std::to_string(n.run)}};
+  return HtmlObject{
+      {"anchor", task_anchor(t)},           {"name", t.spec->id + " " + t.spec->title},
+      {"points", task_points(t)},           {"ok", n.passed == n.run},
+      {"passed", std::to_string(n.passed)}, {"run", std::to_string(n.run)}};
 }
 
 // One task's section: its failed tests (the first shown, the others folded), its passed ones.
@@ -744,8 +743,10 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
                         const std::filesystem::path& dir, const std::string& terms_link) {
   const std::string page = terms_link.empty() ? r.terms_page : terms_link;
   HtmlData d;
-  d.set("report_failed_test", kainjow::mustache::partial{[] { return std::string(report_failed_test_template()); }});
-  d.set("report_course_scene", kainjow::mustache::partial{[] { return std::string(report_course_scene_template()); }});
+  d.set("report_failed_test",
+        kainjow::mustache::partial{[] { return std::string(report_failed_test_template()); }});
+  d.set("report_course_scene",
+        kainjow::mustache::partial{[] { return std::string(report_course_scene_template()); }});
   d.set("submission", r.submission);
   d.set("total", total_text(r));
   d.set("isolation", r.isolation);
@@ -779,8 +780,8 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
   d.set("scene_alone", !scene_task);
   HtmlList printed;
   for (const CaseResult* c : printed_cases(r, 5))
-    printed.push_back(
-        HtmlObject{{"id", c->spec->id}, {"status", c->status}, {"text", cut_utf8(c->printed, 1500)}});
+    printed.push_back(HtmlObject{
+        {"id", c->spec->id}, {"status", c->status}, {"text", cut_utf8(c->printed, 1500)}});
   d.set("has_printed", !printed.empty());
   d.set("printed", printed);
   return render_html(report_html_template(), "report.html.mustache", d);

@@ -364,7 +364,8 @@ Ranking rank_pairs(const std::vector<SimilarityInput>& inputs,
 }
 
 // similarity.json: every flagged pair with its regions, the highest below the threshold.
-nlohmann::json similarity_json(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+nlohmann::json similarity_json(const GradeConfig& config,
+                               const std::vector<SimilarityInput>& inputs,
                                const std::vector<std::vector<TaskCopy>>& copies,
                                const Ranking& ranking, const std::vector<std::string>& notes,
                                std::size_t compared, const SimilarityOptions& options) {
@@ -417,9 +418,9 @@ nlohmann::json similarity_json(const GradeConfig& config, const std::vector<Simi
 // regions of the first kMaxShownPairs side by side.
 std::string similarity_html(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
                             const std::vector<std::vector<TaskCopy>>& copies,
-                            const std::vector<Pair>& flagged,
-                            const std::vector<std::string>& notes, std::size_t compared,
-                            const std::string& settings, const SimilarityOptions& options) {
+                            const std::vector<Pair>& flagged, const std::vector<std::string>& notes,
+                            std::size_t compared, const std::string& settings,
+                            const SimilarityOptions& options) {
   std::ostringstream threshold;
   threshold << options.threshold;
   HtmlData page;
@@ -488,9 +489,9 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
   const nlohmann::json j =
       similarity_json(config, inputs, copies, ranking, notes, compared, options);
   write_file_atomically(out / "similarity.json", j.dump(1) + "\n");
-  write_file_atomically(out / "similarity.html",
-                        similarity_html(config, inputs, copies, ranking.flagged, notes, compared,
-                                        settings, options));
+  write_file_atomically(
+      out / "similarity.html",
+      similarity_html(config, inputs, copies, ranking.flagged, notes, compared, settings, options));
   return static_cast<int>(ranking.flagged.size());
 }
 

@@ -140,10 +140,38 @@ std::string common_dash_prefix(const std::vector<Entry>& es) {
   return dash == std::string::npos ? "" : p.substr(0, dash + 1);
 }
 
+/// Why the zip entry `name` is refused ("an absolute path", "a '..' component", both; "" when it is
+/// not), and `landing`: where unzip's own sanitising puts it (it strips a leading '/' and a drive,
+/// and drops ".." components), relative to the folder it extracts into.
+std::string refusal_of(const std::string& name, fs::path& landing) {
+  std::string why;
+  std::string rest = name;
+  if (rest.size() >= 2 && std::isalpha(static_cast<unsigned char>(rest[0])) && rest[1] == ':') {
+    why = "an absolute path";
+    rest = rest.substr(2);
+  }
+  if (!rest.empty() && (rest[0] == '/' || rest[0] == '\\')) why = "an absolute path";
+  std::string part;
+  for (std::size_t k = 0; k <= rest.size(); ++k) {
+    if (k == rest.size() || rest[k] == '/' || rest[k] == '\\') {
+      if (part == ".." && why.find("'..'") == std::string::npos)
+        why = why.empty() ? "a '..' component" : why + " and a '..' component";
+      else if (part == "..")
+        ;
+      else if (!part.empty() && part != ".")
+        landing /= part;
+      part.clear();
+    } else {
+      part += rest[k];
+    }
+  }
+  return why;
+}
+
 /// Extracts `zip` into `scratch` with unzip, its entries listed with libzip. Entries with an
-/// absolute path or a ".." component are refused: returned as (where unzip's own sanitising puts them, relative to `scratch`, the
-/// message); unzip itself keeps every file inside `scratch` and makes symlinks last, so that no
-/// entry is written through one.
+/// absolute path or a ".." component are refused: returned as (where unzip's own sanitising puts
+/// them, relative to `scratch`, the message); unzip itself keeps every file inside `scratch` and
+/// makes symlinks last, so that no entry is written through one.
 std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
                                                           const fs::path& scratch) {
   std::error_code ec;
@@ -155,29 +183,8 @@ std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
   std::vector<std::pair<fs::path, std::string>> refused;
   for (const std::string& name : zip_entry_names(zip, shown)) {
     if (name.empty()) continue;
-    // What unzip does with it: strips leading '/' (and a drive), drops ".." components.
-    std::string why;
-    std::string rest = name;
-    if (rest.size() >= 2 && std::isalpha(static_cast<unsigned char>(rest[0])) && rest[1] == ':') {
-      why = "an absolute path";
-      rest = rest.substr(2);
-    }
-    if (!rest.empty() && (rest[0] == '/' || rest[0] == '\\')) why = "an absolute path";
     fs::path landing;
-    std::string part;
-    for (std::size_t k = 0; k <= rest.size(); ++k) {
-      if (k == rest.size() || rest[k] == '/' || rest[k] == '\\') {
-        if (part == ".." && why.find("'..'") == std::string::npos)
-          why = why.empty() ? "a '..' component" : why + " and a '..' component";
-        else if (part == "..")
-          ;
-        else if (!part.empty() && part != ".")
-          landing /= part;
-        part.clear();
-      } else {
-        part += rest[k];
-      }
-    }
+    const std::string why = refusal_of(name, landing);
     if (!why.empty())
       refused.emplace_back(landing, "the zip's entry '" + name + "' has " + why +
                                         ": refused (it could write outside the export)");
@@ -359,11 +366,15 @@ std::string safe_id(const std::string& raw) {
   return s;
 }
 
-std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scratch,
-                                         std::vector<std::string>* warnings) {
+namespace {
+
+// The folder whose entries are the class's submissions: `in`, or the zip extracted into `scratch`
+// (`refused` gets the entries refused by name), or the one Gradescope export or LMS download
+// folder inside either.
+fs::path class_root(const fs::path& in, const fs::path& scratch,
+                    std::vector<std::pair<fs::path, std::string>>& refused) {
   std::error_code ec;
   fs::path root = in;
-  std::vector<std::pair<fs::path, std::string>> refused;
   if (fs::is_regular_file(in, ec)) {
     if (lower(in.extension().string()) != ".zip")
       throw std::runtime_error(in.string() +
@@ -393,10 +404,15 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
         !is_lms_download(top) && is_lms_download(entries_of(top.front().path)))
       root = top.front().path;
   }
-  const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
-  std::vector<Entry> entries =
-      entries_of(root, gradescope ? std::set<std::string>{kMetadata} : std::set<std::string>{});
-  // A refused zip entry belongs to the submission folder it would have landed in.
+  return root;
+}
+
+// The refused zip entries by the submission folder each would have landed in; those that name no
+// submission folder go to `warnings`.
+std::map<std::string, std::vector<std::string>> refused_by_entry(
+    const fs::path& in, const fs::path& root, const fs::path& scratch,
+    const std::vector<std::pair<fs::path, std::string>>& refused, const std::vector<Entry>& entries,
+    std::vector<std::string>* warnings) {
   const fs::path rel_root = root == scratch ? fs::path() : root.lexically_relative(scratch);
   std::map<std::string, std::vector<std::string>> refused_in;
   for (const auto& [landing, message] : refused) {
@@ -411,135 +427,148 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
       warnings->push_back(in.filename().string() + ": " + message +
                           "; it names no submission folder, so no student's grade depends on it");
   }
+  return refused_in;
+}
 
+// One entry of the class as a submission (its id still to be given): its problem, if any.
+Submission from_entry(const Entry& e, const fs::path& root,
+                      const std::map<std::string, std::vector<std::string>>& refused_in) {
+  Submission s;
+  s.source = e.key;
+  s.dir = e.path;
+  if (!is_folder(e.path))
+    s.problem = "'" + e.key +
+                "' is a file, not a folder: each submission is a folder of files (a student's "
+                "zip must be unpacked first), unless the class is a Canvas or Moodle download, "
+                "whose files are named after their students";
+  else if (const auto r = refused_in.find(e.key); r != refused_in.end())
+    s.problem = r->second.front();
+  else
+    s.problem = folder_problem(e.path, root, s.notes);
+  return s;
+}
+
+// A Gradescope export: one row per submitter of each submission submission_metadata.yml lists
+// (id: the :sid:, else the email, else the folder), and one per folder it does not list.
+std::vector<Submission> gradescope_submissions(
+    const fs::path& in, const fs::path& scratch, const fs::path& root,
+    const std::vector<Entry>& entries,
+    const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
   std::vector<Submission> subs;
-  const auto from_entry = [&](const Entry& e) {
-    Submission s;
-    s.source = e.key;
-    s.dir = e.path;
-    if (!is_folder(e.path))
-      s.problem = "'" + e.key +
-                  "' is a file, not a folder: each submission is a folder of files (a student's "
-                  "zip must be unpacked first), unless the class is a Canvas or Moodle download, "
-                  "whose files are named after their students";
-    else if (const auto r = refused_in.find(e.key); r != refused_in.end())
-      s.problem = r->second.front();
-    else
-      s.problem = folder_problem(e.path, root, s.notes);
-    return s;
-  };
-
-  if (gradescope) {
-    const std::vector<GradescopeEntry> meta = read_gradescope_metadata(
-        read_file(root / kMetadata),
-        fs::is_regular_file(in, ec)
-            ? in.filename().string() + ": " +
-                  fs::relative(root / kMetadata, scratch, ec).generic_string()
-            : (root / kMetadata).string());
-    std::map<std::string, const Entry*> by_folder;
-    for (const Entry& e : entries) by_folder[e.key] = &e;
-    std::set<std::string> listed;
-    for (const GradescopeEntry& g : meta) {
-      listed.insert(g.folder);
-      const auto f = by_folder.find(g.folder);
-      Submission base;
-      if (f == by_folder.end()) {
-        base.source = g.folder;
-        base.dir = root / safe_id(g.folder);
-        base.problem = std::string(kMetadata) + " lists the submission " + g.folder + " (line " +
-                       std::to_string(g.line) + ") but the export has no such folder";
+  const std::vector<GradescopeEntry> meta = read_gradescope_metadata(
+      read_file(root / kMetadata),
+      fs::is_regular_file(in, ec) ? in.filename().string() + ": " +
+                                        fs::relative(root / kMetadata, scratch, ec).generic_string()
+                                  : (root / kMetadata).string());
+  std::map<std::string, const Entry*> by_folder;
+  for (const Entry& e : entries) by_folder[e.key] = &e;
+  std::set<std::string> listed;
+  for (const GradescopeEntry& g : meta) {
+    listed.insert(g.folder);
+    const auto f = by_folder.find(g.folder);
+    Submission base;
+    if (f == by_folder.end()) {
+      base.source = g.folder;
+      base.dir = root / safe_id(g.folder);
+      base.problem = std::string(kMetadata) + " lists the submission " + g.folder + " (line " +
+                     std::to_string(g.line) + ") but the export has no such folder";
+    } else {
+      base = from_entry(*f->second, root, refused_in);
+    }
+    if (g.submitters.empty()) {
+      Submission s = base;
+      s.id = g.folder;
+      s.notes.push_back(std::string(kMetadata) + " names no submitter for " + g.folder +
+                        ": the id is the folder's name");
+      subs.push_back(s);
+      continue;
+    }
+    for (std::size_t k = 0; k < g.submitters.size(); ++k) {
+      const GradescopeSubmitter& who = g.submitters[k];
+      Submission s = base;
+      s.name = who.name;
+      s.email = who.email;
+      if (!who.sid.empty()) {
+        s.id = who.sid;
+      } else if (!who.email.empty()) {
+        s.id = who.email;
+        s.notes.push_back("no student id (:sid:) in " + std::string(kMetadata) + " for " +
+                          (who.name.empty() ? g.folder : who.name) + ": the id is the email");
       } else {
-        base = from_entry(*f->second);
-      }
-      if (g.submitters.empty()) {
-        Submission s = base;
         s.id = g.folder;
-        s.notes.push_back(std::string(kMetadata) + " names no submitter for " + g.folder +
-                          ": the id is the folder's name");
-        subs.push_back(s);
-        continue;
+        s.notes.push_back("neither a student id (:sid:) nor an email in " + std::string(kMetadata) +
+                          " for " + (who.name.empty() ? g.folder : who.name) +
+                          ": the id is the submission folder's name");
       }
-      for (std::size_t k = 0; k < g.submitters.size(); ++k) {
-        const GradescopeSubmitter& who = g.submitters[k];
-        Submission s = base;
-        s.name = who.name;
-        s.email = who.email;
-        if (!who.sid.empty()) {
-          s.id = who.sid;
-        } else if (!who.email.empty()) {
-          s.id = who.email;
-          s.notes.push_back("no student id (:sid:) in " + std::string(kMetadata) + " for " +
-                            (who.name.empty() ? g.folder : who.name) + ": the id is the email");
-        } else {
-          s.id = g.folder;
-          s.notes.push_back("neither a student id (:sid:) nor an email in " +
-                            std::string(kMetadata) + " for " +
-                            (who.name.empty() ? g.folder : who.name) +
-                            ": the id is the submission folder's name");
-        }
-        if (g.submitters.size() > 1) {
-          std::string others;
-          for (std::size_t o = 0; o < g.submitters.size(); ++o)
-            if (o != k) {
-              const GradescopeSubmitter& w = g.submitters[o];
-              others += (others.empty() ? "" : ", ") +
-                        (w.name.empty() ? (w.sid.empty() ? w.email : w.sid) : w.name) +
-                        (w.sid.empty() ? "" : " (" + w.sid + ")");
-            }
-          s.notes.push_back("group submission " + g.folder + " with " + others +
-                            ": each member has a row, graded from the same files");
-        }
-        subs.push_back(s);
-      }
-    }
-    for (const Entry& e : entries)
-      if (!listed.count(e.key)) {
-        Submission s = from_entry(e);
-        s.id = e.key;
-        s.notes.push_back(e.key + " is not in " + std::string(kMetadata) +
-                          ": the id is the folder's name");
-        subs.push_back(s);
-      }
-  } else if (is_lms_download(entries)) {
-    if (scratch.empty())
-      throw std::runtime_error(in.string() +
-                               ": a Canvas or Moodle download needs a scratch folder to gather "
-                               "each student's files in");
-    subs = lms_submissions(entries, root, scratch / ".by-student", refused_in);
-  } else {
-    // GitHub Classroom: every folder a git clone named <assignment>-<username>.
-    bool classroom = !entries.empty();
-    for (const Entry& e : entries)
-      classroom = classroom && is_folder(e.path) && fs::exists(e.path / ".git", ec);
-    std::string prefix;
-    if (classroom) {
-      // `gh classroom clone student-repos` clones into <assignment>-submissions/: its name says
-      // where the username starts even when usernames share a start.
-      const std::string parent =
-          (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
-      const std::string suffix = "-submissions";
-      if (parent.size() > suffix.size() &&
-          parent.compare(parent.size() - suffix.size(), suffix.size(), suffix) == 0) {
-        prefix = parent.substr(0, parent.size() - suffix.size()) + "-";
-        for (const Entry& e : entries)
-          if (e.key.rfind(prefix, 0) != 0 || e.key.size() == prefix.size()) prefix.clear();
-      }
-      if (prefix.empty()) prefix = common_dash_prefix(entries);
-    }
-    for (const Entry& e : entries) {
-      Submission s = from_entry(e);
-      s.id = e.key;
-      if (!prefix.empty()) {
-        s.id = e.key.substr(prefix.size());
-        s.notes.push_back("GitHub Classroom repository " + e.key + ": the id is the username " +
-                          s.id + " (the prefix " + prefix + " every folder shares stripped)");
+      if (g.submitters.size() > 1) {
+        std::string others;
+        for (std::size_t o = 0; o < g.submitters.size(); ++o)
+          if (o != k) {
+            const GradescopeSubmitter& w = g.submitters[o];
+            others += (others.empty() ? "" : ", ") +
+                      (w.name.empty() ? (w.sid.empty() ? w.email : w.sid) : w.name) +
+                      (w.sid.empty() ? "" : " (" + w.sid + ")");
+          }
+        s.notes.push_back("group submission " + g.folder + " with " + others +
+                          ": each member has a row, graded from the same files");
       }
       subs.push_back(s);
     }
   }
+  for (const Entry& e : entries)
+    if (!listed.count(e.key)) {
+      Submission s = from_entry(e, root, refused_in);
+      s.id = e.key;
+      s.notes.push_back(e.key + " is not in " + std::string(kMetadata) +
+                        ": the id is the folder's name");
+      subs.push_back(s);
+    }
+  return subs;
+}
 
-  // Ids: safe as folder names, unique (whatever the case: students/<id> on a case-insensitive
-  // file system).
+// A folder of student folders (id: the folder's name), or of GitHub Classroom clones (id: the
+// username, the prefix every folder shares stripped).
+std::vector<Submission> folder_submissions(
+    const fs::path& in, const fs::path& root, const std::vector<Entry>& entries,
+    const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
+  std::vector<Submission> subs;
+  // GitHub Classroom: every folder a git clone named <assignment>-<username>.
+  bool classroom = !entries.empty();
+  for (const Entry& e : entries)
+    classroom = classroom && is_folder(e.path) && fs::exists(e.path / ".git", ec);
+  std::string prefix;
+  if (classroom) {
+    // `gh classroom clone student-repos` clones into <assignment>-submissions/: its name says
+    // where the username starts even when usernames share a start.
+    const std::string parent =
+        (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
+    const std::string suffix = "-submissions";
+    if (parent.size() > suffix.size() &&
+        parent.compare(parent.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      prefix = parent.substr(0, parent.size() - suffix.size()) + "-";
+      for (const Entry& e : entries)
+        if (e.key.rfind(prefix, 0) != 0 || e.key.size() == prefix.size()) prefix.clear();
+    }
+    if (prefix.empty()) prefix = common_dash_prefix(entries);
+  }
+  for (const Entry& e : entries) {
+    Submission s = from_entry(e, root, refused_in);
+    s.id = e.key;
+    if (!prefix.empty()) {
+      s.id = e.key.substr(prefix.size());
+      s.notes.push_back("GitHub Classroom repository " + e.key + ": the id is the username " +
+                        s.id + " (the prefix " + prefix + " every folder shares stripped)");
+    }
+    subs.push_back(s);
+  }
+  return subs;
+}
+
+// The ids made safe as folder names and unique whatever the case (students/<id> on a
+// case-insensitive file system): a shared id grades none of its rows and names the others.
+void settle_ids(std::vector<Submission>& subs) {
   for (Submission& s : subs) {
     const std::string safe = safe_id(s.id);
     if (safe != s.id) {
@@ -578,6 +607,33 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
   }
   std::stable_sort(subs.begin(), subs.end(),
                    [](const Submission& a, const Submission& b) { return a.id < b.id; });
+}
+
+}  // namespace
+
+std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scratch,
+                                         std::vector<std::string>* warnings) {
+  std::error_code ec;
+  std::vector<std::pair<fs::path, std::string>> refused;
+  const fs::path root = class_root(in, scratch, refused);
+  const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
+  std::vector<Entry> entries =
+      entries_of(root, gradescope ? std::set<std::string>{kMetadata} : std::set<std::string>{});
+  const std::map<std::string, std::vector<std::string>> refused_in =
+      refused_by_entry(in, root, scratch, refused, entries, warnings);
+  std::vector<Submission> subs;
+  if (gradescope) {
+    subs = gradescope_submissions(in, scratch, root, entries, refused_in);
+  } else if (is_lms_download(entries)) {
+    if (scratch.empty())
+      throw std::runtime_error(in.string() +
+                               ": a Canvas or Moodle download needs a scratch folder to gather "
+                               "each student's files in");
+    subs = lms_submissions(entries, root, scratch / ".by-student", refused_in);
+  } else {
+    subs = folder_submissions(in, root, entries, refused_in);
+  }
+  settle_ids(subs);
   return subs;
 }
 

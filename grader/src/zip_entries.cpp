@@ -1,6 +1,6 @@
 // The names of a zip's entries, read with libzip (class_archives.hpp).
-#include <stdexcept>
 #include <zip.h>
+#include <stdexcept>
 
 #include "class_archives.hpp"
 

@@ -1,7 +1,7 @@
-// run_child on Windows (framework/process/src/process_win.cpp): the piece the Windows self-check runs each
-// grading case through. This program is its own child: `--child MODE ...` behaves as a case would
-// (print, write a result, crash, loop, flood), anything else runs the tests. Built by the MinGW
-// cross-build and run under wine by tests/platform/check_platform.sh.
+// run_child on Windows (framework/process/src/process_win.cpp): the piece the Windows self-check
+// runs each grading case through. This program is its own child: `--child MODE ...` behaves as a
+// case would (print, write a result, crash, loop, flood), anything else runs the tests. Built by
+// the MinGW cross-build and run under wine by tests/platform/check_platform.sh.
 #include <fcntl.h>
 #include <io.h>
 #include <windows.h>
@@ -113,7 +113,8 @@ TEST(ProcessWin, CrashIsReportedAsTheSignalPosixWouldSend) {
   const ChildResult r = run_child({g_self, "--child", "crash"}, Limits{});
   ASSERT_TRUE(r.started) << r.start_error;
   EXPECT_EQ(r.signal, SIGSEGV);
-  EXPECT_NE(jelly::process::describe_signal(r.signal).find("segmentation fault"), std::string::npos);
+  EXPECT_NE(jelly::process::describe_signal(r.signal).find("segmentation fault"),
+            std::string::npos);
 }
 
 TEST(ProcessWin, TimeoutKillsTheChild) {
