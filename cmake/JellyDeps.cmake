@@ -11,6 +11,7 @@
 #
 # Targets, the same in every mode:
 #   Eigen3::Eigen  tomlplusplus::tomlplusplus  nlohmann_json::nlohmann_json  CLI11::CLI11  (always)
+#   jelly::mustache (kainjow/mustache.hpp)                                     (JELLY_BUILD_GRADER)
 #   GTest::gtest  GTest::gtest_main                                            (JELLY_BUILD_TESTS)
 #   glfw  jelly::imgui (core + GLFW and OpenGL 3 backends)  jelly::stb (stb_image, stb_image_write,
 #   stb_easy_font, with their implementation)  jelly::gl_headers (GL/glcorearb.h, KHR/)   (viewer)
@@ -138,6 +139,29 @@ else()
   target_include_directories(jelly_dep_nlohmann_json SYSTEM INTERFACE ${dir}/include)
   add_library(nlohmann_json::nlohmann_json ALIAS jelly_dep_nlohmann_json)
   jelly_dep_report(nlohmann/json "bundled ${dir}")
+endif()
+
+# ---- kainjow/mustache (the grader's HTML pages from templates; header-only) ----------------------
+# jelly-grade's report.html, class.html and similarity.html (grader/templates/*.mustache). The
+# student release builds jelly-grade (the self-check writes report.html), so it is bundled.
+if(JELLY_BUILD_GRADER)
+  if(JELLY_DEPS_SYSTEM)
+    find_path(JELLY_MUSTACHE_INCLUDE_DIR kainjow/mustache.hpp)
+  endif()
+  if(JELLY_MUSTACHE_INCLUDE_DIR)
+    add_library(jelly_dep_mustache INTERFACE)
+    target_include_directories(jelly_dep_mustache SYSTEM INTERFACE ${JELLY_MUSTACHE_INCLUDE_DIR})
+    jelly_dep_report(kainjow/mustache "system package ${JELLY_MUSTACHE_INCLUDE_DIR}/kainjow/mustache.hpp")
+  else()
+    jelly_dep_bundle(dir kainjow_mustache include/kainjow/mustache.hpp)
+    if(NOT dir)
+      jelly_dep_missing(kainjow/mustache libkainjow-mustache-dev kainjow_mustache)
+    endif()
+    add_library(jelly_dep_mustache INTERFACE)
+    target_include_directories(jelly_dep_mustache SYSTEM INTERFACE ${dir}/include)
+    jelly_dep_report(kainjow/mustache "bundled ${dir}")
+  endif()
+  add_library(jelly::mustache ALIAS jelly_dep_mustache)
 endif()
 
 # ---- CLI11 (every program's command line; header-only) -------------------------------------------

@@ -18,6 +18,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
+  # the instructor's grader: class exports (submission_metadata.yml, zips); the HTML reports' templates
+  libyaml-cpp-dev libzip-dev libkainjow-mustache-dev
   gnuplot-nox xvfb xauth zip unzip
   similarity-tester  # sim_c++: `jelly-grade similarity` (who copied) and its test
   ccache    # run-tests compiles through it when present: repeated runs and the release builds reuse objects
@@ -41,6 +43,7 @@ STUDENT_PACKAGES=(
   libgtest-dev libgmock-dev
   libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev libstb-dev
   libseccomp-dev bubblewrap
+  libkainjow-mustache-dev libyaml-cpp-dev libzip-dev  # jelly-grade (the self-check's)
 )
 
 # tools/run-demo: what the targets jelly and jelly-lab need with tests, benchmarks and the grader

@@ -1,6 +1,8 @@
 // Number formatting, file writing and the gnuplot call shared by the `jelly study` outputs.
 #include "study_files.hpp"
 
+#include "jelly/process/process.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,27 +42,15 @@ bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   const fs::path dir = script.has_parent_path() ? script.parent_path() : fs::path(".");
   fs::remove(svg);
   fs::remove(png);
-#ifdef _WIN32
-  // cmd.exe: double quotes, and /d to change drive too.
-  const std::string cmd =
-      "cd /d \"" + dir.string() + "\" && gnuplot \"" + script.filename().string() + "\" 2>&1";
-  std::FILE* pipe = _popen(cmd.c_str(), "r");
-#else
-  const std::string cmd =
-      "cd '" + dir.string() + "' && gnuplot '" + script.filename().string() + "' 2>&1";
-  std::FILE* pipe = popen(cmd.c_str(), "r");
-#endif
-  std::string out;
-  if (pipe) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  }
-#ifdef _WIN32
-  const int status = pipe ? _pclose(pipe) : -1;
-#else
-  const int status = pipe ? pclose(pipe) : -1;
-#endif
-  if (status != 0) {
+  // gnuplot in the script's folder (its output names are relative), through the one launcher: an
+  // argument vector, no shell. Ten minutes at most: a study's plots take seconds.
+  const auto gnuplot = process::find_on_path("gnuplot");
+  process::ChildResult run;
+  if (gnuplot)
+    run = process::run_child({gnuplot->u8string(), script.filename().u8string()},
+                             process::trusted_tool_limits(600.0), dir);
+  const std::string out = run.out + run.err;
+  if (!run.started || run.timed_out || run.exit_code != 0) {
     note +=
         "gnuplot failed or is not installed (tools/install-deps.sh installs gnuplot-nox); the "
         "script " +

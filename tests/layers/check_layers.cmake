@@ -36,6 +36,7 @@ set(_folders
   "framework/core/"    core
   "framework/session/" session
   "framework/cli_common/" cli_common
+  "framework/process/" process
   "framework/render/"  render
   "framework/movie/"   movie
   "framework/cli/"     cli
@@ -52,19 +53,20 @@ set(_may_assignment_grader core assignment)
 set(_may_task_module core)
 set(_may_session manifest core session)
 set(_may_cli_common cli_common)
+set(_may_process process)
 set(_may_render  manifest core session render)
-set(_may_movie   manifest core session render movie cli_common)
-set(_may_cli     manifest core session movie cli cli_common)
+set(_may_movie   manifest core session render movie cli_common process)
+set(_may_cli     manifest core session movie cli cli_common process)
 set(_may_app     manifest core session render movie app cli_common)
 # A body kind's view module (framework/bodies/<kind>/view/, headers jelly/bodies/<kind>/view/):
 # the kind's GL side, on top of the renderer, whose registered list the renderer walks.
 set(_may_body_view manifest core session render body_view)
-set(_may_grader  manifest core grader cli_common)
+set(_may_grader  manifest core grader cli_common process)
 set(_may_bench   manifest core assignment)
 # General code: it names no assignment, so it includes no assignment's header.
-set(_general manifest core session cli_common render movie cli app grader)
+set(_general manifest core session cli_common process render movie cli app grader)
 # Layers that must stay free of GL (and of windowing and GUI libraries).
-set(_no_gl manifest core assignment assignment_grader task_module session cli_common movie cli grader bench)
+set(_no_gl manifest core assignment assignment_grader task_module session cli_common process movie cli grader bench)
 set(_gl_regex "^(GL|GLFW|KHR|EGL|OpenGL)/|^imgui|osmesa")
 # Layer 0 includes, besides its own headers, only the standard library (<vector>, <cstdio>) and
 # toml++ (<toml++/toml.h>).
@@ -94,7 +96,7 @@ function(_header_layer header out owner)
     set(${out} body_view PARENT_SCOPE)
   elseif(header MATCHES "^jelly/[^/]+$")
     set(${out} core PARENT_SCOPE)
-  elseif(header MATCHES "^jelly/(session|render|movie|cli_common|cli|app|grader)/")
+  elseif(header MATCHES "^jelly/(session|render|movie|cli_common|process|cli|app|grader)/")
     set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
   elseif(header MATCHES "^jelly/([^/]+)/" AND CMAKE_MATCH_1 IN_LIST _assignment_folders)
     set(${out} assignment PARENT_SCOPE)

@@ -1,7 +1,7 @@
-// run_child on Windows (grader/src/sandbox/process_win.cpp): the piece the Windows self-check runs
-// each grading case through. This program is its own child: `--child MODE ...` behaves as a case
-// would (print, write a result, crash, loop, flood), anything else runs the tests. Built by the
-// MinGW cross-build and run under wine by tests/platform/check_platform.sh.
+// run_child on Windows (framework/process/src/process_win.cpp): the piece the Windows self-check
+// runs each grading case through. This program is its own child: `--child MODE ...` behaves as a
+// case would (print, write a result, crash, loop, flood), anything else runs the tests. Built by
+// the MinGW cross-build and run under wine by tests/platform/check_platform.sh.
 #include <fcntl.h>
 #include <io.h>
 #include <windows.h>
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "sandbox/process.hpp"
+#include <jelly/process/process.hpp>
 
 namespace {
 
@@ -67,9 +67,9 @@ int child_main(int argc, char** argv) {
   return 99;
 }
 
-using jelly::grade::ChildResult;
-using jelly::grade::Limits;
-using jelly::grade::run_child;
+using jelly::process::ChildResult;
+using jelly::process::Limits;
+using jelly::process::run_child;
 
 TEST(ProcessWin, CapturesOutputExitCodeArgumentsAndWorkingDirectory) {
   Limits lim;
@@ -113,7 +113,8 @@ TEST(ProcessWin, CrashIsReportedAsTheSignalPosixWouldSend) {
   const ChildResult r = run_child({g_self, "--child", "crash"}, Limits{});
   ASSERT_TRUE(r.started) << r.start_error;
   EXPECT_EQ(r.signal, SIGSEGV);
-  EXPECT_NE(jelly::grade::describe_signal(r.signal).find("segmentation fault"), std::string::npos);
+  EXPECT_NE(jelly::process::describe_signal(r.signal).find("segmentation fault"),
+            std::string::npos);
 }
 
 TEST(ProcessWin, TimeoutKillsTheChild) {

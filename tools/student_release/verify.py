@@ -20,7 +20,7 @@ VERIFY_TARGETS = ["jelly", "jelly-lab", "jelly-grade"]
 # and default scene instead, and says so).
 FRAMEWORK_TEST_SCENE = "course-2023"
 FRAMEWORK_TEST_TARGETS = ["jelly_tests_stubs", "jelly_tests_scene", "jelly_tests_session", "jelly_tests_cli"]
-BUNDLED_LIBS = ["Eigen", "toml++", "nlohmann/json", "CLI11", "GoogleTest", "GLFW", "GL headers", "stb", "Dear ImGui"]
+BUNDLED_LIBS = ["Eigen", "toml++", "nlohmann/json", "CLI11", "kainjow/mustache", "GoogleTest", "GLFW", "GL headers", "stb", "Dear ImGui"]
 COMPILERS = {"gcc": ("gcc", "g++", []), "clang-libc++": ("clang", "clang++", ["-DCMAKE_CXX_FLAGS=-stdlib=libc++"])}
 
 

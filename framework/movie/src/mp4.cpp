@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "run_program.hpp"
+#include "jelly/process/process.hpp"
 
 namespace jelly::movie {
 
@@ -18,7 +18,7 @@ const char* const kFfmpegInstallHint =
 Mp4Result encode_mp4(const std::filesystem::path& frames_dir, double fps,
                      const std::filesystem::path& out) {
   Mp4Result r;
-  const auto ffmpeg = find_on_path("ffmpeg");
+  const auto ffmpeg = process::find_on_path("ffmpeg");
   if (!ffmpeg) {
     r.status = Mp4Result::Status::NoFfmpeg;
     return r;
@@ -29,28 +29,37 @@ Mp4Result encode_mp4(const std::filesystem::path& frames_dir, double fps,
   //        -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 -pix_fmt yuv420p -c:v libx264 OUT
   // The frames' numbering is the render command's and the app's. libx264 wants even sizes, hence
   // the padding; yuv420p is what every player decodes.
-  const std::vector<std::string> args = {"-loglevel",
+  const std::vector<std::string> argv = {ffmpeg->u8string(),
+                                         "-loglevel",
                                          "error",
                                          "-y",
                                          "-framerate",
                                          rate,
                                          "-i",
-                                         (frames_dir / "frame_%05d.png").string(),
+                                         (frames_dir / "frame_%05d.png").u8string(),
                                          "-vf",
                                          "pad=ceil(iw/2)*2:ceil(ih/2)*2",
                                          "-pix_fmt",
                                          "yuv420p",
                                          "-c:v",
                                          "libx264",
-                                         out.string()};
-  const ProgramResult run = run_program(*ffmpeg, args);
-  if (run.started && run.exit_code == 0 && run.error.empty()) {
+                                         out.u8string()};
+  // An hour at most: a movie of a long run at full resolution takes minutes.
+  const process::ChildResult run = process::run_child(argv, process::trusted_tool_limits(3600.0));
+  if (run.started && !run.timed_out && run.exit_code == 0) {
     r.status = Mp4Result::Status::Written;
     return r;
   }
   r.status = Mp4Result::Status::Failed;
-  r.detail =
-      !run.error.empty() ? run.error : "ffmpeg exited with code " + std::to_string(run.exit_code);
+  if (!run.started)
+    r.detail = "cannot start " + ffmpeg->string() + ": " + run.start_error;
+  else if (run.timed_out)
+    r.detail = "ffmpeg took longer than an hour and was stopped";
+  else if (run.signal != 0)
+    r.detail = "ffmpeg was killed by " + process::describe_signal(run.signal);
+  else
+    r.detail = "ffmpeg exited with code " + std::to_string(run.exit_code);
+  if (!run.err.empty()) r.detail += ": " + run.err;
   return r;
 }
 

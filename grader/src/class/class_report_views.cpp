@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "class/class_report_fields.hpp"
+#include "commands/common.hpp"
+#include "reports/html_page.hpp"
 #include "reports/points.hpp"
 #include "reports/text_safety.hpp"
 
@@ -238,7 +240,6 @@ std::string class_markdown(const Json& s, ClassView view) {
 namespace {
 
 std::string h(const std::string& s) { return html_escape(s); }
-std::string hs(const Json& j, const char* key) { return html_escape(str(j, key)); }
 
 // A histogram as inline SVG: one bar per bin, its count above, its label below; the full-marks
 // bin in green.
@@ -288,174 +289,139 @@ std::string css_bar(double share, const char* colour) {
   return b;
 }
 
-constexpr const char* kStyle = R"(<style>
-body{font-family:"DejaVu Sans",Arial,sans-serif;font-size:24px;line-height:1.35;margin:32px 48px;color:#111;background:#fff}
-h1{font-size:46px;margin:0 0 8px}h2{font-size:36px;margin:40px 0 12px;border-bottom:3px solid #ccc}
-h3{font-size:28px;margin:28px 0 8px}.note{color:#a33;font-style:italic}.lecture{color:#555;font-style:italic}
-table{border-collapse:collapse;width:100%}td,th{padding:6px 12px;border-bottom:1px solid #ddd;text-align:left;vertical-align:top}
-th{font-size:20px;color:#555}td.fm{white-space:nowrap}.dim{color:#777;font-style:italic}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
-.bar{display:inline-block;width:220px;height:22px;background:#eee;vertical-align:middle;margin-right:10px}
-.bar span{display:block;height:100%}
-.big{font-size:30px}.msg{font-family:"DejaVu Sans Mono",monospace;font-size:19px;white-space:pre-wrap;overflow-wrap:anywhere;color:#333}
-.tag{font-size:17px;background:#fbe3c2;color:#7a4a00;padding:1px 8px;border-radius:8px;margin-left:8px}
-.warn{background:#fff3f3;border-left:8px solid #c33;padding:10px 16px;font-size:28px}
-ul{padding-left:28px}li{margin:6px 0}
-</style>)";
-
-void html_scores(std::ostringstream& o, const Json& s) {
+// The scores: the class's, and each task's (a task of no points has none to compare).
+void html_scores(HtmlData& page, const Json& s) {
   const Json& score = s["score"];
-  o << "<h2>Scores</h2>\n<p class=\"big\">Mean <b>" << pts(num(score, "mean")) << "</b>, median <b>"
-    << pts(num(score, "median")) << "</b> of " << pts(num(score, "max_score"))
-    << "; full marks: <b>" << score.value("full_marks", 0) << "</b> of " << score.value("count", 0)
-    << " (" << percent(num(score, "full_marks_share")) << ")</p>\n"
-    << svg_histogram(score["histogram"], 1100, 320, true) << "\n";
-  o << "<h2>Tasks</h2>\n<table><tr><th>Task</th><th>Points</th><th>Mean</th><th>Median</th>"
-       "<th>Full marks</th><th>Scores (0–100%)</th></tr>\n";
+  page.set("mean", pts(num(score, "mean")));
+  page.set("median", pts(num(score, "median")));
+  page.set("max_score", pts(num(score, "max_score")));
+  page.set("full_marks", std::to_string(score.value("full_marks", 0)));
+  page.set("count", std::to_string(score.value("count", 0)));
+  page.set("full_marks_share", percent(num(score, "full_marks_share")));
+  page.set("histogram", svg_histogram(score["histogram"], 1100, 320, true));
+  HtmlList tasks;
   for (const Json& t : s["tasks"]) {
     const Json& d = t["scores"];
-    o << "<tr><td>" << h(task_name(t)) << "</td><td class=\"n\">" << pts(num(d, "max_score"))
-      << "</td>";
-    if (num(d, "max_score") <= 0.0) {  // a task of no points (a course scene): nothing to compare
-      o << "<td colspan=\"4\" class=\"dim\">no points: its tests are listed below</td></tr>\n";
-      continue;
-    }
-    o << "<td class=\"n\">" << pts(num(d, "mean")) << "</td><td class=\"n\">"
-      << pts(num(d, "median")) << "</td><td class=\"fm\">"
-      << css_bar(num(d, "full_marks_share"), "#2e8b57") << percent(num(d, "full_marks_share"))
-      << "</td><td>" << svg_histogram(d["histogram"], 220, 44, false) << "</td></tr>\n";
+    tasks.push_back(HtmlObject{{"name", task_name(t)},
+                               {"max_score", pts(num(d, "max_score"))},
+                               {"has_points", num(d, "max_score") > 0.0},
+                               {"mean", pts(num(d, "mean"))},
+                               {"median", pts(num(d, "median"))},
+                               {"full_marks_bar", css_bar(num(d, "full_marks_share"), "#2e8b57")},
+                               {"full_marks_share", percent(num(d, "full_marks_share"))},
+                               {"histogram", svg_histogram(d["histogram"], 220, 44, false)}});
   }
-  o << "</table>\n";
+  page.set("tasks", tasks);
 }
 
-void html_lecture_tasks(std::ostringstream& o, const Json& s) {
-  o << "<h2>What went wrong, task by task</h2>\n<p>The mistakes the grader recognised (in the "
-       "words of the hints) and the tests failed, most frequent first. Runs that did not "
-       "compile, timed out or crashed are counted below.</p>\n";
-  for (const Json& t : s["tasks"]) {
-    if (!task_failed(t)) continue;
-    o << "<h3>" << h(task_name(t)) << "</h3>\n<table>\n";
-    for (const Line& l : lecture_lines(t))
-      o << "<tr><td class=\"n\">" << css_bar(l.share, "#c0392b") << percent(l.share)
-        << "</td><td><b>" << h(l.what) << "</b> <span class=\"dim\">("
-        << students(static_cast<std::size_t>(l.students)) << ")</span>"
-        << (l.example.empty() ? "" : "<div class=\"msg\">e.g. " + h(l.example) + "</div>")
-        << "</td></tr>\n";
-    o << "</table>\n";
-  }
+// The lecture's view of a failed task: what went wrong, naming no student and no hidden test.
+HtmlData html_lecture_task(const Json& t) {
+  HtmlList lines;
+  for (const Line& l : lecture_lines(t))
+    lines.push_back(HtmlObject{{"bar", css_bar(l.share, "#c0392b")},
+                               {"share", percent(l.share)},
+                               {"what", l.what},
+                               {"students", students(static_cast<std::size_t>(l.students))},
+                               {"has_example", !l.example.empty()},
+                               {"example", l.example}});
+  return HtmlObject{{"name", task_name(t)}, {"lines", lines}};
 }
 
-void html_instructor_tasks(std::ostringstream& o, const Json& s) {
-  const double graded = std::max(1, s.value("graded", 0));
-  o << "<h2>What failed, task by task</h2>\n<p>The mistakes the grader recognised (hints) and "
-       "the tests that failed, most frequent first: how many students failed each, and one "
-       "example (the first such student by id, their first failure). Timed-out and crashed runs "
-       "and files that did not compile are listed below.</p>\n";
-  for (const Json& t : s["tasks"]) {
-    if (!task_failed(t)) continue;
-    o << "<h3>" << h(task_name(t)) << "</h3>\n<table>\n";
-    for (const Json& m : t["known_mistakes"])
-      o << "<tr><td class=\"n\">" << css_bar(num(m, "share"), "#c0392b") << m.value("students", 0)
-        << "</td><td><b>" << hs(m, "mistake")
-        << "</b><span class=\"tag\">known mistake</span></td></tr>\n";
-    for (const Json& c : t["failed_cases"]) {
-      const int n = c.value("students", 0);
-      o << "<tr><td class=\"n\">" << css_bar(n / graded, "#c0392b") << n << "</td><td><b>"
-        << hs(c, "case") << "</b>" << (flag(c, "hidden") ? "<span class=\"tag\">hidden</span>" : "")
-        << "<div class=\"msg\">" << hs(c["example"], "student") << ": "
-        << hs(c["example"], "message") << "</div></td></tr>\n";
-    }
-    o << "</table>\n";
+// The instructor's view of a failed task: its known mistakes and failed tests, with an example.
+HtmlData html_instructor_task(const Json& t, double graded) {
+  HtmlList mistakes, cases;
+  for (const Json& m : t["known_mistakes"])
+    mistakes.push_back(HtmlObject{{"bar", css_bar(num(m, "share"), "#c0392b")},
+                                  {"students", std::to_string(m.value("students", 0))},
+                                  {"mistake", str(m, "mistake")}});
+  for (const Json& c : t["failed_cases"]) {
+    const int n = c.value("students", 0);
+    cases.push_back(HtmlObject{{"bar", css_bar(n / graded, "#c0392b")},
+                               {"students", std::to_string(n)},
+                               {"case", str(c, "case")},
+                               {"hidden", flag(c, "hidden")},
+                               {"student", str(c["example"], "student")},
+                               {"message", str(c["example"], "message")}});
   }
+  return HtmlObject{{"name", task_name(t)}, {"mistakes", mistakes}, {"cases", cases}};
 }
 
-void html_kinds(std::ostringstream& o, const Json& s) {
-  o << "<h2>Did not compile, timed out, crashed</h2>\n";
-  if (s["failure_kinds"].empty()) o << "<p>None.</p>\n";
-  o << "<table>\n";
+// Did not compile, timed out, crashed: how many of each kind.
+HtmlList html_kinds(const Json& s) {
+  HtmlList kinds;
   for (const Json& k : s["failure_kinds"])
-    o << "<tr><td class=\"n\">" << css_bar(num(k, "share"), "#c0392b") << percent(num(k, "share"))
-      << "</td><td><b>" << hs(k, "kind") << "</b> <span class=\"dim\">("
-      << students(k.value("students", 0u)) << ")</span></td></tr>\n";
-  o << "</table>\n";
+    kinds.push_back(HtmlObject{{"bar", css_bar(num(k, "share"), "#c0392b")},
+                               {"share", percent(num(k, "share"))},
+                               {"kind", str(k, "kind")},
+                               {"students", students(k.value("students", 0u))}});
+  return kinds;
 }
 
-void html_instructor_lists(std::ostringstream& o, const Json& s) {
-  auto none = [&](const Json& list) {
-    if (list.empty()) o << "<p>None.</p>\n";
-    return list.empty();
-  };
-  o << "<h2>Did not compile</h2>\n";
-  if (!none(s["did_not_compile"])) {
-    o << "<ul>\n";
-    for (const Json& c : s["did_not_compile"])
-      o << "<li><b>" << hs(c, "student") << "</b>: " << hs(c, "file") << " " << hs(c, "what")
-        << (str(c, "message").empty() ? "" : "<div class=\"msg\">" + hs(c, "message") + "</div>")
-        << "</li>\n";
-    o << "</ul>\n";
-  }
-  o << "<h2>Timed out or crashed</h2>\n";
-  if (!none(s["timed_out_or_crashed"])) {
-    o << "<ul>\n";
-    for (const Json& a : s["timed_out_or_crashed"])
-      o << "<li><b>" << hs(a, "student") << "</b>: " << hs(a, "abnormal") << " in "
-        << a.value("cases", 0) << (a.value("cases", 0) == 1 ? " test" : " tests") << ", first "
-        << hs(a, "first_case") << "<div class=\"msg\">" << hs(a, "message") << "</div></li>\n";
-    o << "</ul>\n";
-  }
-  o << "<h2>Could not be graded</h2>\n";
-  if (!none(s["could_not_grade"])) {
-    o << "<ul>\n";
-    for (const Json& g : s["could_not_grade"])
-      o << "<li><b>" << hs(g, "student") << "</b> (" << hs(g, "status") << ")<div class=\"msg\">"
-        << hs(g, "error") << "</div></li>\n";
-    o << "</ul>\n";
-  }
-  o << "<h2>Missing task files</h2>\n";
+// The instructor's lists: who did not compile, timed out or crashed, could not be graded, or
+// handed in without a task file.
+void html_instructor_lists(HtmlData& page, const Json& s) {
+  HtmlList compile, timed_out, not_graded, missing;
+  for (const Json& c : s["did_not_compile"])
+    compile.push_back(HtmlObject{{"student", str(c, "student")},
+                                 {"file", str(c, "file")},
+                                 {"what", str(c, "what")},
+                                 {"has_message", !str(c, "message").empty()},
+                                 {"message", str(c, "message")}});
+  for (const Json& a : s["timed_out_or_crashed"])
+    timed_out.push_back(HtmlObject{{"student", str(a, "student")},
+                                   {"abnormal", str(a, "abnormal")},
+                                   {"cases", std::to_string(a.value("cases", 0))},
+                                   {"tests", a.value("cases", 0) == 1 ? "test" : "tests"},
+                                   {"first_case", str(a, "first_case")},
+                                   {"message", str(a, "message")}});
+  for (const Json& g : s["could_not_grade"])
+    not_graded.push_back(HtmlObject{
+        {"student", str(g, "student")}, {"status", str(g, "status")}, {"error", str(g, "error")}});
   const Json& miss = s["missing_files"];
-  if (none(miss["students"])) return;
-  o << "<p class=\"warn\">Missing task files: <b>" << students(miss["students"].size()) << "</b> (";
-  bool first = true;
-  for (const Json& f : miss["by_file"]) {
-    o << (first ? "" : ", ") << hs(f, "file") << " " << f.value("students", 0);
-    first = false;
-  }
-  o << "), graded with the unchanged stub in their place.</p>\n<ul>\n";
   for (const Json& m : miss["students"]) {
-    o << "<li><b>" << hs(m, "student") << "</b>:";
-    for (const Json& f : m["files"]) o << " " << h(f.get<std::string>());
-    o << "</li>\n";
+    HtmlList files;
+    for (const Json& f : m["files"]) files.push_back(f.get<std::string>());
+    missing.push_back(HtmlObject{{"student", str(m, "student")}, {"files", files}});
   }
-  o << "</ul>\n";
+  std::string by_file;
+  for (const Json& f : miss["by_file"])
+    by_file += (by_file.empty() ? "" : ", ") + str(f, "file") + " " +
+               std::to_string(f.value("students", 0));
+  page.set("has_did_not_compile", !compile.empty());
+  page.set("did_not_compile", compile);
+  page.set("has_timed_out", !timed_out.empty());
+  page.set("timed_out", timed_out);
+  page.set("has_could_not_grade", !not_graded.empty());
+  page.set("could_not_grade", not_graded);
+  page.set("has_missing", !missing.empty());
+  page.set("missing", missing);
+  page.set("missing_students", students(miss["students"].size()));
+  page.set("missing_by_file", by_file);
 }
 
 }  // namespace
 
 std::string class_html(const Json& s, ClassView view) {
   const bool lecture = view == ClassView::Lecture;
-  std::ostringstream o;
-  const std::string title = h(title_of(s));
-  o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>What the class got "
-       "wrong: "
-    << title << "</title>\n"
-    << kStyle << "</head><body>\n"
-    << "<h1>What the class got wrong: " << title << "</h1>\n"
-    << (lecture ? "<p class=\"lecture\">For the lecture: it names no student and shows no hidden "
-                  "test. The instructor's view is class-instructor.html.</p>\n"
-                : "<p class=\"note\">Instructor-only: this report names students and hidden "
-                  "tests. Project class.html instead.</p>\n")
-    << "<p class=\"big\">" << s.value("students", 0) << " submissions: " << s.value("graded", 0)
-    << " graded, " << s.value("not_graded", 0) << " could not be graded.</p>\n";
-  html_scores(o, s);
-  if (lecture)
-    html_lecture_tasks(o, s);
-  else
-    html_instructor_tasks(o, s);
+  HtmlData page;
+  page.set("title", title_of(s));
+  page.set("lecture", lecture);
+  page.set("students", std::to_string(s.value("students", 0)));
+  page.set("graded", std::to_string(s.value("graded", 0)));
+  page.set("not_graded", std::to_string(s.value("not_graded", 0)));
+  html_scores(page, s);
+  const double graded = std::max(1, s.value("graded", 0));
+  HtmlList failed;
+  for (const Json& t : s["tasks"])
+    if (task_failed(t))
+      failed.push_back(lecture ? html_lecture_task(t) : html_instructor_task(t, graded));
+  page.set("failed_tasks", failed);
   const std::string fine = tasks_without_failure(s);
-  if (!fine.empty()) o << "<p><b>No test failed:</b> " << h(fine) << "</p>\n";
-  html_kinds(o, s);
-  if (!lecture) html_instructor_lists(o, s);
-  o << "</body></html>\n";
-  return o.str();
+  page.set("has_fine", !fine.empty());
+  page.set("fine", fine);
+  page.set("kinds", html_kinds(s));
+  if (!lecture) html_instructor_lists(page, s);
+  return render_html(class_html_template(), "class.html.mustache", page);
 }
 
 }  // namespace jelly::grade

@@ -14,6 +14,7 @@
 
 #include "class/csv.hpp"
 #include "inputs/files.hpp"
+#include "reports/html_page.hpp"
 #include "reports/text_safety.hpp"
 #include "sandbox/process.hpp"
 
@@ -24,26 +25,6 @@ namespace {
 constexpr std::size_t kMaxFileBytes = 1ULL << 20;  // as the build's source_bytes: larger is refused
 constexpr int kMaxShownLines = 60;                 // per side of one region in the HTML page
 constexpr std::size_t kMaxShownPairs = 200;        // pairs shown in full (all are in the table)
-
-// sim_c++ on PATH, or "".
-fs::path find_sim() {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    std::size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    const std::string dir = dirs.substr(start, end - start);
-    start = end + 1;
-    if (dir.empty()) continue;
-    std::error_code ec;
-    const fs::path p = fs::path(dir) / "sim_c++";
-    if (fs::is_regular_file(p, ec) &&
-        (fs::status(p, ec).permissions() & fs::perms::others_exec) != fs::perms::none)
-      return p;
-  }
-  return {};
-}
 
 // The file the build grades as task file `name` (build.cpp: find_named, find_lms_named): the
 // shallowest one called `name`; else the shallowest LMS bulk-download name for it, the latest
@@ -322,13 +303,22 @@ constexpr const char* kEvidence =
     "from a lecture or a book, and permitted work in pairs produce such regions too. Read the "
     "regions side by side, and hear the students, before deciding anything.";
 
-int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
-           const std::vector<std::vector<TaskCopy>>& copies, const std::vector<Run>& runs,
-           const std::vector<std::string>& notes, std::size_t handout_blocks, const fs::path& out,
-           const SimilarityOptions& options) {
-  const std::vector<std::string>& tasks = config.task_files();
+// The pairs, flagged (at or above the threshold, highest first, their regions in file order) and
+// the ten highest below it, with each submission's own code lines.
+struct Ranking {
+  std::vector<long> own;
+  std::vector<Pair> flagged, below;
+};
+
+Ranking rank_pairs(const std::vector<SimilarityInput>& inputs,
+                   const std::vector<std::vector<TaskCopy>>& copies, const std::vector<Run>& runs,
+                   const SimilarityOptions& options) {
+  Ranking ranking;
+  std::vector<long>& own = ranking.own;
+  std::vector<Pair>& flagged = ranking.flagged;
+  std::vector<Pair>& below = ranking.below;
   // Each submission's own code lines: lines with code that are not stub lines.
-  std::vector<long> own(inputs.size(), 0);
+  own.assign(inputs.size(), 0);
   for (std::size_t i = 0; i < inputs.size(); ++i)
     for (const TaskCopy& c : copies[i])
       if (c.present)
@@ -340,7 +330,6 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
     p.b = r.b;
     p.runs.push_back(r);
   }
-  std::vector<Pair> flagged, below;
   for (auto& [key, p] : by_pair) {
     std::set<std::pair<std::size_t, long>> in_a, in_b;
     for (const Run& r : p.runs) {
@@ -371,13 +360,19 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
     std::sort(p.runs.begin(), p.runs.end(), [](const Run& x, const Run& y) {
       return std::tie(x.task, x.a1, x.b1) < std::tie(y.task, y.a1, y.b1);
     });
-  const std::size_t compared = inputs.size() * (inputs.size() - (inputs.empty() ? 0 : 1)) / 2;
-  const std::string settings =
-      "sim_c++ -e -r" + std::to_string(options.min_run) +
-      " on each task file over the whole class, the stub and the handout's "
-      "C++ code blocks (" +
-      std::to_string(handout_blocks) + ") as old files";
+  return ranking;
+}
 
+// similarity.json: every flagged pair with its regions, the highest below the threshold.
+nlohmann::json similarity_json(const GradeConfig& config,
+                               const std::vector<SimilarityInput>& inputs,
+                               const std::vector<std::vector<TaskCopy>>& copies,
+                               const Ranking& ranking, const std::vector<std::string>& notes,
+                               std::size_t compared, const SimilarityOptions& options) {
+  const std::vector<std::string>& tasks = config.task_files();
+  const std::vector<long>& own = ranking.own;
+  const std::vector<Pair>& flagged = ranking.flagged;
+  const std::vector<Pair>& below = ranking.below;
   nlohmann::json j;
   j["assignment"] = config.assignment().id;
   j["evidence_not_verdict"] = kEvidence;
@@ -416,75 +411,94 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
                                             {"percent_b", std::round(p.pb * 10.0) / 10.0}});
   j["not_compared"] = notes;
 
-  std::ostringstream h;
-  h << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab: similar "
-       "submissions</title><style>body{font-family:sans-serif;max-width:80em;margin:auto}"
-       "td,th{padding:2px 8px;vertical-align:top}table.side{table-layout:fixed;width:100%}"
-       "table.side td{width:50%}pre{margin:0;white-space:pre-wrap;overflow-wrap:anywhere;"
-       "font-size:85%}.n{color:#888}.stub{color:#aaa}.evidence{border:2px solid #c60;padding:"
-       "0.5em 1em;background:#fff8f0}</style></head><body>\n";
-  h << "<h1>Similar submissions: " << html_escape(config.assignment().id) << "</h1>\n";
-  h << "<p class=\"evidence\"><b>Evidence, not a verdict.</b> " << html_escape(kEvidence)
-    << "</p>\n";
-  h << "<p>" << inputs.size() << " submissions, " << compared << " pairs compared, "
-    << flagged.size() << " at or above " << options.threshold
-    << " %. A&nbsp;% is the share of A's own code lines (lines with code that are not the "
-       "stub's) inside regions B shares; a pair is listed when A&nbsp;% or B&nbsp;% reaches the "
-       "threshold. Given lines (identical to a line of the stub or of the handout's C++ code, or "
-       "in "
-       "a run of "
-    << options.min_run
-    << " tokens or more shared with them) do not count; they are shown grey. Settings: "
-    << html_escape(settings) << ".</p>\n";
-  if (!flagged.empty()) {
-    h << "<table border=\"1\" style=\"border-collapse:collapse\"><tr><th>#</th><th>A</th>"
-         "<th>B</th><th>A %</th><th>B %</th><th>shared lines (A / B)</th></tr>\n";
-    for (std::size_t k = 0; k < flagged.size(); ++k) {
-      const Pair& p = flagged[k];
-      h << "<tr><td>"
-        << (k < kMaxShownPairs ? "<a href=\"#pair-" + std::to_string(k + 1) + "\">" +
-                                     std::to_string(k + 1) + "</a>"
-                               : std::to_string(k + 1))
-        << "</td><td>" << html_escape(shown(inputs[p.a].id)) << "</td><td>"
-        << html_escape(shown(inputs[p.b].id)) << "</td><td>" << percent(p.pa) << "</td><td>"
-        << percent(p.pb) << "</td><td>" << p.la << " / " << p.lb << "</td></tr>\n";
-    }
-    h << "</table>\n";
-  }
-  for (std::size_t k = 0; k < flagged.size() && k < kMaxShownPairs; ++k) {
+  return j;
+}
+
+// similarity.html (grader/templates/similarity.html.mustache): the table of flagged pairs and the
+// regions of the first kMaxShownPairs side by side.
+std::string similarity_html(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+                            const std::vector<std::vector<TaskCopy>>& copies,
+                            const std::vector<Pair>& flagged, const std::vector<std::string>& notes,
+                            std::size_t compared, const std::string& settings,
+                            const SimilarityOptions& options) {
+  std::ostringstream threshold;
+  threshold << options.threshold;
+  HtmlData page;
+  page.set("assignment", config.assignment().id);
+  page.set("evidence", kEvidence);
+  page.set("submissions", std::to_string(inputs.size()));
+  page.set("compared", std::to_string(compared));
+  page.set("flagged", std::to_string(flagged.size()));
+  page.set("threshold", threshold.str());
+  page.set("min_run", std::to_string(options.min_run));
+  page.set("settings", settings);
+  page.set("has_pairs", !flagged.empty());
+  HtmlList pairs, shown_pairs;
+  for (std::size_t k = 0; k < flagged.size(); ++k) {
     const Pair& p = flagged[k];
-    h << "<h2 id=\"pair-" << (k + 1) << "\">" << (k + 1) << ". "
-      << html_escape(shown(inputs[p.a].id)) << " (" << percent(p.pa) << " %) and "
-      << html_escape(shown(inputs[p.b].id)) << " (" << percent(p.pb) << " %)</h2>\n";
+    HtmlData row;
+    row.set("number", std::to_string(k + 1));
+    row.set("shown", k < kMaxShownPairs);
+    row.set("a", shown(inputs[p.a].id));
+    row.set("b", shown(inputs[p.b].id));
+    row.set("percent_a", percent(p.pa));
+    row.set("percent_b", percent(p.pb));
+    row.set("lines_a", std::to_string(p.la));
+    row.set("lines_b", std::to_string(p.lb));
+    pairs.push_back(row);
+    if (k >= kMaxShownPairs) continue;
+    HtmlList regions;
     for (const Run& r : p.runs) {
       const TaskCopy& fa = copies[p.a][r.task];
       const TaskCopy& fb = copies[p.b][r.task];
-      h << "<table class=\"side\" border=\"1\" style=\"border-collapse:collapse\"><tr><th>"
-        << html_escape(shown(inputs[p.a].id)) << ": " << html_escape(shown(fa.shown)) << " lines "
-        << r.a1 << "–" << r.a2 << "</th><th>" << html_escape(shown(inputs[p.b].id)) << ": "
-        << html_escape(shown(fb.shown)) << " lines " << r.b1 << "–" << r.b2 << " (" << r.tokens
-        << " tokens)</th></tr>\n<tr><td>" << html_lines(fa, r.a1, r.a2) << "</td><td>"
-        << html_lines(fb, r.b1, r.b2) << "</td></tr></table><br>\n";
+      regions.push_back(HtmlObject{{"file_a", shown(fa.shown)},
+                                   {"file_b", shown(fb.shown)},
+                                   {"a1", std::to_string(r.a1)},
+                                   {"a2", std::to_string(r.a2)},
+                                   {"b1", std::to_string(r.b1)},
+                                   {"b2", std::to_string(r.b2)},
+                                   {"tokens", std::to_string(r.tokens)},
+                                   {"lines_a", html_lines(fa, r.a1, r.a2)},
+                                   {"lines_b", html_lines(fb, r.b1, r.b2)}});
     }
+    row.set("regions", regions);
+    shown_pairs.push_back(row);
   }
-  if (flagged.size() > kMaxShownPairs)
-    h << "<p>The regions of the first " << kMaxShownPairs
-      << " pairs are shown; similarity.json lists those of every pair.</p>\n";
-  if (!notes.empty()) {
-    h << "<h2>Files not compared</h2><ul>\n";
-    for (const std::string& n : notes) h << "<li>" << html_escape(n) << "</li>\n";
-    h << "</ul>\n";
-  }
-  h << "</body></html>\n";
+  page.set("pairs", pairs);
+  page.set("shown_pairs", shown_pairs);
+  page.set("more_pairs", flagged.size() > kMaxShownPairs);
+  page.set("max_shown", std::to_string(kMaxShownPairs));
+  page.set("has_notes", !notes.empty());
+  HtmlList note_list;
+  for (const std::string& n : notes) note_list.push_back(n);
+  page.set("notes", note_list);
+  return render_html(similarity_html_template(), "similarity.html.mustache", page);
+}
+
+int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+           const std::vector<std::vector<TaskCopy>>& copies, const std::vector<Run>& runs,
+           const std::vector<std::string>& notes, std::size_t handout_blocks, const fs::path& out,
+           const SimilarityOptions& options) {
+  const Ranking ranking = rank_pairs(inputs, copies, runs, options);
+  const std::size_t compared = inputs.size() * (inputs.size() - (inputs.empty() ? 0 : 1)) / 2;
+  const std::string settings =
+      "sim_c++ -e -r" + std::to_string(options.min_run) +
+      " on each task file over the whole class, the stub and the handout's "
+      "C++ code blocks (" +
+      std::to_string(handout_blocks) + ") as old files";
+  const nlohmann::json j =
+      similarity_json(config, inputs, copies, ranking, notes, compared, options);
   write_file_atomically(out / "similarity.json", j.dump(1) + "\n");
-  write_file_atomically(out / "similarity.html", h.str());
-  return static_cast<int>(flagged.size());
+  write_file_atomically(
+      out / "similarity.html",
+      similarity_html(config, inputs, copies, ranking.flagged, notes, compared, settings, options));
+  return static_cast<int>(ranking.flagged.size());
 }
 
 }  // namespace
 
 fs::path similarity_tool() {
-  const fs::path sim = find_sim();
+  const fs::path sim = find_on_path("sim_c++").value_or(fs::path());
   if (sim.empty())
     throw std::runtime_error(
         "similarity: sim_c++ (Dick Grune's similarity tester) was not found on PATH: install the "

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <optional>
@@ -10,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "inputs/class_archives.hpp"
 #include "inputs/files.hpp"
 #include "reports/text_safety.hpp"
 #include "sandbox/process.hpp"
@@ -22,404 +22,12 @@ namespace {
 
 constexpr const char* kMetadata = "submission_metadata.yml";
 
-// ---------------------------------------------------------------------------------------------
-// submission_metadata.yml: the YAML subset Gradescope writes.
-
-struct Line {
-  int number = 0;
-  int indent = 0;
-  std::string text;  ///< without the indentation and the line end
-};
-
-[[noreturn]] void yaml_error(const std::string& file, int line, const std::string& what) {
-  throw std::runtime_error(file + ":" + std::to_string(line) + ": " + what);
-}
-
+/// Text without the blanks around it.
 std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
+  const auto b = s.find_first_not_of(" \t\r\n");
   if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
 }
-
-/// A plain scalar's text without a trailing comment (" #...").
-std::string strip_comment(const std::string& s) {
-  for (std::size_t k = 0; k < s.size(); ++k)
-    if (s[k] == '#' && (k == 0 || s[k - 1] == ' ' || s[k - 1] == '\t')) return trim(s.substr(0, k));
-  return trim(s);
-}
-
-/// Reads YAML scalars, the value of one key, possibly over several lines.
-class ScalarReader {
- public:
-  ScalarReader(const std::string& file, std::map<std::string, std::string>& anchors)
-      : file_(file), anchors_(anchors) {}
-
-  /// The scalar that starts with `first` (the text after "key:") on line `lines[i]`; continuation
-  /// lines are those after it indented more than `key_indent`. Advances `i` past what it read.
-  std::string read(const std::string& first, const std::vector<Line>& lines, std::size_t& i,
-                   int key_indent) {
-    const int at = lines[i].number;
-    std::string v = trim(first);
-    std::string anchor;
-    // Properties: a tag (!ruby/string, !!str) and an anchor (&name), in either order.
-    for (int k = 0; k < 2; ++k) {
-      if (!v.empty() && (v[0] == '!' || v[0] == '&')) {
-        const auto sp = v.find(' ');
-        const std::string prop = v.substr(0, sp);
-        if (prop[0] == '&') anchor = prop.substr(1);
-        v = sp == std::string::npos ? "" : trim(v.substr(sp + 1));
-      }
-    }
-    std::string value;
-    ++i;
-    if (!v.empty() && v[0] == '*') {
-      const std::string name = strip_comment(v.substr(1));
-      const auto a = anchors_.find(name);
-      if (a == anchors_.end())
-        yaml_error(file_, at, "the alias *" + name + " names no anchor (&" + name + ") before it");
-      value = a->second;
-    } else if (!v.empty() && (v[0] == '\'' || v[0] == '"')) {
-      // A quoted scalar may go on over the following lines (each line break folds to a space).
-      std::string text = v;
-      while (!closed(text) && i < lines.size() && lines[i].indent > key_indent)
-        text += " " + lines[i++].text;
-      value = v[0] == '\'' ? single_quoted(text, at) : double_quoted(text, at);
-    } else if (!v.empty() && (v[0] == '|' || v[0] == '>')) {
-      // A block scalar: the more indented lines after it, kept (|) or folded (>).
-      const char join = v[0] == '|' ? '\n' : ' ';
-      while (i < lines.size() && lines[i].indent > key_indent)
-        value += (value.empty() ? "" : std::string(1, join)) + lines[i++].text;
-    } else {
-      if (!v.empty() && (v[0] == '[' || v[0] == '{') && strip_comment(v).size() > 2)
-        yaml_error(file_, at,
-                   "expected a single value, found a flow collection '" + strip_comment(v) + "'");
-      value = strip_comment(v);
-      // A long plain scalar folded over the following lines.
-      while (i < lines.size() && lines[i].indent > key_indent)
-        value += " " + strip_comment(lines[i++].text);
-      if (value == "~" || value == "null" || value == "Null" || value == "NULL" || value == "[]" ||
-          value == "{}")
-        value.clear();
-    }
-    if (!anchor.empty()) anchors_[anchor] = value;
-    return value;
-  }
-
- private:
-  static bool closed(const std::string& t) {
-    if (t.size() < 2) return false;
-    if (t[0] == '\'') {
-      // The closing quote is a single quote not doubled.
-      for (std::size_t k = 1; k < t.size(); ++k)
-        if (t[k] == '\'') {
-          if (k + 1 < t.size() && t[k + 1] == '\'')
-            ++k;
-          else
-            return true;
-        }
-      return false;
-    }
-    for (std::size_t k = 1; k < t.size(); ++k) {
-      if (t[k] == '\\')
-        ++k;
-      else if (t[k] == '"')
-        return true;
-    }
-    return false;
-  }
-
-  std::string after_quote(const std::string& rest, int at) {
-    const std::string tail = strip_comment(rest);
-    if (!tail.empty()) yaml_error(file_, at, "unexpected text '" + tail + "' after a quoted value");
-    return "";
-  }
-
-  std::string single_quoted(const std::string& t, int at) {
-    std::string out;
-    for (std::size_t k = 1; k < t.size(); ++k) {
-      if (t[k] == '\'') {
-        if (k + 1 < t.size() && t[k + 1] == '\'') {
-          out += '\'';
-          ++k;
-          continue;
-        }
-        after_quote(t.substr(k + 1), at);
-        return out;
-      }
-      out += t[k];
-    }
-    yaml_error(file_, at, "a single-quoted value with no closing quote (')");
-  }
-
-  std::string double_quoted(const std::string& t, int at) {
-    std::string out;
-    for (std::size_t k = 1; k < t.size(); ++k) {
-      const char c = t[k];
-      if (c == '"') {
-        after_quote(t.substr(k + 1), at);
-        return out;
-      }
-      if (c != '\\') {
-        out += c;
-        continue;
-      }
-      if (++k >= t.size()) break;
-      const char e = t[k];
-      const auto hex = [&](int digits) {
-        if (k + static_cast<std::size_t>(digits) >= t.size())
-          yaml_error(file_, at,
-                     "a \\" + std::string(1, e) + " escape needs " + std::to_string(digits) +
-                         " hexadecimal digits");
-        std::uint32_t v = 0;
-        for (int d = 1; d <= digits; ++d) {
-          const char h = t[k + static_cast<std::size_t>(d)];
-          if (!std::isxdigit(static_cast<unsigned char>(h)))
-            yaml_error(file_, at,
-                       "a \\" + std::string(1, e) + " escape needs " + std::to_string(digits) +
-                           " hexadecimal digits");
-          v = v * 16 + static_cast<std::uint32_t>(
-                           std::isdigit(static_cast<unsigned char>(h))
-                               ? h - '0'
-                               : std::tolower(static_cast<unsigned char>(h)) - 'a' + 10);
-        }
-        k += static_cast<std::size_t>(digits);
-        if (v > 0x10FFFF) yaml_error(file_, at, "an escape beyond Unicode");
-        append_utf8(out, v);
-      };
-      switch (e) {
-        case '0': out += '\0'; break;
-        case 'a': out += '\a'; break;
-        case 'b': out += '\b'; break;
-        case 't':
-        case '\t': out += '\t'; break;
-        case 'n': out += '\n'; break;
-        case 'v': out += '\v'; break;
-        case 'f': out += '\f'; break;
-        case 'r': out += '\r'; break;
-        case 'e': out += '\x1b'; break;
-        case ' ': out += ' '; break;
-        case '"': out += '"'; break;
-        case '/': out += '/'; break;
-        case '\\': out += '\\'; break;
-        case 'N': append_utf8(out, 0x85); break;
-        case '_': append_utf8(out, 0xA0); break;
-        case 'L': append_utf8(out, 0x2028); break;
-        case 'P': append_utf8(out, 0x2029); break;
-        case 'x': hex(2); break;
-        case 'u': hex(4); break;
-        case 'U': hex(8); break;
-        default:
-          yaml_error(file_, at,
-                     "unknown escape \\" + std::string(1, e) + " in a double-quoted value");
-      }
-    }
-    yaml_error(file_, at, "a double-quoted value with no closing quote (\")");
-  }
-
-  const std::string& file_;
-  std::map<std::string, std::string>& anchors_;
-};
-
-/// "key: rest" → {key, rest}; the key may be a Ruby symbol (":name") or quoted. False when the
-/// line is no "key:".
-bool split_key(const std::string& text, std::string& key, std::string& rest) {
-  if (text.empty()) return false;
-  std::size_t end = std::string::npos;
-  if (text[0] == '\'' || text[0] == '"') {
-    const auto close = text.find(text[0], 1);
-    if (close == std::string::npos) return false;
-    key = text.substr(1, close - 1);
-    if (close + 1 >= text.size() || text[close + 1] != ':') return false;
-    end = close + 1;
-  } else {
-    // The first ':' followed by a space or the line end, past a symbol's leading ':'.
-    for (std::size_t k = text[0] == ':' ? 1 : 0; k < text.size(); ++k)
-      if (text[k] == ':' && (k + 1 == text.size() || text[k + 1] == ' ')) {
-        end = k;
-        break;
-      }
-    if (end == std::string::npos) return false;
-    key = text.substr(0, end);
-  }
-  rest = end + 1 < text.size() ? text.substr(end + 1) : "";
-  return true;
-}
-
-}  // namespace
-
-std::vector<GradescopeEntry> read_gradescope_metadata(const std::string& text,
-                                                      const std::string& file) {
-  // The lines that carry content, with their indentation.
-  std::vector<Line> lines;
-  {
-    std::size_t pos = 0;
-    int number = 0;
-    while (pos <= text.size()) {
-      auto nl = text.find('\n', pos);
-      if (nl == std::string::npos) nl = text.size();
-      std::string l = text.substr(pos, nl - pos);
-      pos = nl + 1;
-      ++number;
-      if (!l.empty() && l.back() == '\r') l.pop_back();
-      if (number == 1 && l.rfind("\xEF\xBB\xBF", 0) == 0) l.erase(0, 3);  // a BOM
-      std::size_t indent = 0;
-      while (indent < l.size() && l[indent] == ' ') ++indent;
-      if (indent < l.size() && l[indent] == '\t')
-        yaml_error(file, number, "a tab in the indentation (YAML indents with spaces)");
-      const std::string body = l.substr(indent);
-      if (body.empty() || body[0] == '#') continue;
-      if (indent == 0 && (body.rfind("---", 0) == 0 || body == "...")) {
-        if (body.size() > 3 && body.rfind("--- ", 0) != 0 && body != "...")
-          yaml_error(file, number, "expected '---' alone on its line");
-        continue;
-      }
-      if (indent == 0 && body[0] == '%') continue;  // a directive (%YAML 1.1)
-      lines.push_back({number, static_cast<int>(indent), body});
-      if (nl == text.size()) break;
-    }
-  }
-  std::map<std::string, std::string> anchors;
-  std::map<std::string, GradescopeSubmitter> item_anchors;
-  ScalarReader scalars(file, anchors);
-  std::vector<GradescopeEntry> entries;
-  std::set<std::string> seen;
-  std::size_t i = 0;
-  if (!lines.empty() && lines[0].indent != 0)
-    yaml_error(file, lines[0].number, "expected a submission folder name at the start of the line");
-  while (i < lines.size()) {
-    const Line& top = lines[i];
-    std::string key, rest;
-    if (top.indent != 0 || !split_key(top.text, key, rest))
-      yaml_error(file, top.number,
-                 "expected a submission folder name followed by ':' (such as submission_123456:), "
-                 "found '" +
-                     top.text + "'");
-    if (!strip_comment(rest).empty() && strip_comment(rest) != "{}")
-      yaml_error(file, top.number,
-                 "expected the submission's keys (:submitters:, ...) on the lines below " + key +
-                     ":, found '" + strip_comment(rest) + "'");
-    if (!seen.insert(key).second)
-      yaml_error(file, top.number, "the submission " + key + " is listed twice");
-    GradescopeEntry entry;
-    entry.folder = key;
-    entry.line = top.number;
-    ++i;
-    const int child = i < lines.size() ? lines[i].indent : 0;
-    while (i < lines.size() && lines[i].indent > 0) {
-      const Line& l = lines[i];
-      if (l.indent != child)
-        yaml_error(file, l.number,
-                   "expected a key of " + key + " indented by " + std::to_string(child) +
-                       " spaces like the one above, found " + std::to_string(l.indent));
-      std::string k, r;
-      if (!split_key(l.text, k, r))
-        yaml_error(file, l.number,
-                   "expected a key of " + key + " (such as :submitters:), found '" + l.text + "'");
-      ++i;
-      if (k != ":submitters:" && k != ":submitters") {
-        // Any other key (:created_at:, :score:, :results:, :history:, ...) with everything under
-        // it.
-        while (i < lines.size() && lines[i].indent > child) ++i;
-        continue;
-      }
-      const std::string inline_value = strip_comment(r);
-      if (inline_value == "[]") continue;
-      if (!inline_value.empty())
-        yaml_error(file, l.number,
-                   "expected the list of submitters on the lines below :submitters:, found '" +
-                       inline_value + "'");
-      // The list: "- " items at one indentation (Psych writes them at the key's own).
-      const int dash = i < lines.size() ? lines[i].indent : 0;
-      while (i < lines.size() && lines[i].indent == dash && dash >= child &&
-             lines[i].text.rfind("-", 0) == 0) {
-        const Line& item = lines[i];
-        const int item_line = item.number;
-        std::string first = item.text.size() > 1 ? item.text.substr(1) : "";
-        if (!first.empty() && first[0] != ' ')
-          yaml_error(file, item.number,
-                     "expected '- ' starting a submitter, found '" + item.text + "'");
-        const int offset = static_cast<int>(first.size() - trim(first).size()) + 1;
-        first = strip_comment(first).empty() ? "" : trim(first);
-        GradescopeSubmitter who;
-        std::string anchor;
-        if (!first.empty() && (first[0] == '&' || first[0] == '*')) {
-          const auto sp = first.find(' ');
-          const std::string name = first.substr(1, sp == std::string::npos ? sp : sp - 1);
-          if (first[0] == '*') {
-            const auto a = item_anchors.find(name);
-            if (a == item_anchors.end())
-              yaml_error(
-                  file, item.number,
-                  "the alias *" + name + " names no submitter anchored (&" + name + ") before it");
-            entry.submitters.push_back(a->second);
-            ++i;
-            continue;
-          }
-          anchor = name;
-          first = sp == std::string::npos ? "" : trim(first.substr(sp + 1));
-        }
-        // The item's keys: on the dash line and on the lines indented like it.
-        int key_col = dash + offset;
-        std::size_t j = i;
-        std::vector<std::pair<std::string, std::size_t>> pending;  // (text, line index)
-        Line inline_line = item;
-        if (!first.empty()) {
-          inline_line.text = first;
-          inline_line.indent = key_col;
-        } else {
-          ++j;
-          key_col = j < lines.size() ? lines[j].indent : key_col;
-          if (j >= lines.size() || key_col <= dash) {
-            i = j;
-            entry.submitters.push_back(who);
-            continue;
-          }
-        }
-        // Walk the item's keys.
-        std::vector<Line> mine;
-        if (!first.empty()) {
-          mine.push_back(inline_line);
-          ++j;
-        }
-        while (j < lines.size() && lines[j].indent > dash) mine.push_back(lines[j++]);
-        i = j;
-        std::size_t m = 0;
-        while (m < mine.size()) {
-          const Line& kv = mine[m];
-          if (kv.indent != key_col)
-            yaml_error(file, kv.number,
-                       "expected a key of the submitter that starts on line " +
-                           std::to_string(item_line) + " indented by " + std::to_string(key_col) +
-                           " spaces, found " + std::to_string(kv.indent));
-          std::string sk, sv;
-          if (!split_key(kv.text, sk, sv))
-            yaml_error(file, kv.number,
-                       "expected a key of a submitter (such as :name:), found '" + kv.text + "'");
-          std::string* target = sk == ":name:" || sk == ":name"     ? &who.name
-                                : sk == ":sid:" || sk == ":sid"     ? &who.sid
-                                : sk == ":email:" || sk == ":email" ? &who.email
-                                                                    : nullptr;
-          if (target) {
-            *target = scalars.read(sv, mine, m, key_col);
-          } else {
-            ++m;
-            while (m < mine.size() && mine[m].indent > key_col) ++m;
-          }
-        }
-        if (!anchor.empty()) item_anchors[anchor] = who;
-        entry.submitters.push_back(who);
-      }
-      if (i < lines.size() && lines[i].indent > child)
-        yaml_error(file, lines[i].number,
-                   "expected a submitter ('- :name: ...') or the next key of " + key + ", found '" +
-                       lines[i].text + "'");
-    }
-    entries.push_back(std::move(entry));
-  }
-  return entries;
-}
-
-namespace {
 
 // ---------------------------------------------------------------------------------------------
 // Folders, symlinks, ids.
@@ -533,34 +141,38 @@ std::string common_dash_prefix(const std::vector<Entry>& es) {
   return dash == std::string::npos ? "" : p.substr(0, dash + 1);
 }
 
-/// unzip on the PATH (run_child does not search it), else /usr/bin/unzip.
-std::string find_unzip() {
-#ifdef _WIN32
-  const char sep = ';';
-  const char* exe = "unzip.exe";
-#else
-  const char sep = ':';
-  const char* exe = "unzip";
-#endif
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t pos = 0;
-  while (pos <= dirs.size()) {
-    auto end = dirs.find(sep, pos);
-    if (end == std::string::npos) end = dirs.size();
-    const std::string d = dirs.substr(pos, end - pos);
-    pos = end + 1;
-    std::error_code ec;
-    if (!d.empty() && fs::is_regular_file(fs::path(d) / exe, ec))
-      return (fs::path(d) / exe).string();
+/// Why the zip entry `name` is refused ("an absolute path", "a '..' component", both; "" when it is
+/// not), and `landing`: where unzip's own sanitising puts it (it strips a leading '/' and a drive,
+/// and drops ".." components), relative to the folder it extracts into.
+std::string refusal_of(const std::string& name, fs::path& landing) {
+  std::string why;
+  std::string rest = name;
+  if (rest.size() >= 2 && std::isalpha(static_cast<unsigned char>(rest[0])) && rest[1] == ':') {
+    why = "an absolute path";
+    rest = rest.substr(2);
   }
-  return "/usr/bin/unzip";
+  if (!rest.empty() && (rest[0] == '/' || rest[0] == '\\')) why = "an absolute path";
+  std::string part;
+  for (std::size_t k = 0; k <= rest.size(); ++k) {
+    if (k == rest.size() || rest[k] == '/' || rest[k] == '\\') {
+      if (part == ".." && why.find("'..'") == std::string::npos)
+        why = why.empty() ? "a '..' component" : why + " and a '..' component";
+      else if (part == "..")
+        ;
+      else if (!part.empty() && part != ".")
+        landing /= part;
+      part.clear();
+    } else {
+      part += rest[k];
+    }
+  }
+  return why;
 }
 
-/// Extracts `zip` into `scratch` with unzip. Entries with an absolute path or a ".." component
-/// are refused: returned as (where unzip's own sanitising puts them, relative to `scratch`, the
-/// message); unzip itself keeps every file inside `scratch` and makes symlinks last, so that no
-/// entry is written through one.
+/// Extracts `zip` into `scratch` with unzip, its entries listed with libzip. Entries with an
+/// absolute path or a ".." component are refused: returned as (where unzip's own sanitising puts
+/// them, relative to `scratch`, the message); unzip itself keeps every file inside `scratch` and
+/// makes symlinks last, so that no entry is written through one.
 std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
                                                           const fs::path& scratch) {
   std::error_code ec;
@@ -568,46 +180,12 @@ std::vector<std::pair<fs::path, std::string>> extract_zip(const fs::path& zip,
   fs::create_directories(scratch);
   const std::string shown = zip.filename().string();
   const Limits lim = trusted_tool_limits(600.0, std::size_t{256} << 20);
-  const std::string unzip = find_unzip();
-  const ChildResult list = run_child({unzip, "-Z1", zip.string()}, lim);
-  if (!list.started)
-    throw std::runtime_error(shown + ": cannot run unzip to read the zip (" + list.start_error +
-                             "); install it (Debian package unzip, tools/install-deps.sh)");
-  if (list.timed_out || list.exit_code != 0)
-    throw std::runtime_error(shown + ": not a zip file unzip can read (unzip -Z1: exit status " +
-                             std::to_string(list.exit_code) + ": " + trim(list.err + list.out) +
-                             ")");
+  const std::string unzip = find_on_path("unzip").value_or("/usr/bin/unzip").string();
   std::vector<std::pair<fs::path, std::string>> refused;
-  std::size_t pos = 0;
-  while (pos < list.out.size()) {
-    auto nl = list.out.find('\n', pos);
-    if (nl == std::string::npos) nl = list.out.size();
-    const std::string name = list.out.substr(pos, nl - pos);
-    pos = nl + 1;
+  for (const std::string& name : zip_entry_names(zip, shown)) {
     if (name.empty()) continue;
-    // What unzip does with it: strips leading '/' (and a drive), drops ".." components.
-    std::string why;
-    std::string rest = name;
-    if (rest.size() >= 2 && std::isalpha(static_cast<unsigned char>(rest[0])) && rest[1] == ':') {
-      why = "an absolute path";
-      rest = rest.substr(2);
-    }
-    if (!rest.empty() && (rest[0] == '/' || rest[0] == '\\')) why = "an absolute path";
     fs::path landing;
-    std::string part;
-    for (std::size_t k = 0; k <= rest.size(); ++k) {
-      if (k == rest.size() || rest[k] == '/' || rest[k] == '\\') {
-        if (part == ".." && why.find("'..'") == std::string::npos)
-          why = why.empty() ? "a '..' component" : why + " and a '..' component";
-        else if (part == "..")
-          ;
-        else if (!part.empty() && part != ".")
-          landing /= part;
-        part.clear();
-      } else {
-        part += rest[k];
-      }
-    }
+    const std::string why = refusal_of(name, landing);
     if (!why.empty())
       refused.emplace_back(landing, "the zip's entry '" + name + "' has " + why +
                                         ": refused (it could write outside the export)");
@@ -789,11 +367,15 @@ std::string safe_id(const std::string& raw) {
   return s;
 }
 
-std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scratch,
-                                         std::vector<std::string>* warnings) {
+namespace {
+
+// The folder whose entries are the class's submissions: `in`, or the zip extracted into `scratch`
+// (`refused` gets the entries refused by name), or the one Gradescope export or LMS download
+// folder inside either.
+fs::path class_root(const fs::path& in, const fs::path& scratch,
+                    std::vector<std::pair<fs::path, std::string>>& refused) {
   std::error_code ec;
   fs::path root = in;
-  std::vector<std::pair<fs::path, std::string>> refused;
   if (fs::is_regular_file(in, ec)) {
     if (lower(in.extension().string()) != ".zip")
       throw std::runtime_error(in.string() +
@@ -823,10 +405,15 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
         !is_lms_download(top) && is_lms_download(entries_of(top.front().path)))
       root = top.front().path;
   }
-  const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
-  std::vector<Entry> entries =
-      entries_of(root, gradescope ? std::set<std::string>{kMetadata} : std::set<std::string>{});
-  // A refused zip entry belongs to the submission folder it would have landed in.
+  return root;
+}
+
+// The refused zip entries by the submission folder each would have landed in; those that name no
+// submission folder go to `warnings`.
+std::map<std::string, std::vector<std::string>> refused_by_entry(
+    const fs::path& in, const fs::path& root, const fs::path& scratch,
+    const std::vector<std::pair<fs::path, std::string>>& refused, const std::vector<Entry>& entries,
+    std::vector<std::string>* warnings) {
   const fs::path rel_root = root == scratch ? fs::path() : root.lexically_relative(scratch);
   std::map<std::string, std::vector<std::string>> refused_in;
   for (const auto& [landing, message] : refused) {
@@ -841,135 +428,148 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
       warnings->push_back(in.filename().string() + ": " + message +
                           "; it names no submission folder, so no student's grade depends on it");
   }
+  return refused_in;
+}
 
+// One entry of the class as a submission (its id still to be given): its problem, if any.
+Submission from_entry(const Entry& e, const fs::path& root,
+                      const std::map<std::string, std::vector<std::string>>& refused_in) {
+  Submission s;
+  s.source = e.key;
+  s.dir = e.path;
+  if (!is_folder(e.path))
+    s.problem = "'" + e.key +
+                "' is a file, not a folder: each submission is a folder of files (a student's "
+                "zip must be unpacked first), unless the class is a Canvas or Moodle download, "
+                "whose files are named after their students";
+  else if (const auto r = refused_in.find(e.key); r != refused_in.end())
+    s.problem = r->second.front();
+  else
+    s.problem = folder_problem(e.path, root, s.notes);
+  return s;
+}
+
+// A Gradescope export: one row per submitter of each submission submission_metadata.yml lists
+// (id: the :sid:, else the email, else the folder), and one per folder it does not list.
+std::vector<Submission> gradescope_submissions(
+    const fs::path& in, const fs::path& scratch, const fs::path& root,
+    const std::vector<Entry>& entries,
+    const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
   std::vector<Submission> subs;
-  const auto from_entry = [&](const Entry& e) {
-    Submission s;
-    s.source = e.key;
-    s.dir = e.path;
-    if (!is_folder(e.path))
-      s.problem = "'" + e.key +
-                  "' is a file, not a folder: each submission is a folder of files (a student's "
-                  "zip must be unpacked first), unless the class is a Canvas or Moodle download, "
-                  "whose files are named after their students";
-    else if (const auto r = refused_in.find(e.key); r != refused_in.end())
-      s.problem = r->second.front();
-    else
-      s.problem = folder_problem(e.path, root, s.notes);
-    return s;
-  };
-
-  if (gradescope) {
-    const std::vector<GradescopeEntry> meta = read_gradescope_metadata(
-        read_file(root / kMetadata),
-        fs::is_regular_file(in, ec)
-            ? in.filename().string() + ": " +
-                  fs::relative(root / kMetadata, scratch, ec).generic_string()
-            : (root / kMetadata).string());
-    std::map<std::string, const Entry*> by_folder;
-    for (const Entry& e : entries) by_folder[e.key] = &e;
-    std::set<std::string> listed;
-    for (const GradescopeEntry& g : meta) {
-      listed.insert(g.folder);
-      const auto f = by_folder.find(g.folder);
-      Submission base;
-      if (f == by_folder.end()) {
-        base.source = g.folder;
-        base.dir = root / safe_id(g.folder);
-        base.problem = std::string(kMetadata) + " lists the submission " + g.folder + " (line " +
-                       std::to_string(g.line) + ") but the export has no such folder";
+  const std::vector<GradescopeEntry> meta = read_gradescope_metadata(
+      read_file(root / kMetadata),
+      fs::is_regular_file(in, ec) ? in.filename().string() + ": " +
+                                        fs::relative(root / kMetadata, scratch, ec).generic_string()
+                                  : (root / kMetadata).string());
+  std::map<std::string, const Entry*> by_folder;
+  for (const Entry& e : entries) by_folder[e.key] = &e;
+  std::set<std::string> listed;
+  for (const GradescopeEntry& g : meta) {
+    listed.insert(g.folder);
+    const auto f = by_folder.find(g.folder);
+    Submission base;
+    if (f == by_folder.end()) {
+      base.source = g.folder;
+      base.dir = root / safe_id(g.folder);
+      base.problem = std::string(kMetadata) + " lists the submission " + g.folder + " (line " +
+                     std::to_string(g.line) + ") but the export has no such folder";
+    } else {
+      base = from_entry(*f->second, root, refused_in);
+    }
+    if (g.submitters.empty()) {
+      Submission s = base;
+      s.id = g.folder;
+      s.notes.push_back(std::string(kMetadata) + " names no submitter for " + g.folder +
+                        ": the id is the folder's name");
+      subs.push_back(s);
+      continue;
+    }
+    for (std::size_t k = 0; k < g.submitters.size(); ++k) {
+      const GradescopeSubmitter& who = g.submitters[k];
+      Submission s = base;
+      s.name = who.name;
+      s.email = who.email;
+      if (!who.sid.empty()) {
+        s.id = who.sid;
+      } else if (!who.email.empty()) {
+        s.id = who.email;
+        s.notes.push_back("no student id (:sid:) in " + std::string(kMetadata) + " for " +
+                          (who.name.empty() ? g.folder : who.name) + ": the id is the email");
       } else {
-        base = from_entry(*f->second);
-      }
-      if (g.submitters.empty()) {
-        Submission s = base;
         s.id = g.folder;
-        s.notes.push_back(std::string(kMetadata) + " names no submitter for " + g.folder +
-                          ": the id is the folder's name");
-        subs.push_back(s);
-        continue;
+        s.notes.push_back("neither a student id (:sid:) nor an email in " + std::string(kMetadata) +
+                          " for " + (who.name.empty() ? g.folder : who.name) +
+                          ": the id is the submission folder's name");
       }
-      for (std::size_t k = 0; k < g.submitters.size(); ++k) {
-        const GradescopeSubmitter& who = g.submitters[k];
-        Submission s = base;
-        s.name = who.name;
-        s.email = who.email;
-        if (!who.sid.empty()) {
-          s.id = who.sid;
-        } else if (!who.email.empty()) {
-          s.id = who.email;
-          s.notes.push_back("no student id (:sid:) in " + std::string(kMetadata) + " for " +
-                            (who.name.empty() ? g.folder : who.name) + ": the id is the email");
-        } else {
-          s.id = g.folder;
-          s.notes.push_back("neither a student id (:sid:) nor an email in " +
-                            std::string(kMetadata) + " for " +
-                            (who.name.empty() ? g.folder : who.name) +
-                            ": the id is the submission folder's name");
-        }
-        if (g.submitters.size() > 1) {
-          std::string others;
-          for (std::size_t o = 0; o < g.submitters.size(); ++o)
-            if (o != k) {
-              const GradescopeSubmitter& w = g.submitters[o];
-              others += (others.empty() ? "" : ", ") +
-                        (w.name.empty() ? (w.sid.empty() ? w.email : w.sid) : w.name) +
-                        (w.sid.empty() ? "" : " (" + w.sid + ")");
-            }
-          s.notes.push_back("group submission " + g.folder + " with " + others +
-                            ": each member has a row, graded from the same files");
-        }
-        subs.push_back(s);
-      }
-    }
-    for (const Entry& e : entries)
-      if (!listed.count(e.key)) {
-        Submission s = from_entry(e);
-        s.id = e.key;
-        s.notes.push_back(e.key + " is not in " + std::string(kMetadata) +
-                          ": the id is the folder's name");
-        subs.push_back(s);
-      }
-  } else if (is_lms_download(entries)) {
-    if (scratch.empty())
-      throw std::runtime_error(in.string() +
-                               ": a Canvas or Moodle download needs a scratch folder to gather "
-                               "each student's files in");
-    subs = lms_submissions(entries, root, scratch / ".by-student", refused_in);
-  } else {
-    // GitHub Classroom: every folder a git clone named <assignment>-<username>.
-    bool classroom = !entries.empty();
-    for (const Entry& e : entries)
-      classroom = classroom && is_folder(e.path) && fs::exists(e.path / ".git", ec);
-    std::string prefix;
-    if (classroom) {
-      // `gh classroom clone student-repos` clones into <assignment>-submissions/: its name says
-      // where the username starts even when usernames share a start.
-      const std::string parent =
-          (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
-      const std::string suffix = "-submissions";
-      if (parent.size() > suffix.size() &&
-          parent.compare(parent.size() - suffix.size(), suffix.size(), suffix) == 0) {
-        prefix = parent.substr(0, parent.size() - suffix.size()) + "-";
-        for (const Entry& e : entries)
-          if (e.key.rfind(prefix, 0) != 0 || e.key.size() == prefix.size()) prefix.clear();
-      }
-      if (prefix.empty()) prefix = common_dash_prefix(entries);
-    }
-    for (const Entry& e : entries) {
-      Submission s = from_entry(e);
-      s.id = e.key;
-      if (!prefix.empty()) {
-        s.id = e.key.substr(prefix.size());
-        s.notes.push_back("GitHub Classroom repository " + e.key + ": the id is the username " +
-                          s.id + " (the prefix " + prefix + " every folder shares stripped)");
+      if (g.submitters.size() > 1) {
+        std::string others;
+        for (std::size_t o = 0; o < g.submitters.size(); ++o)
+          if (o != k) {
+            const GradescopeSubmitter& w = g.submitters[o];
+            others += (others.empty() ? "" : ", ") +
+                      (w.name.empty() ? (w.sid.empty() ? w.email : w.sid) : w.name) +
+                      (w.sid.empty() ? "" : " (" + w.sid + ")");
+          }
+        s.notes.push_back("group submission " + g.folder + " with " + others +
+                          ": each member has a row, graded from the same files");
       }
       subs.push_back(s);
     }
   }
+  for (const Entry& e : entries)
+    if (!listed.count(e.key)) {
+      Submission s = from_entry(e, root, refused_in);
+      s.id = e.key;
+      s.notes.push_back(e.key + " is not in " + std::string(kMetadata) +
+                        ": the id is the folder's name");
+      subs.push_back(s);
+    }
+  return subs;
+}
 
-  // Ids: safe as folder names, unique (whatever the case: students/<id> on a case-insensitive
-  // file system).
+// A folder of student folders (id: the folder's name), or of GitHub Classroom clones (id: the
+// username, the prefix every folder shares stripped).
+std::vector<Submission> folder_submissions(
+    const fs::path& in, const fs::path& root, const std::vector<Entry>& entries,
+    const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
+  std::vector<Submission> subs;
+  // GitHub Classroom: every folder a git clone named <assignment>-<username>.
+  bool classroom = !entries.empty();
+  for (const Entry& e : entries)
+    classroom = classroom && is_folder(e.path) && fs::exists(e.path / ".git", ec);
+  std::string prefix;
+  if (classroom) {
+    // `gh classroom clone student-repos` clones into <assignment>-submissions/: its name says
+    // where the username starts even when usernames share a start.
+    const std::string parent =
+        (fs::absolute(in).lexically_normal() / "").parent_path().filename().string();
+    const std::string suffix = "-submissions";
+    if (parent.size() > suffix.size() &&
+        parent.compare(parent.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      prefix = parent.substr(0, parent.size() - suffix.size()) + "-";
+      for (const Entry& e : entries)
+        if (e.key.rfind(prefix, 0) != 0 || e.key.size() == prefix.size()) prefix.clear();
+    }
+    if (prefix.empty()) prefix = common_dash_prefix(entries);
+  }
+  for (const Entry& e : entries) {
+    Submission s = from_entry(e, root, refused_in);
+    s.id = e.key;
+    if (!prefix.empty()) {
+      s.id = e.key.substr(prefix.size());
+      s.notes.push_back("GitHub Classroom repository " + e.key + ": the id is the username " +
+                        s.id + " (the prefix " + prefix + " every folder shares stripped)");
+    }
+    subs.push_back(s);
+  }
+  return subs;
+}
+
+// The ids made safe as folder names and unique whatever the case (students/<id> on a
+// case-insensitive file system): a shared id grades none of its rows and names the others.
+void settle_ids(std::vector<Submission>& subs) {
   for (Submission& s : subs) {
     const std::string safe = safe_id(s.id);
     if (safe != s.id) {
@@ -1008,6 +608,33 @@ std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scr
   }
   std::stable_sort(subs.begin(), subs.end(),
                    [](const Submission& a, const Submission& b) { return a.id < b.id; });
+}
+
+}  // namespace
+
+std::vector<Submission> find_submissions(const fs::path& in, const fs::path& scratch,
+                                         std::vector<std::string>* warnings) {
+  std::error_code ec;
+  std::vector<std::pair<fs::path, std::string>> refused;
+  const fs::path root = class_root(in, scratch, refused);
+  const bool gradescope = fs::is_regular_file(root / kMetadata, ec);
+  std::vector<Entry> entries =
+      entries_of(root, gradescope ? std::set<std::string>{kMetadata} : std::set<std::string>{});
+  const std::map<std::string, std::vector<std::string>> refused_in =
+      refused_by_entry(in, root, scratch, refused, entries, warnings);
+  std::vector<Submission> subs;
+  if (gradescope) {
+    subs = gradescope_submissions(in, scratch, root, entries, refused_in);
+  } else if (is_lms_download(entries)) {
+    if (scratch.empty())
+      throw std::runtime_error(in.string() +
+                               ": a Canvas or Moodle download needs a scratch folder to gather "
+                               "each student's files in");
+    subs = lms_submissions(entries, root, scratch / ".by-student", refused_in);
+  } else {
+    subs = folder_submissions(in, root, entries, refused_in);
+  }
+  settle_ids(subs);
   return subs;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "inputs/files.hpp"
+#include "reports/html_page.hpp"
 #include "jelly/cli_common/text_table.hpp"
 #include "reports/plot.hpp"
 #include "reports/points.hpp"
@@ -647,128 +648,138 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
   return o.str();
 }
 
+namespace {
+
+// report.html's course scene: the plot, and the frames beside the reference when they were made.
+HtmlData html_course_scene(const GradeReport& r, const CourseFrames* frames,
+                           const std::filesystem::path& dir) {
+  HtmlData scene;
+  const std::string svg = com_plot_svg(r);
+  scene.set("has_svg", !svg.empty());
+  scene.set("svg", svg);
+  const bool shown = frames && frames->shown;
+  scene.set("frames_shown", shown);
+  if (!shown) return scene;
+  scene.set("has_unavailable", !frames->unavailable.empty());
+  scene.set("unavailable", frames->unavailable);
+  const auto cell = [&](const std::string& file, const std::string& alt) {
+    const std::string bytes = file.empty() ? std::string() : read_file(dir / file);
+    return HtmlObject{{"has_image", !bytes.empty()}, {"alt", alt}, {"base64", base64(bytes)}};
+  };
+  HtmlList rows;
+  for (const FrameRow& row : frames->rows) {
+    HtmlList cells;
+    cells.push_back(cell(row.yours, "yours at t = " + pts(row.time) + " s"));
+    cells.push_back(cell(row.reference, "reference at t = " + pts(row.time) + " s"));
+    rows.push_back(HtmlObject{{"time", pts(row.time)}, {"cells", cells}});
+  }
+  scene.set("rows", rows);
+  scene.set("has_frame_notes", !frames->notes.empty());
+  HtmlList notes;
+  for (const std::string& n : frames->notes) notes.push_back(n);
+  scene.set("frame_notes", notes);
+  return scene;
+}
+
+// One failed test: its messages (terms linked to `page`), its hint.
+HtmlData html_failed_test(const CaseResult& c, const std::string& page) {
+  HtmlList failures;
+  for (const std::string& f : c.failures) {
+    const bool pre = f.find('\n') != std::string::npos;
+    failures.push_back(
+        HtmlObject{{"pre", pre}, {"text", f}, {"html", pre ? "" : html_with_links(f, page)}});
+  }
+  return HtmlObject{{"title", c.spec->title},
+                    {"id", c.spec->id},
+                    {"failures", failures},
+                    {"has_hint", !c.hints.empty()},
+                    {"hint", c.hints.empty() ? std::string() : hint_text(c)}};
+}
+
+// One task's row of the summary (and the head of its section).
+HtmlData html_task_row(const TaskResult& t) {
+  const TaskCount n = count(t);
+  return HtmlObject{
+      {"anchor", task_anchor(t)},           {"name", t.spec->id + " " + t.spec->title},
+      {"points", task_points(t)},           {"ok", n.passed == n.run},
+      {"passed", std::to_string(n.passed)}, {"run", std::to_string(n.run)}};
+}
+
+// One task's section: its failed tests (the first shown, the others folded), its passed ones.
+HtmlData html_task_section(const TaskResult& t, const std::string& page, bool scene_here) {
+  const TaskCount n = count(t);
+  HtmlData section = html_task_row(t);
+  section.set("id", t.spec->id);
+  section.set("title", t.spec->title);
+  section.set("scene_here", scene_here);
+  const std::vector<const CaseResult*> cases = ordered_cases(t);
+  std::size_t failed = 0;
+  for (const CaseResult* c : cases) failed += c->status == "failed";
+  section.set("first_failure", failed ? html_failed_test(*cases[0], page) : HtmlData(false));
+  HtmlList more;
+  for (std::size_t i = 1; i < failed; ++i) more.push_back(html_failed_test(*cases[i], page));
+  section.set("more_failed", failed > 1 ? HtmlData(HtmlObject{{"count", std::to_string(failed - 1)},
+                                                              {"plural", failed > 2},
+                                                              {"tests", more}})
+                                        : HtmlData(false));
+  HtmlList passed;
+  for (std::size_t i = failed; i < cases.size(); ++i)
+    passed.push_back(HtmlObject{{"title", cases[i]->spec->title}, {"id", cases[i]->spec->id}});
+  section.set("passed_tests", n.passed ? HtmlData(HtmlObject{{"count", std::to_string(n.passed)},
+                                                             {"plural", n.passed > 1},
+                                                             {"tests", passed}})
+                                       : HtmlData(false));
+  return section;
+}
+
+}  // namespace
+
 std::string html_report(const GradeReport& r, const CourseFrames* frames,
                         const std::filesystem::path& dir, const std::string& terms_link) {
   const std::string page = terms_link.empty() ? r.terms_page : terms_link;
-  std::ostringstream o;
-  o << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>Jelly Lab grading report</title>"
-       "<style>body{font-family:sans-serif;max-width:60em;margin:auto}td,th{padding:2px 8px}"
-       ".fail{color:#b00}.pass{color:#070}.hint{background:#fff6d5;padding:2px 6px}"
-       "section{border-top:1px solid #ccc;margin-top:1em}details{margin:.4em 0}"
-       "summary{cursor:pointer}pre{background:#f4f4f4;padding:4px;overflow-x:auto}"
-       "</style></head><body>\n";
-  o << "<h1>Jelly Lab grading report</h1><p>" << xml_escape(r.submission) << ": <b>"
-    << total_text(r) << "</b></p>\n<p>Sandbox: <code>" << xml_escape(r.isolation) << "</code> — "
-    << xml_escape(r.isolation_description) << "</p>\n";
-  for (const std::string& n : r.notes) o << "<p><i>" << xml_escape(n) << "</i></p>\n";
-  if (!r.compiled) {
+  HtmlData d;
+  d.set("report_failed_test",
+        kainjow::mustache::partial{[] { return std::string(report_failed_test_template()); }});
+  d.set("report_course_scene",
+        kainjow::mustache::partial{[] { return std::string(report_course_scene_template()); }});
+  d.set("submission", r.submission);
+  d.set("total", total_text(r));
+  d.set("isolation", r.isolation);
+  d.set("isolation_description", r.isolation_description);
+  HtmlList notes;
+  for (const std::string& n : r.notes) notes.push_back(n);
+  d.set("notes", notes);
+  HtmlList failed_files;
+  if (!r.compiled)
     for (const FileFailure& f : r.failed_files)
-      o << "<h2>" << xml_escape(f.file + " " + f.what) << "</h2><p>"
-        << xml_escape(file_failure_headline(r, f)) << ".</p><pre>" << xml_escape(f.message)
-        << "</pre>\n";
-    if (r.build.ok && r.build.runner.empty())
-      o << "<h2>Your files do not link together</h2><pre>" << xml_escape(r.build.link_errors)
-        << "</pre>\n";
-    if (r.failed_files.empty() && !r.build.ok)
-      o << "<h2>Your code did not compile</h2><pre>" << xml_escape(r.build.errors) << "</pre>\n";
-  }
-  // The summary: one row per task, linked to its section.
-  o << "<h2>Summary</h2>\n<table><tr><th>Task</th><th>Points</th><th>Result</th><th>Tests "
-       "passed</th></tr>\n";
-  for (const TaskResult& t : r.tasks) {
-    const TaskCount n = count(t);
-    if (!n.run) continue;
-    const bool ok = n.passed == n.run;
-    o << "<tr><td><a href=\"#" << task_anchor(t) << "\">"
-      << xml_escape(t.spec->id + " " + t.spec->title) << "</a></td><td>" << task_points(t)
-      << "</td><td class=\"" << (ok ? "pass\">pass" : "fail\">fail") << "</td><td>" << n.passed
-      << "/" << n.run << "</td></tr>\n";
-  }
-  o << "</table>\n";
-  if (!page.empty())
-    o << "<p>The words of the messages (tolerances, contract sections) are explained in <a href=\""
-      << xml_escape(page) << "\">reading your report</a>.</p>\n";
-
-  // The course scene's plot and frames, in the section of the task whose test records them.
-  const std::string svg = com_plot_svg(r);
-  const auto course_scene = [&]() {
-    if (!svg.empty()) o << "<h3>Course scene</h3>\n" << svg;
-    if (!frames || !frames->shown) return;
-    o << "<h3>Frames: yours beside the reference</h3>\n";
-    if (!frames->unavailable.empty()) {
-      o << "<p>Frames not available: " << xml_escape(frames->unavailable) << "</p>\n";
-    } else {
-      const auto cell = [&](const std::string& file, const std::string& alt) {
-        if (file.empty()) return std::string("<td>—</td>");
-        const std::string bytes = read_file(dir / file);
-        if (bytes.empty()) return std::string("<td>—</td>");
-        return "<td><img alt=\"" + xml_escape(alt) + "\" src=\"data:image/png;base64," +
-               base64(bytes) + "\"></td>";
-      };
-      o << "<table><tr><th>t [s]</th><th>yours</th><th>reference</th></tr>\n";
-      for (const FrameRow& row : frames->rows)
-        o << "<tr><td>" << pts(row.time) << "</td>"
-          << cell(row.yours, "yours at t = " + pts(row.time) + " s")
-          << cell(row.reference, "reference at t = " + pts(row.time) + " s") << "</tr>\n";
-      o << "</table>\n";
-    }
-    if (!frames->notes.empty()) {
-      o << "<ul>";
-      for (const std::string& n : frames->notes) o << "<li>" << xml_escape(n) << "</li>";
-      o << "</ul>\n";
-    }
-  };
+      failed_files.push_back(HtmlObject{{"heading", f.file + " " + f.what},
+                                        {"headline", file_failure_headline(r, f)},
+                                        {"message", f.message}});
+  d.set("failed_files", failed_files);
+  d.set("has_link_errors", !r.compiled && r.build.ok && r.build.runner.empty());
+  d.set("link_errors", r.build.link_errors);
+  d.set("has_compile_errors", !r.compiled && r.failed_files.empty() && !r.build.ok);
+  d.set("compile_errors", r.build.errors);
+  d.set("has_terms_page", !page.empty());
+  d.set("terms_page", page);
   const TaskResult* scene_task = course_scene_task(r);
-
-  const auto failed_test = [&](const CaseResult& c) {
-    o << "<div class=\"failure\"><p class=\"fail\">✗ <b>" << xml_escape(c.spec->title) << "</b> ["
-      << xml_escape(c.spec->id) << "]</p>\n<ul>";
-    for (const std::string& f : c.failures)
-      o << (f.find('\n') == std::string::npos ? "<li>" + html_with_links(f, page) + "</li>"
-                                              : "<li><pre>" + xml_escape(f) + "</pre></li>");
-    if (!c.hints.empty())
-      o << "<li class=\"hint\"><b>Hint:</b> " << xml_escape(hint_text(c)) << "</li>";
-    o << "</ul></div>\n";
-  };
+  HtmlList summary, sections;
   for (const TaskResult& t : r.tasks) {
-    const TaskCount n = count(t);
-    if (!n.run) continue;
-    const bool ok = n.passed == n.run;
-    o << "<section id=\"" << task_anchor(t) << "\"><h2>" << xml_escape(t.spec->id) << " "
-      << xml_escape(t.spec->title) << " — " << task_points(t) << ", <span class=\""
-      << (ok ? "pass\">passed" : "fail\">failed") << "</span> (" << n.passed << "/" << n.run
-      << " tests)</h2>\n";
-    const std::vector<const CaseResult*> cases = ordered_cases(t);
-    std::size_t failed = 0;
-    for (const CaseResult* c : cases) failed += c->status == "failed";
-    if (failed) failed_test(*cases[0]);
-    if (failed > 1) {
-      o << "<details><summary>" << failed - 1 << " more failed test" << (failed > 2 ? "s" : "")
-        << "</summary>\n";
-      for (std::size_t i = 1; i < failed; ++i) failed_test(*cases[i]);
-      o << "</details>\n";
-    }
-    if (n.passed) {
-      o << "<details><summary>" << n.passed << " passed test" << (n.passed > 1 ? "s" : "")
-        << "</summary><ul>";
-      for (std::size_t i = failed; i < cases.size(); ++i)
-        o << "<li class=\"pass\">✓ " << xml_escape(cases[i]->spec->title) << " ["
-          << xml_escape(cases[i]->spec->id) << "]</li>";
-      o << "</ul></details>\n";
-    }
-    if (&t == scene_task) course_scene();
-    o << "</section>\n";
+    if (!count(t).run) continue;
+    summary.push_back(html_task_row(t));
+    sections.push_back(html_task_section(t, page, &t == scene_task));
   }
-  if (!scene_task) course_scene();
-  const std::vector<const CaseResult*> printed = printed_cases(r, 5);
-  if (!printed.empty()) {
-    o << "<h2>What your code printed</h2>\n";
-    for (const CaseResult* c : printed)
-      o << "<h3>" << xml_escape(c->spec->id) << " (" << c->status << ")</h3><pre>"
-        << xml_escape(cut_utf8(c->printed, 1500)) << "</pre>\n";
-  }
-  o << "</body></html>\n";
-  return o.str();
+  d.set("summary", summary);
+  d.set("sections", sections);
+  d.set("scene", html_course_scene(r, frames, dir));
+  d.set("scene_alone", !scene_task);
+  HtmlList printed;
+  for (const CaseResult* c : printed_cases(r, 5))
+    printed.push_back(HtmlObject{
+        {"id", c->spec->id}, {"status", c->status}, {"text", cut_utf8(c->printed, 1500)}});
+  d.set("has_printed", !printed.empty());
+  d.set("printed", printed);
+  return render_html(report_html_template(), "report.html.mustache", d);
 }
 
 void write_reports(const GradeReport& r, const CaseBook& book, const std::filesystem::path& out,

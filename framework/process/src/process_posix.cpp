@@ -1,4 +1,8 @@
+<<<<<<<< HEAD:grader/src/sandbox/process.cpp
 #include "sandbox/process.hpp"
+========
+#include "jelly/process/process.hpp"
+>>>>>>>> i30-libs:framework/process/src/process_posix.cpp
 
 #include <fcntl.h>
 #include <grp.h>
@@ -18,7 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace jelly::grade {
+namespace jelly::process {
 
 namespace {
 
@@ -260,4 +264,4 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   return r;
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process

@@ -4,9 +4,13 @@
 #include <cstring>
 #include <string>
 
+<<<<<<<< HEAD:grader/src/sandbox/describe_signal.cpp
 #include "sandbox/process.hpp"
+========
+#include "jelly/process/process.hpp"
+>>>>>>>> i30-libs:framework/process/src/describe_signal.cpp
 
-namespace jelly::grade {
+namespace jelly::process {
 
 std::string describe_signal(int sig) {
   switch (sig) {
@@ -28,4 +32,4 @@ std::string describe_signal(int sig) {
   }
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process

@@ -18,9 +18,13 @@
 #include <mutex>
 #include <thread>
 
+<<<<<<<< HEAD:grader/src/sandbox/process_win.cpp
 #include "sandbox/process.hpp"
+========
+#include "jelly/process/process.hpp"
+>>>>>>>> i30-libs:framework/process/src/process_win.cpp
 
-namespace jelly::grade {
+namespace jelly::process {
 
 namespace {
 
@@ -276,4 +280,4 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
   return r;
 }
 
-}  // namespace jelly::grade
+}  // namespace jelly::process
