@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/cli_common/text_table.hpp"
 #include "jelly/params.hpp"
@@ -89,30 +90,8 @@ int check_command(int argc, char** argv) {
   for (const SpringGroup& g : world->spring_groups())
     std::printf(", %zu %s (ks %g, kd %g)", g.springs.size(), std::string(to_string(g.type)).c_str(),
                 g.ks, g.kd);
-  const bool cloth = scene->body_kind == BodyKind::Cloth;
-  if (cloth) {
-    // Cloth contract §1, §3: the pinned particles and the spheres, in scene order.
-    long long pinned = 0;
-    for (Eigen::Index i = 0; i < world->cloth_particle_count(); ++i)
-      pinned += world->is_pinned(static_cast<int>(i)) ? 1 : 0;
-    const int spheres = world->sphere_count();
-    std::printf(" (%lld pinned); gravity %s; %d %s", pinned, scene->gravity ? "on" : "off", spheres,
-                spheres == 1 ? "sphere" : "spheres");
-    for (int k = 0; k < world->sphere_count(); ++k) {
-      const SphereBody b = world->sphere(k);
-      if (world->sphere_is_kinematic(k)) {
-        std::printf(" [%d kinematic r %g]", k, b.radius);
-      } else {
-        std::printf(" [%d dynamic r %g, %g kg]", k, b.radius, 1.0 / b.inverse_mass);
-      }
-    }
-  } else {
-    std::printf("; gravity %s; %zu terrains", scene->gravity ? "on" : "off",
-                world->terrains().size());
-    for (const Terrain& t : world->terrains())
-      std::printf(" [%s%s%s]", t.name.c_str(), t.collision ? " collision" : "",
-                  t.contact ? " contact" : "");
-  }
+  const BodyKindModule& body = body_kind_of(*scene);
+  std::printf("%s", body.check_report(*scene, *world).c_str());
   std::printf("\n");
   const StabilityEstimate e = estimate_stability(*world, world->state());
   std::printf(
@@ -137,11 +116,10 @@ int check_command(int argc, char** argv) {
     table.add_row({std::string(to_string(k)), fmt(crit), fmt(rec), h});
   }
   std::printf("%s", table.str().c_str());
-  std::printf(cloth ? "(limit: the linearised rest state's modes leave the stability region; "
-                      "recommended: half of it, since the cloth stretches as it sags and hits "
-                      "spheres)\n"
-                    : "(limit: the linearised rest state's modes leave the stability region; "
-                      "recommended: half of it, since contact stiffens the cube)\n");
+  std::printf(
+      "(limit: the linearised rest state's modes leave the stability region; recommended: half "
+      "of it, %s)\n",
+      std::string(body.stability_reason()).c_str());
   return kExitOk;
 }
 

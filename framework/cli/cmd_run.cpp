@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "jelly/auto_step.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/session/assignments.hpp"
@@ -68,31 +69,6 @@ std::string run_help() {
   return text + session::scenes_line(dir) + "\n";
 }
 
-/// The end of a cloth scene's run (cloth contract decision 12): the cloth's centre of mass
-/// (pinned particles included), kinetic energy, largest speed and lowest y, and each sphere.
-void print_cloth_end(const SceneSpec& scene, const Simulator& sim, double wall) {
-  const World& w = sim.world();
-  const ClothFrameSummary end = summarize_cloth(w, sim.state(), sim.time());
-  const FrameSummary& c = end.cloth;
-  std::printf(
-      "%s: %ld steps of %s, h = %g s, %g s simulated in %.3f s (%.0f steps/s)\n"
-      "  cloth of %lld particles, %zu springs, %d %s; %ld acceleration evaluations\n"
-      "  cloth: final centre of mass (%.6f, %.6f, %.6f), lowest y %.6f, largest speed %.4g m/s\n"
-      "  energy: cloth kinetic %.6g J, cloth gravitational %.6g J, spring %.6g J\n",
-      scene.name.c_str(), sim.steps(), std::string(to_string(scene.integrator)).c_str(),
-      sim.options().dt, sim.time(), wall, wall > 0 ? static_cast<double>(sim.steps()) / wall : 0.0,
-      static_cast<long long>(w.cloth_particle_count()), w.spring_count(), w.sphere_count(),
-      w.sphere_count() == 1 ? "sphere" : "spheres", sim.evaluations(), c.com.x(), c.com.y(),
-      c.com.z(), end.lowest_y, c.max_speed, c.kinetic, c.potential, c.spring);
-  for (int k = 0; k < w.sphere_count(); ++k) {
-    const Vec3& p = end.sphere_centers[static_cast<std::size_t>(k)];
-    const Vec3& u = end.sphere_velocities[static_cast<std::size_t>(k)];
-    std::printf("  sphere %d (%s): centre (%.6f, %.6f, %.6f), velocity (%.6f, %.6f, %.6f)\n", k,
-                w.sphere_is_kinematic(k) ? "kinematic" : "dynamic", p.x(), p.y(), p.z(), u.x(),
-                u.y(), u.z());
-  }
-}
-
 }  // namespace
 
 int run_command(int argc, char** argv) {
@@ -139,14 +115,13 @@ int run_command(int argc, char** argv) {
                  : auto_step ? auto_step->substeps_per_frame
                              : std::max(1L, std::lround(1.0 / (60.0 * h)));
 
-  const bool cloth = scene->body_kind == BodyKind::Cloth;
+  const BodyKindModule& body = body_kind_of(*scene);  // what its summary and report hold
   // Outputs are opened only now, after every input was validated: bad input writes nothing.
   std::unique_ptr<CsvWriter> out, summary;
   try {
     if (!out_path.empty()) out = std::make_unique<CsvWriter>(out_path, kTrajectoryHeader);
     if (!summary_path.empty())
-      summary = std::make_unique<CsvWriter>(
-          summary_path, cloth ? cloth_summary_header(sim->world().sphere_count()) : kSummaryHeader);
+      summary = std::make_unique<CsvWriter>(summary_path, body.summary_header(sim->world()));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "jelly run: %s\n", e.what());
     return kExitInternal;
@@ -156,11 +131,7 @@ int run_command(int argc, char** argv) {
   auto record = [&](const Simulator& s) {
     if (s.steps() % k != 0) return;
     if (out) out->write_particles(frame, s.time(), s.state());
-    if (summary && cloth) {
-      summary->write_cloth_summary(summarize_cloth(s.world(), s.state(), s.time()));
-    } else if (summary) {
-      summary->write_summary(summarize(s.world(), s.state(), s.time()));
-    }
+    if (summary) body.write_summary(*summary, s.world(), s.state(), s.time());
     ++frame;
   };
   record(*sim);
@@ -177,21 +148,7 @@ int run_command(int argc, char** argv) {
                    frame);
     return kExitUnstable;
   }
-  if (!quiet && cloth) {
-    print_cloth_end(*scene, *sim, wall);
-  } else if (!quiet) {
-    const FrameSummary end = summarize(sim->world(), sim->state(), sim->time());
-    std::printf(
-        "%s: %ld steps of %s, h = %g s, %g s simulated in %.3f s (%.0f steps/s)\n"
-        "  %zu particles, %zu springs, %zu terrains; %ld acceleration evaluations\n"
-        "  final centre of mass (%.6f, %.6f, %.6f), largest speed %.4g m/s\n"
-        "  energy: kinetic %.6g J, gravitational %.6g J, spring %.6g J\n",
-        scene->name.c_str(), sim->steps(), std::string(to_string(scene->integrator)).c_str(), h,
-        sim->time(), wall, wall > 0 ? static_cast<double>(sim->steps()) / wall : 0.0,
-        static_cast<std::size_t>(sim->state().size()), sim->world().spring_count(),
-        sim->world().terrains().size(), sim->evaluations(), end.com.x(), end.com.y(), end.com.z(),
-        end.max_speed, end.kinetic, end.potential, end.spring);
-  }
+  if (!quiet) std::printf("%s", body.end_report(*scene, *sim, wall).c_str());
   if (!quiet) {
     if (out) std::printf("  wrote %ld frames to %s\n", frame, out_path.c_str());
     if (summary) std::printf("  wrote %ld summary rows to %s\n", frame, summary_path.c_str());

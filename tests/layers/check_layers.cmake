@@ -34,6 +34,7 @@ endif()
 set(_folders
   "framework/manifest/" manifest
   "framework/core/"    core
+  "framework/bodies/"  core      # the body modules are core code (docs/architecture.md "Bodies")
   "framework/session/" session
   "framework/cli_common/" cli_common
   "framework/process/" process

@@ -26,7 +26,7 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
   JELLY_CMP(a.auto_dt, b.auto_dt, "auto_dt", i);
   JELLY_CMP(a.gravity.has_value(), b.gravity.has_value(), "gravity present", i);
   if (a.gravity) JELLY_CMP(*a.gravity, *b.gravity, "gravity", v3);
-  JELLY_CMP(static_cast<int>(a.body_kind), static_cast<int>(b.body_kind), "body kind", i);
+  JELLY_CMP(std::string(a.body_kind.name), std::string(b.body_kind.name), "body kind", str);
   if (a.body_kind == BodyKind::Cube) {
     JELLY_CMP(a.cube.n, b.cube.n, "cube.n", i);
     JELLY_CMP(a.cube.edge, b.cube.edge, "cube.edge", num);

@@ -13,9 +13,7 @@ std::string scope_text(const params_detail::Bound& b) {
   switch (b.decl->scope) {
     case Scope::Always: return "every scene";
     case Scope::GravityOn: return "with gravity";
-    case Scope::Cube: return "cube body";
-    case Scope::Particles: return "particles body";
-    case Scope::Cloth: return "cloth body";
+    case Scope::Body: return std::string(b.decl->body) + " body";
     case Scope::Element:
       return "every " + std::string(b.collection ? b.collection->noun : "element");
     case Scope::SpringOn: return "present spring types";
@@ -23,8 +21,7 @@ std::string scope_text(const params_detail::Bound& b) {
     case Scope::PlaneHole: return "plane with a hole";
     case Scope::Bowl: return "bowl";
     case Scope::Sphere: return "sphere";
-    case Scope::DynamicSphere: return "dynamic spheres";
-    case Scope::KinematicSphere: return "kinematic spheres";
+    case Scope::When: return std::string(b.decl->when_text);
   }
   return "";
 }

@@ -15,40 +15,14 @@
 #include <limits>
 #include <string>
 
-#include "param_table.hpp"
+#include "jelly/body_kind.hpp"
+#include "param_rows.hpp"
 
 namespace jelly::params_detail {
 
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// A valid range: [min, max] with each side inclusive or not; `bounded` false means any finite
-/// value.
-struct Range {
-  bool bounded = false;
-  double min = -kInf;
-  double max = kInf;
-  bool min_inclusive = true;
-  bool max_inclusive = true;
-};
-constexpr Range kAny{};
-constexpr Range kPositive{true, 0.0, kInf, false, true};
-constexpr Range kNonNegative{true, 0.0, kInf, true, true};
-constexpr Range kUnitInterval{true, 0.0, 1.0, true, true};
-constexpr Range kCubeN{true, 2.0, 64.0, true, true};
-constexpr Range kClothN{true, 2.0, 200.0, true, true};
-
-using Getter = Value (*)(const SceneSpec&, const Ctx&);
-using Setter = void (*)(SceneSpec&, const Ctx&, const Value&);
-
-/// Whether a row has a default. Its value is never typed in the table: it is read from
-/// default-constructed scene structs (see with_defaults).
-enum class Default { Yes, None };
-
 Decl make(std::string_view pattern, Scope scope, ValueKind kind, std::string_view unit, Default def,
           Range range, std::string_view description, Getter get, Setter set,
-          std::vector<std::string_view> choices = {}, bool nonzero = false) {
+          std::vector<std::string_view> choices, bool nonzero) {
   Decl d;
   d.pattern = pattern;
   d.scope = scope;
@@ -68,26 +42,52 @@ Decl make(std::string_view pattern, Scope scope, ValueKind kind, std::string_vie
   return d;
 }
 
-/// A row whose key is written as the presence of its table ([gravity], [springs.<type>]).
+Decl of_body(std::string_view body, Decl d) {
+  d.scope = Scope::Body;
+  d.body = body;
+  return d;
+}
+Decl applies_when(Decl d, std::string_view text, bool (*when)(const SceneSpec&, const Ctx&),
+                  std::string (*why_not)(const Bound&, const SceneSpec&)) {
+  d.scope = Scope::When;
+  d.when_text = text;
+  d.when = when;
+  d.why_not = why_not;
+  return d;
+}
 Decl presence(Decl d) {
   d.presence = true;
   return d;
 }
-/// A row the writer writes only when `when` holds.
 Decl written_if(Decl d, bool (*when)(const SceneSpec&, const Ctx&)) {
   d.written = when;
   return d;
 }
-/// A row with its own check against the rest of the scene.
 Decl checked(Decl d, RowCheck check) {
   d.check = check;
   return d;
 }
 
-// ----- accessors shared by several rows -----
+double real(const Value& v) { return std::get<double>(v); }
+const Vec3& vec(const Value& v) { return std::get<Vec3>(v); }
+bool flag(const Value& v) { return std::get<bool>(v); }
+const std::string& text(const Value& v) { return std::get<std::string>(v); }
 
-SphereSpec& sphere_spec(SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
-const SphereSpec& sphere_spec(const SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
+std::vector<Vec3> columns(const Vec3Array& a) {
+  std::vector<Vec3> out;
+  out.reserve(static_cast<std::size_t>(a.cols()));
+  for (Eigen::Index i = 0; i < a.cols(); ++i) out.emplace_back(a.col(i));
+  return out;
+}
+Vec3Array matrix(const std::vector<Vec3>& v) {
+  Vec3Array out(3, static_cast<Eigen::Index>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) out.col(static_cast<Eigen::Index>(i)) = v[i];
+  return out;
+}
+
+namespace {
+
+// ----- accessors shared by several rows -----
 
 Terrain& terrain(SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
 const Terrain& terrain(const SceneSpec& s, const Ctx& c) { return s.terrains[c.index]; }
@@ -106,11 +106,6 @@ const Sphere& sphere(const SceneSpec& s, const Ctx& c) {
   return std::get<Sphere>(terrain(s, c).shape);
 }
 
-double real(const Value& v) { return std::get<double>(v); }
-const Vec3& vec(const Value& v) { return std::get<Vec3>(v); }
-bool flag(const Value& v) { return std::get<bool>(v); }
-const std::string& text(const Value& v) { return std::get<std::string>(v); }
-
 /// Unit normal of what a scene gives. A vector already unit length to within a few ulps is kept
 /// as it is, so that writing a scene and reading it back gives the same bits.
 Vec3 normalised(const Vec3& n) {
@@ -119,23 +114,12 @@ Vec3 normalised(const Vec3& n) {
   return n / len;
 }
 
-std::vector<Vec3> columns(const Vec3Array& a) {
-  std::vector<Vec3> out;
-  out.reserve(static_cast<std::size_t>(a.cols()));
-  for (Eigen::Index i = 0; i < a.cols(); ++i) out.emplace_back(a.col(i));
-  return out;
-}
-Vec3Array matrix(const std::vector<Vec3>& v) {
-  Vec3Array out(3, static_cast<Eigen::Index>(v.size()));
-  for (std::size_t i = 0; i < v.size(); ++i) out.col(static_cast<Eigen::Index>(i)) = v[i];
-  return out;
-}
-
 // The scene whose values are the defaults: default-constructed structs (no gravity, as a scene
 // without a [gravity] table), with gravity's default acceleration for the rows that need gravity
 // and one terrain of the row's shape, so that every row reads its default from what the structs
-// say.
-SceneSpec defaults_scene(Scope scope) {
+// say; `prepare` adds what a body module's row needs.
+SceneSpec defaults_scene(const Decl& d, PrepareDefaults prepare) {
+  const Scope scope = d.scope;
   SceneSpec s;
   if (scope == Scope::GravityOn) s.gravity = default_gravity();
   Terrain t;
@@ -143,16 +127,48 @@ SceneSpec defaults_scene(Scope scope) {
   if (scope == Scope::Bowl) t.shape = Bowl{};
   if (scope == Scope::Sphere) t.shape = Sphere{};
   s.terrains.push_back(std::move(t));
-  s.spheres.emplace_back();
-  if (scope == Scope::KinematicSphere) s.spheres.back().kinematic = true;
+  if (prepare) prepare(s, d);
   return s;
 }
 
-// A table with each row's default text filled in from defaults_scene.
-std::vector<Decl> with_defaults(std::vector<Decl> table) {
+}  // namespace
+
+std::vector<Decl> with_defaults(std::vector<Decl> table, PrepareDefaults prepare) {
   for (Decl& d : table)
-    if (d.has_default) d.default_text = format_text(d.kind, d.get(defaults_scene(d.scope), Ctx{}));
+    if (d.has_default)
+      d.default_text = format_text(d.kind, d.get(defaults_scene(d, prepare), Ctx{}));
   return table;
+}
+
+std::vector<Decl> body_section(std::string_view body, std::vector<Decl> rows,
+                               PrepareDefaults prepare) {
+  for (Decl& d : rows)
+    if (d.scope == Scope::Body) d.body = body;
+  return with_defaults(std::move(rows), prepare);
+}
+
+namespace {
+
+// body.type: "The body: a jelly cube, particles given one by one, or a cloth (assignment A2)",
+// from what each linked kind says it is.
+std::string_view body_type_description() {
+  static const std::string text = [] {
+    std::string out = "The body: ";
+    const auto& kinds = body_kinds();
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+      out += std::string(i == 0                  ? ""
+                         : i + 1 == kinds.size() ? ", or "
+                                                 : ", ") +
+             std::string(kinds[i]->description());
+    return out;
+  }();
+  return text;
+}
+
+std::vector<std::string_view> body_type_names() {
+  std::vector<std::string_view> out;
+  for (const BodyKindModule* kind : body_kinds()) out.push_back(kind->name());
+  return out;
 }
 
 std::vector<std::string_view> integrator_names() {
@@ -166,7 +182,7 @@ std::vector<std::string_view> integrator_names() {
 // ----- the table -----
 
 const std::vector<Decl>& global_decls() {
-  static const std::vector<Decl> table = with_defaults({
+  static const std::vector<Decl> general = with_defaults({
       // [scene]
       make(
           "scene.name", Scope::Always, ValueKind::Text, "", Default::None, kAny,
@@ -222,233 +238,23 @@ const std::vector<Decl>& global_decls() {
           "Constant gravitational acceleration g (y is up)",
           [](const SceneSpec& s, const Ctx&) -> Value { return *s.gravity; },
           [](SceneSpec& s, const Ctx&, const Value& v) { s.gravity = vec(v); }),
-      // [body]
+      // [body]: its type here; the rest of it (and any table of its own) is the kind's
       make(
           "body.type", Scope::Always, ValueKind::Choice, "", Default::Yes, kAny,
-          "The body: a jelly cube, particles given one by one, or a cloth (assignment A2)",
-          [](const SceneSpec& s, const Ctx&) -> Value {
-            return std::string(body_kind_name(s.body_kind));
+          body_type_description(),
+          [](const SceneSpec& s, const Ctx&) -> Value { return std::string(s.body_kind.name); },
+          [](SceneSpec& s, const Ctx&, const Value& v) {
+            if (const BodyKindModule* kind = find_body_kind(text(v)))
+              s.body_kind = BodyKind{kind->name()};
           },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.body_kind = text(v) == "cube"        ? BodyKind::Cube
-                          : text(v) == "particles" ? BodyKind::Particles
-                                                   : BodyKind::Cloth;
-          },
-          {"cube", "particles", "cloth"}),
-      make(
-          "body.n", Scope::Cube, ValueKind::Integer, "", Default::Yes, kCubeN,
-          "Particles per cube edge (n³ particles)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return static_cast<long long>(s.cube.n); },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.cube.n = static_cast<int>(std::get<long long>(v));
-          }),
-      make(
-          "body.edge", Scope::Cube, ValueKind::Real, "m", Default::Yes, kPositive,
-          "Cube edge length L", [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.edge; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.edge = real(v); }),
-      make(
-          "body.mass", Scope::Cube, ValueKind::Real, "kg", Default::Yes, kPositive,
-          "Mass of every particle",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.mass; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.mass = real(v); }),
-      make(
-          "body.center", Scope::Cube, ValueKind::Vector3, "m", Default::Yes, kAny,
-          "Initial centre c0; the grid is centred exactly on it",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.center; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.center = vec(v); }),
-      make(
-          "body.velocity", Scope::Cube, ValueKind::Vector3, "m/s", Default::Yes, kAny,
-          "Initial velocity of every particle (not rotated)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.velocity; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.velocity = vec(v); }),
-      make(
-          "body.rotation_axis", Scope::Cube, ValueKind::Vector3, "", Default::Yes, kAny,
-          "Axis of the initial rotation about c0 (normalised when used)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_axis; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_axis = vec(v); }, {},
-          /*nonzero=*/true),
-      make(
-          "body.rotation_degrees", Scope::Cube, ValueKind::Real, "deg", Default::Yes, kAny,
-          "Initial rotation angle about rotation_axis, right-hand rule",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_degrees; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_degrees = real(v); }),
-      make(
-          "body.mass", Scope::Particles, ValueKind::Real, "kg", Default::Yes, kPositive,
-          "Mass of every particle",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.particles.mass; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.particles.mass = real(v); }),
-      make(
-          "body.positions", Scope::Particles, ValueKind::Vec3List, "m", Default::None, kAny,
-          "Initial positions, at least one; text form \"x,y,z; x,y,z\"",
-          [](const SceneSpec& s, const Ctx&) -> Value { return columns(s.particles.positions); },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.particles.positions = matrix(std::get<std::vector<Vec3>>(v));
-            // A different count makes the old velocities meaningless: start at rest.
-            if (s.particles.velocities.cols() != s.particles.positions.cols())
-              s.particles.velocities = Vec3Array::Zero(3, s.particles.positions.cols());
-          }),
-      checked(make(
-                  "body.velocities", Scope::Particles, ValueKind::Vec3List, "m/s", Default::None,
-                  kAny, "Initial velocities, one per position (optional: zero)",
-                  [](const SceneSpec& s, const Ctx&) -> Value {
-                    return columns(s.particles.velocities);
-                  },
-                  [](SceneSpec& s, const Ctx&, const Value& v) {
-                    s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
-                  }),
-              check_velocity_count),
-      checked(
-          make(
-              "body.springs", Scope::Particles, ValueKind::IndexPairList, "", Default::None, kAny,
-              "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
-              [](const SceneSpec& s, const Ctx&) -> Value {
-                std::vector<IndexPair> out;
-                for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
-                return out;
-              },
-              [](SceneSpec& s, const Ctx&, const Value& v) {
-                // A spring that is unchanged (same pair at the same place in the list) keeps its
-                // rest length; a new one rests at the distance between the current positions.
-                const Vec3Array& x = s.particles.positions;
-                const std::vector<Spring>& old = s.particles.springs;
-                std::vector<Spring> springs;
-                for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
-                  Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
-                            std::numeric_limits<double>::quiet_NaN()};
-                  const std::size_t k = springs.size();
-                  if (k < old.size() && old[k].a == sp.a && old[k].b == sp.b)
-                    sp.rest_length = old[k].rest_length;
-                  else if (p[0] >= 0 && p[1] >= 0 && p[0] < x.cols() && p[1] < x.cols())
-                    sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
-                  springs.push_back(sp);
-                }
-                s.particles.springs = std::move(springs);
-              }),
-          check_spring_indices),
-      checked(make(
-                  "body.rest_lengths", Scope::Particles, ValueKind::RealList, "m", Default::None,
-                  kPositive,
-                  "Rest length of each spring, one per spring (optional: the initial distance)",
-                  [](const SceneSpec& s, const Ctx&) -> Value {
-                    std::vector<double> out;
-                    for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
-                    return out;
-                  },
-                  [](SceneSpec& s, const Ctx&, const Value& v) {
-                    const auto& r = std::get<std::vector<double>>(v);
-                    for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
-                      s.particles.springs[i].rest_length = r[i];
-                  }),
-              check_rest_length_count),
-      make(
-          "body.spring_type", Scope::Particles, ValueKind::Choice, "", Default::Yes, kAny,
-          "Whose coefficients the springs use; that [springs.<type>] table must be present",
-          [](const SceneSpec& s, const Ctx&) -> Value {
-            return std::string(to_string(s.particles.spring_type));
-          },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.particles.spring_type = *spring_type_from_string(text(v));
-          },
-          {"structural", "shear", "shear_body", "bending"}),
-      // [body] of a cloth (cloth contract §1)
-      make(
-          "body.n", Scope::Cloth, ValueKind::Integer, "", Default::Yes, kClothN,
-          "Particles per cloth edge (n² particles)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return static_cast<long long>(s.cloth.n); },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.cloth.n = static_cast<int>(std::get<long long>(v));
-          }),
-      make(
-          "body.size", Scope::Cloth, ValueKind::Real, "m", Default::Yes, kPositive,
-          "Side L of the square cloth; spacing L/(n-1)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.size; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.size = real(v); }),
-      make(
-          "body.mass", Scope::Cloth, ValueKind::Real, "kg", Default::Yes, kPositive,
-          "Mass of every cloth particle",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.mass; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.mass = real(v); }),
-      make(
-          "body.center", Scope::Cloth, ValueKind::Vector3, "m", Default::Yes, kAny,
-          "Centre c0; the horizontal square grid is centred exactly on it",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.center; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.center = vec(v); }),
-      make(
-          "body.velocity", Scope::Cloth, ValueKind::Vector3, "m/s", Default::Yes, kAny,
-          "Initial velocity of every unpinned particle (not rotated)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.velocity; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.velocity = vec(v); }),
-      make(
-          "body.rotation_axis", Scope::Cloth, ValueKind::Vector3, "", Default::Yes, kAny,
-          "Axis of the initial rotation about c0 (normalised when used)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_axis; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.rotation_axis = vec(v); }, {},
-          /*nonzero=*/true),
-      make(
-          "body.rotation_degrees", Scope::Cloth, ValueKind::Real, "deg", Default::Yes, kAny,
-          "Initial rotation angle about rotation_axis (90 about x: a curtain; 90 about z: a flag)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_degrees; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.rotation_degrees = real(v); }),
-      make(
-          "body.pins", Scope::Cloth, ValueKind::NameList, "", Default::Yes, kAny,
-          "Named sets of pinned particles: corners (the four), edge (the row k = 0); [] for none",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.pin_sets; },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.cloth.pin_sets = std::get<std::vector<std::string>>(v);
-          },
-          {kPinSets.begin(), kPinSets.end()}),
-      written_if(
-          checked(make(
-                      "body.pin_points", Scope::Cloth, ValueKind::GridList, "", Default::Yes, kAny,
-                      "Further pinned particles by grid coordinates [[i, k], ...]",
-                      [](const SceneSpec& s, const Ctx&) -> Value {
-                        std::vector<IndexPair> out;
-                        for (const GridCoord& p : s.cloth.pins) out.push_back({p[0], p[1]});
-                        return out;
-                      },
-                      [](SceneSpec& s, const Ctx&, const Value& v) {
-                        s.cloth.pins.clear();
-                        for (const IndexPair& p : std::get<std::vector<IndexPair>>(v))
-                          s.cloth.pins.push_back({static_cast<int>(p[0]), static_cast<int>(p[1])});
-                      }),
-                  check_pin_points),
-          [](const SceneSpec& s, const Ctx&) { return !s.cloth.pins.empty(); }),
-      make(
-          "body.air_drag", Scope::Cloth, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
-          "Air drag k_air: force -k_air v on every cloth particle (the course: 3.4e-4)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.air_drag; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.air_drag = real(v); }),
-      // [collision] of a cloth scene (cloth contract §4)
-      make(
-          "collision.cloth_restitution", Scope::Cloth, ValueKind::Real, "", Default::Yes,
-          kUnitInterval, "Restitution e_cloth of cloth-sphere impulses (the course: 0)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.cloth_restitution; },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.collisions.cloth_restitution = real(v);
-          }),
-      make(
-          "collision.sphere_restitution", Scope::Cloth, ValueKind::Real, "", Default::Yes,
-          kUnitInterval, "Restitution e_sphere of sphere-sphere impulses",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.sphere_restitution; },
-          [](SceneSpec& s, const Ctx&, const Value& v) {
-            s.collisions.sphere_restitution = real(v);
-          }),
-      make(
-          "collision.tolerance", Scope::Cloth, ValueKind::Real, "m", Default::Yes, kNonNegative,
-          "Tolerance ε: a pair collides when its gap φ < ε and it approaches (both kinds of pair)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.tolerance; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.tolerance = real(v); }),
-      make(
-          "collision.friction", Scope::Cloth, ValueKind::Real, "", Default::Yes, kNonNegative,
-          "Coulomb friction μ of every pair's impulse (the course's bonus; 0: none)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.friction; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.friction = real(v); }),
-      make(
-          "collision.push_out", Scope::Cloth, ValueKind::Real, "", Default::Yes, kUnitInterval,
-          "Push-out β: a particle inside a sphere moves the share β of its depth out (0: none)",
-          [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.push_out; },
-          [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.push_out = real(v); }),
+          body_type_names()),
   });
+  static const std::vector<Decl> table = [] {
+    std::vector<Decl> out = general;
+    for (const BodyKindModule* kind : body_kinds())
+      for (Decl& d : kind->rows()) out.push_back(std::move(d));
+    return out;
+  }();
   return table;
 }
 
@@ -468,10 +274,7 @@ std::vector<Decl> spring_rows() {
             if (flag(v) == st.enabled) return;
             st = SpringSettings{};  // on: defaults; off: back to the normal form of an absent table
             st.enabled = flag(v);
-            if (st.enabled && s.body_kind == BodyKind::Cloth) {
-              st.ks = kClothDefaultKs;  // cloth contract decision 10
-              st.kd = kClothDefaultKd;
-            }
+            if (st.enabled) body_kind_of(s).spring_defaults(st);
           })),
       make(
           "springs.*.ks", Scope::SpringOn, ValueKind::Real, "N/m", Default::Yes, kNonNegative,
@@ -604,76 +407,9 @@ std::vector<Decl> terrain_rows() {
   });
 }
 
-std::vector<Decl> sphere_rows() {
-  return with_defaults({
-      make(
-          "sphere.*.center", Scope::Element, ValueKind::Vector3, "m", Default::Yes, kAny,
-          "Initial centre c",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).center; },
-          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).center = vec(v); }),
-      make(
-          "sphere.*.radius", Scope::Element, ValueKind::Real, "m", Default::Yes, kPositive,
-          "Radius r",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).radius; },
-          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).radius = real(v); }),
-      make(
-          "sphere.*.kinematic", Scope::Element, ValueKind::Bool, "", Default::Yes, kAny,
-          "Moved by its schedule with inverse mass 0 (true), or by gravity and impulses (false)",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).kinematic; },
-          [](SceneSpec& s, const Ctx& c, const Value& v) {
-            sphere_spec(s, c).kinematic = flag(v);
-          }),
-      written_if(
-          make(
-              "sphere.*.mass", Scope::DynamicSphere, ValueKind::Real, "kg", Default::None,
-              kPositive, "Mass M; when not given 1000 r^3 (the course's formula)",
-              [](const SceneSpec& s, const Ctx& c) -> Value {
-                const SphereSpec& sp = sphere_spec(s, c);
-                return sp.mass.value_or(default_sphere_mass(sp.radius));
-              },
-              [](SceneSpec& s, const Ctx& c, const Value& v) {
-                // 1000·r³ is the mass not given: it keeps following the radius (and `jelly params`
-                // text set back leaves the scene as it was).
-                SphereSpec& sp = sphere_spec(s, c);
-                if (real(v) == default_sphere_mass(sp.radius)) {
-                  sp.mass.reset();
-                } else {
-                  sp.mass = real(v);
-                }
-              }),
-          [](const SceneSpec& s, const Ctx& c) { return sphere_spec(s, c).mass.has_value(); }),
-      make(
-          "sphere.*.velocity", Scope::DynamicSphere, ValueKind::Vector3, "m/s", Default::Yes, kAny,
-          "Initial velocity u",
-          [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).velocity; },
-          [](SceneSpec& s, const Ctx& c, const Value& v) { sphere_spec(s, c).velocity = vec(v); }),
-      checked(
-          make(
-              "sphere.*.schedule", Scope::KinematicSphere, ValueKind::Schedule, "s: m/s",
-              Default::Yes, kAny,
-              "From each time on, the velocity it moves at (zero before the first entry); "
-              "TOML [{ time = t, velocity = [x, y, z] }, ...]",
-              [](const SceneSpec& s, const Ctx& c) -> Value { return sphere_spec(s, c).schedule; },
-              [](SceneSpec& s, const Ctx& c, const Value& v) {
-                sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
-              }),
-          check_schedule),
-  });
-}
-
 std::vector<std::string> spring_type_names(const SceneSpec& s) {
   std::vector<std::string> out;
-  if (s.body_kind == BodyKind::Cloth) {
-    for (SpringType t : kClothSpringTypes) out.emplace_back(to_string(t));
-  } else {
-    for (SpringType t : kSpringTypes) out.emplace_back(to_string(t));
-  }
-  return out;
-}
-
-std::vector<std::string> sphere_names(const SceneSpec& s) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < s.spheres.size(); ++i) out.push_back(std::to_string(i));
+  for (SpringType t : body_kind_of(s).spring_types()) out.emplace_back(to_string(t));
   return out;
 }
 
@@ -682,6 +418,8 @@ std::vector<std::string> terrain_names(const SceneSpec& s) {
   for (const Terrain& t : s.terrains) out.push_back(t.name);
   return out;
 }
+
+}  // namespace
 
 Collection collection(std::string_view name, std::string_view placeholder, std::string_view noun,
                       Layout layout, std::vector<std::string> (*elements)(const SceneSpec&),
@@ -696,8 +434,6 @@ Collection collection(std::string_view name, std::string_view placeholder, std::
   return c;
 }
 
-}  // namespace
-
 // ----- the collections -----
 
 const std::vector<Collection>& collections() {
@@ -709,9 +445,12 @@ const std::vector<Collection>& collections() {
     // [[terrain]]: the scene's terrains, each named by its `name` key.
     out.push_back(collection("terrain", "<name>", "terrain", Layout::ArrayOfTables, terrain_names,
                              terrain_rows()));
-    // [[sphere]]: a cloth scene's spheres, named by their position: sphere.0.radius.
-    out.push_back(
-        collection("sphere", "<i>", "sphere", Layout::Indexed, sphere_names, sphere_rows()));
+    // Then each body kind's own ([[sphere]]: a cloth scene's spheres).
+    for (const BodyKindModule* kind : body_kinds())
+      for (Collection& c : kind->collections()) {
+        c.body = kind->name();
+        out.push_back(std::move(c));
+      }
     return out;
   }();
   return list;
@@ -729,17 +468,9 @@ const Decl* find_decl(std::string_view pattern) {
 }
 
 SpringType spring_type_at(const SceneSpec& s, std::size_t index) {
-  if (s.body_kind == BodyKind::Cloth) return kClothSpringTypes[std::min<std::size_t>(index, 2)];
-  return kSpringTypes[index];
-}
-
-std::string_view body_kind_name(BodyKind k) {
-  switch (k) {
-    case BodyKind::Cube: return "cube";
-    case BodyKind::Particles: return "particles";
-    case BodyKind::Cloth: return "cloth";
-  }
-  return "cube";
+  const std::vector<SpringType> types = body_kind_of(s).spring_types();
+  if (types.empty()) return SpringType::Structural;
+  return types[std::min<std::size_t>(index, types.size() - 1)];
 }
 
 SpringSettings& spring_settings(SceneSpec& s, SpringType t) {
@@ -785,11 +516,8 @@ bool applies(const Decl& d, const SceneSpec& s, const Ctx& c) {
   switch (d.scope) {
     case Scope::Always: return true;
     case Scope::GravityOn: return s.gravity.has_value();
-    case Scope::Cube: return s.body_kind == BodyKind::Cube;
-    case Scope::Particles: return s.body_kind == BodyKind::Particles;
-    case Scope::Cloth: return s.body_kind == BodyKind::Cloth;
-    case Scope::DynamicSphere: return c.index < s.spheres.size() && !s.spheres[c.index].kinematic;
-    case Scope::KinematicSphere: return c.index < s.spheres.size() && s.spheres[c.index].kinematic;
+    case Scope::Body: return s.body_kind.name == d.body;
+    case Scope::When: return d.when(s, c);
     case Scope::Element: return true;  // walk_keys visits only the elements a scene has
     case Scope::SpringOn: return spring_settings(s, spring_type_at(s, c.index)).enabled;
     case Scope::Plane:
@@ -865,9 +593,7 @@ std::optional<Bound> resolve_any(const SceneSpec& s, std::string_view key) {
 
 std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
   const std::string local(key_local(b.decl->pattern));
-  const std::string body = s.body_kind == BodyKind::Cube        ? "a cube"
-                           : s.body_kind == BodyKind::Particles ? "particles"
-                                                                : "a cloth";
+  const std::string_view body = body_kind_of(s).body_phrase();
   const auto terrain_label = [&] {
     const Terrain& t = s.terrains[b.ctx.index];
     return "terrain \"" + t.name + "\" is a " + std::string(terrain_type_name(t));
@@ -875,18 +601,8 @@ std::string inapplicable_reason(const Bound& b, const SceneSpec& s) {
   switch (b.decl->scope) {
     case Scope::GravityOn:
       return "the scene has no gravity (no [gravity] table); turn it on with gravity.enabled=true";
-    case Scope::Cube: return local + " is a key of a cube body, and this scene's body is " + body;
-    case Scope::Particles:
-      return local + " is a key of a particles body, and this scene's body is " + body;
-    case Scope::Cloth:
-      return b.key +
-             " is a key of cloth scenes (body.type = \"cloth\"), and this scene's body is " + body;
-    case Scope::DynamicSphere:
-      return local + " is a key of a dynamic sphere, and sphere " + std::to_string(b.ctx.index) +
-             " is kinematic (kinematic = true: it moves by its schedule)";
-    case Scope::KinematicSphere:
-      return local + " is a key of a kinematic sphere (kinematic = true), and sphere " +
-             std::to_string(b.ctx.index) + " is dynamic";
+    case Scope::Body: return find_body_kind(b.decl->body)->foreign_key(b.key, local, body);
+    case Scope::When: return b.decl->why_not(b, s);
     case Scope::SpringOn: {
       const std::string type(to_string(spring_type_at(s, b.ctx.index)));
       return "the scene has no [springs." + type + "] table; add it with springs." + type +

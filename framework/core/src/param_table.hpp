@@ -47,19 +47,16 @@ using Value = std::variant<double, long long, bool, Vec3, std::string, std::vect
 
 /// When a declared key belongs to a scene.
 enum class Scope {
-  Always,         ///< every scene
-  GravityOn,      ///< scenes with gravity
-  Cube,           ///< body.type = cube
-  Particles,      ///< body.type = particles
-  Cloth,          ///< body.type = cloth (assignment A2)
-  Element,        ///< every element of the row's collection ("every spring type", "every terrain")
-  SpringOn,       ///< springs.<type>.*, only when that type is in the scene
-  Plane,          ///< plane terrains
-  PlaneHole,      ///< plane terrains with a hole
-  Bowl,           ///< bowl terrains
-  Sphere,         ///< sphere terrains
-  DynamicSphere,  ///< cloth scenes' spheres that are not kinematic
-  KinematicSphere,  ///< cloth scenes' kinematic spheres
+  Always,     ///< every scene
+  GravityOn,  ///< scenes with gravity
+  Body,       ///< the scene's body is the row's kind (Decl::body): its module's rows
+  Element,    ///< every element of the row's collection ("every spring type", "every terrain")
+  SpringOn,   ///< springs.<type>.*, only when that type is in the scene
+  Plane,      ///< plane terrains
+  PlaneHole,  ///< plane terrains with a hole
+  Bowl,       ///< bowl terrains
+  Sphere,     ///< sphere terrains
+  When,       ///< when the row's own test holds (Decl::when; a body module's collection)
 };
 
 /// Which element of its collection a row's key refers to: the position in the collection's
@@ -70,6 +67,7 @@ struct Ctx {
 };
 
 struct Decl;
+struct Bound;
 /// A row's own check of a value against the rest of the scene (list lengths that must match,
 /// indices in range): the message ("must give one velocity per position (8), got 2") or nullopt.
 using RowCheck = std::optional<std::string> (*)(const Decl&, const SceneSpec&, const Ctx&,
@@ -100,6 +98,12 @@ struct Decl {
   /// Whether the writer writes the key (nullptr: always when it applies). A key whose value is
   /// derived from others unless given (sphere.<i>.mass: 1000·r³) is written only when given.
   bool (*written)(const SceneSpec&, const Ctx&) = nullptr;
+  std::string_view body;  ///< Scope::Body: the body kind whose section the row is in ("cube")
+  /// Scope::When: when the row applies in words (the reference table), whether it applies, and
+  /// why not (for messages).
+  std::string_view when_text;
+  bool (*when)(const SceneSpec&, const Ctx&) = nullptr;
+  std::string (*why_not)(const Bound&, const SceneSpec&) = nullptr;
 };
 
 /// How a collection's elements are written in a scene file.
@@ -118,6 +122,11 @@ struct Collection {
   /// The element names of a scene, in key order (Ctx::index is the position in this list).
   std::vector<std::string> (*elements)(const SceneSpec&) = nullptr;
   std::vector<Decl> rows;  ///< patterns "<name>.*.<key>", in table order
+  /// Layout::Indexed: appends a default element to a scene (the reader, before the keys of an
+  /// entry), and the key read first (it decides which other keys apply); may be empty.
+  void (*append)(SceneSpec&) = nullptr;
+  std::string_view first_key;
+  std::string_view body;  ///< the body kind that declares it; empty for a general collection
 };
 
 /// A declaration resolved against one scene: the declaration, its context, the full key, and the
@@ -156,13 +165,6 @@ std::string_view key_local(std::string_view key);
 /// The spring types in the order scenes list them, and their key names.
 inline constexpr std::array<SpringType, 4> kSpringTypes = {
     SpringType::Structural, SpringType::Shear, SpringType::ShearBody, SpringType::Bending};
-/// A cloth has no body diagonals (cloth contract §2): its spring types.
-inline constexpr std::array<SpringType, 3> kClothSpringTypes = {
-    SpringType::Structural, SpringType::Shear, SpringType::Bending};
-/// A cloth scene's spring table without ks or kd: cloth contract decision 10 (A1's are the
-/// SpringSettings defaults).
-inline constexpr double kClothDefaultKs = 25000.0;
-inline constexpr double kClothDefaultKd = 750.0;
 /// The spring type of element `index` of the springs collection in scene `s`.
 SpringType spring_type_at(const SceneSpec& s, std::size_t index);
 SpringSettings& spring_settings(SceneSpec& s, SpringType t);
@@ -176,24 +178,6 @@ const Decl* find_decl(std::string_view pattern);
 /// The checks of a value a row carries: its kind and range (check_value), then its own check
 /// against the rest of the scene (Decl::check); the message or nullopt.
 std::optional<std::string> check_row(const Bound& b, const SceneSpec& s, const Value& v);
-/// The row checks of body.velocities, body.springs and body.rest_lengths (scene_checks.cpp).
-std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s, const Ctx&,
-                                                const Value& v);
-std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s, const Ctx&,
-                                                const Value& v);
-std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
-                                                   const Value& v);
-/// The row checks of body.pin_points (inside the grid) and sphere.<i>.schedule (strictly
-/// increasing times) (scene_checks.cpp).
-std::optional<std::string> check_pin_points(const Decl&, const SceneSpec& s, const Ctx&,
-                                            const Value& v);
-std::optional<std::string> check_schedule(const Decl&, const SceneSpec& s, const Ctx&,
-                                          const Value& v);
-/// The named pin sets a cloth scene may list (cloth contract §1, decision 8).
-inline constexpr std::array<std::string_view, 2> kPinSets = {"corners", "edge"};
-/// "body.type" as a scene writes it: "cube", "particles" or "cloth".
-std::string_view body_kind_name(BodyKind k);
-
 /// Whether a declaration applies to the scene in context ctx.
 bool applies(const Decl& d, const SceneSpec& s, const Ctx& ctx);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "jelly/body_kind.hpp"
 #include "param_table.hpp"
 
 namespace jelly::params_detail {
@@ -126,16 +127,6 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
 
 namespace {
 
-// The messages of checks made in two places (a key's value as it is set, and the scene as a whole).
-std::string velocity_count_message(Eigen::Index positions, Eigen::Index given) {
-  return "must give one velocity per position (" + std::to_string(positions) + "), got " +
-         std::to_string(given);
-}
-std::string spring_index_message(std::size_t i, long long a, long long b, Eigen::Index n) {
-  return "spring " + std::to_string(i) + " joins particles " + std::to_string(a) + " and " +
-         std::to_string(b) + "; expected two different indices in 0.." + std::to_string(n - 1);
-}
-
 bool valid_terrain_name(std::string_view name) {
   if (name.empty() || name.size() > kMaxTerrainName) return false;
   return std::all_of(name.begin(), name.end(), [](char ch) {
@@ -145,68 +136,6 @@ bool valid_terrain_name(std::string_view name) {
 }
 
 }  // namespace
-
-std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
-                                                   const Value& v) {
-  const std::size_t given = std::get<std::vector<double>>(v).size();
-  if (given != s.particles.springs.size())
-    return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
-           "), got " + std::to_string(given);
-  return std::nullopt;
-}
-
-std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s, const Ctx&,
-                                                const Value& v) {
-  // Checked here, before the indices are narrowed to int by the setter.
-  const Eigen::Index n = s.particles.positions.cols();
-  const auto& pairs = std::get<std::vector<IndexPair>>(v);
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    if (pairs[i][0] >= n || pairs[i][1] >= n)
-      return spring_index_message(i, pairs[i][0], pairs[i][1], n);
-  return std::nullopt;
-}
-
-std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s, const Ctx&,
-                                                const Value& v) {
-  const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
-  if (given != s.particles.positions.cols())
-    return velocity_count_message(s.particles.positions.cols(), given);
-  return std::nullopt;
-}
-
-namespace {
-
-std::string pin_message(std::size_t i, long long a, long long b, int n) {
-  return "pin " + std::to_string(i) + " at (" + std::to_string(a) + ", " + std::to_string(b) +
-         ") is outside the " + std::to_string(n) + "×" + std::to_string(n) +
-         " grid; expected 0 ≤ i, k ≤ " + std::to_string(n - 1);
-}
-
-std::optional<std::string> schedule_order(const std::vector<ScheduleEntry>& list) {
-  for (std::size_t i = 1; i < list.size(); ++i)
-    if (!(list[i].time > list[i - 1].time))
-      return "times must increase strictly (cloth contract decision 5): entry " +
-             std::to_string(i) + " has time " + format_double(list[i].time) + " s after " +
-             format_double(list[i - 1].time) + " s";
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<std::string> check_pin_points(const Decl&, const SceneSpec& s, const Ctx&,
-                                            const Value& v) {
-  const auto& pins = std::get<std::vector<IndexPair>>(v);
-  const int n = s.cloth.n;
-  for (std::size_t i = 0; i < pins.size(); ++i)
-    if (pins[i][0] < 0 || pins[i][1] < 0 || pins[i][0] >= n || pins[i][1] >= n)
-      return pin_message(i, pins[i][0], pins[i][1], n);
-  return std::nullopt;
-}
-
-std::optional<std::string> check_schedule(const Decl&, const SceneSpec&, const Ctx&,
-                                          const Value& v) {
-  return schedule_order(std::get<std::vector<ScheduleEntry>>(v));
-}
 
 std::optional<std::string> check_row(const Bound& b, const SceneSpec& s, const Value& v) {
   if (auto msg = check_value(*b.decl, v)) return msg;
@@ -230,54 +159,12 @@ std::optional<std::string> check_unique_terrain_name(const SceneSpec& s, std::st
 }
 
 std::optional<CrossError> check_scene(const SceneSpec& s) {
-  if (s.body_kind == BodyKind::Particles) {
-    const ParticleBodySpec& p = s.particles;
-    const Eigen::Index n = p.positions.cols();
-    if (n < 1)
-      return CrossError{"body.positions", "a particles body needs at least one position, got none"};
-    if (p.velocities.cols() != n)
-      return CrossError{"body.velocities", velocity_count_message(n, p.velocities.cols())};
-    for (std::size_t i = 0; i < p.springs.size(); ++i) {
-      const Spring& sp = p.springs[i];
-      if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b)
-        return CrossError{"body.springs", spring_index_message(i, sp.a, sp.b, n)};
-      if (!(std::isfinite(sp.rest_length) && sp.rest_length > 0.0))
-        return CrossError{"body.rest_lengths",
-                          "spring " + std::to_string(i) + " has rest length " +
-                              format_double(sp.rest_length) +
-                              "; must be > 0 m (particles that start at the same place need an "
-                              "explicit rest length)"};
-    }
-    if (!p.springs.empty() && !spring_settings(s, p.spring_type).enabled) {
-      const std::string type(to_string(p.spring_type));
-      return CrossError{"body.spring_type", "the particles' springs use the [springs." + type +
-                                                "] coefficients, but the scene has no [springs." +
-                                                type + "] table"};
-    }
-  }
-  if (s.body_kind == BodyKind::Cloth) {
-    const ClothSpec& c = s.cloth;
-    for (std::size_t i = 0; i < c.pins.size(); ++i)
-      if (c.pins[i][0] < 0 || c.pins[i][1] < 0 || c.pins[i][0] >= c.n || c.pins[i][1] >= c.n)
-        return CrossError{"body.pin_points", pin_message(i, c.pins[i][0], c.pins[i][1], c.n)};
-    if (!s.terrains.empty())
-      return CrossError{"terrain",
-                        "a cloth scene has no terrains (cloth contract §6); got terrain " +
-                            in_quotes(s.terrains.front().name) +
-                            " (the cloth meets spheres: [[sphere]])"};
-    if (s.shear_body.enabled)
-      return CrossError{"springs.shear_body",
-                        "a cloth has no body diagonals; its spring types are structural, shear "
-                        "and bending"};
-    for (std::size_t i = 0; i < s.spheres.size(); ++i)
-      if (auto msg = schedule_order(s.spheres[i].schedule))
-        return CrossError{"sphere." + std::to_string(i) + ".schedule", *msg};
-  } else if (!s.spheres.empty()) {
-    return CrossError{"sphere",
-                      "spheres ([[sphere]]) belong to cloth scenes (body.type = "
-                      "\"cloth\"), and this scene's body is " +
-                          std::string(body_kind_name(s.body_kind))};
-  }
+  // The body's own checks, then that no other kind's data is in the scene.
+  const BodyKindModule& body = body_kind_of(s);
+  if (auto e = body.check(s)) return e;
+  for (const BodyKindModule* kind : body_kinds())
+    if (kind != &body)
+      if (auto e = kind->check_absent(s)) return e;
   for (std::size_t i = 0; i < s.terrains.size(); ++i) {
     const Terrain& t = s.terrains[i];
     const std::string key = "terrain." + t.name;

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "jelly/body_kind.hpp"
 #include "jelly/scene.hpp"
 #include "param_table.hpp"
 
@@ -413,9 +414,9 @@ class Loader {
   }
 
   /// Whether a declared key that does not apply in table `prefix` is reported with the reason
-  /// (a cloth's body, a sphere) rather than as unknown (A1's cube and particles, as before).
-  bool explain_inapplicable(const std::string& prefix) const {
-    return spec_.body_kind == BodyKind::Cloth || prefix.rfind("sphere.", 0) == 0;
+  /// rather than as unknown: the scene's body kind says (BodyKindModule::explains_foreign_keys).
+  bool explain_inapplicable(const std::string&) const {
+    return body_kind_of(spec_).explains_foreign_keys();
   }
 
   /// The keys that apply in the table `prefix` ("body", "springs.shear", "terrain.floor"), as
@@ -491,19 +492,25 @@ class Loader {
     }
   }
 
-  /// Why a section may not be in this scene: [collision] and [[sphere]] belong to cloth scenes,
-  /// [[terrain]] to the others (cloth contract §6). nullopt when it may.
+  /// The body kind whose own table `section` is (a table of its rows other than [body], or one
+  /// of its collections), or nullptr for a general table.
+  static const BodyKindModule* section_owner(std::string_view section) {
+    if (section == "body") return nullptr;
+    for (const Collection& c : collections())
+      if (c.name == section && !c.body.empty()) return find_body_kind(c.body);
+    for (const Decl& d : global_decls())
+      if (d.scope == Scope::Body && key_table(d.pattern) == section) return find_body_kind(d.body);
+    return nullptr;
+  }
+
+  /// Why a section may not be in this scene: another kind's table ([collision] and [[sphere]]
+  /// belong to cloth scenes), or a general one the scene's kind has none of ([[terrain]] in a
+  /// cloth scene, cloth contract §6). nullopt when it may.
   std::optional<std::string> section_not_here(const std::string& name) const {
-    const bool cloth = spec_.body_kind == BodyKind::Cloth;
-    const std::string body = "this scene's body is " + std::string(body_kind_name(spec_.body_kind));
-    if (name == "collision" && !cloth)
-      return "[collision] is a table of cloth scenes (body.type = \"cloth\"), and " + body;
-    if (name == "sphere" && !cloth)
-      return "[[sphere]] belongs to cloth scenes (body.type = \"cloth\"), and " + body +
-             " (a cube meets spheres as terrains: [[terrain]] type = \"sphere\")";
-    if (name == "terrain" && cloth)
-      return "a cloth scene has no terrains (cloth contract §6): the cloth meets spheres, "
-             "[[sphere]]";
+    const BodyKindModule& body = body_kind_of(spec_);
+    if (auto why = body.refuses_section(name)) return why;
+    const BodyKindModule* owner = section_owner(name);
+    if (owner && owner != &body) return owner->foreign_section(name, spec_.body_kind.name);
     return std::nullopt;
   }
 
@@ -522,7 +529,7 @@ class Loader {
     if (const toml::node* type = t.get("type")) {
       if (auto b = resolve(spec_, "body.type"); b && !apply(*b, *type)) return;
     }
-    const std::string kind(body_kind_name(spec_.body_kind));
+    const std::string kind(spec_.body_kind.name);
     apply_table(t, "body", "for a " + kind + " body", local_keys("body"), {"type"});
   }
 
@@ -592,9 +599,9 @@ class Loader {
         continue;
       }
       // Making an element from its entry is the collection's own step: the terrain's (preset,
-      // type, hole), the sphere's (kinematic first). Another collection adds its step here.
+      // type, hole), an indexed one's (its first key first: a sphere's kinematic).
       if (c.layout == Layout::Indexed) {
-        read_sphere(*t, i);
+        read_indexed(c, *t, i);
       } else {
         read_terrain(*t, label);
       }
@@ -611,16 +618,21 @@ class Loader {
     return std::nullopt;
   }
 
-  /// One [[sphere]] entry: kinematic is read first, since it decides which keys apply (velocity
-  /// and mass for a dynamic sphere, schedule for a kinematic one).
-  void read_sphere(const toml::table& t, std::size_t index) {
-    const std::string prefix = "sphere." + std::to_string(index);
+  /// One entry of an indexed collection ([[sphere]]): the collection's first key is read first,
+  /// since it decides which keys apply (a sphere's kinematic: velocity and mass for a dynamic
+  /// sphere, schedule for a kinematic one).
+  void read_indexed(const Collection& c, const toml::table& t, std::size_t index) {
+    const std::string prefix = std::string(c.name) + "." + std::to_string(index);
     where_[prefix] = pos_of(t);
-    spec_.spheres.emplace_back();
-    if (const toml::node* k = t.get("kinematic")) {
-      if (auto b = resolve(spec_, prefix + ".kinematic")) apply(*b, *k);
+    c.append(spec_);
+    std::vector<std::string_view> skip;
+    if (!c.first_key.empty()) {
+      if (const toml::node* k = t.get(c.first_key)) {
+        if (auto b = resolve(spec_, prefix + "." + std::string(c.first_key))) apply(*b, *k);
+      }
+      skip.push_back(c.first_key);
     }
-    apply_table(t, prefix, "for a sphere", local_keys(prefix), {"kinematic"});
+    apply_table(t, prefix, "for a " + std::string(c.noun), local_keys(prefix), skip);
   }
 
   void read_terrain(const toml::table& t, const std::string& label) {

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "jelly/body_kind.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly {
@@ -95,61 +96,7 @@ SceneSpec course_2023_scene() {
 
 std::unique_ptr<World> build_world(const SceneSpec& scene, const TaskTable& tasks) {
   auto world = std::make_unique<World>(tasks);
-  if (scene.body_kind == BodyKind::Cloth) {
-    // Cloth contract §1–§4: the cloth, its springs type by type (structural, shear, bending:
-    // decision 9's order), the spheres in scene order (it is part of the result), the collision
-    // coefficients and gravity. A cloth scene has no terrains (the reader refuses them).
-    const int cloth = world->add_cloth(scene.cloth);
-    if (scene.structural.enabled)
-      world->build_cloth_springs(cloth, SpringType::Structural, scene.structural.ks,
-                                 scene.structural.kd);
-    if (scene.shear.enabled)
-      world->build_cloth_springs(cloth, SpringType::Shear, scene.shear.ks, scene.shear.kd);
-    if (scene.bending.enabled)
-      world->build_cloth_springs(cloth, SpringType::Bending, scene.bending.ks, scene.bending.kd);
-    for (const SphereSpec& sphere : scene.spheres) world->add_sphere(sphere);
-    world->set_cloth_collisions(scene.collisions);
-    world->set_gravity(scene.gravity);
-    return world;
-  }
-  if (scene.body_kind == BodyKind::Cube) {
-    const int cube = world->add_cube(scene.cube);
-    if (scene.structural.enabled)
-      world->build_cube_springs(cube, SpringType::Structural, scene.structural.ks,
-                                scene.structural.kd);
-    if (scene.shear.enabled)
-      world->build_cube_springs(cube, SpringType::Shear, scene.shear.ks, scene.shear.kd);
-    if (scene.shear_body.enabled)
-      world->build_cube_springs(cube, SpringType::ShearBody, scene.shear_body.ks,
-                                scene.shear_body.kd);
-    if (scene.bending.enabled)
-      world->build_cube_springs(cube, SpringType::Bending, scene.bending.ks, scene.bending.kd);
-  } else {
-    const ParticleBodySpec& p = scene.particles;
-    Vec3Array velocities = p.velocities.cols() == p.positions.cols()
-                               ? p.velocities
-                               : Vec3Array::Zero(3, p.positions.cols());
-    world->add_particles(p.positions, velocities, p.mass);
-    if (!p.springs.empty()) {
-      const SpringSettings* settings = &scene.structural;
-      if (p.spring_type == SpringType::Shear) settings = &scene.shear;
-      if (p.spring_type == SpringType::ShearBody) settings = &scene.shear_body;
-      if (p.spring_type == SpringType::Bending) settings = &scene.bending;
-      if (settings->enabled) {
-        SpringGroup g;
-        g.type = p.spring_type;
-        g.ks = settings->ks;
-        g.kd = settings->kd;
-        double shortest = p.springs.front().rest_length;
-        for (const Spring& s : p.springs) shortest = std::min(shortest, s.rest_length);
-        g.degenerate_length = degenerate_length_for(shortest);
-        g.springs = p.springs;
-        world->add_spring_group(std::move(g));
-      }
-    }
-  }
-  world->set_gravity(scene.gravity);
-  for (const Terrain& t : scene.terrains) world->add_terrain(t);
+  body_kind_of(scene).build(scene, *world);  // its body, springs, gravity, terrains or spheres
   return world;
 }
 

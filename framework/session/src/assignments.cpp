@@ -18,14 +18,7 @@ std::string linked_ids() {
 
 }  // namespace
 
-std::string_view body_name(BodyKind kind) {
-  switch (kind) {
-    case BodyKind::Cube: return "cube";
-    case BodyKind::Particles: return "particles";
-    case BodyKind::Cloth: return "cloth";
-  }
-  return "unknown";
-}
+std::string_view body_name(BodyKind kind) { return kind.name; }
 
 const LinkedAssignment& linked_assignment(std::string_view id) {
   for (const LinkedAssignment& a : linked_assignments())

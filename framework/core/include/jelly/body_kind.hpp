@@ -1,0 +1,114 @@
+// A kind of scene body as one module (framework/bodies/<kind>/, docs/architecture.md "Bodies").
+//
+// General code (the scene reader and writer, the parameter table, build_world, the CLI's summary,
+// the studies) never asks "is this a cube?": it finds the scene's kind in the registry
+// (find_body_kind) and asks it. A kind module implements BodyKindModule and registers itself with
+// one line in its folder's body.cmake; CMake writes the list of the kinds a build links
+// (BUILD/bodies/linked_body_kinds.cpp), so adding a kind edits no general file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "jelly/scene_spec.hpp"
+#include "jelly/spring.hpp"
+
+namespace jelly {
+
+class World;
+class Simulator;
+class CsvWriter;
+struct State;
+
+namespace params_detail {
+struct Decl;
+struct Collection;
+struct CrossError;
+}  // namespace params_detail
+
+/// One kind of body: what a scene of this kind says (its section of the parameter table), and
+/// how it becomes a World.
+class BodyKindModule {
+ public:
+  virtual ~BodyKindModule() = default;
+
+  // ----- its scene section -----
+  /// `body.type` as a scene writes it ("cube").
+  virtual std::string_view name() const = 0;
+  /// What it is, for body.type's description ("a jelly cube").
+  virtual std::string_view description() const = 0;
+  /// How messages name a scene's body of this kind ("a cube", "particles").
+  virtual std::string_view body_phrase() const = 0;
+  /// Its rows of the parameter table that are not in a collection, in table order: the [body]
+  /// keys, then any table of its own ([collision]). Read by the parameter table once.
+  virtual std::vector<params_detail::Decl> rows() const = 0;
+  /// Its own collections ([[sphere]]), after the general ones in table order. None by default.
+  virtual std::vector<params_detail::Collection> collections() const;
+  /// Why a key of this kind's [body] (or other row of rows()) does not apply to a scene whose
+  /// body is another kind: `key` the full key, `local` its last part, `scene_body` that scene's
+  /// body_phrase().
+  virtual std::string foreign_key(const std::string& key, const std::string& local,
+                                  std::string_view scene_body) const;
+  /// Whether a key of another kind in a scene of this kind is reported with its reason (true)
+  /// or as an unknown key (false).
+  virtual bool explains_foreign_keys() const { return false; }
+  /// Why a top-level table of its own (one of its rows' or collections' tables) is not allowed in
+  /// a scene of another kind; `scene_body` is the scene's body name.
+  virtual std::string foreign_section(std::string_view section, std::string_view scene_body) const;
+  /// Why a general table ([[terrain]]) is not allowed in a scene of this kind; nullopt: allowed.
+  virtual std::optional<std::string> refuses_section(std::string_view section) const;
+
+  // ----- its springs -----
+  /// The spring types its scenes may have, in the order a scene lists them.
+  virtual std::vector<SpringType> spring_types() const;
+  /// A spring type's coefficients when a scene (or `--set springs.<type>.enabled=true`) turns it
+  /// on without giving them. Unchanged (SpringSettings' defaults) unless the kind says otherwise.
+  virtual void spring_defaults(SpringSettings& settings) const { (void)settings; }
+
+  // ----- checks and building -----
+  /// The checks of a whole scene of this kind that involve several keys; the first problem.
+  virtual std::optional<params_detail::CrossError> check(const SceneSpec& scene) const;
+  /// The check that a scene of another kind holds none of this kind's data (its collections'
+  /// elements, set in code); the problem or nullopt.
+  virtual std::optional<params_detail::CrossError> check_absent(const SceneSpec& scene) const;
+  /// Adds the scene's bodies, springs, gravity and whatever else the kind needs to `world`, in
+  /// the order its contract fixes.
+  virtual void build(const SceneSpec& scene, World& world) const = 0;
+
+  // ----- what a run reports (jelly run, jelly check) -----
+  /// The `jelly run --summary` CSV header of a world of this kind. By default the particles'
+  /// (kSummaryHeader, jelly/recorder.hpp).
+  virtual std::string summary_header(const World& world) const;
+  /// Writes the `--summary` row of state `s` at time `t`. By default every particle's.
+  virtual void write_summary(CsvWriter& out, const World& world, const State& s, double t) const;
+  /// `jelly run`'s report when a run ends (`wall`: its seconds of wall time). By default the
+  /// particles' centre of mass, largest speed and energies, and the world's terrains.
+  virtual std::string end_report(const SceneSpec& scene, const Simulator& sim, double wall) const;
+  /// `jelly check`'s line after the particles and springs: gravity and what else the world holds.
+  /// By default the terrains.
+  virtual std::string check_report(const SceneSpec& scene, const World& world) const;
+  /// Why `jelly check` recommends half the stable step ("contact stiffens the cube").
+  virtual std::string_view stability_reason() const;
+};
+
+/// printf into a std::string (the reports above keep the format of the printf calls they were).
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((format(printf, 1, 2)))
+#endif
+std::string
+text_printf(const char* format, ...);
+
+/// Every body kind this program links, in the order they are registered (the parameter table's
+/// order).
+const std::vector<const BodyKindModule*>& body_kinds();
+/// The kind called `name`, or nullptr when the program does not link it.
+const BodyKindModule* find_body_kind(std::string_view name);
+/// The kind of a scene. Throws std::runtime_error naming the scene's file when the program does
+/// not link it.
+const BodyKindModule& body_kind_of(const SceneSpec& scene);
+/// "cube, particles, cloth": the linked kinds, for messages.
+std::string body_kind_names();
+
+}  // namespace jelly
