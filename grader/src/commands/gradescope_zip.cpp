@@ -123,12 +123,12 @@ bool bundle_third_party(const fs::path& stage) {
 }
 
 /// setup.sh and run_autograder at the top of the zip. setup.sh's compiler check sits between its
-/// "# BEGIN compiler check" and "# END compiler check" lines (tests/grader/commands/setup_compiler_check.sh
-/// runs the block alone with stand-in compilers): the framework needs GCC 11 or newer
-/// (floating-point std::to_chars) and CMake 3.16 or newer. Gradescope's Ubuntu 22.04 base image
-/// has GCC 11.4 and CMake 3.22; on an older image the block installs g++-11 where the archive has
-/// it, else it stops naming what to choose. The compiler it settles on is exported as CXX for
-/// CMake.
+/// "# BEGIN compiler check" and "# END compiler check" lines
+/// (tests/grader/commands/setup_compiler_check.sh runs the block alone with stand-in compilers):
+/// the framework needs GCC 11 or newer (floating-point std::to_chars) and CMake 3.16 or newer.
+/// Gradescope's Ubuntu 22.04 base image has GCC 11.4 and CMake 3.22; on an older image the block
+/// installs g++-11 where the archive has it, else it stops naming what to choose. The compiler it
+/// settles on is exported as CXX for CMake.
 void write_scripts(const fs::path& stage, const std::string& assignment) {
   const std::string sandbox = sandbox_setup_lines("/autograder/source");
   const std::string setup =

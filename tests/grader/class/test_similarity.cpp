@@ -1,9 +1,9 @@
 // `jelly-grade similarity` (grader/src/class/similarity.hpp) on a synthetic class: a copy of the
 // reference with its identifiers renamed, its indentation changed and its comments replaced is
-// found; an independent correct solution (tests/grader/class/similarity/independent/) and a submission of
-// the bare stubs are not; hostile names and text reach the page escaped. Needs sim_c++ (Debian
-// package similarity-tester, installed by tools/install-deps.sh): without it these tests fail,
-// saying so.
+// found; an independent correct solution (tests/grader/class/similarity/independent/) and a
+// submission of the bare stubs are not; hostile names and text reach the page escaped. Needs
+// sim_c++ (Debian package similarity-tester, installed by tools/install-deps.sh): without it these
+// tests fail, saying so.
 #include <sys/wait.h>
 
 #include <cstdio>
