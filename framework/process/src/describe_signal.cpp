@@ -4,11 +4,7 @@
 #include <cstring>
 #include <string>
 
-<<<<<<<< HEAD:grader/src/sandbox/describe_signal.cpp
-#include "sandbox/process.hpp"
-========
 #include "jelly/process/process.hpp"
->>>>>>>> i30-libs:framework/process/src/describe_signal.cpp
 
 namespace jelly::process {
 

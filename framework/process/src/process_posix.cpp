@@ -1,8 +1,4 @@
-<<<<<<<< HEAD:grader/src/sandbox/process.cpp
-#include "sandbox/process.hpp"
-========
 #include "jelly/process/process.hpp"
->>>>>>>> i30-libs:framework/process/src/process_posix.cpp
 
 #include <fcntl.h>
 #include <grp.h>

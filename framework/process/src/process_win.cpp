@@ -18,11 +18,7 @@
 #include <mutex>
 #include <thread>
 
-<<<<<<<< HEAD:grader/src/sandbox/process_win.cpp
-#include "sandbox/process.hpp"
-========
 #include "jelly/process/process.hpp"
->>>>>>>> i30-libs:framework/process/src/process_win.cpp
 
 namespace jelly::process {
 
