@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "class/class_report_fields.hpp"
-#include "commands/common.hpp"
 #include "reports/html_page.hpp"
 #include "reports/points.hpp"
 #include "reports/text_safety.hpp"
