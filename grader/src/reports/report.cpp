@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "inputs/files.hpp"
-#include "reports/html_page.hpp"
 #include "jelly/cli_common/text_table.hpp"
+#include "reports/html_page.hpp"
 #include "reports/plot.hpp"
 #include "reports/points.hpp"
 #include "reports/text_safety.hpp"
