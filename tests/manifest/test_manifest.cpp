@@ -194,6 +194,8 @@ TEST(Manifest, ErrorsNameTheFileTheLineAndTheKey) {
        "assignments/p1/assignment.toml: id: expected the assignment's "
        "id, a lower-case name such as \"hw1\" (the key is missing)"},
       {replaced("points = 4", "points = = 4"), f + "14: not valid TOML: "},
+      // A non-ASCII character outside a string, where toml++ 3.3.0 would misread it.
+      {replaced("points = 4", "points = 4é"), f + "14:11: malformed TOML: a non-ASCII character"},
       // A bonus flag that is not a boolean (line 22, after points).
       {replaced("points = 6", "points = 6\nbonus = \"yes\""),
        f + "22: task[2].bonus: expected true or false (true: its points come on top of "

@@ -292,6 +292,28 @@ TEST(SceneErrors, NonAsciiOnlyInStringsAndComments) {
   EXPECT_TRUE(contains(e.message, "non-ASCII")) << e.message;
   EXPECT_EQ(error_of("[body]\ncenter = [0, 1, 0]\u00a0\n").line, 2);
   EXPECT_EQ(error_of("[scene]\ndescription = \"\"\"\na\"\"\"é\n").line, 3);
+  // toml++ scans a bare value ("+", "1", "inf"...) on through quotes and brackets up to the next
+  // whitespace, ",", "]" or "}": a non-ASCII character there is outside a string too (found by
+  // the scene fuzzer: "a = [[[+[[[\"rk4\"[[\"~Ý").
+  for (const std::string text : {"a = [[[+[[[\"rk4\"[[\"~~Ý\n", "n = 1\"é\"\n", "n = +[\"é\"]\n",
+                                 "n = inf='é'\n", "n = .'é'\n", "x = {a = 1\"é\"}\n"}) {
+    const SceneError bare = error_of(text);
+    EXPECT_EQ(bare.line, 1) << text;
+    EXPECT_TRUE(contains(bare.message, "non-ASCII")) << text << ": " << bare.message;
+  }
+  // After a line-ending backslash in a """ string toml++ asks of the next character whether it is
+  // whitespace: refused there too (the one place valid TOML is refused: write it on the line).
+  const SceneError trim = error_of("[scene]\ndescription = \"\"\"a \\\n   \n  é\"\"\"\n");
+  EXPECT_EQ(trim.line, 4);
+  EXPECT_EQ(trim.column, 3);
+  // A string right after "=", a quoted key, a comment after a string, quotes in a """ string:
+  // allowed (tests/manifest/test_toml_text.cpp has the rest of TOML's places for strings).
+  for (const std::string text :
+       {"[scene]\nname=\"é\"\ndescription = \"\"\"a \\\n  b é\"\"\"\n", "[scene]\n\"name\" = 'é'\n",
+        "[scene]\nname = \"é\" # é\ndescription = \"\"\"\"é\"\"\"\"\n"}) {
+    const SceneResult r = parse_scene(text, "ok.toml");
+    EXPECT_TRUE(r) << text << ": " << (r ? "" : r.error->text());
+  }
 }
 
 TEST(SceneErrors, TheFirstErrorInTheFileIsReported) {

@@ -15,6 +15,7 @@
 
 #include "jelly/body_kind.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/toml_text.hpp"
 #include "param_table.hpp"
 
 namespace jelly {
@@ -90,74 +91,6 @@ std::optional<Vec3> vec3_of(const toml::node& n) {
   return v;
 }
 
-/// TOML 1.0 allows non-ASCII characters only inside strings and comments. toml++ 3.3.0 (Debian 12)
-/// reaches TOML_UNREACHABLE (undefined behaviour) when it classifies some of them, e.g. "é", as
-/// possible whitespace outside a string, so such text is rejected here first, with the place.
-std::optional<Pos> non_ascii_outside_strings(std::string_view text) {
-  enum class In { Normal, Comment, Basic, Literal, MultiBasic, MultiLiteral };
-  In state = In::Normal;
-  int line = 1, column = 0;
-  const auto starts = [&](std::size_t i, std::string_view what) {
-    return text.substr(i, what.size()) == what;
-  };
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    const auto byte = static_cast<unsigned char>(ch);
-    if ((byte & 0xC0) != 0x80) ++column;  // count code points, as toml++ does
-    if (ch == '\n') {
-      ++line;
-      column = 0;
-      if (state != In::MultiBasic && state != In::MultiLiteral) state = In::Normal;
-      continue;
-    }
-    switch (state) {
-      case In::Normal:
-        if (byte >= 0x80) return Pos{line, column};
-        if (ch == '#') {
-          state = In::Comment;
-        } else if (starts(i, "\"\"\"") || starts(i, "'''")) {
-          state = ch == '"' ? In::MultiBasic : In::MultiLiteral;
-          i += 2;
-          column += 2;
-        } else if (ch == '"') {
-          state = In::Basic;
-        } else if (ch == '\'') {
-          state = In::Literal;
-        }
-        break;
-      case In::Comment: break;
-      case In::Basic:
-        if (ch == '\\' && i + 1 < text.size() && text[i + 1] != '\n') {
-          ++i;  // an escaped character (only ASCII ones are valid escapes)
-          ++column;
-        } else if (ch == '"') {
-          state = In::Normal;
-        }
-        break;
-      case In::Literal:
-        if (ch == '\'') state = In::Normal;
-        break;
-      case In::MultiBasic:
-      case In::MultiLiteral: {
-        const char quote = state == In::MultiBasic ? '"' : '\'';
-        if (state == In::MultiBasic && ch == '\\' && i + 1 < text.size() && text[i + 1] != '\n') {
-          ++i;
-          ++column;
-        } else if (ch == quote && starts(i, std::string(3, quote))) {
-          // A closing delimiter may be preceded by up to two quotes that belong to the content.
-          std::size_t run = 0;
-          while (i + run < text.size() && text[i + run] == quote) ++run;
-          i += run - 1;
-          column += static_cast<int>(run) - 1;
-          state = In::Normal;
-        }
-        break;
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 /// The whole reading of one scene text; collects every key's error and reports the first.
 class Loader {
  public:
@@ -166,10 +99,9 @@ class Loader {
   SceneResult run(std::string_view text) {
     SceneResult result;
     toml::table root;
-    if (const auto at = non_ascii_outside_strings(text)) {
-      result.error = SceneError{source_, "", at->line, at->column,
-                                "malformed TOML: a non-ASCII character outside a string or comment "
-                                "(TOML allows them only inside \"strings\" and # comments)"};
+    if (const auto at = toml_non_ascii_outside_strings(text)) {
+      result.error =
+          SceneError{source_, "", at->line, at->column, std::string(kTomlNonAsciiMessage)};
       return result;
     }
     try {

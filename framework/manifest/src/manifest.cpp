@@ -1,5 +1,7 @@
 #include "jelly/manifest.hpp"
 
+#include "jelly/toml_text.hpp"
+
 #include <algorithm>
 #include <fstream>
 #include <initializer_list>
@@ -180,6 +182,9 @@ std::string AssignmentManifest::task_prefix() const {
 
 AssignmentManifest parse_manifest(std::string_view text, const std::string& source) {
   toml::table root;
+  if (const auto at = toml_non_ascii_outside_strings(text))
+    throw ManifestError(source + ":" + std::to_string(at->line) + ":" + std::to_string(at->column) +
+                        ": " + std::string(kTomlNonAsciiMessage));
   try {
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
