@@ -13,7 +13,8 @@
 //   jelly-grade gradescope-zip OUT.zip
 //   jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility ...] [--timeout S]
 //               [--jobs N]
-//   jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility ...] [--timeout S]
+//   jelly-grade mutants [--table FILE] [--out DIR] [--check-hints [--controls DIR]] [--jobs N]
+//                       [--visibility ...] [--timeout S]
 //   jelly-grade hints [--check | --check-digest] [--controls DIR] [--out FILE] [--work DIR]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
 //
@@ -71,8 +72,8 @@ constexpr const char* kUsage =
     "  jelly-grade gradescope-zip OUT.zip\n"
     "  jelly-grade prairielearn [--student DIR] [--results DIR] [--visibility public|all] "
     "[--timeout S] [--jobs N]\n"
-    "  jelly-grade mutants [--table FILE] [--out DIR] [--jobs N] [--visibility public|all] "
-    "[--timeout S]\n"
+    "  jelly-grade mutants [--table FILE] [--out DIR] [--check-hints [--controls DIR]] [--jobs N] "
+    "[--visibility public|all] [--timeout S]\n"
     "  jelly-grade hints [--check | --check-digest] [--controls DIR] [--out FILE] [--work DIR] "
     "[--jobs N]\n"
     "  common options: --config FILE (grade-config.json), --rubric FILE,\n"
@@ -175,6 +176,8 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   } else if (command == "mutants") {
     cmd.add_option("--table", o.table)->type_name("FILE");
     cmd.add_option("--out", o.out)->type_name("DIR");
+    cmd.add_flag("--check-hints", o.hints.check);
+    cmd.add_option("--controls", o.hints.controls)->type_name("DIR");
   } else if (command == "hints") {
     cmd.add_flag("--check", o.hints.check);
     cmd.add_flag("--check-digest", o.hints.digest);
@@ -315,7 +318,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   if (command == "gradescope-zip") return gradescope_zip(config, o.positional);
   if (command == "prairielearn") return prairielearn(config, book, o.student, o.results, options);
   if (command == "hints") return hints(config, book, o.hints, o.jobs, options);
-  return mutants(config, book, o.table, o.out, o.jobs, options);
+  return mutants(config, book, o.table, o.out, o.jobs, options, o.hints.check ? &o.hints : nullptr);
 }
 
 }  // namespace

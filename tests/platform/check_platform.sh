@@ -7,14 +7,15 @@
 #   check_platform.sh PLATFORM HOST_JELLY SOURCE_DIR WORK_DIR TASKS [JOBS [HOST_JELLY_GRADE [HOST_HASH]]]
 #   (HOST_HASH may also come from the environment, JELLY_HOST_HASH: CTest sets it)
 #   JELLY_PLATFORM_PHASE=build in the environment: configure and build only, then exit 0. CTest runs
-#   that phase alone (it compiles with JOBS jobs) and then the whole script, whose build finds
-#   everything up to date, beside other tests (the runs under wine or qemu take one core).
+#   that phase (it compiles with JOBS jobs) and then the whole script with JELLY_PLATFORM_PHASE=runs,
+#   which does not configure again and whose build finds everything up to date (the runs under
+#   wine or qemu take one core).
 #
 #   PLATFORM  mingw   Windows: MinGW-w64 cross-build (cmake/toolchains/mingw-w64-x86_64.cmake), run
 #                     under wine; also runs the unit tests that exist on Windows (stubs, session,
 #                     render on the null backend, the process launcher) under wine,
-#                     and the self-check of every assignment (jelly-grade.exe --runner, the
-#                     `selfcheck` target): 0 points for assignments/ID/'s stubs, full public marks
+#                     and the self-check of every assignment (the `selfcheck-ID` target students
+#                     use, on TASKS/ID; jelly-grade.exe --runner on the other folder): 0 points for assignments/ID/'s stubs, full public marks
 #                     for solutions/ID/, and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
 #             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
@@ -150,10 +151,17 @@ tests=OFF
 [ "$platform" != libcxx ] && tests=ON
 grader=OFF
 [ "$platform" != libcxx ] && grader=ON  # the self-check (jelly-grade --runner)
-cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
-      -DJELLY_TASKS="$tasks" -DJELLY_BUILD_TESTS=$tests -DJELLY_BUILD_VIEWER=$viewer -DJELLY_BUILD_GRADER=$grader \
-      -DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_FUZZERS=OFF >"$work/configure.log" 2>&1 ||
-  { tail -40 "$work/configure.log"; die "CMake could not configure the $platform build (log: $work/configure.log)"; }
+# JELLY_PLATFORM_PHASE=runs (CTest's second test): the build phase configured this folder with the
+# same options, so only `cmake --build` runs (it configures again by itself when a CMake file
+# changed); a configure from scratch under the cross toolchains takes about a minute.
+if [ "${JELLY_PLATFORM_PHASE:-}" = runs ] && grep -q "^JELLY_TASKS:[A-Z]*=$tasks\$" "$build/CMakeCache.txt" 2>/dev/null; then
+  say "configured by the build phase: checking the build is up to date"
+else
+  cmake -S "$src" -B "$build" "${toolchain[@]}" "${deps[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+        -DJELLY_TASKS="$tasks" -DJELLY_BUILD_TESTS=$tests -DJELLY_BUILD_VIEWER=$viewer -DJELLY_BUILD_GRADER=$grader \
+        -DJELLY_BUILD_BENCHMARKS=OFF -DJELLY_BUILD_FUZZERS=OFF >"$work/configure.log" 2>&1 ||
+    { tail -40 "$work/configure.log"; die "CMake could not configure the $platform build (log: $work/configure.log)"; }
+fi
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >"$work/build.log" 2>&1 ||
   { grep -E 'error|Error' "$work/build.log" | head -30; die "the $platform build failed (log: $work/build.log)"; }
 say "configured and built ${targets[*]} in $(timer "$t0")"
@@ -302,7 +310,7 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
     echo "$out/$2.sh"
   }
   selfcheck_case() {  # NAME ID DIR RUNNER zero|full
-    local name=$1 id=$2 dir=$3 runner=$4 expect=$5 rc total
+    local name=$1 id=$2 dir=$3 runner=$4 expect=$5 rc
     [ -n "$runner" ] || { say "FAILED: no runner for the self-check on $name"; failed=1; return; }
     # --timeout 600: every case may take up to 10 minutes here (the grader takes the larger of it
     # and the case's own limit). Under emulation on 2 shared cores the course scenes (A2's RK4
@@ -310,6 +318,25 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
     # check compares.
     (cd "$src" && "${run[@]}" "$grade_exe" grade "$dir" --assignment "$id" --runner "$runner" --visibility public --format terminal --timeout 600 --out "$out/selfcheck-$name" --strict) >"$out/selfcheck-$name.txt" 2>&1
     rc=$?
+    selfcheck_judge "$name" "$id" "$dir" "$expect" "$rc"
+  }
+  # The target students use under wine (cmake --build --preset ... --target selfcheck-ID, wine being
+  # the toolchain's CMAKE_CROSSCOMPILING_EMULATOR), on JELLY_TASKS/ID: it grades that folder as
+  # selfcheck_case would (the student runner is built from the same files), so it takes that
+  # case's place rather than grading the same code twice under wine.
+  selfcheck_target() {  # NAME ID DIR zero|full
+    local name=$1 id=$2 dir=$3 expect=$4 rc
+    cmake --build "$build" --target "selfcheck-$id" >"$out/selfcheck-target-$id.log" 2>&1
+    rc=$?
+    # The report: from its first line on, without the build tool's own lines ("[100%] Built target").
+    sed -n '/^Jelly Lab autograder — /,$p' "$out/selfcheck-target-$id.log" | grep -v '^\[[ 0-9]*%\] ' >"$out/selfcheck-$name.txt"
+    [ -s "$out/selfcheck-$name.txt" ] || { tail -30 "$out/selfcheck-target-$id.log"; say "FAILED: the selfcheck-$id target printed no report"; failed=1; return; }
+    # make's "exit 2" for a failed command stands for the grader's 1 (tests failed)
+    [ "$rc" -ne 0 ] && grep -q '^Total: ' "$out/selfcheck-$name.txt" && rc=1
+    where="$where (the selfcheck-$id target)" selfcheck_judge "$name" "$id" "$dir" "$expect" "$rc"
+  }
+  selfcheck_judge() {  # NAME ID DIR zero|full EXIT: the report in $out/selfcheck-NAME.txt
+    local name=$1 id=$2 dir=$3 expect=$4 rc=$5 total
     total="$(sed -n 's#^Total: \([0-9.]*\) / \([0-9.]*\).*#\1 / \2#p' "$out/selfcheck-$name.txt")"
     if [[ "$total" == *"/ 0.00" ]] && [ "${JELLY_PLATFORM_ALLOW_NO_CASES:-0}" = 1 ]; then
       say "NOT CHECKED: the self-check $where on $name: assignments/$id has no public grader case yet ($total; JELLY_PLATFORM_ALLOW_NO_CASES=1)"
@@ -336,25 +363,20 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
   if [ -z "$grade_exe" ]; then say "FAILED: no jelly-grade$exe"; failed=1
   else
     for id in "${ids[@]}"; do
-      stub_runner="$(through_qemu "$(find "$build" -name "jelly_tests_${id}_stub_runner$exe" -type f | head -1)" "$id-stub-runner")"
-      selfcheck_case "$id-stubs" "$id" "$src/assignments/$id" "$stub_runner" zero
-      if [ -d "$src/solutions/$id" ]; then
+      if [ "$platform" = mingw ] && [ "$tasks" = assignments ]; then
+        selfcheck_target "$id-stubs" "$id" "$src/assignments/$id" zero
+      else
+        stub_runner="$(through_qemu "$(find "$build" -name "jelly_tests_${id}_stub_runner$exe" -type f | head -1)" "$id-stub-runner")"
+        selfcheck_case "$id-stubs" "$id" "$src/assignments/$id" "$stub_runner" zero
+      fi
+      [ -d "$src/solutions/$id" ] || continue
+      if [ "$platform" = mingw ] && [ "$tasks" = solutions ]; then
+        selfcheck_target "$id-solutions" "$id" "$src/solutions/$id" full
+      else
         ref_runner="$(through_qemu "$(find "$build" -name "jelly-grade-$id-reference-runner$exe" -type f | head -1)" "$id-reference-runner")"
         selfcheck_case "$id-solutions" "$id" "$src/solutions/$id" "$ref_runner" full
       fi
     done
-  fi
-  if [ -n "$grade_exe" ] && [ "$platform" = mingw ]; then
-    # The target students use (cmake --build --preset ... --target selfcheck), on JELLY_TASKS.
-    cmake --build "$build" --target selfcheck >"$out/selfcheck-target.txt" 2>&1
-    rc=$?
-    want=1; [ "$tasks" = solutions ] && want=0
-    if { [ "$want" -eq 0 ] && [ "$rc" -eq 0 ]; } || { [ "$want" -eq 1 ] && [ "$rc" -ne 0 ]; } &&
-       grep -q '^Total: ' "$out/selfcheck-target.txt"; then
-      say "the selfcheck target under wine on $tasks/: $(grep '^Total: ' "$out/selfcheck-target.txt" | tr -d '\r' | cut -c1-40) (exit $rc)"
-    else
-      tail -30 "$out/selfcheck-target.txt"; say "FAILED: the selfcheck target on $tasks/ (exit $rc)"; failed=1
-    fi
   fi
   say "self-check $where took $(timer "$t0")"
 fi

@@ -215,7 +215,8 @@ class Verifier:
         cli = self._cli(name, b)
         self._selfchecks(name, b, cli)
         # Once (the commands do not depend on the compiler): what each handout tells students to run.
-        if name == self.builds[0]:
+        # `builds` is empty when another verification of this release runs them (--compiler-checks-only).
+        if self.builds and name == self.builds[0]:
             self.check_handout_commands(b)
         self._helps(name, b, cli, check_scene_mentions)
         say(f"verify {name}: OK (configure + build {int(t1 - t0)}s, tests + self-check + run {int(time.time() - t1)}s)")

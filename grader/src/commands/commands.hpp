@@ -133,12 +133,31 @@ struct HintsArgs {
 int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
           const GradeOptions& options);
 
+/// A submission graded for the hints: the reference, the stubs, a mutant or a control.
+struct GradedSubmission {
+  std::string name, task, description;
+  std::filesystem::path dir;
+  GradeReport report;
+  std::string error;  ///< the grader's error, when it could not be graded
+};
+
+/// `mutants --check-hints` (commands/hints.cpp): `hints --check` on the submissions the mutation
+/// self-test has just graded (the reference, the stubs, then the mutants in file-name order, as
+/// `hints` grades them), so that they are not graded twice. They were graded with the hidden
+/// tests too; the hints look at public cases only, so their signatures and hints are the same.
+/// The controls of args.controls are graded here, on the public cases. Returns as `hints`.
+int check_hints_of_graded(const GradeConfig& config, const CaseBook& book, const HintsArgs& args,
+                          std::vector<GradedSubmission> graded, int jobs,
+                          const GradeOptions& options);
+
 /// `mutants` (commands/mutants.cpp): applies every assignments/<id>/grader/mutants/*.toml to a copy
 /// of solutions/<id>/,
 /// grades each, checks that the reference scores full marks, the stubs zero, and every mutant
 /// loses points in its own task only. Writes the table (Markdown) to `table_path` when given.
-/// Returns 0 when every check holds.
+/// With `hints_check` (--check-hints), also checks hints.json on the same gradings
+/// (check_hints_of_graded). Returns 0 when every check holds.
 int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
-            const std::string& work, int jobs, const GradeOptions& options);
+            const std::string& work, int jobs, const GradeOptions& options,
+            const HintsArgs* hints_check = nullptr);
 
 }  // namespace jelly::grade

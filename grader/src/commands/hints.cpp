@@ -15,12 +15,7 @@ namespace jelly::grade {
 
 namespace {
 
-struct Graded {
-  std::string name, task, description;
-  fs::path dir;
-  GradeReport report;
-  std::string error;
-};
+using Graded = GradedSubmission;
 
 // What hints.json is made from: the case code (harness digest), the public cases, the reference's
 // and the stubs' task files and every mutant's file. A change to any of them makes the file stale.
@@ -273,27 +268,74 @@ int check_hints(const GradeConfig& config, const CaseBook& book, const fs::path&
 
 }  // namespace
 
-int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
-          const GradeOptions& options) {
-  const fs::path file = args.out.empty() ? hints_path(config) : fs::path(args.out);
-  const std::string regenerate = "run `jelly-grade hints --assignment " + config.assignment().id +
-                                 "` and commit " + file.string();
-  if (args.digest || args.check) {
-    const int status = check_digest(config, book, args, file, regenerate);
-    if (status >= 0) return status;
-  }
-  const fs::path root = args.work.empty()
-                            ? config.binary_dir / "grader" / "hints" / config.assignment().id
-                            : fs::absolute(args.work);
-  fs::remove_all(root);
-  std::size_t n_mutants = 0;
-  std::vector<Graded> list = hint_list(config, args, root, n_mutants);
-  grade_public(config, book, list, root, jobs, options);
+namespace {
+
+/// After the grading: the reference must pass, then hints.json is written, or (--check) compared
+/// and proven on every entry. `list`: the reference, the stubs, the mutants (n_mutants entries in
+/// all), then the controls.
+int finish_hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args,
+                 const fs::path& file, const std::string& regenerate, std::vector<Graded>& list,
+                 std::size_t n_mutants) {
   if (const int status = check_grading(list); status != 0) return status;
   const std::string text =
       make_hints_json(config, book, std::vector<Graded>(list.begin(), list.begin() + n_mutants));
   if (!args.check) return write_hints(file, text, n_mutants);
   return check_hints(config, book, file, text, regenerate, list, n_mutants);
+}
+
+fs::path hints_file(const GradeConfig& config, const HintsArgs& args) {
+  return args.out.empty() ? hints_path(config) : fs::path(args.out);
+}
+
+std::string regenerate_command(const GradeConfig& config, const fs::path& file) {
+  return "run `jelly-grade hints --assignment " + config.assignment().id + "` and commit " +
+         file.string();
+}
+
+fs::path work_root(const GradeConfig& config, const HintsArgs& args) {
+  return args.work.empty() ? config.binary_dir / "grader" / "hints" / config.assignment().id
+                           : fs::absolute(args.work);
+}
+
+}  // namespace
+
+int hints(const GradeConfig& config, const CaseBook& book, const HintsArgs& args, int jobs,
+          const GradeOptions& options) {
+  const fs::path file = hints_file(config, args);
+  const std::string regenerate = regenerate_command(config, file);
+  if (args.digest || args.check) {
+    const int status = check_digest(config, book, args, file, regenerate);
+    if (status >= 0) return status;
+  }
+  const fs::path root = work_root(config, args);
+  fs::remove_all(root);
+  std::size_t n_mutants = 0;
+  std::vector<Graded> list = hint_list(config, args, root, n_mutants);
+  grade_public(config, book, list, root, jobs, options);
+  return finish_hints(config, book, args, file, regenerate, list, n_mutants);
+}
+
+int check_hints_of_graded(const GradeConfig& config, const CaseBook& book, const HintsArgs& args,
+                          std::vector<GradedSubmission> graded, int jobs,
+                          const GradeOptions& options) {
+  HintsArgs check = args;
+  check.check = true;
+  check.digest = false;
+  const fs::path file = hints_file(config, check);
+  const std::string regenerate = regenerate_command(config, file);
+  if (const int status = check_digest(config, book, check, file, regenerate); status >= 0)
+    return status;
+  const std::size_t n_mutants = graded.size();
+  if (!check.controls.empty()) {
+    const fs::path root = work_root(config, check);
+    fs::remove_all(root);
+    std::vector<Graded> controls;
+    for (const MutantSpec& m : make_mutant_folders(config, check.controls, root / "controls"))
+      controls.push_back({"control " + m.name, m.task, m.description, m.dir, {}, {}});
+    grade_public(config, book, controls, root, jobs, options);
+    for (Graded& g : controls) graded.push_back(std::move(g));
+  }
+  return finish_hints(config, book, check, file, regenerate, graded, n_mutants);
 }
 
 }  // namespace jelly::grade

@@ -270,7 +270,8 @@ void write_table_file(const GradeConfig& config, const std::string& table_path,
 }  // namespace
 
 int mutants(const GradeConfig& config, const CaseBook& book, const std::string& table_path,
-            const std::string& work, int jobs, const GradeOptions& options) {
+            const std::string& work, int jobs, const GradeOptions& options,
+            const HintsArgs* hints_check) {
   // One folder per assignment: the A1 and A2 runs (two CTest tests) may run at once.
   const fs::path root = work.empty()
                             ? config.binary_dir / "grader" / "mutants" / config.assignment().id
@@ -284,7 +285,17 @@ int mutants(const GradeConfig& config, const CaseBook& book, const std::string& 
   if (!table_path.empty()) write_table_file(config, table_path, table);
   std::cout << (all_ok ? "jelly-grade: mutation self-test passed\n"
                        : "jelly-grade: mutation self-test FAILED\n");
-  return all_ok ? 0 : 1;
+  int status = all_ok ? 0 : 1;
+  if (hints_check) {
+    std::vector<GradedSubmission> graded;
+    for (Mutant& m : list)
+      graded.push_back({m.name, m.task, m.description, m.dir, std::move(m.report), m.error});
+    HintsArgs args = *hints_check;
+    if (args.work.empty()) args.work = (root / "hints").string();
+    status = std::max(status,
+                      check_hints_of_graded(config, book, args, std::move(graded), jobs, options));
+  }
+  return status;
 }
 
 }  // namespace jelly::grade
