@@ -1,3 +1,3 @@
 # The cloth (A2, the cloth contract): body.type = "cloth".
 jelly_body_kind(cloth ORDER 30 MODULE cloth_kind SOURCES cloth_kind.cpp cloth.cpp spheres.cpp
-                world_cloth.cpp)
+                cloth_physics.cpp)
