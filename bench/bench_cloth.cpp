@@ -11,6 +11,7 @@
 #include <string>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/simulator.hpp"
 
 namespace {
@@ -23,10 +24,10 @@ std::unique_ptr<World> cloth_scene(int year) {
   ClothSpec spec;
   spec.center = Vec3(0.0, year == 2022 ? 0.0 : 1.0, 0.0);
   spec.air_drag = 3.4e-4;
-  world->add_cloth(spec);
+  cloth_physics(*world).add_cloth(spec);
   const double ks = year == 2022 ? 25000.0 : 20000.0;
   for (SpringType t : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-    world->build_cloth_springs(0, t, ks, 750.0);
+    cloth_physics(*world).build_cloth_springs(0, t, ks, 750.0);
   world->set_gravity(Vec3(0.0, -9.8, 0.0));
   ClothCollisionSettings c;
   if (year == 2022) {
@@ -35,7 +36,7 @@ std::unique_ptr<World> cloth_scene(int year) {
         SphereSpec s;
         s.center = Vec3(x, 1.0, z);
         s.radius = 0.5;
-        world->add_sphere(s);
+        cloth_physics(*world).add_sphere(s);
       }
   } else {
     SphereSpec s;
@@ -45,9 +46,9 @@ std::unique_ptr<World> cloth_scene(int year) {
                   {0.5, Vec3(2.0, 0.0, 0.0)},
                   {1.0, Vec3(-2.0, 0.0, 0.0)},
                   {1.5, Vec3::Zero()}};
-    world->add_sphere(s);
+    cloth_physics(*world).add_sphere(s);
   }
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   return world;
 }
 

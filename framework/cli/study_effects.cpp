@@ -14,6 +14,8 @@
 
 #include <Eigen/Geometry>
 
+#include "jelly/cloth_physics.hpp"
+#include "jelly/cube_physics.hpp"
 #include "jelly/params.hpp"
 #include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
@@ -135,11 +137,12 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   const Eigen::VectorXd& mass = world.masses();
   // A cloth scene measures the cloth (cloth contract decision 12), not the dynamic spheres that
   // follow it in the state; an A1 scene every particle.
-  const bool cloth = !world.cloths().empty();
-  const Eigen::Index body = cloth ? world.cloth_particle_count() : world.particle_count();
+  const bool cloth = !cloth_physics(world).cloths().empty();
+  const Eigen::Index body =
+      cloth ? cloth_physics(world).cloth_particle_count() : world.particle_count();
   const double total_mass = mass.head(body).sum();
   const CubeLattice* cube =
-      !o.measures.cave_in || world.cubes().empty() ? nullptr : &world.cubes().front();
+      !o.measures.cave_in || cubes_of(world).empty() ? nullptr : &cubes_of(world).front();
   row.rest_volume = cube ? cube_volume(*cube, sim.state().x) : kNaN;
   const auto touches = [&] {
     const auto& c = world.counters();
@@ -166,17 +169,17 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   // The deepest unpinned cloth particle inside a sphere (r − |x − c|), 0 when none is inside.
   const auto sink_depth = [&](const State& s) {
     double deepest = 0.0;
-    for (int k = 0; k < world.sphere_count(); ++k) {
-      const int p = world.sphere_particle(k);
-      const Vec3 c = p >= 0 ? Vec3(s.x.col(p)) : world.sphere(k).center;
-      const double r = world.sphere(k).radius;
+    for (int k = 0; k < cloth_physics(world).sphere_count(); ++k) {
+      const int p = cloth_physics(world).sphere_particle(k);
+      const Vec3 c = p >= 0 ? Vec3(s.x.col(p)) : cloth_physics(world).sphere(k).center;
+      const double r = cloth_physics(world).sphere(k).radius;
       for (Eigen::Index i = 0; i < body; ++i)
-        if (!world.is_pinned(static_cast<int>(i)))
+        if (!cloth_physics(world).is_pinned(static_cast<int>(i)))
           deepest = std::max(deepest, r - (s.x.col(i) - c).norm());
     }
     return deepest;
   };
-  const bool sinks = cloth && world.sphere_count() > 0 && o.measures.sink;
+  const bool sinks = cloth && cloth_physics(world).sphere_count() > 0 && o.measures.sink;
 
   const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
   row.contact_time = row.impact_speed = row.turn_time = kNaN;

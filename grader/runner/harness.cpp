@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "jelly/cube_physics.hpp"
+
 namespace jelly::grade {
 
 namespace {
@@ -161,8 +163,8 @@ void prepare_cube_springs(const TaskTable& reference, const Params& params, Json
 
 void add_prepared_cube(World& world, const Params& params, const Json& input, double ks,
                        double kd) {
-  const int cube = world.add_cube(cube_from_params(params.table("cube")));
-  const double spacing = world.cubes().at(static_cast<std::size_t>(cube)).spacing();
+  const int cube = cube_physics(world).add_cube(cube_from_params(params.table("cube")));
+  const double spacing = cubes_of(world).at(static_cast<std::size_t>(cube)).spacing();
   const std::pair<const char*, SpringType> types[] = {{"structural", SpringType::Structural},
                                                       {"shear", SpringType::Shear},
                                                       {"bending", SpringType::Bending}};

@@ -9,6 +9,7 @@
 
 #include "counting_malloc.hpp"
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_physics.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 
@@ -75,9 +76,9 @@ TEST(NoAllocation, ManySpringGroupsAllocateNothing) {
     CubeSpec spec;
     spec.n = 5;
     spec.center = Vec3(6.0 * c, 5.0, 0.0);
-    const int cube = world->add_cube(spec);
+    const int cube = cube_physics(*world).add_cube(spec);
     for (SpringType type : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-      world->build_cube_springs(cube, type, 2000.0, 60.0);
+      cube_physics(*world).build_cube_springs(cube, type, 2000.0, 60.0);
   }
   world->set_gravity(Vec3(0.0, -9.8, 0.0));
   ASSERT_EQ(world->spring_groups().size(), 12u);

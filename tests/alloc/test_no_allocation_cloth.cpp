@@ -9,6 +9,7 @@
 
 #include "counting_malloc.hpp"
 #include "jelly/a2/task_table.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/simulator.hpp"
 
 namespace jelly {
@@ -24,9 +25,9 @@ std::unique_ptr<World> cloth_scene(int year) {
   ClothSpec spec;
   spec.center = Vec3(0.0, year == 2022 ? 0.0 : 1.0, 0.0);
   spec.air_drag = 3.4e-4;
-  world->add_cloth(spec);
+  cloth_physics(*world).add_cloth(spec);
   for (SpringType t : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-    world->build_cloth_springs(0, t, year == 2022 ? 25000.0 : 20000.0, 750.0);
+    cloth_physics(*world).build_cloth_springs(0, t, year == 2022 ? 25000.0 : 20000.0, 750.0);
   world->set_gravity(Vec3(0.0, -9.8, 0.0));
   if (year == 2022) {
     for (double x : {-0.75, 0.75})
@@ -34,19 +35,19 @@ std::unique_ptr<World> cloth_scene(int year) {
         SphereSpec s;
         s.center = Vec3(x, 1.0, z);
         s.radius = 0.5;
-        world->add_sphere(s);
+        cloth_physics(*world).add_sphere(s);
       }
   } else {
     SphereSpec s;
     s.kinematic = true;
     s.radius = 1.0;
     s.schedule = {{0.0, Vec3::Zero()}, {0.5, Vec3(2.0, 0.0, 0.0)}};
-    world->add_sphere(s);
+    cloth_physics(*world).add_sphere(s);
   }
   ClothCollisionSettings c;
   c.friction = 0.3;  // the bonus's friction and push-out too
   c.push_out = 0.5;
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   return world;
 }
 

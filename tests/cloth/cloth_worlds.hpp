@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/world.hpp"
 
@@ -15,10 +16,10 @@ namespace jelly::cloth_test {
 inline std::unique_ptr<World> cloth_world(const ClothSpec& spec, double ks, double kd,
                                           std::optional<Vec3> g = Vec3(0.0, -9.8, 0.0)) {
   auto world = std::make_unique<World>(a2::task_table());
-  world->add_cloth(spec);
+  cloth_physics(*world).add_cloth(spec);
   if (ks > 0.0)
     for (SpringType t : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-      world->build_cloth_springs(0, t, ks, kd);
+      cloth_physics(*world).build_cloth_springs(0, t, ks, kd);
   world->set_gravity(g);
   return world;
 }
@@ -34,13 +35,13 @@ inline std::unique_ptr<World> cloth_2022() {
       SphereSpec s;
       s.center = Vec3(x, 1.0, z);
       s.radius = 0.5;
-      world->add_sphere(s);
+      cloth_physics(*world).add_sphere(s);
     }
   ClothCollisionSettings c;
   c.cloth_restitution = 0.0;
   c.sphere_restitution = 0.8;
   c.tolerance = 0.01;
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   return world;
 }
 
@@ -59,11 +60,11 @@ inline std::unique_ptr<World> cloth_2024() {
                 {0.5, Vec3(2.0, 0.0, 0.0)},
                 {1.0, Vec3(-2.0, 0.0, 0.0)},
                 {1.5, Vec3::Zero()}};
-  world->add_sphere(s);
+  cloth_physics(*world).add_sphere(s);
   ClothCollisionSettings c;
   c.cloth_restitution = 0.0;
   c.tolerance = 0.01;
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   return world;
 }
 

@@ -9,6 +9,7 @@
 #include "cloth_worlds.hpp"
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/friction.hpp"
+#include "jelly/cloth_physics.hpp"
 
 namespace jelly {
 namespace {
@@ -22,7 +23,7 @@ std::unique_ptr<World> far_cloth_world(const TaskTable& tasks) {
   spec.n = 2;
   spec.size = 0.1;
   spec.center = Vec3(0.0, -100.0, 0.0);
-  world->add_cloth(spec);
+  cloth_physics(*world).add_cloth(spec);
   return world;
 }
 
@@ -33,19 +34,19 @@ TEST(SpherePairs, EqualSpheresHeadOnAtPlusMinusOneLeaveAtMinusPlusPointEight) {
   a.velocity = Vec3(1.0, 0.0, 0.0);
   b.center = Vec3(0.5, 0.0, 0.0);
   b.velocity = Vec3(-1.0, 0.0, 0.0);
-  world->add_sphere(a);
-  world->add_sphere(b);
+  cloth_physics(*world).add_sphere(a);
+  cloth_physics(*world).add_sphere(b);
   ClothCollisionSettings c;  // e_sphere 0.8 (decision 10)
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   world->apply_collisions(world->state());
-  EXPECT_NEAR(world->sphere(0).velocity.x(), -0.8, 1e-15);
-  EXPECT_NEAR(world->sphere(1).velocity.x(), 0.8, 1e-15);
+  EXPECT_NEAR(cloth_physics(*world).sphere(0).velocity.x(), -0.8, 1e-15);
+  EXPECT_NEAR(cloth_physics(*world).sphere(1).velocity.x(), 0.8, 1e-15);
   EXPECT_EQ(world->counters().sphere_pair_tests, 1);
   EXPECT_EQ(world->counters().impulses, 1);
   // Leaving: a second pass does nothing.
   world->apply_collisions(world->state());
   EXPECT_EQ(world->counters().impulses, 1);
-  EXPECT_EQ(world->kinematic_work(), 0.0);  // no kinematic sphere: no work
+  EXPECT_EQ(cloth_physics(*world).kinematic_work(), 0.0);  // no kinematic sphere: no work
 }
 
 TEST(SpherePairs, TwoKinematicSpheresPassThroughEachOther) {
@@ -56,14 +57,14 @@ TEST(SpherePairs, TwoKinematicSpheresPassThroughEachOther) {
   b.schedule = {{0.0, Vec3(-1.0, 0.0, 0.0)}};
   a.center = Vec3(-0.5, 0.0, 0.0);
   b.center = Vec3(0.5, 0.0, 0.0);
-  world->add_sphere(a);
-  world->add_sphere(b);
+  cloth_physics(*world).add_sphere(a);
+  cloth_physics(*world).add_sphere(b);
   world->begin_step(0, 0.1);
   world->apply_collisions(world->state());
   world->end_step(0.1);
-  EXPECT_EQ(world->sphere(0).velocity, Vec3(1.0, 0.0, 0.0));
-  EXPECT_EQ(world->sphere(1).velocity, Vec3(-1.0, 0.0, 0.0));
-  EXPECT_NEAR(world->sphere(0).center.x(), -0.4, 1e-15);
+  EXPECT_EQ(cloth_physics(*world).sphere(0).velocity, Vec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(cloth_physics(*world).sphere(1).velocity, Vec3(-1.0, 0.0, 0.0));
+  EXPECT_NEAR(cloth_physics(*world).sphere(0).center.x(), -0.4, 1e-15);
   EXPECT_EQ(world->counters().impulses, 0);
 }
 
@@ -75,13 +76,13 @@ TEST(SpherePairs, ADynamicSphereBouncesOffAKinematicOneWhoseWorkIsCounted) {
   k.center = Vec3(-0.5, 0.0, 0.0);
   d.center = Vec3(0.5, 0.0, 0.0);
   d.radius = 0.5;
-  world->add_sphere(k);
-  world->add_sphere(d);
+  cloth_physics(*world).add_sphere(k);
+  cloth_physics(*world).add_sphere(d);
   world->begin_step(0, 1e-4);
   world->apply_collisions(world->state());
   // e = 0.8 against an immovable wall moving at +1: the dynamic sphere leaves at 1.8 m/s.
-  EXPECT_NEAR(world->sphere(1).velocity.x(), 1.8, 1e-15);
-  EXPECT_NEAR(world->kinematic_work(), 0.5 * 125.0 * 1.8 * 1.8, 1e-10);
+  EXPECT_NEAR(cloth_physics(*world).sphere(1).velocity.x(), 1.8, 1e-15);
+  EXPECT_NEAR(cloth_physics(*world).kinematic_work(), 0.5 * 125.0 * 1.8 * 1.8, 1e-10);
 }
 
 // Records the order in which the framework offers pairs to the tasks.
@@ -108,12 +109,12 @@ TEST(ClothCollisions, SphereSpherePairsFirstThenEachSphereOverEveryParticleInInd
   spec.n = 2;
   spec.size = 1.0;  // particles at x = ±0.5: (0,0) (0,1) at −0.5, (1,0) (1,1) at +0.5
   spec.pin_sets = {};
-  world->add_cloth(spec);
+  cloth_physics(*world).add_cloth(spec);
   for (double r : {1.1, 1.2, 1.3}) {  // every particle within reach of every sphere
     SphereSpec s;
     s.radius = r;
     s.center = Vec3(0.0, -0.2, 0.0);
-    world->add_sphere(s);
+    cloth_physics(*world).add_sphere(s);
   }
   world->apply_collisions(world->state());
   const std::vector<std::string> expected = {
@@ -133,13 +134,13 @@ TEST(ClothCollisions, ParticleMeetingAKinematicSphereWithEZeroLeavesWithItsNorma
   spec.center = Vec3(0.0, 1.005, 0.0);
   spec.pin_sets = {};
   spec.velocity = Vec3(0.3, -2.0, 0.1);
-  w->add_cloth(spec);
+  cloth_physics(*w).add_cloth(spec);
   SphereSpec s;
   s.kinematic = true;
   s.center = Vec3(1.0, 0.0, 1.0);  // under particle (1, 1), 1.005 below it
   s.radius = 1.0;
   s.schedule = {{0.0, Vec3(0.0, 0.5, 0.0)}};
-  w->add_sphere(s);
+  cloth_physics(*w).add_sphere(s);
   w->begin_step(0, 1e-4);
   w->apply_collisions(w->state());
   const Vec3 v = w->state().v.col(3);
@@ -147,8 +148,8 @@ TEST(ClothCollisions, ParticleMeetingAKinematicSphereWithEZeroLeavesWithItsNorma
   EXPECT_NEAR(v.x(), 0.3, 1e-15);  // tangential velocity kept (μ = 0)
   EXPECT_NEAR(v.z(), 0.1, 1e-15);
   EXPECT_EQ(Vec3(w->state().v.col(0)), spec.velocity);  // far from the sphere: untouched
-  EXPECT_EQ(w->sphere(0).velocity, Vec3(0.0, 0.5, 0.0));
-  EXPECT_NEAR(w->kinematic_work(), 0.5 * (0.5 * 0.5 - 2.0 * 2.0), 1e-12);
+  EXPECT_EQ(cloth_physics(*w).sphere(0).velocity, Vec3(0.0, 0.5, 0.0));
+  EXPECT_NEAR(cloth_physics(*w).kinematic_work(), 0.5 * (0.5 * 0.5 - 2.0 * 2.0), 1e-12);
 }
 
 TEST(ClothCollisions, FrictionSlowsButNeverReversesTheSliding) {
@@ -160,15 +161,15 @@ TEST(ClothCollisions, FrictionSlowsButNeverReversesTheSliding) {
     spec.center = Vec3(0.0, 1.005, 0.0);
     spec.pin_sets = {};
     spec.velocity = Vec3(0.3, -2.0, 0.0);
-    w->add_cloth(spec);
+    cloth_physics(*w).add_cloth(spec);
     SphereSpec s;
     s.kinematic = true;
     s.center = Vec3(1.0, 0.0, 1.0);
     s.radius = 1.0;
-    w->add_sphere(s);
+    cloth_physics(*w).add_sphere(s);
     ClothCollisionSettings c;
     c.friction = mu;
-    w->set_cloth_collisions(c);
+    cloth_physics(*w).set_cloth_collisions(c);
     w->begin_step(0, 1e-4);
     w->apply_collisions(w->state());
     const Vec3 v = w->state().v.col(3);
@@ -187,14 +188,14 @@ TEST(ClothCollisions, PushOutMovesFreeParticlesOutAndNeverAPinOrASphere) {
   spec.center = Vec3(0.0, 0.9, 0.0);  // the middle particle 0.1 inside a unit sphere
   spec.pin_sets = {};
   spec.pins = {{0, 0}};
-  w->add_cloth(spec);
+  cloth_physics(*w).add_cloth(spec);
   SphereSpec s;
   s.center = Vec3(-0.5, 0.0, -0.5);  // under the pinned corner (0, 0): it is inside too
   s.radius = 1.0;
-  w->add_sphere(s);
+  cloth_physics(*w).add_sphere(s);
   ClothCollisionSettings c;
   c.push_out = 0.5;
-  w->set_cloth_collisions(c);
+  cloth_physics(*w).set_cloth_collisions(c);
   const State before = w->state();
   w->apply_collisions(w->state());
   EXPECT_EQ(Vec3(w->state().x.col(0)), Vec3(before.x.col(0)));  // the pin

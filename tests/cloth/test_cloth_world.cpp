@@ -9,6 +9,7 @@
 
 #include "cloth_worlds.hpp"
 #include "jelly/a2/forces.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/spring_pass.hpp"
 
 namespace jelly {
@@ -39,7 +40,7 @@ TEST_P(EveryIntegrator, PinsStayBitwiseWhereTheyStartedOnCloth2022) {
   const bool slow = kind == IntegratorKind::BackwardEuler;
   ASSERT_EQ(sim.run_until(slow ? 0.05 : 0.8), StepResult::Ok);  // the cloth catches the spheres
   for (int p : {0, 24, 600, 624}) {
-    ASSERT_TRUE(sim.world().is_pinned(p));
+    ASSERT_TRUE(cloth_physics(sim.world()).is_pinned(p));
     EXPECT_EQ(Vec3(sim.state().x.col(p)), Vec3(start.x.col(p))) << "pin " << p;
     EXPECT_EQ(Vec3(sim.state().v.col(p)), Vec3::Zero()) << "pin " << p;
   }
@@ -53,11 +54,12 @@ TEST_P(EveryIntegrator, PinsStayBitwiseWhereTheyStartedOnCloth2022) {
 TEST_P(EveryIntegrator, PinsStayBitwiseThroughTheSpheresImpactAndThePushOut) {
   const IntegratorKind kind = GetParam();
   auto world = cloth_2024();
-  ClothCollisionSettings c = world->cloth_collisions();
+  ClothCollisionSettings c = cloth_physics(*world).cloth_collisions();
   c.push_out = 1.0;
   c.friction = 0.5;
-  world->set_cloth_collisions(c);
-  world->set_pinned(12, true);  // a pin on the sphere's path: (0, 12), the middle of an edge
+  cloth_physics(*world).set_cloth_collisions(c);
+  cloth_physics(*world).set_pinned(
+      12, true);  // a pin on the sphere's path: (0, 12), the middle of an edge
   Simulator sim(std::move(world), Simulator::Options(kind, 1e-4));
   const State start = sim.state();
   const bool slow = kind == IntegratorKind::BackwardEuler;
@@ -104,12 +106,12 @@ TEST(ClothWorld, MomentumIsConservedToRoundingThroughImpulsesAndSprings) {
     s.center = c;
     s.radius = 0.5;
     s.velocity = Vec3(0.0, 2.0 * (c.y() < 0 ? 1.0 : -1.0), 0.0);
-    world->add_sphere(s);
+    cloth_physics(*world).add_sphere(s);
   }
   ClothCollisionSettings cc;
   cc.cloth_restitution = 0.3;
   cc.friction = 0.4;
-  world->set_cloth_collisions(cc);
+  cloth_physics(*world).set_cloth_collisions(cc);
   Simulator sim(std::move(world), Simulator::Options(IntegratorKind::RK4, 1e-4));
   const Vec3 p0 = momentum(sim.world(), sim.state());
   double scale = 0.0;
@@ -130,7 +132,7 @@ TEST(ClothWorld, AccelerationIsGPlusWTimesForceAndZeroForPins) {
   SphereSpec s;
   s.center = Vec3(0.0, 5.0, 0.0);
   s.velocity = Vec3(0.0, 0.0, 3.0);
-  world->add_sphere(s);
+  cloth_physics(*world).add_sphere(s);
   State st = world->state();
   st.x(1, 4) += 0.1;  // the middle particle off its rest
   Vec3Array a;
@@ -145,7 +147,7 @@ TEST(ClothWorld, AccelerationIsGPlusWTimesForceAndZeroForPins) {
     EXPECT_LT((Vec3(a.col(p)) - expected).norm(), 1e-12) << p;
   }
   EXPECT_EQ(Vec3(a.col(9)), Vec3(0.0, -9.8, 0.0));
-  EXPECT_EQ(world->sphere_particle(0), 9);
+  EXPECT_EQ(cloth_physics(*world).sphere_particle(0), 9);
   EXPECT_EQ(world->masses()[9], 125.0);  // 1000·r³
 }
 
@@ -183,17 +185,17 @@ TEST(ClothWorld, KinematicSphereFollowsItsScheduleAndTheViewersDrive) {
   // t_n = n·h: the entry at 0.5 s applies from step 5000 on, so after 0.5 + 0.25 s the sphere
   // has moved 2 m/s × 0.25 s.
   ASSERT_EQ(sim.run_until(0.75), StepResult::Ok);
-  EXPECT_NEAR(sim.world().sphere(0).center.x(), 0.5, 1e-12);
-  EXPECT_EQ(sim.world().sphere(0).velocity, Vec3(2.0, 0.0, 0.0));
-  EXPECT_EQ(sim.world().sphere(0).inverse_mass, 0.0);
-  EXPECT_TRUE(sim.world().sphere_is_kinematic(0));
-  EXPECT_EQ(sim.world().sphere_particle(0), -1);
-  sim.world().drive_sphere(0, Vec3(0.0, 0.0, -1.0));
+  EXPECT_NEAR(cloth_physics(sim.world()).sphere(0).center.x(), 0.5, 1e-12);
+  EXPECT_EQ(cloth_physics(sim.world()).sphere(0).velocity, Vec3(2.0, 0.0, 0.0));
+  EXPECT_EQ(cloth_physics(sim.world()).sphere(0).inverse_mass, 0.0);
+  EXPECT_TRUE(cloth_physics(sim.world()).sphere_is_kinematic(0));
+  EXPECT_EQ(cloth_physics(sim.world()).sphere_particle(0), -1);
+  cloth_physics(sim.world()).drive_sphere(0, Vec3(0.0, 0.0, -1.0));
   ASSERT_EQ(sim.run_until(0.85), StepResult::Ok);
-  EXPECT_NEAR(sim.world().sphere(0).center.z(), -0.1, 1e-12);
-  EXPECT_NEAR(sim.world().sphere(0).center.x(), 0.5, 1e-12);
-  EXPECT_THROW(sim.world().drive_sphere(1, Vec3::Zero()), std::out_of_range);
-  EXPECT_THROW(sim.world().set_pinned(625, true), std::out_of_range);
+  EXPECT_NEAR(cloth_physics(sim.world()).sphere(0).center.z(), -0.1, 1e-12);
+  EXPECT_NEAR(cloth_physics(sim.world()).sphere(0).center.x(), 0.5, 1e-12);
+  EXPECT_THROW(cloth_physics(sim.world()).drive_sphere(1, Vec3::Zero()), std::out_of_range);
+  EXPECT_THROW(cloth_physics(sim.world()).set_pinned(625, true), std::out_of_range);
 }
 
 TEST(ClothWorld, PinsToggledByTheViewerHoldOrFreeTheirParticle) {
@@ -201,15 +203,15 @@ TEST(ClothWorld, PinsToggledByTheViewerHoldOrFreeTheirParticle) {
   spec.n = 5;
   Simulator sim(cloth_world(spec, 25000.0, 750.0), Simulator::Options(IntegratorKind::RK4, 1e-4));
   World& w = sim.world();
-  w.set_pinned(0, false);  // a corner let go: it falls
-  w.set_pinned(12, true);  // the middle held where it is
+  cloth_physics(w).set_pinned(0, false);  // a corner let go: it falls
+  cloth_physics(w).set_pinned(12, true);  // the middle held where it is
   const Vec3 corner = w.state().x.col(0), middle = w.state().x.col(12);
   ASSERT_EQ(sim.run_until(0.05), StepResult::Ok);
   EXPECT_LT(w.state().x(1, 0), corner.y() - 1e-3);
   EXPECT_EQ(Vec3(w.state().x.col(12)), middle);
   EXPECT_EQ(w.inverse_masses()[0], 1.0);
   // Pinning a moving particle stops it at once.
-  w.set_pinned(0, true);
+  cloth_physics(w).set_pinned(0, true);
   EXPECT_EQ(Vec3(w.state().v.col(0)), Vec3::Zero());
   const Vec3 held = w.state().x.col(0);
   ASSERT_EQ(sim.run_until(0.1), StepResult::Ok);
@@ -219,22 +221,23 @@ TEST(ClothWorld, PinsToggledByTheViewerHoldOrFreeTheirParticle) {
 TEST(ClothWorld, AClothWorldHoldsClothsThenSpheresOnly) {
   World cube_world(a2::task_table());
   cube_world.add_particles(Vec3Array::Zero(3, 1), Vec3Array::Zero(3, 1), 1.0);
-  EXPECT_THROW(cube_world.add_cloth(ClothSpec{}), std::logic_error);
-  EXPECT_THROW(cube_world.add_sphere(SphereSpec{}), std::logic_error);
+  EXPECT_THROW(cloth_physics(cube_world).add_cloth(ClothSpec{}), std::logic_error);
+  EXPECT_THROW(cloth_physics(cube_world).add_sphere(SphereSpec{}), std::logic_error);
   World w(a2::task_table());
-  w.add_cloth(ClothSpec{});
+  cloth_physics(w).add_cloth(ClothSpec{});
   EXPECT_THROW(w.add_terrain(Terrain{}), std::logic_error);
-  w.add_sphere(SphereSpec{});
-  EXPECT_THROW(w.add_cloth(ClothSpec{}), std::logic_error);  // cloths come first
-  EXPECT_THROW(w.build_cloth_springs(0, SpringType::ShearBody, 1.0, 0.0), std::invalid_argument);
+  cloth_physics(w).add_sphere(SphereSpec{});
+  EXPECT_THROW(cloth_physics(w).add_cloth(ClothSpec{}), std::logic_error);  // cloths come first
+  EXPECT_THROW(cloth_physics(w).build_cloth_springs(0, SpringType::ShearBody, 1.0, 0.0),
+               std::invalid_argument);
   ClothCollisionSettings bad;
   bad.push_out = 1.5;
-  EXPECT_THROW(w.set_cloth_collisions(bad), std::invalid_argument);
+  EXPECT_THROW(cloth_physics(w).set_cloth_collisions(bad), std::invalid_argument);
   // A table without the grid builders (A1's) cannot build a cloth's springs: a clear error.
   World empty{TaskTable{}};
-  empty.add_cloth(ClothSpec{});
+  cloth_physics(empty).add_cloth(ClothSpec{});
   try {
-    empty.build_cloth_springs(0, SpringType::Structural, 1.0, 0.0);
+    cloth_physics(empty).build_cloth_springs(0, SpringType::Structural, 1.0, 0.0);
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("add_grid_structural_springs"), std::string::npos);
@@ -262,7 +265,7 @@ TEST(Schedule, EdgeCases) {
   SphereSpec bad;
   bad.kinematic = true;
   bad.schedule = {{0.5, Vec3::Zero()}, {0.5, Vec3::Zero()}};
-  EXPECT_THROW(world->add_sphere(bad), std::invalid_argument);
+  EXPECT_THROW(cloth_physics(*world).add_sphere(bad), std::invalid_argument);
 }
 
 // Decision 11: no false alarm on the course scenes under the four course integrators at h = 1e-4.
@@ -280,7 +283,8 @@ TEST_P(NoFalseAlarm, CourseScenesRunTheirDurationWithoutTheDetectorFiring) {
   double worst = -1e300;
   const StepResult r = sim.run_until(duration, [&](const Simulator& s) {
     if (s.steps() % 100 == 0)
-      worst = std::max(worst, (s.energy().total() - s.world().kinematic_work() - e0) / margin);
+      worst = std::max(
+          worst, (s.energy().total() - cloth_physics(s.world()).kinematic_work() - e0) / margin);
   });
   ASSERT_EQ(r, StepResult::Ok) << (sim.instability() ? sim.instability()->message() : "");
   EXPECT_GT(sim.world().counters().impulses, 1000);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_physics.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/world.hpp"
 
@@ -146,7 +147,8 @@ TEST(World, CubeSpringsGetTheDegenerateLengthOfTheirSpacing) {
   CubeSpec spec;
   spec.n = 4;
   spec.edge = 3.0;  // spacing 1 m
-  w.build_cube_springs(w.add_cube(spec), SpringType::Structural, 2000.0, 60.0);
+  cube_physics(w).build_cube_springs(cube_physics(w).add_cube(spec), SpringType::Structural, 2000.0,
+                                     60.0);
   ASSERT_EQ(w.spring_groups().size(), 1u);
   EXPECT_EQ(w.spring_groups()[0].degenerate_length, degenerate_length_for(1.0));
   EXPECT_EQ(w.spring_groups()[0].springs.size(), 3u * 4u * 4u * 3u);

@@ -37,6 +37,7 @@
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/task_table.hpp"
 #include "jelly/cloth.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/cube.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/spheres.hpp"
@@ -447,26 +448,26 @@ std::unique_ptr<World> cloth_2022_world() {
   auto world = std::make_unique<World>(a2::task_table());
   ClothSpec spec = course_cloth(static_cast<int>(scene_number("cloth-2022", "body.n")));
   spec.air_drag = scene_number("cloth-2022", "body.air_drag");
-  const int cloth = world->add_cloth(spec);
+  const int cloth = cloth_physics(*world).add_cloth(spec);
   const std::pair<SpringType, const char*> types[] = {{SpringType::Structural, "structural"},
                                                       {SpringType::Shear, "shear"},
                                                       {SpringType::Bending, "bending"}};
   for (const auto& [type, name] : types)
-    world->build_cloth_springs(cloth, type,
-                               scene_number("cloth-2022", std::string("springs.") + name + ".ks"),
-                               scene_number("cloth-2022", std::string("springs.") + name + ".kd"));
+    cloth_physics(*world).build_cloth_springs(
+        cloth, type, scene_number("cloth-2022", std::string("springs.") + name + ".ks"),
+        scene_number("cloth-2022", std::string("springs.") + name + ".kd"));
   if (const toml::array* spheres = t["sphere"].as_array())
     for (const toml::node& n : *spheres) {
       SphereSpec s;
       s.center = scene_vec3(toml::node_view<const toml::node>(n.as_table()->get("center")));
       s.radius = n.as_table()->at_path("radius").value<double>().value_or(std::nan(""));
-      world->add_sphere(s);
+      cloth_physics(*world).add_sphere(s);
     }
   ClothCollisionSettings c;
   c.cloth_restitution = scene_number("cloth-2022", "collision.cloth_restitution");
   c.sphere_restitution = scene_number("cloth-2022", "collision.sphere_restitution");
   c.tolerance = scene_number("cloth-2022", "collision.tolerance");
-  world->set_cloth_collisions(c);
+  cloth_physics(*world).set_cloth_collisions(c);
   world->set_gravity(scene_vec3(t.at_path("gravity.acceleration")));
   return world;
 }

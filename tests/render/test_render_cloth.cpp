@@ -19,6 +19,7 @@
 
 #include "jelly/a2/task_table.hpp"
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/frame.hpp"
@@ -43,15 +44,15 @@ constexpr int kW = 1280, kH = 720;
 std::unique_ptr<World> cloth_2022() {
   auto w = std::make_unique<World>(a2::task_table());
   ClothSpec c;  // n 25, L 4, m 1, corners pinned
-  w->add_cloth(c);
+  cloth_physics(*w).add_cloth(c);
   for (SpringType t : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-    w->build_cloth_springs(0, t, 25000.0, 750.0);
+    cloth_physics(*w).build_cloth_springs(0, t, 25000.0, 750.0);
   for (double x : {-0.75, 0.75})
     for (double z : {-0.75, 0.75}) {
       SphereSpec s;
       s.center = Vec3(x, 1.0, z);
       s.radius = 0.5;
-      w->add_sphere(s);
+      cloth_physics(*w).add_sphere(s);
     }
   w->set_gravity(Vec3(0.0, -9.8, 0.0));
   return w;
@@ -62,12 +63,12 @@ std::unique_ptr<World> cloth_2024() {
   auto w = std::make_unique<World>(a2::task_table());
   ClothSpec c;
   c.center = Vec3(0.0, 1.0, 0.0);
-  w->add_cloth(c);
-  w->build_cloth_springs(0, SpringType::Structural, 20000.0, 750.0);
+  cloth_physics(*w).add_cloth(c);
+  cloth_physics(*w).build_cloth_springs(0, SpringType::Structural, 20000.0, 750.0);
   SphereSpec s;
   s.kinematic = true;
   s.radius = 1.0;
-  w->add_sphere(s);
+  cloth_physics(*w).add_sphere(s);
   return w;
 }
 
@@ -120,11 +121,11 @@ TEST(ClothMeshes, DrawablesFollowTheClothAndTheSpheres) {
   OrbitCamera cam;
   renderer.draw(*d, *w, cam, DrawOptions{}, Viewport{0, 0, 640, 360});
   for (int i = 0; i < 4; ++i) {
-    const SphereBody s = w->sphere(i);
+    const SphereBody s = cloth_physics(*w).sphere(i);
     for (const auto& p : cloth->spheres()[static_cast<std::size_t>(i)].mesh().positions)
       EXPECT_NEAR((p.cast<double>() - s.center).norm(), s.radius, 1e-5);
   }
-  const ClothGrid& grid = w->cloths().front();
+  const ClothGrid& grid = cloth_physics(*w).cloths().front();
   EXPECT_EQ(cloth->cloth_surfaces()[0].mesh().positions[7], grid.position(0, 7).cast<float>());
 }
 
@@ -232,8 +233,8 @@ int count_hue(const Image& img, Hue hue) {
 /// Whether the segment from p to the eye passes through one of the world's spheres.
 bool hidden_by_a_sphere(const World& w, const Vec3& p, const Vec3& eye, double margin = 0.03) {
   const Vec3 d = eye - p;
-  for (int i = 0; i < w.sphere_count(); ++i) {
-    const SphereBody s = w.sphere(i);
+  for (int i = 0; i < cloth_physics(w).sphere_count(); ++i) {
+    const SphereBody s = cloth_physics(w).sphere(i);
     const double t = std::clamp((s.center - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
     if ((p + t * d - s.center).norm() < s.radius + margin) return true;
   }
@@ -274,7 +275,7 @@ class HeadlessCloth : public ::testing::Test {
   /// Cloth points away from the pins, every third of the grid, that no sphere hides.
   std::vector<Vec3> visible_cloth_points() const {
     std::vector<Vec3> out;
-    const ClothGrid& g = world_->cloths().front();
+    const ClothGrid& g = cloth_physics(*world_).cloths().front();
     for (int i = 2; i < g.n() - 2; i += 3)
       for (int k = 2; k < g.n() - 2; k += 3) {
         const Vec3 p = world_->state().x.col(g.index(i, k));
@@ -309,7 +310,7 @@ TEST_F(HeadlessCloth, FrontFromAboveBackFromBelowAndTheSpheres) {
   expect_cloth(above, Hue::ClothFront);
   // The four dynamic spheres: the point of each nearest the camera.
   for (int i = 0; i < 4; ++i) {
-    const SphereBody s = world_->sphere(i);
+    const SphereBody s = cloth_physics(*world_).sphere(i);
     const Vec3 near = s.center + s.radius * 0.9 * (camera_.eye() - s.center).normalized();
     EXPECT_EQ(hue_at(above, camera_, near), Hue::Dynamic)
         << "sphere " << i << ": " << pixel_at(above, camera_, near);
@@ -325,7 +326,7 @@ TEST_F(HeadlessCloth, FrontFromAboveBackFromBelowAndTheSpheres) {
 
 TEST_F(HeadlessCloth, PinnedCornersAreMarkedAndAFreedOneIsNot) {
   use(cloth_2022());
-  const ClothGrid& g = world_->cloths().front();
+  const ClothGrid& g = cloth_physics(*world_).cloths().front();
   const std::array<int, 4> corners = {g.index(0, 0), g.index(0, g.n() - 1), g.index(g.n() - 1, 0),
                                       g.index(g.n() - 1, g.n() - 1)};
   const Image pinned = render("cloth-pins.png");
@@ -336,7 +337,7 @@ TEST_F(HeadlessCloth, PinnedCornersAreMarkedAndAFreedOneIsNot) {
     EXPECT_EQ(hue_at(pinned, camera_, world_->state().x.col(p)), Hue::Pin) << "particle " << p;
   }
   ASSERT_GE(visible.size(), 2u);
-  world_->set_pinned(visible[0], false);
+  cloth_physics(*world_).set_pinned(visible[0], false);
   const Image freed = render("cloth-pin-freed.png");
   EXPECT_NE(hue_at(freed, camera_, world_->state().x.col(visible[0])), Hue::Pin);
   EXPECT_EQ(hue_at(freed, camera_, world_->state().x.col(visible[1])), Hue::Pin);
@@ -370,7 +371,7 @@ TEST_F(HeadlessCloth, TheKinematicSphereHasItsOwnColour) {
   use(cloth_2024());
   camera_.pitch_degrees = -30.0;  // from below: the sphere under the cloth
   const Image below = render("cloth-2024-below.png");
-  const SphereBody s = world_->sphere(0);
+  const SphereBody s = cloth_physics(*world_).sphere(0);
   EXPECT_EQ(
       hue_at(below, camera_, s.center + 0.9 * s.radius * (camera_.eye() - s.center).normalized()),
       Hue::Kinematic);
@@ -398,10 +399,10 @@ TEST(ClothReplay, TheKinematicSphereIsDrawnWhereItWasRecorded) {
     Renderer renderer(created.backend->gl(), 0);
     const std::unique_ptr<World> world =
         build_world(*scene.scene, session::tasks_for(*scene.scene));
-    ASSERT_EQ(world->sphere_count(), 1);
-    ASSERT_TRUE(world->sphere_is_kinematic(0));
+    ASSERT_EQ(cloth_physics(*world).sphere_count(), 1);
+    ASSERT_TRUE(cloth_physics(*world).sphere_is_kinematic(0));
     start = world->state().x;
-    radius = world->sphere(0).radius;
+    radius = cloth_physics(*world).sphere(0).radius;
     camera.frame(renderer.make_drawable(*world)->bounds(), double(w) / h);
   }
   // Frame 0: the sphere where the scene starts it (under the cloth); frame 1: lifted above it.

@@ -7,6 +7,7 @@
 
 #include "jelly/a2/task_table.hpp"
 #include "jelly/bodies/cloth/view/cloth_controls.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/render/captions.hpp"
 #include "jelly/simulator.hpp"
 
@@ -23,19 +24,19 @@ std::unique_ptr<World> cloth_world(bool spheres) {
   ClothSpec c;
   c.n = 5;
   c.size = 1.0;
-  w->add_cloth(c);
-  w->build_cloth_springs(0, SpringType::Structural, 100.0, 1.0);
+  cloth_physics(*w).add_cloth(c);
+  cloth_physics(*w).build_cloth_springs(0, SpringType::Structural, 100.0, 1.0);
   if (spheres) {
     SphereSpec dynamic;
     dynamic.center = Vec3(0.0, 2.0, 0.0);
     dynamic.radius = 0.2;
-    w->add_sphere(dynamic);
+    cloth_physics(*w).add_sphere(dynamic);
     SphereSpec kinematic;
     kinematic.kinematic = true;
     kinematic.center = Vec3(0.0, -1.0, 0.0);
     kinematic.radius = 0.3;
     kinematic.schedule = {{0.0, Vec3(0.0, 0.0, 1.0)}};
-    w->add_sphere(kinematic);
+    cloth_physics(*w).add_sphere(kinematic);
   }
   return w;
 }
@@ -52,19 +53,19 @@ TEST(ClothControls, CornersAreTheFourGridCornersInKeyOrder) {
 
 TEST(ClothControls, PinKeysFlipEachCornerAndOnlyIt) {
   auto w = cloth_world(false);
-  const ClothGrid& grid = w->cloths().front();
+  const ClothGrid& grid = cloth_physics(*w).cloths().front();
   for (int corner = 0; corner < 4; ++corner) {
     const int p = corner_particle(grid, corner);
-    ASSERT_TRUE(w->is_pinned(p)) << "the scene pins the corners";
+    ASSERT_TRUE(cloth_physics(*w).is_pinned(p)) << "the scene pins the corners";
     EXPECT_EQ(toggle_corner_pin(*w, corner), std::optional<bool>(false));
-    EXPECT_FALSE(w->is_pinned(p));
+    EXPECT_FALSE(cloth_physics(*w).is_pinned(p));
     for (int other = 0; other < 4; ++other) {
       if (other != corner) {
-        EXPECT_TRUE(w->is_pinned(corner_particle(grid, other)));
+        EXPECT_TRUE(cloth_physics(*w).is_pinned(corner_particle(grid, other)));
       }
     }
     EXPECT_EQ(toggle_corner_pin(*w, corner), std::optional<bool>(true));
-    EXPECT_TRUE(w->is_pinned(p));
+    EXPECT_TRUE(cloth_physics(*w).is_pinned(p));
   }
   EXPECT_FALSE(toggle_corner_pin(*w, 4).has_value());
   EXPECT_FALSE(toggle_corner_pin(*w, -1).has_value());
@@ -73,7 +74,7 @@ TEST(ClothControls, PinKeysFlipEachCornerAndOnlyIt) {
 TEST(ClothControls, AFreedCornerFallsAndAPinnedOneStays) {
   Simulator sim(cloth_world(false), Simulator::Options(IntegratorKind::SymplecticEuler, 1e-3));
   sim.world().set_gravity(Vec3(0.0, -9.8, 0.0));
-  const ClothGrid& grid = sim.world().cloths().front();
+  const ClothGrid& grid = cloth_physics(sim.world()).cloths().front();
   const int freed = corner_particle(grid, 0), kept = corner_particle(grid, 3);
   const Vec3 x_freed = sim.state().x.col(freed), x_kept = sim.state().x.col(kept);
   toggle_corner_pin(sim.world(), 0);
@@ -106,19 +107,19 @@ TEST(ClothControls, DriveMovesTheKinematicSphereInsteadOfItsSchedule) {
   Simulator sim(cloth_world(true), Simulator::Options(IntegratorKind::SymplecticEuler, 1e-3));
   World& w = sim.world();
   ASSERT_EQ(first_kinematic_sphere(w), 1);  // the dynamic sphere comes first
-  const Vec3 c0 = w.sphere(1).center;
+  const Vec3 c0 = cloth_physics(w).sphere(1).center;
   sim.run_until(0.1);  // the schedule: +z at 1 m/s
-  EXPECT_NEAR((w.sphere(1).center - c0).z(), 0.1, 1e-9);
-  const Vec3 c1 = w.sphere(1).center;
+  EXPECT_NEAR((cloth_physics(w).sphere(1).center - c0).z(), 0.1, 1e-9);
+  const Vec3 c1 = cloth_physics(w).sphere(1).center;
   ASSERT_TRUE(drive_first_kinematic_sphere(w, Vec3(kDriveSpeed, 0.0, 0.0)));
   sim.run_until(0.2);
-  const Vec3 moved = w.sphere(1).center - c1;
+  const Vec3 moved = cloth_physics(w).sphere(1).center - c1;
   EXPECT_NEAR(moved.x(), kDriveSpeed * 0.1, 1e-9);
   EXPECT_NEAR(moved.z(), 0.0, 1e-12);
   ASSERT_TRUE(drive_first_kinematic_sphere(w, Vec3::Zero()));  // S
-  const Vec3 c2 = w.sphere(1).center;
+  const Vec3 c2 = cloth_physics(w).sphere(1).center;
   sim.run_until(0.3);
-  EXPECT_EQ(w.sphere(1).center, c2);
+  EXPECT_EQ(cloth_physics(w).sphere(1).center, c2);
 }
 
 TEST(ClothControls, NothingToDriveOrPinWithoutACloth) {

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "jelly/body_kind.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/world.hpp"
@@ -358,22 +359,23 @@ class ClothKind final : public BodyKindModule {
     // Cloth contract §1–§4: the cloth, its springs type by type (structural, shear, bending:
     // decision 9's order), the spheres in scene order (it is part of the result), the collision
     // coefficients and gravity. A cloth scene has no terrains (the reader refuses them).
-    const int cloth = world.add_cloth(scene.cloth);
+    ClothPhysics& physics = cloth_physics(world);  // installed in the empty world
+    const int cloth = physics.add_cloth(scene.cloth);
     if (scene.structural.enabled)
-      world.build_cloth_springs(cloth, SpringType::Structural, scene.structural.ks,
-                                scene.structural.kd);
+      physics.build_cloth_springs(cloth, SpringType::Structural, scene.structural.ks,
+                                  scene.structural.kd);
     if (scene.shear.enabled)
-      world.build_cloth_springs(cloth, SpringType::Shear, scene.shear.ks, scene.shear.kd);
+      physics.build_cloth_springs(cloth, SpringType::Shear, scene.shear.ks, scene.shear.kd);
     if (scene.bending.enabled)
-      world.build_cloth_springs(cloth, SpringType::Bending, scene.bending.ks, scene.bending.kd);
-    for (const SphereSpec& sphere : scene.spheres) world.add_sphere(sphere);
-    world.set_cloth_collisions(scene.collisions);
+      physics.build_cloth_springs(cloth, SpringType::Bending, scene.bending.ks, scene.bending.kd);
+    for (const SphereSpec& sphere : scene.spheres) physics.add_sphere(sphere);
+    physics.set_cloth_collisions(scene.collisions);
     world.set_gravity(scene.gravity);
   }
 
   // ----- what a run reports -----
   std::string summary_header(const World& world) const override {
-    return cloth_summary_header(world.sphere_count());
+    return cloth_summary_header(cloth_physics(world).sphere_count());
   }
   void write_summary(CsvWriter& out, const World& world, const State& s, double t) const override {
     out.write_cloth_summary(summarize_cloth(world, s, t));
@@ -382,6 +384,7 @@ class ClothKind final : public BodyKindModule {
   /// (pinned particles included), kinetic energy, largest speed and lowest y, and each sphere.
   std::string end_report(const SceneSpec& scene, const Simulator& sim, double wall) const override {
     const World& w = sim.world();
+    const ClothPhysics& cloth = cloth_physics(w);
     const ClothFrameSummary end = summarize_cloth(w, sim.state(), sim.time());
     const FrameSummary& c = end.cloth;
     std::string out = text_printf(
@@ -392,31 +395,33 @@ class ClothKind final : public BodyKindModule {
         scene.name.c_str(), sim.steps(), std::string(to_string(scene.integrator)).c_str(),
         sim.options().dt, sim.time(), wall,
         wall > 0 ? static_cast<double>(sim.steps()) / wall : 0.0,
-        static_cast<long long>(w.cloth_particle_count()), w.spring_count(), w.sphere_count(),
-        w.sphere_count() == 1 ? "sphere" : "spheres", sim.evaluations(), c.com.x(), c.com.y(),
-        c.com.z(), end.lowest_y, c.max_speed, c.kinetic, c.potential, c.spring);
-    for (int k = 0; k < w.sphere_count(); ++k) {
+        static_cast<long long>(cloth.cloth_particle_count()), w.spring_count(),
+        cloth.sphere_count(), cloth.sphere_count() == 1 ? "sphere" : "spheres", sim.evaluations(),
+        c.com.x(), c.com.y(), c.com.z(), end.lowest_y, c.max_speed, c.kinetic, c.potential,
+        c.spring);
+    for (int k = 0; k < cloth.sphere_count(); ++k) {
       const Vec3& p = end.sphere_centers[static_cast<std::size_t>(k)];
       const Vec3& u = end.sphere_velocities[static_cast<std::size_t>(k)];
       out +=
           text_printf("  sphere %d (%s): centre (%.6f, %.6f, %.6f), velocity (%.6f, %.6f, %.6f)\n",
-                      k, w.sphere_is_kinematic(k) ? "kinematic" : "dynamic", p.x(), p.y(), p.z(),
-                      u.x(), u.y(), u.z());
+                      k, cloth.sphere_is_kinematic(k) ? "kinematic" : "dynamic", p.x(), p.y(),
+                      p.z(), u.x(), u.y(), u.z());
     }
     return out;
   }
   /// Cloth contract §1, §3: the pinned particles and the spheres, in scene order.
   std::string check_report(const SceneSpec& scene, const World& world) const override {
+    const ClothPhysics& cloth = cloth_physics(world);
     long long pinned = 0;
-    for (Eigen::Index i = 0; i < world.cloth_particle_count(); ++i)
-      pinned += world.is_pinned(static_cast<int>(i)) ? 1 : 0;
-    const int spheres = world.sphere_count();
+    for (Eigen::Index i = 0; i < cloth.cloth_particle_count(); ++i)
+      pinned += cloth.is_pinned(static_cast<int>(i)) ? 1 : 0;
+    const int spheres = cloth.sphere_count();
     std::string out =
         text_printf(" (%lld pinned); gravity %s; %d %s", pinned, scene.gravity ? "on" : "off",
                     spheres, spheres == 1 ? "sphere" : "spheres");
-    for (int k = 0; k < world.sphere_count(); ++k) {
-      const SphereBody b = world.sphere(k);
-      if (world.sphere_is_kinematic(k)) {
+    for (int k = 0; k < cloth.sphere_count(); ++k) {
+      const SphereBody b = cloth.sphere(k);
+      if (cloth.sphere_is_kinematic(k)) {
         out += text_printf(" [%d kinematic r %g]", k, b.radius);
       } else {
         out += text_printf(" [%d dynamic r %g, %g kg]", k, b.radius, 1.0 / b.inverse_mass);

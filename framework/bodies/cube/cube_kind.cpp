@@ -1,6 +1,7 @@
 // The cube body kind (assignment A1's jelly): its [body] keys, and how a cube scene becomes a
 // World (contract §1-§3). Registered by body.cmake.
 #include "jelly/body_kind.hpp"
+#include "jelly/cube_physics.hpp"
 #include "jelly/world.hpp"
 #include "param_rows.hpp"
 
@@ -70,17 +71,18 @@ class CubeKind final : public BodyKindModule {
   std::string_view stability_reason() const override { return "since contact stiffens the cube"; }
 
   void build(const SceneSpec& scene, World& world) const override {
-    const int cube = world.add_cube(scene.cube);
+    CubePhysics& physics = cube_physics(world);  // the cube's lattices, the default physics' rest
+    const int cube = physics.add_cube(scene.cube);
     if (scene.structural.enabled)
-      world.build_cube_springs(cube, SpringType::Structural, scene.structural.ks,
-                               scene.structural.kd);
+      physics.build_cube_springs(cube, SpringType::Structural, scene.structural.ks,
+                                 scene.structural.kd);
     if (scene.shear.enabled)
-      world.build_cube_springs(cube, SpringType::Shear, scene.shear.ks, scene.shear.kd);
+      physics.build_cube_springs(cube, SpringType::Shear, scene.shear.ks, scene.shear.kd);
     if (scene.shear_body.enabled)
-      world.build_cube_springs(cube, SpringType::ShearBody, scene.shear_body.ks,
-                               scene.shear_body.kd);
+      physics.build_cube_springs(cube, SpringType::ShearBody, scene.shear_body.ks,
+                                 scene.shear_body.kd);
     if (scene.bending.enabled)
-      world.build_cube_springs(cube, SpringType::Bending, scene.bending.ks, scene.bending.kd);
+      physics.build_cube_springs(cube, SpringType::Bending, scene.bending.ks, scene.bending.kd);
     world.set_gravity(scene.gravity);
     for (const Terrain& t : scene.terrains) world.add_terrain(t);
   }

@@ -1,4 +1,5 @@
 #include "jelly/recorder.hpp"
+#include "jelly/cloth_physics.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -34,7 +35,7 @@ ClothFrameSummary summarize_cloth(const World& w, const State& s, double t) {
   f.time = t;
   const Eigen::VectorXd& m = w.masses();
   const Vec3 g = w.gravity().value_or(Vec3::Zero());
-  const Eigen::Index n = std::min<Eigen::Index>(w.cloth_particle_count(), s.size());
+  const Eigen::Index n = std::min<Eigen::Index>(cloth_physics(w).cloth_particle_count(), s.size());
   double total = 0.0;
   out.lowest_y = n > 0 ? s.x(1, 0) : 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -47,13 +48,13 @@ ClothFrameSummary summarize_cloth(const World& w, const State& s, double t) {
   }
   if (total > 0.0) f.com /= total;
   f.spring = w.energy(s).spring;
-  for (int k = 0; k < w.sphere_count(); ++k) {
-    const int p = w.sphere_particle(k);
+  for (int k = 0; k < cloth_physics(w).sphere_count(); ++k) {
+    const int p = cloth_physics(w).sphere_particle(k);
     if (p >= 0 && p < s.size()) {  // dynamic: part of the integrated state
       out.sphere_centers.emplace_back(s.x.col(p));
       out.sphere_velocities.emplace_back(s.v.col(p));
     } else {
-      const SphereBody b = w.sphere(k);
+      const SphereBody b = cloth_physics(w).sphere(k);
       out.sphere_centers.push_back(b.center);
       out.sphere_velocities.push_back(b.velocity);
     }

@@ -6,27 +6,11 @@
 
 namespace jelly {
 
-namespace {
-
-// The detector's settings for a world: A1's as given; on a cloth world the floor of the margin is
-// 1e-3·Σm·|g|·L (cloth decision 11: Σm over the cloth and the dynamic spheres, L the cloth's side).
-StabilityMonitor::Config monitor_config(const World& world, StabilityMonitor::Config config) {
-  if (!world.has_cloth()) return config;
-  double side = 0.0;
-  for (const ClothGrid& c : world.cloths())
-    side = std::max(side, c.spacing() * static_cast<double>(c.n() - 1));
-  const double g = world.gravity() ? world.gravity()->norm() : 0.0;
-  const double floor = 1e-3 * world.masses().sum() * g * side;
-  if (floor > 0.0) config.absolute_floor = floor;
-  return config;
-}
-
-}  // namespace
-
 Simulator::Simulator(std::unique_ptr<World> world, Options options)
     : world_(std::move(world)),
       options_(options),
-      monitor_(world_ ? monitor_config(*world_, options.monitor) : options.monitor) {
+      // The detector's settings are the world's physics' (a kind may set the margin's floor).
+      monitor_(world_ ? world_->physics().detector_config(options.monitor) : options.monitor) {
   if (!world_) throw std::invalid_argument("Simulator needs a world");
   if (!(options_.dt > 0.0) || !std::isfinite(options_.dt))
     throw std::invalid_argument("Simulator: the step size must be a finite number > 0");
@@ -65,16 +49,16 @@ void Simulator::integrate() {
 StepResult Simulator::step() {
   if (instability_) return StepResult::Unstable;
   State& s = world_->state();
-  world_->begin_step(steps_, options_.dt);  // kinematic spheres take u(t_n) (cloth §5)
+  world_->begin_step(steps_, options_.dt);  // what the physics moves itself takes its velocity
   world_->apply_collisions(s);              // §6 step 1
   integrate();                              // §6 step 2
-  world_->end_step(options_.dt);            // kinematic spheres move (cloth §5 step 3)
+  world_->end_step(options_.dt);            // what the physics moves itself moves
   ++steps_;
   if (options_.detect_instability && monitor_.wants_sample(steps_)) {
     const bool finite = s.x.allFinite() && s.v.allFinite();
     double e = finite ? energy().total() : std::nan("");
-    // A cloth world compares E − W with E(0), W the kinematic spheres' work (decision 11).
-    if (world_->has_cloth()) e -= world_->kinematic_work();
+    // E − W is compared with E(0), W the work done from outside (the physics'; 0 by default).
+    e -= world_->physics().external_work();
     if (auto reason = monitor_.check(e, finite)) {
       InstabilityReport r;
       r.integrator = options_.integrator;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cases.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/integrator.hpp"
 #include "jelly/simulator.hpp"
 
@@ -31,10 +32,11 @@ std::unique_ptr<World> course_world(const TaskTable& tasks, const Params& params
   spec.mass = c.number("mass", spec.mass);
   if (!c.has("pins")) spec.pin_sets = {"corners"};
   spec.air_drag = params.number("air_drag", 0.0);
-  const int cloth = world->add_cloth(spec);
+  const int cloth = cloth_physics(*world).add_cloth(spec);
   const Params springs = params.table("springs");
   for (SpringType type : {SpringType::Structural, SpringType::Shear, SpringType::Bending})
-    world->build_cloth_springs(cloth, type, springs.number("ks"), springs.number("kd"));
+    cloth_physics(*world).build_cloth_springs(cloth, type, springs.number("ks"),
+                                              springs.number("kd"));
   for (const Params& p : params.list("spheres")) {
     SphereSpec s;
     s.center = p.vec("center");
@@ -45,7 +47,7 @@ std::unique_ptr<World> course_world(const TaskTable& tasks, const Params& params
     if (p.has("schedule"))
       for (const Params& e : p.list("schedule"))
         s.schedule.push_back({e.number("time"), e.vec("velocity")});
-    world->add_sphere(s);
+    cloth_physics(*world).add_sphere(s);
   }
   const Params k = params.table("collisions");
   ClothCollisionSettings settings;
@@ -54,7 +56,7 @@ std::unique_ptr<World> course_world(const TaskTable& tasks, const Params& params
   settings.tolerance = k.number("tolerance");
   settings.friction = k.number("friction", 0.0);
   settings.push_out = k.number("push_out", 0.0);
-  world->set_cloth_collisions(settings);
+  cloth_physics(*world).set_cloth_collisions(settings);
   world->set_gravity(params.vec("gravity"));
   return world;
 }
@@ -71,7 +73,7 @@ void run_course_cloth(const TaskTable& tasks, const Params& params, Outputs& out
   o.detect_instability = true;
   Simulator sim(course_world(tasks, params), o);
   const World& world = sim.world();
-  const Eigen::Index cloth_n = world.cloth_particle_count();
+  const Eigen::Index cloth_n = cloth_physics(world).cloth_particle_count();
   const Vec3Array start = sim.state().x;
   const double duration = params.number("duration");
   const long every = params.integer("sample_every");
@@ -91,9 +93,9 @@ void run_course_cloth(const TaskTable& tasks, const Params& params, Outputs& out
       const Vec3Array& x = sim.state().x;
       frame_times.push_back(sim.time());
       frame_positions.insert(frame_positions.end(), x.data(), x.data() + x.size());
-      for (int i = 0; i < world.sphere_count(); ++i)
-        if (world.sphere_is_kinematic(i)) {
-          const Vec3 c = world.sphere(i).center;
+      for (int i = 0; i < cloth_physics(world).sphere_count(); ++i)
+        if (cloth_physics(world).sphere_is_kinematic(i)) {
+          const Vec3 c = cloth_physics(world).sphere(i).center;
           frame_positions.insert(frame_positions.end(), c.data(), c.data() + 3);
         }
     }
@@ -132,12 +134,13 @@ void run_course_cloth(const TaskTable& tasks, const Params& params, Outputs& out
   out.value("impulses", static_cast<double>(world.counters().impulses),
             std::string("number of collision impulses applied during ") + what);
   out.value("lowest_y", lowest, std::string("the lowest cloth particle during ") + what + " [m]");
-  for (int i = 0; i < world.sphere_count(); ++i)
-    out.vec("sphere" + std::to_string(i) + "_center", world.sphere(i).center,
+  for (int i = 0; i < cloth_physics(world).sphere_count(); ++i)
+    out.vec("sphere" + std::to_string(i) + "_center", cloth_physics(world).sphere(i).center,
             "centre of sphere " + std::to_string(i) + " (scene order) after " + what + " [m]");
   int moved = 0;
   for (Eigen::Index i = 0; i < cloth_n; ++i)
-    if (world.is_pinned(static_cast<int>(i)) && !(x.col(i).array() == start.col(i).array()).all())
+    if (cloth_physics(world).is_pinned(static_cast<int>(i)) &&
+        !(x.col(i).array() == start.col(i).array()).all())
       ++moved;
   out.value("pinned_moved", moved,
             std::string("pinned particles not bitwise where they started after ") + what);

@@ -65,12 +65,11 @@ class Simulator {
   const std::optional<InstabilityReport>& instability() const { return instability_; }
   /// Energy of the current state.
   Energy energy() const { return world_->energy(world_->state()); }
-  /// What the detector compares with its start: the energy, less the kinematic spheres' work in a
-  /// cloth world (cloth decision 11). For a study that watches a run with its own monitor.
-  double detector_energy() const {
-    return energy().total() - (world_->has_cloth() ? world_->kinematic_work() : 0.0);
-  }
-  /// The detector's settings for this world (a cloth world's floor: decision 11).
+  /// What the detector compares with its start: the energy, less the work done on the system
+  /// from outside (the world's physics' external_work()). For a study that watches a run with its
+  /// own monitor.
+  double detector_energy() const { return energy().total() - world_->physics().external_work(); }
+  /// The detector's settings for this world (its physics' detector_config).
   const StabilityMonitor::Config& detector_config() const { return monitor_.config(); }
   /// Acceleration evaluations so far.
   long evaluations() const { return world_->counters().acceleration_evaluations; }

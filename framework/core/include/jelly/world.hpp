@@ -8,10 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "jelly/cloth.hpp"
-#include "jelly/cube.hpp"
+#include "jelly/body_physics.hpp"
 #include "jelly/jacobian.hpp"
-#include "jelly/spheres.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/task_table.hpp"
 #include "jelly/terrain.hpp"
@@ -33,10 +31,10 @@ struct EffectCounters {
   std::vector<std::int64_t> contacts;           ///< per terrain: contact forces applied
   std::vector<std::int64_t>
       broadphase_skips;  ///< per terrain: passes skipped whole by the bounding box
-  // Cloth scenes (cloth contract §4, §5); all stay 0 in a scene without the effect.
+  // Effects of a kind's own physics (air drag, impulses with spheres); 0 in a scene without them.
   std::int64_t drag_applications = 0;      ///< evaluations that added air drag
   std::int64_t sphere_pair_tests = 0;      ///< sphere–sphere pairs examined
-  std::int64_t particle_sphere_tests = 0;  ///< cloth particle–sphere pairs examined
+  std::int64_t particle_sphere_tests = 0;  ///< particle–sphere pairs examined
   std::int64_t impulses = 0;               ///< normal impulses applied (both kinds of pair)
   std::int64_t friction_impulses = 0;      ///< calls of the friction task
   std::int64_t push_outs = 0;              ///< particles moved by push-out
@@ -51,20 +49,24 @@ struct Energy {
 };
 
 /// Particles, springs, terrains and gravity: only what the scene asked for exists (contract §7).
-/// The World owns the current state and is the System the integrators advance.
+/// The World owns the current state and is the System the integrators advance. What differs
+/// between body kinds (the acceleration, the collision response, the state only a kind has) is
+/// its BodyPhysics (jelly/body_physics.hpp): the default (jelly/terrain_physics.hpp), or the one
+/// its kind installed (framework/bodies/<kind>/).
 class World : public JacobianSystem {
  public:
   explicit World(TaskTable tasks);
+  ~World() override;
+  /// Moves the parts and the physics (which then works on the new World); the World moved from
+  /// is left empty with the default physics.
+  World(World&& other);
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+  World& operator=(World&&) = delete;
 
   // ----- building (before the first step) -----
-  /// Adds the particles of a cube; returns its index in cubes(). Springs are added separately.
-  int add_cube(const CubeSpec& spec);
   /// Adds free particles with the given positions, velocities and mass; returns the first index.
   int add_particles(const Vec3Array& positions, const Vec3Array& velocities, double mass);
-  /// Builds the springs of `type` in cube `cube` with the student's builder (through the task
-  /// table) and adds them as a group. ShearBody takes the body diagonals out of the shear builder's
-  /// output (call it after Shear when the scene sets body diagonals apart).
-  void build_cube_springs(int cube, SpringType type, double ks, double kd);
   /// Adds a group of springs as given (explicit scenes, grader inputs).
   void add_spring_group(SpringGroup group);
   /// Turns gravity on with acceleration g [m/s²], or off (nullopt).
@@ -75,68 +77,29 @@ class World : public JacobianSystem {
   void set_force_threads(int threads);
   int force_threads() const { return threads_; }
 
-  // ----- cloth scenes (assignment A2, cloth contract) -----
-  /// Adds the particles of a cloth: pinned ones (resolve_pins) get inverse mass 0 and stay at
-  /// rest, the others spec.velocity. Returns its index in cloths(). A world with a cloth
-  /// evaluates a = g + w·Σf per particle (decision 3), and its drag is spec.air_drag.
-  int add_cloth(const ClothSpec& spec);
-  /// Builds the springs of `type` (Structural, Shear or Bending) of cloth `cloth` with the
-  /// student's grid builder (through the task table) and adds them as a group.
-  void build_cloth_springs(int cloth, SpringType type, double ks, double kd);
-  /// Adds a sphere, after every cloth. A dynamic sphere is one more particle of the integrated
-  /// state (mass from the spec, else 1000·r³; no drag); a kinematic one is not. Returns its index.
-  int add_sphere(const SphereSpec& spec);
-  /// The coefficients of cloth–sphere and sphere–sphere pairs (defaults: decision 10).
-  void set_cloth_collisions(const ClothCollisionSettings& settings);
-  /// Before step n (cloth contract §5): every kinematic sphere takes its velocity u(t_n),
-  /// t_n = n·h, from its schedule (or from drive_sphere()). No-op without kinematic spheres.
-  void begin_step(long step, double h);
-  /// After the integrator (step 3): every kinematic sphere moves by h·u(t_n).
-  void end_step(double h);
-  /// From now on kinematic sphere `sphere` moves at `velocity`, its schedule ignored (the
-  /// viewer's arrow keys). Throws std::out_of_range when it is not a kinematic sphere.
-  void drive_sphere(int sphere, const Vec3& velocity);
-  /// Puts kinematic sphere `sphere` at `center`, as recorded elsewhere (`jelly render --replay`
-  /// draws a graded run's frames with it). Throws std::out_of_range when it is not a kinematic
-  /// sphere.
-  void place_sphere(int sphere, const Vec3& center);
-
-  /// Pins (inverse mass 0, velocity 0 from now on) or frees (inverse mass 1/m) cloth particle
-  /// `particle`: the viewer's keys 1–4 toggle the corners. Throws std::out_of_range for a
-  /// particle that is not a cloth's.
-  void set_pinned(int particle, bool pinned);
-  bool is_pinned(int particle) const { return inv_mass_[particle] == 0.0; }
-
-  const std::vector<ClothGrid>& cloths() const { return cloths_; }
-  /// Number of spheres, dynamic and kinematic, in scene order.
-  int sphere_count() const { return static_cast<int>(spheres_.size()); }
-  /// Sphere `i` now: centre, velocity, radius and inverse mass (0 when kinematic).
-  SphereBody sphere(int i) const;
-  bool sphere_is_kinematic(int i) const;
-  /// The state column of dynamic sphere `i`; −1 for a kinematic one.
-  int sphere_particle(int i) const;
-  /// Number of cloth particles (the state's first columns; dynamic spheres follow them).
-  Eigen::Index cloth_particle_count() const { return cloth_particles_; }
-  /// Work done on the system by kinematic spheres so far: the kinetic-energy change of their
-  /// impulses (decision 11) [J].
-  double kinematic_work() const { return kinematic_work_; }
-  const ClothCollisionSettings& cloth_collisions() const { return collisions_; }
-
   // ----- the System interface -----
   void acceleration(const State& s, Vec3Array& a) override;
   Eigen::Index particle_count() const override { return state_.size(); }
   const Eigen::VectorXd& masses() const override { return mass_; }
   std::vector<std::pair<int, int>> jacobian_pattern() const override;
   void force_jacobians(const State& s, ForceJacobians& jac) override;
-  /// Pinned cloth particles (inverse mass 0) are fixed; an A1 world has none.
-  bool is_fixed(Eigen::Index i) const override { return inverse_mass_form_ && inv_mass_[i] == 0.0; }
-  /// True for a world with a cloth: accelerations are a = g + w·Σf (cloth decision 3), the
-  /// collision response is that of the cloth contract §4 and energy follows decision 11.
-  bool has_cloth() const { return inverse_mass_form_; }
+  /// Whether particle i is held fixed: the physics says (none by default).
+  bool is_fixed(Eigen::Index i) const override;
 
-  /// Step 1 of contract §6: the velocity response of every terrain with collision on, in order
-  /// (then its optional projection). Changes `s.v` (and `s.x` only for projecting terrains).
+  // ----- a step (the Simulator's order: begin_step, apply_collisions, integrator, end_step) ---
+  /// Before step n of size h: what the physics moves itself takes its velocity (no-op by default).
+  void begin_step(long step, double h);
+  /// Step 1 of contract §6: the physics' collision response (by default every terrain with
+  /// collision on, in order, then its optional projection). Changes `s.v` (and maybe `s.x`).
   void apply_collisions(State& s);
+  /// After the integrator: what the physics moves itself moves (no-op by default).
+  void end_step(double h);
+
+  // ----- its body kind's physics -----
+  BodyPhysics& physics() { return *physics_; }
+  const BodyPhysics& physics() const { return *physics_; }
+  /// Replaces the physics (a kind's, made for this world) before the first step.
+  void set_physics(std::unique_ptr<BodyPhysics> physics);
 
   // ----- state and queries -----
   State& state() { return state_; }
@@ -145,7 +108,6 @@ class World : public JacobianSystem {
   const std::vector<SpringGroup>& spring_groups() const { return groups_; }
   const std::vector<Terrain>& terrains() const { return terrains_; }
   const std::optional<Vec3>& gravity() const { return gravity_; }
-  const std::vector<CubeLattice>& cubes() const { return cubes_; }
   const TaskTable& tasks() const { return tasks_; }
   std::size_t spring_count() const;
 
@@ -153,19 +115,16 @@ class World : public JacobianSystem {
   /// lowest point of the scene's bounded terrains, else the lowest initial particle (contract §8;
   /// see docs/physics-decisions.md). Fixed when the first particles are added and terrains set.
   double reference_height() const;
-  /// Kinetic, gravitational and spring energy of state s.
+  /// Kinetic, gravitational and spring energy of state s (the physics' external_work() is not in
+  /// it).
   Energy energy(const State& s) const;
 
   const EffectCounters& counters() const { return counters_; }
   void reset_counters();
 
  private:
-  void contact_pass(const State& s, Vec3Array& f);
-  // Cloth worlds (world_cloth.cpp).
-  void cloth_acceleration(const State& s, Vec3Array& a);
-  void apply_cloth_collisions(State& s);
-  SphereBody sphere_body(const State& s, std::size_t i) const;
-  void store_sphere_velocity(State& s, std::size_t i, const Vec3& velocity);
+  friend class BodyPhysics;  // the parts its kinds' physics work on
+  void add_spring_forces(const State& s, Vec3Array& f);
   void pattern_cache() const;
 
   TaskTable tasks_;
@@ -173,7 +132,6 @@ class World : public JacobianSystem {
   State state_;
   Eigen::VectorXd mass_;
   Eigen::VectorXd inv_mass_;
-  std::vector<CubeLattice> cubes_;
   std::vector<SpringGroup> groups_;
   std::vector<Terrain> terrains_;
   std::optional<Vec3> gravity_;
@@ -184,21 +142,7 @@ class World : public JacobianSystem {
   // Jacobian pattern: pair index of every spring, per group (built on first use).
   mutable std::vector<std::pair<int, int>> pairs_;
   mutable std::vector<std::vector<int>> pair_of_spring_;
-  // Cloth scenes.
-  struct SphereSlot {
-    SphereSpec spec;
-    int particle = -1;             // state column of a dynamic sphere
-    Vec3 center{0.0, 0.0, 0.0};    // a kinematic sphere's centre
-    Vec3 velocity{0.0, 0.0, 0.0};  // a kinematic sphere's u(t_n)
-    bool driven = false;           // drive_sphere() replaced the schedule
-  };
-  std::vector<ClothGrid> cloths_;
-  std::vector<SphereSlot> spheres_;
-  ClothCollisionSettings collisions_;
-  Eigen::Index cloth_particles_ = 0;
-  double air_drag_ = 0.0;
-  double kinematic_work_ = 0.0;
-  bool inverse_mass_form_ = false;  // a = g + w·Σf (cloth worlds); A1 worlds divide by m
+  std::unique_ptr<BodyPhysics> physics_;  // last: made for this world, after its parts
 };
 
 }  // namespace jelly

@@ -1,4 +1,5 @@
 #include "jelly/bodies/cloth/view/cloth_controls.hpp"
+#include "jelly/cloth_physics.hpp"
 
 #include <cmath>
 
@@ -12,16 +13,18 @@ int corner_particle(const ClothGrid& grid, int corner) {
 }
 
 std::optional<bool> toggle_corner_pin(World& world, int corner) {
-  if (corner < 0 || corner > 3 || world.cloths().empty()) return std::nullopt;
-  const int p = corner_particle(world.cloths().front(), corner);
-  const bool pinned = !world.is_pinned(p);
-  world.set_pinned(p, pinned);
+  ClothPhysics* cloth = find_cloth_physics(world);
+  if (corner < 0 || corner > 3 || !cloth || cloth->cloths().empty()) return std::nullopt;
+  const int p = corner_particle(cloth->cloths().front(), corner);
+  const bool pinned = !cloth->is_pinned(p);
+  cloth->set_pinned(p, pinned);
   return pinned;
 }
 
 int first_kinematic_sphere(const World& world) {
-  for (int i = 0; i < world.sphere_count(); ++i)
-    if (world.sphere_is_kinematic(i)) return i;
+  const ClothPhysics& cloth = cloth_physics(world);
+  for (int i = 0; i < cloth.sphere_count(); ++i)
+    if (cloth.sphere_is_kinematic(i)) return i;
   return -1;
 }
 
@@ -46,7 +49,7 @@ Vec3 arrow_drive(const Vec3& current, Arrow arrow, double yaw_degrees, double sp
 bool drive_first_kinematic_sphere(World& world, const Vec3& velocity) {
   const int sphere = first_kinematic_sphere(world);
   if (sphere < 0) return false;
-  world.drive_sphere(sphere, velocity);
+  cloth_physics(world).drive_sphere(sphere, velocity);
   return true;
 }
 

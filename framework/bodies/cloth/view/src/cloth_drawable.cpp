@@ -2,19 +2,20 @@
 #include <algorithm>
 
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
+#include "jelly/cloth_physics.hpp"
 
 namespace jelly::cloth_view {
 
 ClothDrawable::ClothDrawable(const World& world) {
-  for (const ClothGrid& c : world.cloths()) surfaces_.emplace_back(c);
-  spheres_.resize(static_cast<std::size_t>(world.sphere_count()));
+  for (const ClothGrid& c : cloth_physics(world).cloths()) surfaces_.emplace_back(c);
+  spheres_.resize(static_cast<std::size_t>(cloth_physics(world).sphere_count()));
 }
 
 void ClothDrawable::update(const World& world, const render::DrawOptions& options) {
   if (options.surface)
     for (ClothSurface& c : surfaces_) c.update(world.state().x);
   for (std::size_t i = 0; i < spheres_.size(); ++i) {
-    const SphereBody sb = world.sphere(static_cast<int>(i));
+    const SphereBody sb = cloth_physics(world).sphere(static_cast<int>(i));
     spheres_[i].update(sb.center, sb.radius);
   }
 }
@@ -62,8 +63,9 @@ void ClothDrawable::draw_surfaces(const render::SurfacePass& pass, const World& 
   pass.set_int("u_has_hole", 0);
   pass.set_material(kSphereMaterial);
   for (std::size_t i = 0; i < spheres_.size(); ++i) {
-    pass.set_color("u_color", world.sphere_is_kinematic(static_cast<int>(i)) ? kKinematicSphere
-                                                                             : kDynamicSphere);
+    pass.set_color("u_color", cloth_physics(world).sphere_is_kinematic(static_cast<int>(i))
+                                  ? kKinematicSphere
+                                  : kDynamicSphere);
     pass.draw_streamed(spheres_[i].mesh(), sphere_gpu_[i], false);
   }
 }
@@ -75,9 +77,9 @@ bool ClothDrawable::has_markers(const render::DrawOptions& options) const {
 void ClothDrawable::draw_markers(const render::PointPass& pass, const World& world,
                                  const render::DrawOptions& /*options*/) {
   pin_indices_.clear();
-  for (const ClothGrid& c : world.cloths())
+  for (const ClothGrid& c : cloth_physics(world).cloths())
     for (int p = c.first_index(); p < c.first_index() + c.particle_count(); ++p)
-      if (world.is_pinned(p)) pin_indices_.push_back(static_cast<std::uint32_t>(p));
+      if (cloth_physics(world).is_pinned(p)) pin_indices_.push_back(static_cast<std::uint32_t>(p));
   if (pin_indices_.empty()) return;
   pass.draw_points(pins_gpu_, pin_indices_, std::max(kMinPinSize, kPinSizeFactor * pass.dot_size()),
                    kPin);
@@ -86,7 +88,7 @@ void ClothDrawable::draw_markers(const render::PointPass& pass, const World& wor
 long ClothDrawable::dot_count(const World& world) const {
   // A cloth scene's dynamic spheres are particles of the state too: only the cloth's are dots.
   if (surfaces_.empty()) return -1;
-  return static_cast<long>(world.cloth_particle_count());
+  return static_cast<long>(cloth_physics(world).cloth_particle_count());
 }
 
 }  // namespace jelly::cloth_view

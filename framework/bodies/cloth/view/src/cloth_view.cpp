@@ -4,6 +4,7 @@
 #include <string>
 
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/session/captions.hpp"
 
 namespace jelly::cloth_view {
@@ -15,8 +16,9 @@ using session::format_number;
 /// Indices of the world's kinematic spheres, in scene order.
 std::vector<int> kinematic_spheres(const World& world) {
   std::vector<int> out;
-  for (int i = 0; i < world.sphere_count(); ++i)
-    if (world.sphere_is_kinematic(i)) out.push_back(i);
+  const ClothPhysics& cloth = cloth_physics(world);
+  for (int i = 0; i < cloth.sphere_count(); ++i)
+    if (cloth.sphere_is_kinematic(i)) out.push_back(i);
   return out;
 }
 
@@ -24,7 +26,8 @@ class ClothView final : public render::BodyView {
  public:
   std::string_view kind() const override { return "cloth"; }
   bool present(const World& world) const override {
-    return !world.cloths().empty() || world.sphere_count() > 0;
+    const ClothPhysics& cloth = cloth_physics(world);  // none: an empty one
+    return !cloth.cloths().empty() || cloth.sphere_count() > 0;
   }
   std::unique_ptr<render::BodyDrawable> make_drawable(const World& world) const override {
     return std::make_unique<ClothDrawable>(world);
@@ -40,7 +43,7 @@ class ClothView final : public render::BodyView {
   void place_replay_points(World& world, const Vec3Array& x, long first) const override {
     const std::vector<int> kinematic = kinematic_spheres(world);
     for (std::size_t j = 0; j < kinematic.size(); ++j)
-      world.place_sphere(kinematic[j], x.col(first + static_cast<long>(j)));
+      cloth_physics(world).place_sphere(kinematic[j], x.col(first + static_cast<long>(j)));
   }
   std::string_view replay_help() const override {
     return "; a cloth\n"
@@ -66,7 +69,7 @@ class ClothView final : public render::BodyView {
 /// its swing (a tenth of its side); every sphere where it is now. The particles are framed where
 /// they are now too (false: the cloth does not cover them).
 bool ClothView::frame(const World& world, const std::function<void(const Vec3&)>& grow) const {
-  for (const ClothGrid& c : world.cloths()) {
+  for (const ClothGrid& c : cloth_physics(world).cloths()) {
     const double side = c.spacing() * (c.n() - 1);
     const Vec3 swing = Vec3::Constant(0.1 * side);
     for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i) {
@@ -75,8 +78,8 @@ bool ClothView::frame(const World& world, const std::function<void(const Vec3&)>
       grow(p - swing - Vec3(0.0, 0.5 * side, 0.0));
     }
   }
-  for (int i = 0; i < world.sphere_count(); ++i) {
-    const SphereBody sb = world.sphere(i);
+  for (int i = 0; i < cloth_physics(world).sphere_count(); ++i) {
+    const SphereBody sb = cloth_physics(world).sphere(i);
     grow(sb.center - Vec3::Constant(sb.radius));
     grow(sb.center + Vec3::Constant(sb.radius));
   }

@@ -10,6 +10,7 @@
 
 #include "jelly/bodies/cloth/view/cloth_controls.hpp"
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
+#include "jelly/cloth_physics.hpp"
 #include "jelly/session/simulation_run.hpp"
 
 namespace jelly::cloth_view {
@@ -88,13 +89,13 @@ void ClothControls::handle_keys(const ViewerContext& c) {
 
 /// The corner pins (keys 1–4) and the kinematic sphere's drive (arrows, S).
 void ClothControls::draw_panel(const ViewerContext& c) {
-  World* world = front_world(c);
-  if (!world || world->cloths().empty()) return;
-  const ClothGrid& grid = world->cloths().front();
+  const World* world = front_world(c);  // read only: pins change through toggle_pin
+  if (!world || cloth_physics(*world).cloths().empty()) return;
+  const ClothGrid& grid = cloth_physics(*world).cloths().front();
   ImGui::TextUnformatted("pinned corners (keys 1-4):");
   static const char* corners[4] = {"1 (0,0)", "2 (0,n-1)", "3 (n-1,0)", "4 (n-1,n-1)"};
   for (int corner = 0; corner < 4; ++corner) {
-    bool pinned = world->is_pinned(corner_particle(grid, corner));
+    bool pinned = cloth_physics(*world).is_pinned(corner_particle(grid, corner));
     if (corner > 0) ImGui::SameLine();
     if (ImGui::Checkbox(corners[corner], &pinned)) toggle_pin(c, corner);
   }
@@ -111,9 +112,9 @@ void ClothControls::draw_panel(const ViewerContext& c) {
 /// Keys 1–4 flip each corner's pin (and back), the right arrow moves the kinematic sphere by
 /// speed × time, S stops it.
 int ClothControls::smoke_check(const ViewerContext& c) {
-  World* world = front_world(c);
-  if (!world || world->cloths().empty()) return 0;
-  const ClothGrid& grid = world->cloths().front();
+  const World* world = front_world(c);  // read only: pins change through toggle_pin
+  if (!world || cloth_physics(*world).cloths().empty()) return 0;
+  const ClothGrid& grid = cloth_physics(*world).cloths().front();
   int failures = 0;
   const auto fail = [&](const std::string& what) {
     std::printf("smoke: scene %s: %s\n", c.scene_name.c_str(), what.c_str());
@@ -121,13 +122,13 @@ int ClothControls::smoke_check(const ViewerContext& c) {
   };
   for (int corner = 0; corner < 4; ++corner) {
     const int p = corner_particle(grid, corner);
-    const bool before = world->is_pinned(p);
+    const bool before = cloth_physics(*world).is_pinned(p);
     toggle_pin(c, corner);
-    if (world->is_pinned(p) == before)
+    if (cloth_physics(*world).is_pinned(p) == before)
       fail("key " + std::to_string(corner + 1) + " did not change the pin of particle " +
            std::to_string(p));
     toggle_pin(c, corner);
-    if (world->is_pinned(p) != before)
+    if (cloth_physics(*world).is_pinned(p) != before)
       fail("key " + std::to_string(corner + 1) + " twice did not restore particle " +
            std::to_string(p));
   }
@@ -150,20 +151,21 @@ int ClothControls::check_arrows(const ViewerContext& c, std::string& said) {
   };
   const int sphere = first_kinematic_sphere(world);
   const Vec3 expected = arrow_drive(Vec3::Zero(), Arrow::Right, c.camera_yaw_degrees);
-  const Vec3 c0 = world.sphere(sphere).center;
+  const Vec3 c0 = cloth_physics(world).sphere(sphere).center;
   const double t0 = run.time();
   press_arrow(c, Arrow::Right);
   run.advance_to(t0 + 0.1);
-  const Vec3 moved = world.sphere(sphere).center - c0;
+  const Vec3 moved = cloth_physics(world).sphere(sphere).center - c0;
   const double tolerance = 1.5 * run.step() * kDriveSpeed + 1e-9;
   if ((moved - expected * (run.time() - t0)).norm() > tolerance)
     fail("the right arrow moved the sphere by (" + std::to_string(moved.x()) + ", " +
          std::to_string(moved.y()) + ", " + std::to_string(moved.z()) + ") m in " +
          std::to_string(run.time() - t0) + " s");
   stop_sphere(c);
-  const Vec3 c1 = world.sphere(sphere).center;
+  const Vec3 c1 = cloth_physics(world).sphere(sphere).center;
   run.advance_to(run.time() + 0.1);
-  if ((world.sphere(sphere).center - c1).norm() > 1e-12) fail("S did not stop the sphere");
+  if ((cloth_physics(world).sphere(sphere).center - c1).norm() > 1e-12)
+    fail("S did not stop the sphere");
   char buf[128];
   std::snprintf(buf, sizeof buf, ", right arrow moved the sphere %.3f m, S stopped it",
                 moved.norm());

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "jelly/bodies/cube/view/cube_view.hpp"
+#include "jelly/cube_physics.hpp"
 #include "jelly/session/captions.hpp"
 
 namespace jelly::cube_view {
 
 CubeDrawable::CubeDrawable(const World& world) {
-  for (const CubeLattice& c : world.cubes()) surfaces_.emplace_back(c);
+  for (const CubeLattice& c : cubes_of(world)) surfaces_.emplace_back(c);
 }
 
 void CubeDrawable::update(const World& world, const render::DrawOptions& options) {
@@ -47,13 +48,13 @@ namespace {
 class CubeView final : public render::BodyView {
  public:
   std::string_view kind() const override { return "cube"; }
-  bool present(const World& world) const override { return !world.cubes().empty(); }
+  bool present(const World& world) const override { return !cubes_of(world).empty(); }
   std::unique_ptr<render::BodyDrawable> make_drawable(const World& world) const override {
     return std::make_unique<CubeDrawable>(world);
   }
   /// The cubes where they were built, so the framing does not depend on when it is computed.
   bool frame(const World& world, const std::function<void(const Vec3&)>& grow) const override {
-    for (const CubeLattice& c : world.cubes())
+    for (const CubeLattice& c : cubes_of(world))
       for (Eigen::Index i = 0; i < c.initial_positions().cols(); ++i)
         grow(c.initial_positions().col(i));
     return true;

@@ -33,7 +33,8 @@ class JellySurface {
   std::vector<int> particle_of_vertex_;
 };
 
-/// The draw proxies of a world's cubes: one surface each, in World::cubes() order.
+/// The draw proxies of a world's cubes: one surface each, in cubes_of(world) order
+/// (jelly/cube_physics.hpp).
 class CubeDrawable : public render::BodyDrawable {
  public:
   explicit CubeDrawable(const World& world);

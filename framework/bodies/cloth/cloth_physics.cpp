@@ -1,12 +1,16 @@
-// The World's cloth scenes (assignment A2, cloth contract §1–§5): cloths with pins, spheres, the
-// accelerations a = g + w·Σf and the impulse response at the start of every step.
+// The physics of a cloth world (assignment A2, cloth contract §1–§5): cloths with pins, spheres,
+// the accelerations a = g + w·Σf and the impulse response at the start of every step.
+#include "jelly/cloth_physics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 
-#include "jelly/spring_pass.hpp"
+#include "jelly/terrain_physics.hpp"
 #include "jelly/world.hpp"
 
 namespace jelly {
@@ -45,12 +49,13 @@ double kinetic(double mass, const Vec3& v) { return 0.5 * mass * v.squaredNorm()
 
 }  // namespace
 
-int World::add_cloth(const ClothSpec& spec) {
+int ClothPhysics::add_cloth(const ClothSpec& spec) {
+  World& w = world();
   if (!spheres_.empty())
     throw std::logic_error(
         "add_cloth: every cloth comes before the spheres (their particles are "
         "the state's first columns)");
-  if (state_.size() != cloth_particles_ || !terrains_.empty())
+  if (w.state().size() != cloth_particles_ || !w.terrains().empty())
     throw std::logic_error(
         "add_cloth: a cloth world holds cloths and spheres only (no cube, free "
         "particle or terrain)");
@@ -62,44 +67,45 @@ int World::add_cloth(const ClothSpec& spec) {
                                 ": expected a finite k_air ≥ 0 N·s/m");
   if (!cloths_.empty() && spec.air_drag != air_drag_)
     throw std::invalid_argument("cloth: air_drag: every cloth of one world has the same k_air");
-  const auto first = static_cast<int>(state_.size());
+  const auto first = static_cast<int>(w.state().size());
   ClothGrid grid(spec, first);
   const std::vector<GridCoord> pins = resolve_pins(spec);
   Vec3Array velocities(3, grid.particle_count());
   velocities.colwise() = spec.velocity;
   for (const GridCoord& p : pins) velocities.col(p[0] * grid.n() + p[1]).setZero();
-  add_particles(grid.initial_positions(), velocities, spec.mass);
-  for (const GridCoord& p : pins) inv_mass_[grid.index(p[0], p[1])] = 0.0;
-  cloth_particles_ = state_.size();
+  w.add_particles(grid.initial_positions(), velocities, spec.mass);
+  for (const GridCoord& p : pins) inverse_masses(w)[grid.index(p[0], p[1])] = 0.0;
+  cloth_particles_ = w.state().size();
   air_drag_ = spec.air_drag;
-  inverse_mass_form_ = true;
   cloths_.push_back(std::move(grid));
   return static_cast<int>(cloths_.size()) - 1;
 }
 
-void World::build_cloth_springs(int cloth, SpringType type, double ks, double kd) {
+void ClothPhysics::build_cloth_springs(int cloth, SpringType type, double ks, double kd) {
+  World& w = world();
+  const TaskTable& tasks = w.tasks();
   const ClothGrid& grid = cloths_.at(static_cast<std::size_t>(cloth));
   using Builder = void (*)(const ClothGrid&, std::vector<Spring>&);
   Builder fn = nullptr;
   const char* builder = "";
   switch (type) {
     case SpringType::Structural:
-      fn = tasks_.add_grid_structural_springs;
+      fn = tasks.add_grid_structural_springs;
       builder = "add_grid_structural_springs";
       break;
     case SpringType::Shear:
-      fn = tasks_.add_grid_shear_springs;
+      fn = tasks.add_grid_shear_springs;
       builder = "add_grid_shear_springs";
       break;
     case SpringType::Bending:
-      fn = tasks_.add_grid_bending_springs;
+      fn = tasks.add_grid_bending_springs;
       builder = "add_grid_bending_springs";
       break;
     case SpringType::ShearBody:
       throw std::invalid_argument("a cloth has no body diagonals (cloth contract §2)");
   }
   if (!fn)
-    throw std::runtime_error(std::string("the task table (") + std::string(tasks_.origin) +
+    throw std::runtime_error(std::string("the task table (") + std::string(tasks.origin) +
                              ") has no " + builder + ": it cannot build a cloth's springs");
   SpringGroup group;
   group.type = type;
@@ -121,13 +127,14 @@ void World::build_cloth_springs(int cloth, SpringType type, double ks, double kd
           std::to_string(lo) + ".." + std::to_string(hi - 1) + " and a finite rest length ≥ 0");
     }
   }
-  add_spring_group(std::move(group));
+  w.add_spring_group(std::move(group));
 }
 
-int World::add_sphere(const SphereSpec& spec) {
-  if (!inverse_mass_form_ && state_.size() > 0)
+int ClothPhysics::add_sphere(const SphereSpec& spec) {
+  World& w = world();
+  if (cloths_.empty() && spheres_.empty() && w.state().size() > 0)
     throw std::logic_error("add_sphere: spheres belong to a cloth world (no cube or particle)");
-  if (!terrains_.empty()) throw std::logic_error("add_sphere: a cloth world has no terrain");
+  if (!w.terrains().empty()) throw std::logic_error("add_sphere: a cloth world has no terrain");
   check_sphere(spec, static_cast<int>(spheres_.size()));
   SphereSlot slot;
   slot.spec = spec;
@@ -137,15 +144,14 @@ int World::add_sphere(const SphereSpec& spec) {
     Vec3Array x(3, 1), v(3, 1);
     x.col(0) = spec.center;
     v.col(0) = spec.velocity;
-    slot.particle = add_particles(x, v, mass);
+    slot.particle = w.add_particles(x, v, mass);
   }
   // A world of spheres alone is a cloth world too (a = g + w·Σf, the §4 response).
-  inverse_mass_form_ = true;
   spheres_.push_back(std::move(slot));
   return static_cast<int>(spheres_.size()) - 1;
 }
 
-void World::set_cloth_collisions(const ClothCollisionSettings& c) {
+void ClothPhysics::set_cloth_collisions(const ClothCollisionSettings& c) {
   const auto check = [](bool ok, const char* key, double value, const char* expected) {
     if (!ok)
       throw std::invalid_argument(std::string("collision: ") + key + " = " + std::to_string(value) +
@@ -162,17 +168,17 @@ void World::set_cloth_collisions(const ClothCollisionSettings& c) {
   collisions_ = c;
 }
 
-void World::begin_step(long step, double h) {
+void ClothPhysics::begin_step(long step, double h) {
   for (SphereSlot& s : spheres_)
     if (s.spec.kinematic && !s.driven) s.velocity = scheduled_velocity(s.spec.schedule, step, h);
 }
 
-void World::end_step(double h) {
+void ClothPhysics::end_step(double h) {
   for (SphereSlot& s : spheres_)
     if (s.spec.kinematic) s.center += h * s.velocity;
 }
 
-void World::drive_sphere(int sphere, const Vec3& velocity) {
+void ClothPhysics::drive_sphere(int sphere, const Vec3& velocity) {
   if (sphere < 0 || sphere >= sphere_count() ||
       !spheres_[static_cast<std::size_t>(sphere)].spec.kinematic)
     throw std::out_of_range("drive_sphere: sphere " + std::to_string(sphere) +
@@ -182,7 +188,7 @@ void World::drive_sphere(int sphere, const Vec3& velocity) {
   s.driven = true;
 }
 
-void World::place_sphere(int sphere, const Vec3& center) {
+void ClothPhysics::place_sphere(int sphere, const Vec3& center) {
   if (sphere < 0 || sphere >= sphere_count() ||
       !spheres_[static_cast<std::size_t>(sphere)].spec.kinematic)
     throw std::out_of_range("place_sphere: sphere " + std::to_string(sphere) +
@@ -190,37 +196,45 @@ void World::place_sphere(int sphere, const Vec3& center) {
   spheres_[static_cast<std::size_t>(sphere)].center = center;
 }
 
-void World::set_pinned(int particle, bool pinned) {
+void ClothPhysics::set_pinned(int particle, bool pinned) {
   if (particle < 0 || particle >= cloth_particles_)
     throw std::out_of_range("set_pinned: particle " + std::to_string(particle) +
                             " is not a cloth particle (0.." + std::to_string(cloth_particles_ - 1) +
                             ")");
+  World& w = world();
   if (pinned) {
-    inv_mass_[particle] = 0.0;
-    state_.v.col(particle).setZero();
+    inverse_masses(w)[particle] = 0.0;
+    w.state().v.col(particle).setZero();
   } else {
-    inv_mass_[particle] = 1.0 / mass_[particle];
+    inverse_masses(w)[particle] = 1.0 / w.masses()[particle];
   }
 }
 
-SphereBody World::sphere(int i) const { return sphere_body(state_, static_cast<std::size_t>(i)); }
+bool ClothPhysics::is_pinned(int particle) const {
+  const Eigen::VectorXd& w = world().inverse_masses();
+  return particle >= 0 && particle < w.size() && w[particle] == 0.0;
+}
 
-bool World::sphere_is_kinematic(int i) const {
+SphereBody ClothPhysics::sphere(int i) const {
+  return sphere_body(world().state(), static_cast<std::size_t>(i));
+}
+
+bool ClothPhysics::sphere_is_kinematic(int i) const {
   return spheres_.at(static_cast<std::size_t>(i)).spec.kinematic;
 }
 
-int World::sphere_particle(int i) const {
+int ClothPhysics::sphere_particle(int i) const {
   return spheres_.at(static_cast<std::size_t>(i)).particle;
 }
 
-SphereBody World::sphere_body(const State& s, std::size_t i) const {
+SphereBody ClothPhysics::sphere_body(const State& s, std::size_t i) const {
   const SphereSlot& slot = spheres_.at(i);
   SphereBody b;
   b.radius = slot.spec.radius;
   if (slot.particle >= 0) {
     b.center = s.x.col(slot.particle);
     b.velocity = s.v.col(slot.particle);
-    b.inverse_mass = inv_mass_[slot.particle];
+    b.inverse_mass = world().inverse_masses()[slot.particle];
   } else {
     b.center = slot.center;
     b.velocity = slot.velocity;
@@ -229,46 +243,38 @@ SphereBody World::sphere_body(const State& s, std::size_t i) const {
   return b;
 }
 
-void World::store_sphere_velocity(State& s, std::size_t i, const Vec3& velocity) {
+void ClothPhysics::store_sphere_velocity(State& s, std::size_t i, const Vec3& velocity) {
   const SphereSlot& slot = spheres_[i];
   if (slot.particle >= 0) s.v.col(slot.particle) = velocity;  // a kinematic sphere keeps u(t_n)
 }
 
-void World::cloth_acceleration(const State& s, Vec3Array& a) {
-  ++counters_.acceleration_evaluations;
+void ClothPhysics::acceleration(const State& s, Vec3Array& a) {
+  World& w = world();
+  EffectCounters& effects = counters(w);
+  Vec3Array& force = force_scratch(w);
+  ++effects.acceleration_evaluations;
   const Eigen::Index n = s.size();
-  force_.resize(3, n);
-  force_.setZero();
+  force.resize(3, n);
+  force.setZero();
   // Σf: springs and dampers of every group the scene built (the same pass as A1's) ...
-  for (const SpringGroup& g : groups_) {
-    ++counters_.spring_group_evaluations[static_cast<std::size_t>(g.type)];
-    counters_.springs_evaluated += static_cast<std::int64_t>(g.springs.size());
-  }
-  if (!groups_.empty()) {
-    if (spring_pass_) {
-      spring_pass_->accumulate(groups_.data(), groups_.size(), s, force_);
-    } else {
-      for (const SpringGroup& g : groups_)
-        accumulate_spring_forces(g, s, force_, tasks_.spring_force, tasks_.damper_force);
-    }
-  }
+  if (!w.spring_groups().empty()) add_spring_forces(w, s, force);
   // ... plus air drag −k_air·v on the cloth's particles only (spheres feel none), when named;
   // then a = g + w·Σf for w > 0 and exactly 0 for w = 0 (decision 3). One pass over the particles.
-  const double* f = force_.data();
+  const double* f = force.data();
   const double* v = s.v.data();
   const double k = air_drag_;
   const Eigen::Index dragged = k > 0.0 ? cloth_particles_ : 0;
-  if (dragged > 0) ++counters_.drag_applications;
+  if (dragged > 0) ++effects.drag_applications;
   Vec3 g = Vec3::Zero();
-  if (gravity_) {
-    ++counters_.gravity_applications;
-    g = *gravity_;
+  if (w.gravity()) {
+    ++effects.gravity_applications;
+    g = *w.gravity();
   }
   a.resize(3, n);
   double* out = a.data();
-  const double* w = inv_mass_.data();
+  const double* inv_mass = w.inverse_masses().data();
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double wi = w[i];
+    const double wi = inv_mass[i];
     if (!(wi > 0.0)) {
       out[3 * i] = out[3 * i + 1] = out[3 * i + 2] = 0.0;
       continue;
@@ -281,40 +287,45 @@ void World::cloth_acceleration(const State& s, Vec3Array& a) {
   }
 }
 
-void World::apply_cloth_collisions(State& s) {
+void ClothPhysics::apply_collisions(State& s) {
   if (spheres_.empty()) return;  // an effect the scene does not name costs nothing
+  World& w = world();
+  const TaskTable& tasks = w.tasks();
+  const Eigen::VectorXd& mass = w.masses();
+  const Eigen::VectorXd& inv_mass = w.inverse_masses();
+  EffectCounters& effects = counters(w);
   const ClothCollisionSettings& c = collisions_;
-  const bool friction = c.friction > 0.0 && tasks_.friction_impulse != nullptr;
+  const bool friction = c.friction > 0.0 && tasks.friction_impulse != nullptr;
   const std::size_t count = spheres_.size();
   // 1. Every sphere–sphere pair i < j in scene order (decisions 1, 2).
-  if (tasks_.collide_spheres && count > 1) {
+  if (tasks.collide_spheres && count > 1) {
     const ImpulseSettings settings{c.sphere_restitution, c.tolerance};
     for (std::size_t i = 0; i < count; ++i)
       for (std::size_t j = i + 1; j < count; ++j) {
         const bool ki = spheres_[i].particle < 0, kj = spheres_[j].particle < 0;
         if (ki && kj) continue;  // two kinematic spheres pass through each other
-        ++counters_.sphere_pair_tests;
+        ++effects.sphere_pair_tests;
         SphereBody a = sphere_body(s, i), b = sphere_body(s, j);
         // Work of a kinematic sphere: the kinetic-energy change of the dynamic one (decision 11).
         const int dynamic = ki ? spheres_[j].particle : (kj ? spheres_[i].particle : -1);
-        const double before = dynamic >= 0 ? kinetic(mass_[dynamic], s.v.col(dynamic)) : 0.0;
-        const Impulse imp = tasks_.collide_spheres(a, b, settings);
+        const double before = dynamic >= 0 ? kinetic(mass[dynamic], s.v.col(dynamic)) : 0.0;
+        const Impulse imp = tasks.collide_spheres(a, b, settings);
         if (imp.applied) {
-          ++counters_.impulses;
+          ++effects.impulses;
           if (friction) {
-            ++counters_.friction_impulses;
-            tasks_.friction_impulse(imp, c.friction, a.inverse_mass, b.inverse_mass, a.velocity,
-                                    b.velocity);
+            ++effects.friction_impulses;
+            tasks.friction_impulse(imp, c.friction, a.inverse_mass, b.inverse_mass, a.velocity,
+                                   b.velocity);
           }
         }
         store_sphere_velocity(s, i, a.velocity);
         store_sphere_velocity(s, j, b.velocity);
-        if (dynamic >= 0) kinematic_work_ += kinetic(mass_[dynamic], s.v.col(dynamic)) - before;
+        if (dynamic >= 0) kinematic_work_ += kinetic(mass[dynamic], s.v.col(dynamic)) - before;
       }
   }
   // 2. For each sphere in scene order, every cloth particle in index order (then push-out).
   const bool push_out = c.push_out > 0.0;
-  if (!tasks_.collide_particle_sphere && !push_out) return;
+  if (!tasks.collide_particle_sphere && !push_out) return;
   const ImpulseSettings settings{c.cloth_restitution, c.tolerance};
   for (std::size_t k = 0; k < count; ++k) {
     const bool kinematic = spheres_[k].particle < 0;
@@ -329,22 +340,22 @@ void World::apply_cloth_collisions(State& s) {
       const double d0 = s.x(0, i) - centre[0], d1 = s.x(1, i) - centre[1],
                    d2 = s.x(2, i) - centre[2];
       if (!(d0 * d0 + d1 * d1 + d2 * d2 < reach2)) continue;
-      if (tasks_.collide_particle_sphere) {
-        ++counters_.particle_sphere_tests;
-        PointBody p{s.x.col(i), s.v.col(i), inv_mass_[i]};
-        const double before = kinematic ? kinetic(mass_[i], p.velocity) : 0.0;
-        const Impulse imp = tasks_.collide_particle_sphere(p, sphere, settings);
+      if (tasks.collide_particle_sphere) {
+        ++effects.particle_sphere_tests;
+        PointBody p{s.x.col(i), s.v.col(i), inv_mass[i]};
+        const double before = kinematic ? kinetic(mass[i], p.velocity) : 0.0;
+        const Impulse imp = tasks.collide_particle_sphere(p, sphere, settings);
         if (imp.applied) {
-          ++counters_.impulses;
+          ++effects.impulses;
           if (friction) {
-            ++counters_.friction_impulses;
-            tasks_.friction_impulse(imp, c.friction, p.inverse_mass, sphere.inverse_mass,
-                                    p.velocity, sphere.velocity);
+            ++effects.friction_impulses;
+            tasks.friction_impulse(imp, c.friction, p.inverse_mass, sphere.inverse_mass, p.velocity,
+                                   sphere.velocity);
           }
         }
         s.v.col(i) = p.velocity;
         if (kinematic) {
-          kinematic_work_ += kinetic(mass_[i], p.velocity) - before;
+          kinematic_work_ += kinetic(mass[i], p.velocity) - before;
           sphere.velocity = spheres_[k].velocity;  // prescribed: no impulse changes it
         } else {
           s.v.col(spheres_[k].particle) = sphere.velocity;
@@ -352,7 +363,7 @@ void World::apply_cloth_collisions(State& s) {
       }
       // Push-out (decision 7): every examined pair with w > 0 and φ < 0; pins and spheres never
       // move. φ and N are the framework's.
-      if (push_out && inv_mass_[i] > 0.0) {
+      if (push_out && inv_mass[i] > 0.0) {
         const Vec3 x = s.x.col(i);
         const Vec3 d = x - sphere.center;
         const double distance = d.norm();
@@ -360,11 +371,55 @@ void World::apply_cloth_collisions(State& s) {
         const double phi = distance - sphere.radius;
         if (phi < 0.0) {
           s.x.col(i) = x - (c.push_out * phi) * (d / distance);
-          ++counters_.push_outs;
+          ++effects.push_outs;
         }
       }
     }
   }
+}
+
+bool ClothPhysics::is_fixed(Eigen::Index i) const { return world().inverse_masses()[i] == 0.0; }
+
+StabilityMonitor::Config ClothPhysics::detector_config(StabilityMonitor::Config config) const {
+  const World& w = world();
+  double side = 0.0;
+  for (const ClothGrid& c : cloths_)
+    side = std::max(side, c.spacing() * static_cast<double>(c.n() - 1));
+  const double g = w.gravity() ? w.gravity()->norm() : 0.0;
+  const double floor = 1e-3 * w.masses().sum() * g * side;
+  if (floor > 0.0) config.absolute_floor = floor;
+  return config;
+}
+
+const char* ClothPhysics::refuses_terrain() const {
+  return "a cloth world has no terrain (cloth contract §6)";
+}
+
+ClothPhysics& cloth_physics(World& world) {
+  if (auto* physics = dynamic_cast<ClothPhysics*>(&world.physics())) return *physics;
+  if (world.particle_count() > 0 || !world.terrains().empty() ||
+      typeid(world.physics()) != typeid(TerrainPhysics))
+    throw std::logic_error(
+        "a cloth world holds cloths and spheres only (no cube, free particle or terrain)");
+  auto made = std::make_unique<ClothPhysics>(world);
+  ClothPhysics& physics = *made;
+  world.set_physics(std::move(made));
+  return physics;
+}
+
+const ClothPhysics& cloth_physics(const World& world) {
+  if (const ClothPhysics* physics = find_cloth_physics(world)) return *physics;
+  static World empty{TaskTable{}};
+  static const ClothPhysics none(empty);
+  return none;
+}
+
+ClothPhysics* find_cloth_physics(World& world) {
+  return dynamic_cast<ClothPhysics*>(&world.physics());
+}
+
+const ClothPhysics* find_cloth_physics(const World& world) {
+  return dynamic_cast<const ClothPhysics*>(&world.physics());
 }
 
 }  // namespace jelly
