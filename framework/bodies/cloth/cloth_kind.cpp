@@ -7,6 +7,8 @@
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/world.hpp"
+#include "cloth_study.hpp"
+#include "cloth_summary.hpp"
 #include "param_rows.hpp"
 
 namespace jelly::bodies {
@@ -376,7 +378,7 @@ class ClothKind final : public BodyKindModule {
     return cloth_summary_header(world.sphere_count());
   }
   void write_summary(CsvWriter& out, const World& world, const State& s, double t) const override {
-    out.write_cloth_summary(summarize_cloth(world, s, t));
+    out.write_row(cloth_summary_row(summarize_cloth(world, s, t)));
   }
   /// The end of a cloth scene's run (cloth contract decision 12): the cloth's centre of mass
   /// (pinned particles included), kinetic energy, largest speed and lowest y, and each sphere.
@@ -405,6 +407,23 @@ class ClothKind final : public BodyKindModule {
     }
     return out;
   }
+  // ----- what the studies measure on it (cloth contract decision 12: the cloth, not the
+  // dynamic spheres that follow it in the state) -----
+  Eigen::Index measured_particles(const World& world) const override {
+    return world.cloth_particle_count();
+  }
+  std::unique_ptr<BodyStudy> study(const World& world, const State& start, const StudyLook& look,
+                                   const std::vector<std::string>& measures) const override {
+    return make_cloth_study(world, start, look, measures);
+  }
+  std::string_view measure_help(std::string_view measure) const override {
+    return cloth_measure_help(measure);
+  }
+  std::string_view measure_plot_label(std::string_view measure) const override {
+    return cloth_measure_plot_label(measure);
+  }
+  std::string_view contact_help() const override { return cloth_contact_help(); }
+
   /// Cloth contract §1, §3: the pinned particles and the spheres, in scene order.
   std::string check_report(const SceneSpec& scene, const World& world) const override {
     long long pinned = 0;

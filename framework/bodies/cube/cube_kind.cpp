@@ -2,6 +2,7 @@
 // World (contract §1-§3). Registered by body.cmake.
 #include "jelly/body_kind.hpp"
 #include "jelly/world.hpp"
+#include "cube_study.hpp"
 #include "param_rows.hpp"
 
 namespace jelly::bodies {
@@ -68,6 +69,18 @@ class CubeKind final : public BodyKindModule {
   }
 
   std::string_view stability_reason() const override { return "since contact stiffens the cube"; }
+
+  // ----- what the studies measure on it -----
+  std::unique_ptr<BodyStudy> study(const World& world, const State& start, const StudyLook&,
+                                   const std::vector<std::string>& measures) const override {
+    return make_cube_study(world, start, measures);
+  }
+  std::string_view measure_help(std::string_view measure) const override {
+    return cube_measure_help(measure);
+  }
+  std::string_view measure_plot_label(std::string_view measure) const override {
+    return cube_measure_plot_label(measure);
+  }
 
   void build(const SceneSpec& scene, World& world) const override {
     const int cube = world.add_cube(scene.cube);

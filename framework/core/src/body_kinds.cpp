@@ -79,6 +79,21 @@ std::string BodyKindModule::check_report(const SceneSpec& scene, const World& wo
 
 std::string_view BodyKindModule::stability_reason() const { return "since the body stiffens"; }
 
+Eigen::Index BodyKindModule::measured_particles(const World& world) const {
+  return world.particle_count();
+}
+
+std::unique_ptr<BodyStudy> BodyKindModule::study(const World&, const State&, const StudyLook&,
+                                                 const std::vector<std::string>&) const {
+  return nullptr;
+}
+
+std::string_view BodyKindModule::measure_help(std::string_view) const { return ""; }
+
+std::string_view BodyKindModule::measure_plot_label(std::string_view) const { return ""; }
+
+std::string_view BodyKindModule::contact_help() const { return ""; }
+
 std::string text_printf(const char* format, ...) {
   std::va_list args;
   va_start(args, format);
