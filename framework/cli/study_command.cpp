@@ -72,11 +72,13 @@ against the value) and PREFIX-time.svg/.png (each run over time), with their .gp
   peak speed   largest centre-of-mass speed from the turn on: the rebound or the slide [m/s]
   bounce       highest centre of mass from the turn on minus its height at the turn [m]
 )";
-constexpr const char* kEffectsHelpRest = R"(  at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
+constexpr const char* kEffectsHelpRest =
+    R"(  at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
                which every particle is slower than --rest-speed [s]; "never" otherwise
   energy lost  E(0) - E(T), E = kinetic + gravitational + spring energy [J] (and % of E(0))
 )";
-constexpr const char* kEffectsHelpRun = R"(  stable       whether the stability detector (contract §8) fired; the run stops there, is
+constexpr const char* kEffectsHelpRun =
+    R"(  stable       whether the stability detector (contract §8) fired; the run stops there, is
                marked, and its measures cover the time before (at rest: never)
   cost         wall time of the steps per simulated second (median of --repeats runs), force
                (acceleration) evaluations and backward Euler's CG iterations

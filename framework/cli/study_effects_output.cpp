@@ -223,16 +223,15 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   const std::string xlabel = o.key.empty() ? "integrator" : o.key;
   // The panels of the measures the scene's assignment reports, then the cost.
   constexpr int kPanels = 9;
-  const std::string panels[kPanels][2] = {
-      {"3", "peak centre-of-mass speed after the impact [m/s]"},
-      {"4", "bounce height of the centre of mass [m]"},
-      {"5", plot_label("cave_in")},
-      {"10", plot_label("sag")},
-      {"11", plot_label("swing")},
-      {"12", plot_label("sink")},
-      {"6", "at rest from [s] (none: never)"},
-      {"7", "energy dissipated [% of the start]"},
-      {"8", "wall time per simulated second [s]"}};
+  const std::string panels[kPanels][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
+                                          {"4", "bounce height of the centre of mass [m]"},
+                                          {"5", plot_label("cave_in")},
+                                          {"10", plot_label("sag")},
+                                          {"11", plot_label("swing")},
+                                          {"12", plot_label("sink")},
+                                          {"6", "at rest from [s] (none: never)"},
+                                          {"7", "energy dissipated [% of the start]"},
+                                          {"8", "wall time per simulated second [s]"}};
   const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
                                m.sink,   m.rest,   m.energy,  true};
   std::ostringstream body;

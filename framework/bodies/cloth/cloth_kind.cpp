@@ -3,12 +3,13 @@
 // World. Registered by body.cmake.
 #include <array>
 
+#include "cloth_probe.hpp"
+#include "cloth_study.hpp"
+#include "cloth_summary.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/world.hpp"
-#include "cloth_study.hpp"
-#include "cloth_summary.hpp"
 #include "param_rows.hpp"
 
 namespace jelly::bodies {
@@ -377,6 +378,12 @@ class ClothKind final : public BodyKindModule {
   std::string summary_header(const World& world) const override {
     return cloth_summary_header(world.sphere_count());
   }
+  std::string_view run_help(std::string_view option) const override {
+    return option == "--summary"
+               ? "\n                      (a cloth scene: the cloth's, then lowest_y and each "
+                 "sphere's\n                      sphere<i>_x,_y,_z,_vx,_vy,_vz)"
+               : "";
+  }
   void write_summary(CsvWriter& out, const World& world, const State& s, double t) const override {
     out.write_row(cloth_summary_row(summarize_cloth(world, s, t)));
   }
@@ -407,6 +414,13 @@ class ClothKind final : public BodyKindModule {
     }
     return out;
   }
+  // ----- the smoke tests of the slots that build its springs -----
+  std::vector<std::string_view> probe_slots() const override { return cloth_probe_slots(); }
+  TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                        const TaskTable& tasks) const override {
+    return probe_cloth_slot(slot, std::move(id), std::move(name), tasks);
+  }
+
   // ----- what the studies measure on it (cloth contract decision 12: the cloth, not the
   // dynamic spheres that follow it in the state) -----
   Eigen::Index measured_particles(const World& world) const override {

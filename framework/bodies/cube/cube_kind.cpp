@@ -1,8 +1,9 @@
 // The cube body kind (assignment A1's jelly): its [body] keys, and how a cube scene becomes a
 // World (contract §1-§3). Registered by body.cmake.
+#include "cube_probe.hpp"
+#include "cube_study.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/world.hpp"
-#include "cube_study.hpp"
 #include "param_rows.hpp"
 
 namespace jelly::bodies {
@@ -69,6 +70,16 @@ class CubeKind final : public BodyKindModule {
   }
 
   std::string_view stability_reason() const override { return "since contact stiffens the cube"; }
+  std::string_view run_help(std::string_view option) const override {
+    return option == "--threads" ? "pays off for large cubes,\n                      n ≥ 20, " : "";
+  }
+
+  // ----- the smoke tests of the slots that build its springs -----
+  std::vector<std::string_view> probe_slots() const override { return cube_probe_slots(); }
+  TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                        const TaskTable& tasks) const override {
+    return probe_cube_slot(slot, std::move(id), std::move(name), tasks);
+  }
 
   // ----- what the studies measure on it -----
   std::unique_ptr<BodyStudy> study(const World& world, const State& start, const StudyLook&,

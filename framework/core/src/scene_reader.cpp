@@ -435,9 +435,9 @@ class Loader {
     return nullptr;
   }
 
-  /// Why a section may not be in this scene: another kind's table ([collision] and [[sphere]]
-  /// belong to cloth scenes), or a general one the scene's kind has none of ([[terrain]] in a
-  /// cloth scene, cloth contract §6). nullopt when it may.
+  /// Why a section may not be in this scene: another kind's table (BodyKindModule::
+  /// foreign_section), or a general one the scene's kind has none of (refuses_section). nullopt
+  /// when it may.
   std::optional<std::string> section_not_here(const std::string& name) const {
     const BodyKindModule& body = body_kind_of(spec_);
     if (auto why = body.refuses_section(name)) return why;

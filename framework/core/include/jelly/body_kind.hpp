@@ -23,6 +23,8 @@ class World;
 class Simulator;
 class CsvWriter;
 struct State;
+struct TaskTable;
+struct TaskStatus;
 
 namespace params_detail {
 struct Decl;
@@ -104,6 +106,15 @@ class BodyKindModule {
   /// on without giving them. Unchanged (SpringSettings' defaults) unless the kind says otherwise.
   virtual void spring_defaults(SpringSettings& settings) const { (void)settings; }
 
+  // ----- the TaskTable slots that build its springs (jelly/task_probe.hpp) -----
+  /// The slots whose smoke test is this kind's (they take its lattice or grid), in order; none by
+  /// default.
+  virtual std::vector<std::string_view> probe_slots() const;
+  /// Probes `slot` (one of probe_slots()) of `tasks` on a small body of this kind, reporting it
+  /// as task `id` named `name`.
+  virtual TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                                const TaskTable& tasks) const;
+
   // ----- checks and building -----
   /// The checks of a whole scene of this kind that involve several keys; the first problem.
   virtual std::optional<params_detail::CrossError> check(const SceneSpec& scene) const;
@@ -128,6 +139,9 @@ class BodyKindModule {
   virtual std::string check_report(const SceneSpec& scene, const World& world) const;
   /// Why `jelly check` recommends half the stable step ("contact stiffens the cube").
   virtual std::string_view stability_reason() const;
+  /// What `jelly run --help` adds for this kind to the text of `option` ("--summary": its own
+  /// columns; "--threads": when threads pay off); "" (the default) for nothing.
+  virtual std::string_view run_help(std::string_view option) const;
 
   // ----- what the studies measure on it (jelly study effects) -----
   /// How many particles, from the first, a study's centre of mass, speeds and rest are taken over.
