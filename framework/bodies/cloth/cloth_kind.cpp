@@ -140,19 +140,21 @@ std::vector<Decl> sphere_rows() {
               [](SceneSpec& s, const Ctx& c, const Value& v) {
                 sphere_spec(s, c).velocity = vec(v);
               })),
-          kinematic_only(checked(
-              make(
-                  "sphere.*.schedule", Scope::When, ValueKind::Schedule, "s: m/s", Default::Yes,
-                  kAny,
-                  "From each time on, the velocity it moves at (zero before the first entry); "
-                  "TOML [{ time = t, velocity = [x, y, z] }, ...]",
-                  [](const SceneSpec& s, const Ctx& c) -> Value {
-                    return sphere_spec(s, c).schedule;
-                  },
-                  [](SceneSpec& s, const Ctx& c, const Value& v) {
-                    sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
-                  }),
-              check_schedule)),
+          kinematic_only(citing(
+              checked(
+                  make(
+                      "sphere.*.schedule", Scope::When, ValueKind::Schedule, "s: m/s", Default::Yes,
+                      kAny,
+                      "From each time on, the velocity it moves at (zero before the first entry); "
+                      "TOML [{ time = t, velocity = [x, y, z] }, ...]",
+                      [](const SceneSpec& s, const Ctx& c) -> Value {
+                        return sphere_spec(s, c).schedule;
+                      },
+                      [](SceneSpec& s, const Ctx& c, const Value& v) {
+                        sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
+                      }),
+                  check_schedule),
+              "cloth contract decision 5")),
       },
       [](SceneSpec& s, const Decl&) { s.spheres.emplace_back(); });
 }

@@ -68,6 +68,11 @@ Decl checked(Decl d, RowCheck check) {
   return d;
 }
 
+Decl citing(Decl d, std::string_view source) {
+  d.cites = source;
+  return d;
+}
+
 double real(const Value& v) { return std::get<double>(v); }
 const Vec3& vec(const Value& v) { return std::get<Vec3>(v); }
 bool flag(const Value& v) { return std::get<bool>(v); }

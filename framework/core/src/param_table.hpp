@@ -95,6 +95,9 @@ struct Decl {
   Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
   void (*set)(SceneSpec&, const Ctx&, const Value&) = nullptr;
   RowCheck check = nullptr;  ///< the row's own check against the scene (after the range check)
+  /// Where the rules of its value kind come from, for their messages (a Schedule's "times must
+  /// increase strictly (<cites>)"); "" when nowhere in particular.
+  std::string_view cites;
   /// Whether the writer writes the key (nullptr: always when it applies). A key whose value is
   /// derived from others unless given (sphere.<i>.mass: 1000·r³) is written only when given.
   bool (*written)(const SceneSpec&, const Ctx&) = nullptr;

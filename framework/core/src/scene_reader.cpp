@@ -269,9 +269,10 @@ class Loader {
           }
           if (!out.empty() && !(*t > out.back().time)) {
             error(key, pos_of(*time),
-                  "times must increase strictly (cloth contract decision 5): entry " +
-                      std::to_string(i) + " has time " + format_double(*t) + " s after " +
-                      format_double(out.back().time) + " s");
+                  "times must increase strictly" +
+                      (d.cites.empty() ? std::string() : " (" + std::string(d.cites) + ")") +
+                      ": entry " + std::to_string(i) + " has time " + format_double(*t) +
+                      " s after " + format_double(out.back().time) + " s");
             return std::nullopt;
           }
           out.push_back(ScheduleEntry{*t, *u});
