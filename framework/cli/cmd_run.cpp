@@ -21,6 +21,7 @@ namespace jelly::cli {
 
 namespace {
 
+// `jelly run --help` in pieces: between them what each body kind adds (run_help).
 constexpr const char* kRunHelp = R"(usage: jelly run SCENE [options]
 
 Runs SCENE (a .toml scene file, or a scene's name in the scenes folder; the end of this text
@@ -38,14 +39,16 @@ options:
   --auto-dt           choose the step from the stability estimate (as simulation.auto_dt = true):
                       the largest h ≤ the scene's dt that is at most half of the integrator's
                       linearised limit, with whole substeps per 1/60 s frame; prints the choice
-  --threads N         split the spring pass among N threads (default 1; pays off for large cubes,
-                      n ≥ 20, on an otherwise idle machine); the result is the same bits for any N
+  --threads N         split the spring pass among N threads (default 1; )";
+// ... each body kind's word on --threads (body_kinds_help) ...
+constexpr const char* kRunHelpAfterThreads =
+    R"(on an otherwise idle machine); the result is the same bits for any N
   --every K           record every K-th step (default: 60 frames per simulated second,
                       i.e. K = round(1 / (60 h)), at least 1); step 0 is always recorded
   --out FILE.csv      trajectory: frame,time,particle,x,y,z,vx,vy,vz (one row per particle per frame)
-  --summary FILE.csv  per frame: time,com_x,com_y,com_z,kinetic,potential,spring,max_speed
-                      (a cloth scene: the cloth's, then lowest_y and each sphere's
-                      sphere<i>_x,_y,_z,_vx,_vy,_vz)
+  --summary FILE.csv  per frame: time,com_x,com_y,com_z,kinetic,potential,spring,max_speed)";
+// ... each body kind's own summary columns ...
+constexpr const char* kRunHelpAfterSummary = R"(
   --no-detector       do not stop on instability (for experiments; NaN may follow)
   --quiet             print nothing but errors
   --help              this text
@@ -63,7 +66,12 @@ stability detector; 1 unexpected failure (e.g. an output file could not be writt
 std::string run_help() {
   const std::filesystem::path dir = session::default_scenes_dir();
   const std::string example = session::example_scene(dir);
-  std::string text = kRunHelp;
+  std::string threads, summary;
+  for (const BodyKindModule* kind : body_kinds()) {
+    threads += kind->run_help("--threads");
+    summary += kind->run_help("--summary");
+  }
+  std::string text = kRunHelp + threads + kRunHelpAfterThreads + summary + kRunHelpAfterSummary;
   if (!example.empty())
     text += "\nexample: jelly run " + example + " --integrator rk4 --summary summary.csv\n";
   return text + session::scenes_line(dir) + "\n";

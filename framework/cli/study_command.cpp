@@ -3,9 +3,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 
 #include "commands.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/command_line.hpp"
 #include "jelly/session/assignments.hpp"
 #include "study_accuracy.hpp"
@@ -54,7 +57,9 @@ exit codes: 0 done; 2 bad command line or scene; 1 a file could not be written o
 reference run blew up.
 )";
 
-constexpr const char* kEffectsHelp = R"(usage: jelly study effects SCENE [options]
+// `jelly study effects --help` in pieces: between them each body kind's lines for the measures it
+// takes (effects_help).
+constexpr const char* kEffectsHelpHead = R"(usage: jelly study effects SCENE [options]
 
 What a parameter does to the jelly: sweeps one declared parameter over the given values (and/or
 the integrator), runs the scene once per value and integrator, and measures what a student sees.
@@ -66,23 +71,19 @@ against the value) and PREFIX-time.svg/.png (each run over time), with their .gp
   turn         first time after contact at which the centre of mass stops moving down (along -g)
   peak speed   largest centre-of-mass speed from the turn on: the rebound or the slide [m/s]
   bounce       highest centre of mass from the turn on minus its height at the turn [m]
-  cave-in      largest 1 - V(t)/V(0) over the run, V = volume inside the cube's outer surface
-               (its six faces as triangles); cave-in at end = 1 - V(T)/V(0). Cube bodies only.
-  at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
+)";
+constexpr const char* kEffectsHelpRest =
+    R"(  at rest from start of the last stretch, lasting to the end and at least --rest-hold long, in
                which every particle is slower than --rest-speed [s]; "never" otherwise
   energy lost  E(0) - E(T), E = kinetic + gravitational + spring energy [J] (and % of E(0))
-  sag          a cloth: largest drop of its centre of mass (pins included) below its start [m];
-               sag at end: the drop at T. In a cloth scene the centre of mass, speeds and rest
-               are the cloth's (the spheres are not part of them)
-  swing        a cloth: largest distance of its centre of mass across g from its start [m]
-  sink         a cloth: largest depth r - |x - c| of an unpinned particle inside a sphere [cm];
-               sink at end: the same at T
-  stable       whether the stability detector (contract §8) fired; the run stops there, is
+)";
+constexpr const char* kEffectsHelpRun =
+    R"(  stable       whether the stability detector (contract §8) fired; the run stops there, is
                marked, and its measures cover the time before (at rest: never)
   cost         wall time of the steps per simulated second (median of --repeats runs), force
                (acceleration) evaluations and backward Euler's CG iterations
-  Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain (or, in a
-  cloth scene, no impulse acted).
+  Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain)";
+constexpr const char* kEffectsHelpTail = R"(.
   Which of these are measured and written is the scene's assignment's choice: its manifest's
   [studies] measures (impact, bounce, cave_in, rest, energy, sag, swing, sink; A1 lists the
   first five, A2 sag, swing, sink and energy).
@@ -209,8 +210,23 @@ std::vector<std::string> split_values(const std::string& text) {
   return out;
 }
 
+/// `jelly study effects --help`: the general measures, and each linked body kind's lines for the
+/// measures it takes, in the order of the measures.
+std::string effects_help() {
+  const auto kinds_lines = [](std::initializer_list<std::string_view> measures) {
+    std::string out;
+    for (std::string_view measure : measures)
+      for (const BodyKindModule* kind : body_kinds()) out += kind->measure_help(measure);
+    return out;
+  };
+  std::string contact;
+  for (const BodyKindModule* kind : body_kinds()) contact += kind->contact_help();
+  return kEffectsHelpHead + kinds_lines({"cave_in"}) + kEffectsHelpRest +
+         kinds_lines({"sag", "swing", "sink"}) + kEffectsHelpRun + contact + kEffectsHelpTail;
+}
+
 int effects(int argc, char** argv) {
-  Command cmd("jelly study effects", kEffectsHelp, "(see jelly study effects --help)\n");
+  Command cmd("jelly study effects", effects_help(), "(see jelly study effects --help)\n");
   std::string scene_path, prefix, title, key, values;
   SceneOverrides overrides;
   std::vector<std::string> integrators;

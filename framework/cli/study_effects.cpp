@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -14,8 +15,7 @@
 
 #include <Eigen/Geometry>
 
-#include "jelly/cloth_physics.hpp"
-#include "jelly/cube_physics.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/params.hpp"
 #include "jelly/session/assignments.hpp"
 #include "jelly/simulator.hpp"
@@ -75,39 +75,14 @@ std::string set_one(SceneSpec& scene, const std::string& key, const std::string&
   return "";
 }
 
-/// Volume inside the outer surface of cube `c` (its six faces, each grid quad cut into four
-/// triangles at its mean point), by the divergence theorem: Σ m·(a×b)/6. Exact for a cube at rest
-/// in any orientation; any closed shape it bends into gets its enclosed (signed) volume.
-double cube_volume(const CubeLattice& c, const Vec3Array& x) {
-  const int n = c.n();
-  const Vec3 o = x.col(c.first_index());  // origin near the body: less rounding
-  double six_v = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const int b = (a + 1) % 3, d = (a + 2) % 3;
-    for (int side : {0, n - 1}) {
-      const bool outward = side == n - 1;  // e_b × e_d = e_a points out of the max side
-      for (int p = 0; p + 1 < n; ++p)
-        for (int q = 0; q + 1 < n; ++q) {
-          const int pq[4][2] = {{p, q}, {p + 1, q}, {p + 1, q + 1}, {p, q + 1}};
-          Vec3 corner[4];
-          for (int m = 0; m < 4; ++m) {
-            int g[3];
-            g[a] = side;
-            g[b] = pq[m][0];
-            g[d] = pq[m][1];
-            corner[m] = x.col(c.index(g[0], g[1], g[2])) - o;
-          }
-          const Vec3 mid = 0.25 * (corner[0] + corner[1] + corner[2] + corner[3]);
-          for (int m = 0; m < 4; ++m) {
-            const Vec3& u = corner[m];
-            const Vec3& w = corner[(m + 1) % 4];
-            const double t = mid.dot(u.cross(w));
-            six_v += outward ? t : -t;
-          }
-        }
-    }
-  }
-  return six_v / 6.0;
+/// The names of the measures `m` turns on, as a manifest lists them.
+std::vector<std::string> measure_names(const Measures& m) {
+  const bool on[] = {m.impact, m.bounce, m.cave_in, m.rest, m.energy, m.sag, m.swing, m.sink};
+  static_assert(sizeof on / sizeof *on == kKnownMeasures.size(), "one flag per known measure");
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < kKnownMeasures.size(); ++i)
+    if (on[i]) names.emplace_back(kKnownMeasures[i]);
+  return names;
 }
 
 double median(std::vector<double> v) {
@@ -135,15 +110,11 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
                       ? Vec3(-world.gravity()->normalized())
                       : Vec3(0.0, 1.0, 0.0);
   const Eigen::VectorXd& mass = world.masses();
-  // A cloth scene measures the cloth (cloth contract decision 12), not the dynamic spheres that
-  // follow it in the state; an A1 scene every particle.
-  const bool cloth = !cloth_physics(world).cloths().empty();
-  const Eigen::Index body =
-      cloth ? cloth_physics(world).cloth_particle_count() : world.particle_count();
+  // The particles the body's kind measures (a kind may leave out bodies that follow it in the
+  // state).
+  const BodyKindModule& body_kind = body_kind_of(scene);
+  const Eigen::Index body = body_kind.measured_particles(world);
   const double total_mass = mass.head(body).sum();
-  const CubeLattice* cube =
-      !o.measures.cave_in || cubes_of(world).empty() ? nullptr : &cubes_of(world).front();
-  row.rest_volume = cube ? cube_volume(*cube, sim.state().x) : kNaN;
   const auto touches = [&] {
     const auto& c = world.counters();
     return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
@@ -166,41 +137,27 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     l.com_v /= total_mass;
     return l;
   };
-  // The deepest unpinned cloth particle inside a sphere (r − |x − c|), 0 when none is inside.
-  const auto sink_depth = [&](const State& s) {
-    double deepest = 0.0;
-    for (int k = 0; k < cloth_physics(world).sphere_count(); ++k) {
-      const int p = cloth_physics(world).sphere_particle(k);
-      const Vec3 c = p >= 0 ? Vec3(s.x.col(p)) : cloth_physics(world).sphere(k).center;
-      const double r = cloth_physics(world).sphere(k).radius;
-      for (Eigen::Index i = 0; i < body; ++i)
-        if (!cloth_physics(world).is_pinned(static_cast<int>(i)))
-          deepest = std::max(deepest, r - (s.x.col(i) - c).norm());
-    }
-    return deepest;
-  };
-  const bool sinks = cloth && cloth_physics(world).sphere_count() > 0 && o.measures.sink;
+  Look before = look(sim.state());
+  // What the body's kind measures on it (the cave-in, the sag, ...); NaN for what it does not.
+  const std::unique_ptr<BodyStudy> kind_study = body_kind.study(
+      world, sim.state(), StudyLook{before.com, before.height, up}, measure_names(o.measures));
+  const BodyStudyValues no_values;
+  const BodyStudyValues& kind_values = kind_study ? kind_study->values() : no_values;
 
   const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
   row.contact_time = row.impact_speed = row.turn_time = kNaN;
   row.peak_speed = row.com_apex = row.bounce = kNaN;
   double turn_height = kNaN, rest_since = 0.0, next_sample = 0.0;
-  double volume = row.rest_volume;
   const auto sample = [&](const Look& l) {
     series.t.push_back(sim.time());
     series.com_height.push_back(l.height);
     series.com_speed.push_back(l.com_v.norm());
-    series.volume_ratio.push_back(cube ? volume / row.rest_volume : kNaN);
+    series.volume_ratio.push_back(kind_values.volume_ratio);
     series.max_speed.push_back(l.max_speed);
     series.energy.push_back(sim.energy().total());
     next_sample += o.series_dt;
   };
-  Look before = look(sim.state());
-  const Look start = before;
-  row.sag = row.sag_final = row.swing = cloth ? 0.0 : kNaN;
-  row.sink = row.sink_final = sinks ? sink_depth(sim.state()) : kNaN;
   sample(before);
-  row.cave_in = 0.0;
   bool contact = false, turned = false;
   double wall = 0.0;
   for (long step = 1; step <= total; ++step) {
@@ -235,20 +192,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
       row.peak_speed = std::max(row.peak_speed, now.com_v.norm());
       row.com_apex = std::max(row.com_apex, now.height);
     }
-    if (cloth) {
-      row.sag_final = start.height - now.height;
-      row.sag = std::max(row.sag, row.sag_final);
-      const Vec3 d = now.com - start.com;
-      row.swing = std::max(row.swing, (d - up.dot(d) * up).norm());
-    }
-    if (sinks) {
-      row.sink_final = sink_depth(s);
-      row.sink = std::max(row.sink, row.sink_final);
-    }
-    if (cube) {
-      volume = cube_volume(*cube, s.x);
-      row.cave_in = std::max(row.cave_in, 1.0 - volume / row.rest_volume);
-    }
+    if (kind_study) kind_study->observe(s, StudyLook{now.com, now.height, up});
     if (now.max_speed >= o.rest_speed)
       rest_since = kNaN;
     else if (std::isnan(rest_since))
@@ -271,8 +215,15 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9
                       ? rest_since
                       : kNaN;
-  row.cave_in = cube ? row.cave_in : kNaN;
-  row.cave_in_final = cube ? 1.0 - volume / row.rest_volume : kNaN;
+  const BodyStudyValues& v = kind_values;
+  row.rest_volume = v.rest_volume;
+  row.cave_in = v.cave_in;
+  row.cave_in_final = v.cave_in_final;
+  row.sag = v.sag;
+  row.sag_final = v.sag_final;
+  row.swing = v.swing;
+  row.sink = v.sink;
+  row.sink_final = v.sink_final;
   row.energy_end = sim.energy().total();
   row.wall = wall;
   row.evaluations = sim.evaluations();

@@ -25,13 +25,14 @@ inline constexpr std::array<std::string_view, 8> kKnownMeasures = {
 struct Measures {
   bool impact = true;   ///< first contact and the centre-of-mass speed just before it
   bool bounce = true;   ///< the turn, the peak speed and the bounce after it
-  bool cave_in = true;  ///< the volume inside a cube body's outer surface, against its rest volume
+  bool cave_in = true;  ///< the volume inside the body's outer surface, against its rest volume
   bool rest = true;     ///< when the body comes to rest
   bool energy = true;   ///< energy at start and end, and what was lost
-  // Cloth scenes (assignment A2); NaN in a scene without a cloth (or without spheres: sink).
-  bool sag = false;    ///< how far the cloth's centre of mass drops below its start
+  // The body kinds' own measures (BodyKindModule::study); NaN in a scene whose kind does not
+  // take them (cave_in, sag, swing, sink).
+  bool sag = false;    ///< how far the body's centre of mass drops below its start
   bool swing = false;  ///< how far it moves sideways (across g) from its start
-  bool sink = false;   ///< how deep cloth particles get inside the spheres
+  bool sink = false;   ///< how deep the body's particles get inside the spheres
 };
 
 /// The measures `names` lists (a manifest's [studies] measures; `manifest` names the file in
@@ -69,16 +70,16 @@ struct EffectsRow {
   double peak_speed = 0.0;     ///< largest centre-of-mass speed from turn_time on [m/s]
   double com_apex = 0.0;       ///< highest centre of mass (along −g) from turn_time on [m]
   double bounce = 0.0;         ///< com_apex − centre-of-mass height at turn_time [m]
-  double rest_volume = 0.0;    ///< volume inside the cube's outer surface at t = 0 [m³]
-  double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction; cube bodies)
+  double rest_volume = 0.0;    ///< volume inside the body's outer surface at t = 0 [m³]
+  double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction)
   double cave_in_final = 0.0;  ///< 1 − V(T)/V(0)
   double rest_time =
       0.0;           ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
-  double sag = 0.0;  ///< cloth: largest drop of its centre of mass below t = 0 [m]
-  double sag_final = 0.0;     ///< cloth: the drop at the end [m]
-  double swing = 0.0;         ///< cloth: largest distance of its centre of mass across g [m]
-  double sink = 0.0;          ///< cloth: largest depth of an unpinned particle in a sphere [m]
-  double sink_final = 0.0;    ///< cloth: the same at the end [m]
+  double sag = 0.0;  ///< largest drop of the centre of mass below t = 0 [m]
+  double sag_final = 0.0;     ///< the drop at the end [m]
+  double swing = 0.0;         ///< largest distance of the centre of mass across g [m]
+  double sink = 0.0;          ///< largest depth of an unpinned particle in a sphere [m]
+  double sink_final = 0.0;    ///< the same at the end [m]
   double energy_start = 0.0;  ///< kinetic + gravitational + spring at t = 0 [J]
   double energy_end = 0.0;    ///< the same at the end [J]
   bool stable = true;         ///< the §8 detector never fired (the run stops when it does)

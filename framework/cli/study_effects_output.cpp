@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "jelly/body_kind.hpp"
 #include "study_effects.hpp"
 #include "study_files.hpp"
 
@@ -64,6 +65,15 @@ std::string multiplot_layout(int panels, const std::string& title) {
   std::snprintf(buf, sizeof buf, "set multiplot layout %d,%d title \"%s\" noenhanced font ',12'\n",
                 rows, columns, title.c_str());
   return buf;
+}
+
+/// The plot's label of a body kind's measure: the first linked kind's that takes it, else its
+/// name.
+std::string plot_label(std::string_view measure) {
+  for (const BodyKindModule* kind : body_kinds())
+    if (const std::string_view label = kind->measure_plot_label(measure); !label.empty())
+      return std::string(label);
+  return std::string(measure);
 }
 
 }  // namespace
@@ -184,10 +194,10 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   const std::size_t per_block = o.key.empty() ? r.rows.size() : o.values.size();
   const std::size_t blocks = per_block ? r.rows.size() / per_block : 0;
   std::ostringstream dat;
-  // A cloth's measures follow the label (an A1 study's file stays as it was).
-  const bool cloth_columns = m.sag || m.swing || m.sink;
+  // The sag, swing and sink follow the label (a study without them keeps the file it had).
+  const bool moving_columns = m.sag || m.swing || m.sink;
   dat << "# x stable peak_speed bounce cave_in_% rest_time dissipated_% wall_per_sim label"
-      << (cloth_columns ? " sag swing sink_cm" : "") << '\n';
+      << (moving_columns ? " sag swing sink_cm" : "") << '\n';
   for (std::size_t b = 0; b < blocks; ++b) {
     if (b) dat << "\n\n";
     dat << "# "
@@ -201,7 +211,7 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
           << num(row.rest_time) << ' '
           << num(row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0) << ' '
           << num(row.wall_per_sim()) << " \"" << label << "\"";
-      if (cloth_columns)
+      if (moving_columns)
         dat << ' ' << num(row.sag) << ' ' << num(row.swing) << ' ' << num(100.0 * row.sink);
       dat << '\n';
     }
@@ -213,15 +223,15 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   const std::string xlabel = o.key.empty() ? "integrator" : o.key;
   // The panels of the measures the scene's assignment reports, then the cost.
   constexpr int kPanels = 9;
-  const char* panels[kPanels][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
-                                    {"4", "bounce height of the centre of mass [m]"},
-                                    {"5", "cave-in: largest volume loss [%]"},
-                                    {"10", "sag: largest drop of the cloth [m]"},
-                                    {"11", "swing: largest sideways move of the cloth [m]"},
-                                    {"12", "sink: deepest particle in a sphere [cm]"},
-                                    {"6", "at rest from [s] (none: never)"},
-                                    {"7", "energy dissipated [% of the start]"},
-                                    {"8", "wall time per simulated second [s]"}};
+  const std::string panels[kPanels][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
+                                          {"4", "bounce height of the centre of mass [m]"},
+                                          {"5", plot_label("cave_in")},
+                                          {"10", plot_label("sag")},
+                                          {"11", plot_label("swing")},
+                                          {"12", plot_label("sink")},
+                                          {"6", "at rest from [s] (none: never)"},
+                                          {"7", "energy dissipated [% of the start]"},
+                                          {"8", "wall time per simulated second [s]"}};
   const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
                                m.sink,   m.rest,   m.energy,  true};
   std::ostringstream body;

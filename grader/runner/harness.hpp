@@ -11,7 +11,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "jelly/cube.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/task_table.hpp"
 #include "jelly/types.hpp"
@@ -85,7 +84,7 @@ class Params {
 
 /// One case generator: a family of tests (e.g. "a spring builder on a lattice"), turned into one
 /// case by its parameters. `prepare` (optional) builds the case's input with the REFERENCE tasks
-/// when the reference data is generated (e.g. the reference spring list of a cube, which the
+/// when the reference data is generated (e.g. the reference spring list of a body, which the
 /// framework does not otherwise have); the input is stored with the reference data and handed to
 /// `run`.
 struct GeneratorDef {
@@ -115,18 +114,9 @@ TaskTable assignment_task_table();
 
 // ----- helpers shared by the cases -----
 
-/// The reference springs of a cube, as stored in a case input: [[a, b, rest], ...].
+/// Reference springs as stored in a case input: [[a, b, rest], ...].
 Json springs_to_json(const std::vector<Spring>& springs);
 std::vector<Spring> springs_from_json(const Json& j);
-
-/// A cube from a parameter table: n, edge, center, rotation_axis, rotation_degrees (the last three
-/// optional: (0,0,0), (1,0,1), 0).
-CubeSpec cube_from_params(const Params& cube);
-/// prepare(): the REFERENCE springs of the cube in params["cube"], per type, into input["springs"].
-void prepare_cube_springs(const TaskTable& reference, const Params& params, Json& input);
-/// Adds the cube params["cube"]'s particles and the spring groups stored in input["springs"] to a
-/// world, every group with the given coefficients (no student builder involved).
-void add_prepared_cube(World& world, const Params& params, const Json& input, double ks, double kd);
 
 /// A deterministic pseudo-random sequence in [−1, 1) (its own arithmetic, so that every standard
 /// library gives the same numbers).

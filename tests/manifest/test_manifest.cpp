@@ -95,6 +95,21 @@ TEST(Manifest, HandGradedPointsAreRead) {
   EXPECT_DOUBLE_EQ(m.hand_graded_points, 5.0);
 }
 
+// `contracts` names the contracts the grader's messages cite (the report's anchors); absent, none.
+TEST(Manifest, ContractsAreReadAndMustBeAnchorNames) {
+  EXPECT_TRUE(jelly::parse_manifest(kGood, "p1.toml").contracts.empty());
+  const jelly::AssignmentManifest m = jelly::parse_manifest(
+      replaced("files = [\"launch.cpp\", \"drag.cpp\"]",
+               "files = [\"launch.cpp\", \"drag.cpp\"]\ncontracts = [\"ballistics\", \"drag-2\"]"),
+      "p1.toml");
+  EXPECT_EQ(m.contracts, (std::vector<std::string>{"ballistics", "drag-2"}));
+  EXPECT_EQ(
+      error_of(replaced("files = [\"launch.cpp\", \"drag.cpp\"]",
+                        "files = [\"launch.cpp\", \"drag.cpp\"]\ncontracts = [\"Drag law\"]")),
+      "assignments/p1/assignment.toml:5: contracts: expected names of lower-case letters, "
+      "digits and '-' (a handout anchor), not \"Drag law\"");
+}
+
 // `bonus = true` marks a task whose points come on top of autograded_total; absent, false.
 TEST(Manifest, ABonusTaskIsMarked) {
   const jelly::AssignmentManifest plain = jelly::parse_manifest(kGood, "p1.toml");

@@ -3,6 +3,9 @@
 // World. Registered by body.cmake.
 #include <array>
 
+#include "cloth_probe.hpp"
+#include "cloth_study.hpp"
+#include "cloth_summary.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/cloth_physics.hpp"
 #include "jelly/recorder.hpp"
@@ -138,19 +141,21 @@ std::vector<Decl> sphere_rows() {
               [](SceneSpec& s, const Ctx& c, const Value& v) {
                 sphere_spec(s, c).velocity = vec(v);
               })),
-          kinematic_only(checked(
-              make(
-                  "sphere.*.schedule", Scope::When, ValueKind::Schedule, "s: m/s", Default::Yes,
-                  kAny,
-                  "From each time on, the velocity it moves at (zero before the first entry); "
-                  "TOML [{ time = t, velocity = [x, y, z] }, ...]",
-                  [](const SceneSpec& s, const Ctx& c) -> Value {
-                    return sphere_spec(s, c).schedule;
-                  },
-                  [](SceneSpec& s, const Ctx& c, const Value& v) {
-                    sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
-                  }),
-              check_schedule)),
+          kinematic_only(citing(
+              checked(
+                  make(
+                      "sphere.*.schedule", Scope::When, ValueKind::Schedule, "s: m/s", Default::Yes,
+                      kAny,
+                      "From each time on, the velocity it moves at (zero before the first entry); "
+                      "TOML [{ time = t, velocity = [x, y, z] }, ...]",
+                      [](const SceneSpec& s, const Ctx& c) -> Value {
+                        return sphere_spec(s, c).schedule;
+                      },
+                      [](SceneSpec& s, const Ctx& c, const Value& v) {
+                        sphere_spec(s, c).schedule = std::get<std::vector<ScheduleEntry>>(v);
+                      }),
+                  check_schedule),
+              "cloth contract decision 5")),
       },
       [](SceneSpec& s, const Decl&) { s.spheres.emplace_back(); });
 }
@@ -377,8 +382,14 @@ class ClothKind final : public BodyKindModule {
   std::string summary_header(const World& world) const override {
     return cloth_summary_header(cloth_physics(world).sphere_count());
   }
+  std::string_view run_help(std::string_view option) const override {
+    return option == "--summary"
+               ? "\n                      (a cloth scene: the cloth's, then lowest_y and each "
+                 "sphere's\n                      sphere<i>_x,_y,_z,_vx,_vy,_vz)"
+               : "";
+  }
   void write_summary(CsvWriter& out, const World& world, const State& s, double t) const override {
-    out.write_cloth_summary(summarize_cloth(world, s, t));
+    out.write_row(cloth_summary_row(summarize_cloth(world, s, t)));
   }
   /// The end of a cloth scene's run (cloth contract decision 12): the cloth's centre of mass
   /// (pinned particles included), kinetic energy, largest speed and lowest y, and each sphere.
@@ -409,6 +420,30 @@ class ClothKind final : public BodyKindModule {
     }
     return out;
   }
+  // ----- the smoke tests of the slots that build its springs -----
+  std::vector<std::string_view> probe_slots() const override { return cloth_probe_slots(); }
+  TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                        const TaskTable& tasks) const override {
+    return probe_cloth_slot(slot, std::move(id), std::move(name), tasks);
+  }
+
+  // ----- what the studies measure on it (cloth contract decision 12: the cloth, not the
+  // dynamic spheres that follow it in the state) -----
+  Eigen::Index measured_particles(const World& world) const override {
+    return cloth_physics(world).cloth_particle_count();
+  }
+  std::unique_ptr<BodyStudy> study(const World& world, const State& start, const StudyLook& look,
+                                   const std::vector<std::string>& measures) const override {
+    return make_cloth_study(world, start, look, measures);
+  }
+  std::string_view measure_help(std::string_view measure) const override {
+    return cloth_measure_help(measure);
+  }
+  std::string_view measure_plot_label(std::string_view measure) const override {
+    return cloth_measure_plot_label(measure);
+  }
+  std::string_view contact_help() const override { return cloth_contact_help(); }
+
   /// Cloth contract §1, §3: the pinned particles and the spheres, in scene order.
   std::string check_report(const SceneSpec& scene, const World& world) const override {
     const ClothPhysics& cloth = cloth_physics(world);

@@ -1,5 +1,7 @@
 // The cube body kind (assignment A1's jelly): its [body] keys, and how a cube scene becomes a
 // World (contract §1-§3). Registered by body.cmake.
+#include "cube_probe.hpp"
+#include "cube_study.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/cube_physics.hpp"
 #include "jelly/world.hpp"
@@ -69,6 +71,28 @@ class CubeKind final : public BodyKindModule {
   }
 
   std::string_view stability_reason() const override { return "since contact stiffens the cube"; }
+  std::string_view run_help(std::string_view option) const override {
+    return option == "--threads" ? "pays off for large cubes,\n                      n ≥ 20, " : "";
+  }
+
+  // ----- the smoke tests of the slots that build its springs -----
+  std::vector<std::string_view> probe_slots() const override { return cube_probe_slots(); }
+  TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                        const TaskTable& tasks) const override {
+    return probe_cube_slot(slot, std::move(id), std::move(name), tasks);
+  }
+
+  // ----- what the studies measure on it -----
+  std::unique_ptr<BodyStudy> study(const World& world, const State& start, const StudyLook&,
+                                   const std::vector<std::string>& measures) const override {
+    return make_cube_study(world, start, measures);
+  }
+  std::string_view measure_help(std::string_view measure) const override {
+    return cube_measure_help(measure);
+  }
+  std::string_view measure_plot_label(std::string_view measure) const override {
+    return cube_measure_plot_label(measure);
+  }
 
   void build(const SceneSpec& scene, World& world) const override {
     CubePhysics& physics = cube_physics(world);  // the cube's lattices, the default physics' rest

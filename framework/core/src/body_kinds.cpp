@@ -6,6 +6,7 @@
 #include "jelly/body_kind.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
+#include "jelly/task_probe.hpp"
 #include "param_table.hpp"
 
 namespace jelly {
@@ -46,6 +47,14 @@ std::optional<params_detail::CrossError> BodyKindModule::check_absent(const Scen
   return std::nullopt;
 }
 
+std::vector<std::string_view> BodyKindModule::probe_slots() const { return {}; }
+
+TaskStatus BodyKindModule::probe_slot(std::string_view slot, std::string id, std::string,
+                                      const TaskTable&) const {
+  throw std::invalid_argument("task " + id + ": probe: the body kind " + std::string(name()) +
+                              " has no slot \"" + std::string(slot) + "\"");
+}
+
 std::string BodyKindModule::summary_header(const World&) const { return kSummaryHeader; }
 
 void BodyKindModule::write_summary(CsvWriter& out, const World& world, const State& s,
@@ -78,6 +87,23 @@ std::string BodyKindModule::check_report(const SceneSpec& scene, const World& wo
 }
 
 std::string_view BodyKindModule::stability_reason() const { return "since the body stiffens"; }
+
+std::string_view BodyKindModule::run_help(std::string_view) const { return ""; }
+
+Eigen::Index BodyKindModule::measured_particles(const World& world) const {
+  return world.particle_count();
+}
+
+std::unique_ptr<BodyStudy> BodyKindModule::study(const World&, const State&, const StudyLook&,
+                                                 const std::vector<std::string>&) const {
+  return nullptr;
+}
+
+std::string_view BodyKindModule::measure_help(std::string_view) const { return ""; }
+
+std::string_view BodyKindModule::measure_plot_label(std::string_view) const { return ""; }
+
+std::string_view BodyKindModule::contact_help() const { return ""; }
 
 std::string text_printf(const char* format, ...) {
   std::va_list args;

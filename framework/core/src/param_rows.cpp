@@ -68,6 +68,11 @@ Decl checked(Decl d, RowCheck check) {
   return d;
 }
 
+Decl citing(Decl d, std::string_view source) {
+  d.cites = source;
+  return d;
+}
+
 double real(const Value& v) { return std::get<double>(v); }
 const Vec3& vec(const Value& v) { return std::get<Vec3>(v); }
 bool flag(const Value& v) { return std::get<bool>(v); }
@@ -149,8 +154,8 @@ std::vector<Decl> body_section(std::string_view body, std::vector<Decl> rows,
 
 namespace {
 
-// body.type: "The body: a jelly cube, particles given one by one, or a cloth (assignment A2)",
-// from what each linked kind says it is.
+// body.type: "The body: " and what each linked kind says it is (its description()), joined in
+// registry order.
 std::string_view body_type_description() {
   static const std::string text = [] {
     std::string out = "The body: ";
@@ -445,7 +450,7 @@ const std::vector<Collection>& collections() {
     // [[terrain]]: the scene's terrains, each named by its `name` key.
     out.push_back(collection("terrain", "<name>", "terrain", Layout::ArrayOfTables, terrain_names,
                              terrain_rows()));
-    // Then each body kind's own ([[sphere]]: a cloth scene's spheres).
+    // Then each body kind's own (BodyKindModule::collections).
     for (const BodyKindModule* kind : body_kinds())
       for (Collection& c : kind->collections()) {
         c.body = kind->name();

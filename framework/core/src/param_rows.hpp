@@ -49,6 +49,9 @@ Decl presence(Decl d);
 Decl written_if(Decl d, bool (*when)(const SceneSpec&, const Ctx&));
 /// A row with its own check against the rest of the scene.
 Decl checked(Decl d, RowCheck check);
+/// A row whose value kind's rules come from `source` (a contract's section), which their messages
+/// cite.
+Decl citing(Decl d, std::string_view source);
 
 double real(const Value& v);
 const Vec3& vec(const Value& v);

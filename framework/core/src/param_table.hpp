@@ -35,7 +35,7 @@ enum class ValueKind {
   IndexPairList,
   RealList,
   NameList,  ///< names from `choices` ("corners, edge"; body.pins)
-  GridList,  ///< cloth grid coordinates "i,k; i,k" (body.pin_points), stored as IndexPair
+  GridList,  ///< grid coordinates "i,k; i,k" (a body's points on its grid), stored as IndexPair
   Schedule   ///< a kinematic sphere's velocity schedule "t: x,y,z; t: x,y,z"
 };
 
@@ -95,10 +95,13 @@ struct Decl {
   Value (*get)(const SceneSpec&, const Ctx&) = nullptr;
   void (*set)(SceneSpec&, const Ctx&, const Value&) = nullptr;
   RowCheck check = nullptr;  ///< the row's own check against the scene (after the range check)
+  /// Where the rules of its value kind come from, for their messages (a Schedule's "times must
+  /// increase strictly (<cites>)"); "" when nowhere in particular.
+  std::string_view cites;
   /// Whether the writer writes the key (nullptr: always when it applies). A key whose value is
   /// derived from others unless given (sphere.<i>.mass: 1000·r³) is written only when given.
   bool (*written)(const SceneSpec&, const Ctx&) = nullptr;
-  std::string_view body;  ///< Scope::Body: the body kind whose section the row is in ("cube")
+  std::string_view body;  ///< Scope::Body: the body kind whose section the row is in (its name())
   /// Scope::When: when the row applies in words (the reference table), whether it applies, and
   /// why not (for messages).
   std::string_view when_text;
@@ -196,8 +199,8 @@ std::variant<Value, std::string> parse_text(const Decl& d, std::string_view text
 /// Formats a value in the text form parse_text accepts.
 std::string format_text(ValueKind kind, const Value& v);
 
-/// Why a key that names a declaration does not apply to this scene ("is a key of a cube body;
-/// this scene's body is particles"), for error messages.
+/// Why a key that names a declaration does not apply to this scene (the key's kind and the
+/// scene's, BodyKindModule::foreign_key), for error messages.
 std::string inapplicable_reason(const Bound& b, const SceneSpec& s);
 
 /// A problem that involves several keys (bowl rim, particle counts, spring table presence).

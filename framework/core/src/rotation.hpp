@@ -1,5 +1,6 @@
-// The rotation of a body's initial grid about its centre (physics contract §1, cloth contract §1),
-// shared by the cube and the cloth so that both turn their particles with the same bits.
+// The rotation of a body's initial grid about its centre (physics contract §1, and each body
+// kind's contract that reuses it), shared by the kinds so that all turn their particles with the
+// same bits.
 #pragma once
 
 #include "jelly/portable_math.hpp"

@@ -269,9 +269,10 @@ class Loader {
           }
           if (!out.empty() && !(*t > out.back().time)) {
             error(key, pos_of(*time),
-                  "times must increase strictly (cloth contract decision 5): entry " +
-                      std::to_string(i) + " has time " + format_double(*t) + " s after " +
-                      format_double(out.back().time) + " s");
+                  "times must increase strictly" +
+                      (d.cites.empty() ? std::string() : " (" + std::string(d.cites) + ")") +
+                      ": entry " + std::to_string(i) + " has time " + format_double(*t) +
+                      " s after " + format_double(out.back().time) + " s");
             return std::nullopt;
           }
           out.push_back(ScheduleEntry{*t, *u});
@@ -435,9 +436,9 @@ class Loader {
     return nullptr;
   }
 
-  /// Why a section may not be in this scene: another kind's table ([collision] and [[sphere]]
-  /// belong to cloth scenes), or a general one the scene's kind has none of ([[terrain]] in a
-  /// cloth scene, cloth contract §6). nullopt when it may.
+  /// Why a section may not be in this scene: another kind's table (BodyKindModule::
+  /// foreign_section), or a general one the scene's kind has none of (refuses_section). nullopt
+  /// when it may.
   std::optional<std::string> section_not_here(const std::string& name) const {
     const BodyKindModule& body = body_kind_of(spec_);
     if (auto why = body.refuses_section(name)) return why;

@@ -76,24 +76,6 @@ std::vector<std::string_view> terrain_preset_names() {
           "course-2021-sphere", "course-2021-bowl", "course-2021-tilted"};
 }
 
-SceneSpec course_2023_scene() {
-  SceneSpec s;
-  s.name = "course-2023";
-  s.description =
-      "A jelly cube falls onto a floor with a hole and tips into the bowl below (course 2023).";
-  s.integrator = IntegratorKind::SymplecticEuler;
-  s.dt = 0.001;
-  s.duration = 10.0;
-  s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
-  s.structural = {true, 2000.0, 60.0};
-  s.shear = {true, 2000.0, 60.0};
-  s.bending = {true, 2000.0, 60.0};
-  s.terrains = {*terrain_preset("course-2023-floor"), *terrain_preset("course-2023-bowl")};
-  return s;
-}
-
 std::unique_ptr<World> build_world(const SceneSpec& scene, const TaskTable& tasks) {
   auto world = std::make_unique<World>(tasks);
   body_kind_of(scene).build(scene, *world);  // its body, springs, gravity, terrains or spheres

@@ -1,31 +1,16 @@
 // Probes each student task once on a tiny input (see task_probe.hpp).
 #include "jelly/task_probe.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
+#include "jelly/body_kind.hpp"
 #include "jelly/test_systems.hpp"
 
 namespace jelly {
 
 namespace {
-
-using SpringBuilder = void (*)(const CubeLattice&, std::vector<Spring>&);
-
-TaskStatus probe_builder(std::string id, std::string name, SpringBuilder fn) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
-  if (!fn) return st;
-  CubeSpec spec;
-  spec.n = 3;  // 3×3×3 has structural, shear and bending springs
-  spec.edge = 2.0;
-  const CubeLattice lattice(spec);
-  std::vector<Spring> out;
-  fn(lattice, out);
-  st.implemented = !out.empty();
-  st.evidence = st.implemented ? std::to_string(out.size()) + " springs for a 3×3×3 lattice"
-                               : "no springs for a 3×3×3 lattice";
-  return st;
-}
 
 TaskStatus probe_integrator(std::string id, std::string name, StepFunction fn) {
   TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
@@ -111,23 +96,6 @@ TaskStatus probe_damper_force(std::string id, std::string name, const TaskTable&
   return st;
 }
 
-using GridBuilder = void (*)(const ClothGrid&, std::vector<Spring>&);
-
-TaskStatus probe_grid_builder(std::string id, std::string name, GridBuilder fn) {
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
-  if (!fn) return st;
-  ClothSpec spec;
-  spec.n = 3;  // 3×3 has structural, shear and bending springs
-  spec.size = 2.0;
-  const ClothGrid grid(spec);
-  std::vector<Spring> out;
-  fn(grid, out);
-  st.implemented = !out.empty();
-  st.evidence = st.implemented ? std::to_string(out.size()) + " springs for a 3×3 cloth"
-                               : "no springs for a 3×3 cloth";
-  return st;
-}
-
 TaskStatus probe_particle_sphere(std::string id, std::string name, const TaskTable& t) {
   // A particle 5 mm above a resting sphere of inverse mass 0, falling at 1 m/s: φ < ε, approaching.
   TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
@@ -183,34 +151,18 @@ Bowl probe_bowl() {  // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whos
 }  // namespace
 
 std::vector<std::string_view> probe_slots() {
-  return {"add_structural_springs",
-          "add_shear_springs",
-          "add_bending_springs",
-          "spring_force",
-          "damper_force",
-          "collide_plane",
-          "collide_bowl",
-          "contact_plane",
-          "contact_bowl",
-          "explicit_euler_step",
-          "implicit_euler_step",
-          "midpoint_step",
-          "rk4_step",
-          "add_grid_structural_springs",
-          "add_grid_shear_springs",
-          "add_grid_bending_springs",
-          "collide_particle_sphere",
-          "collide_spheres",
-          "friction_impulse"};
+  std::vector<std::string_view> slots = {
+      "spring_force",    "damper_force", "collide_plane",           "collide_bowl",
+      "contact_plane",   "contact_bowl", "explicit_euler_step",     "implicit_euler_step",
+      "midpoint_step",   "rk4_step",     "collide_particle_sphere", "collide_spheres",
+      "friction_impulse"};
+  // Then the slots that take a body kind's lattice or grid (its spring builders).
+  for (const BodyKindModule* kind : body_kinds())
+    for (std::string_view slot : kind->probe_slots()) slots.push_back(slot);
+  return slots;
 }
 
 TaskStatus probe_slot(std::string_view slot, std::string id, std::string name, const TaskTable& t) {
-  if (slot == "add_structural_springs")
-    return probe_builder(std::move(id), std::move(name), t.add_structural_springs);
-  if (slot == "add_shear_springs")
-    return probe_builder(std::move(id), std::move(name), t.add_shear_springs);
-  if (slot == "add_bending_springs")
-    return probe_builder(std::move(id), std::move(name), t.add_bending_springs);
   if (slot == "spring_force") return probe_spring_force(std::move(id), std::move(name), t);
   if (slot == "damper_force") return probe_damper_force(std::move(id), std::move(name), t);
   if (slot == "collide_plane")
@@ -230,16 +182,15 @@ TaskStatus probe_slot(std::string_view slot, std::string id, std::string name, c
   if (slot == "midpoint_step")
     return probe_integrator(std::move(id), std::move(name), t.midpoint_step);
   if (slot == "rk4_step") return probe_integrator(std::move(id), std::move(name), t.rk4_step);
-  if (slot == "add_grid_structural_springs")
-    return probe_grid_builder(std::move(id), std::move(name), t.add_grid_structural_springs);
-  if (slot == "add_grid_shear_springs")
-    return probe_grid_builder(std::move(id), std::move(name), t.add_grid_shear_springs);
-  if (slot == "add_grid_bending_springs")
-    return probe_grid_builder(std::move(id), std::move(name), t.add_grid_bending_springs);
   if (slot == "collide_particle_sphere")
     return probe_particle_sphere(std::move(id), std::move(name), t);
   if (slot == "collide_spheres") return probe_spheres(std::move(id), std::move(name), t);
   if (slot == "friction_impulse") return probe_friction(std::move(id), std::move(name), t);
+  for (const BodyKindModule* kind : body_kinds()) {
+    const std::vector<std::string_view> own = kind->probe_slots();
+    if (std::find(own.begin(), own.end(), slot) != own.end())
+      return kind->probe_slot(slot, std::move(id), std::move(name), t);
+  }
   throw std::invalid_argument("task " + id + ": probe: expected one of the framework's slots " +
                               "(jelly/task_probe.hpp), not \"" + std::string(slot) + "\"");
 }

@@ -194,7 +194,7 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   AssignmentManifest m;
   Reader r(root, source, "");
   r.only_keys({"id", "namespace", "title", "files", "reference_files", "task_modules", "bodies",
-               "default_scene", "handout", "studies", "grading", "task"});
+               "default_scene", "handout", "contracts", "studies", "grading", "task"});
   m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
   if (!is_name(m.id, true))
     fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
@@ -211,6 +211,13 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
       r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
   m.bodies = r.strings("bodies", false, "a list of scene body kinds, e.g. [\"cube\"]");
   m.default_scene = r.string("default_scene", false, "a scene name");
+  m.contracts = r.strings("contracts", false,
+                          "a list of contract names (the handout's anchors <name>-contract-N)");
+  for (const std::string& c : m.contracts)
+    if (c.empty() || c.size() > 32 ||
+        c.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+      fail(source, r.node("contracts"), "contracts",
+           "names of lower-case letters, digits and '-' (a handout anchor), not \"" + c + "\"");
   m.handout = r.string("handout", false, "a file in the assignment's folder");
   if (!m.handout.empty() && !is_relative_path(m.handout))
     fail(source, r.node("handout"), "handout", "a path inside the assignment's folder");

@@ -641,6 +641,7 @@ GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
   run_cases(refs, book, work_dir, jobs, workspace.gid(), options, rep);
   add_up(rep);
   apply_hints(hints, book, harness_digest(config), rep);
+  rep.contracts = config.assignment().manifest.contracts;
   const fs::path terms = config.assignments_dir() / "handout" / "reading-your-report.md";
   std::error_code ec;
   if (fs::is_regular_file(terms, ec)) {

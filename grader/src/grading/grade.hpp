@@ -89,6 +89,9 @@ struct GradeReport {
   /// relative to the framework's top folder ("assignments/a1/handout/reading-your-report.md"); ""
   /// when the assignment has none.
   std::string terms_page;
+  /// The contracts its messages cite by name (the manifest's `contracts`): the report links
+  /// "<name> contract §N" to the terms page's #<name>-contract-N.
+  std::vector<std::string> contracts;
 };
 
 /// Builds the submission's runner and runs every selected case. Throws std::runtime_error only

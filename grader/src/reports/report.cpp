@@ -136,6 +136,14 @@ std::string hint_text(const CaseResult& c) {
   return h + " (a mistake the grader knows; check that part of your code)";
 }
 
+// The handout page that explains a report's terms, and the contracts its messages cite by name.
+struct TermsPage {
+  std::string path;                    ///< "" when the assignment has none
+  std::vector<std::string> contracts;  ///< the manifest's `contracts`
+};
+
+TermsPage terms_page_of(const GradeReport& r) { return {r.terms_page, r.contracts}; }
+
 // A term of a message that the handout page explains: its text in the message, its anchor there.
 struct Term {
   std::size_t at = 0, size = 0;
@@ -143,9 +151,10 @@ struct Term {
 };
 
 // The terms in `text`: "tolerance 'force'" (a tolerance's name: lower-case letters and _ only, so
-// a student's text cannot make an anchor of anything else) and "contract §9" (with "physics " or
-// "cloth " before it: the physics contract or the cloth's).
-std::vector<Term> find_terms(const std::string& text) {
+// a student's text cannot make an anchor of anything else) and "contract §9" (with "physics "
+// before it: the physics contract, anchor contract-9; with the name of one of the assignment's
+// `contracts` before it: that contract, anchor <name>-contract-9).
+std::vector<Term> find_terms(const std::string& text, const std::vector<std::string>& contracts) {
   std::vector<Term> out;
   for (std::size_t i = 0; i < text.size(); ++i) {
     static const std::string tol = "tolerance '";
@@ -168,13 +177,16 @@ std::vector<Term> find_terms(const std::string& text) {
       if (e > i + con.size()) {
         std::string prefix = "contract-";
         std::size_t start = i;
-        for (const char* who : {"cloth ", "physics "}) {
-          const std::size_t n = std::char_traits<char>::length(who);
-          if (i >= n && text.compare(i - n, n, who) == 0) {
-            start = i - n;
-            if (who[0] == 'c') prefix = "cloth-contract-";
+        for (const std::string& name : contracts) {
+          const std::string who = name + " ";
+          if (i >= who.size() && text.compare(i - who.size(), who.size(), who) == 0) {
+            start = i - who.size();
+            prefix = name + "-contract-";
           }
         }
+        static const std::string physics = "physics ";
+        if (i >= physics.size() && text.compare(i - physics.size(), physics.size(), physics) == 0)
+          start = i - physics.size();
         out.push_back({start, e - start, prefix + text.substr(i + con.size(), e - i - con.size())});
         i = e - 1;
       }
@@ -185,25 +197,25 @@ std::vector<Term> find_terms(const std::string& text) {
 
 // `text` escaped by `escape`, each term a link to `page`#anchor made by `link(shown, href)`.
 template <class Escape, class Link>
-std::string with_links(const std::string& text, const std::string& page, Escape escape, Link link) {
-  if (page.empty()) return escape(text);
+std::string with_links(const std::string& text, const TermsPage& page, Escape escape, Link link) {
+  if (page.path.empty()) return escape(text);
   std::string out;
   std::size_t from = 0;
-  for (const Term& t : find_terms(text)) {
+  for (const Term& t : find_terms(text, page.contracts)) {
     out += escape(text.substr(from, t.at - from));
-    out += link(escape(text.substr(t.at, t.size)), page + "#" + t.anchor);
+    out += link(escape(text.substr(t.at, t.size)), page.path + "#" + t.anchor);
     from = t.at + t.size;
   }
   return out + escape(text.substr(from));
 }
 
-std::string html_with_links(const std::string& text, const std::string& page) {
+std::string html_with_links(const std::string& text, const TermsPage& page) {
   return with_links(text, page, xml_escape, [](const std::string& shown, const std::string& href) {
     return "<a href=\"" + xml_escape(href) + "\">" + shown + "</a>";
   });
 }
 
-std::string markdown_with_links(const std::string& text, const std::string& page) {
+std::string markdown_with_links(const std::string& text, const TermsPage& page) {
   return with_links(text, page, markdown_inline,
                     [](const std::string& shown, const std::string& href) {
                       return "[" + shown + "](" + href + ")";
@@ -213,19 +225,19 @@ std::string markdown_with_links(const std::string& text, const std::string& page
 // The plain-text pointers to the handout for the terms of `lines` (terminal, Gradescope): one
 // "see PAGE#anchor" per distinct term.
 std::vector<std::string> term_pointers(const std::vector<std::string>& lines,
-                                       const std::string& page) {
+                                       const TermsPage& page) {
   std::vector<std::string> out;
-  if (page.empty()) return out;
+  if (page.path.empty()) return out;
   std::set<std::string> seen;
   for (const std::string& l : lines)
-    for (const Term& t : find_terms(l))
-      if (seen.insert(t.anchor).second) out.push_back(page + "#" + t.anchor);
+    for (const Term& t : find_terms(l, page.contracts))
+      if (seen.insert(t.anchor).second) out.push_back(page.path + "#" + t.anchor);
   return out;
 }
 
 // A test's output in Gradescope, PrairieLearn and JUnit: its messages (at most six), its hint, the
 // handout's words, what it printed.
-std::string case_output(const CaseResult& c, const std::string& terms_page) {
+std::string case_output(const CaseResult& c, const TermsPage& terms_page) {
   std::string o;
   if (c.status == "passed") o = "Passed.\n";
   std::vector<std::string> shown;
@@ -290,7 +302,7 @@ void task_details(std::ostream& o, const GradeReport& r, const TaskResult& t, bo
         o << "               (" << c->failures.size() - 2
           << " more: --verbose, or the selfcheck-verbose target)\n";
       if (!c->hints.empty()) o << "               hint: " << hint_text(*c) << "\n";
-      for (const std::string& p : term_pointers(shown, r.terms_page))
+      for (const std::string& p : term_pointers(shown, terms_page_of(r)))
         o << "               words: see " << p << "\n";
       first = false;
     } else {
@@ -303,8 +315,8 @@ void task_details(std::ostream& o, const GradeReport& r, const TaskResult& t, bo
 }
 
 // The summary of the tasks as text (terminal and Gradescope's output): a row per task, its
-// columns as wide as their widest cell (by display width: "Cloth–sphere" lines up with
-// "Sphere–sphere"), each followed by its tests (task_details).
+// columns as wide as their widest cell (by display width: a title with an en dash, "A–B", lines
+// up with one of plain letters), each followed by its tests (task_details).
 void task_blocks(std::ostream& o, const GradeReport& r, bool verbose, bool public_only = false) {
   jelly::cli::TextTable table(" ");
   table.align_right(2);
@@ -435,7 +447,7 @@ Json gradescope_results(const GradeReport& r, const CaseBook& book) {
     t["score"] = std::round(c.score * 1e6) / 1e6;
     t["max_score"] = bonus ? 0.0 : std::round(c.max_score * 1e6) / 1e6;
     t["status"] = c.status;
-    t["output"] = case_output(c, r.terms_page);
+    t["output"] = case_output(c, terms_page_of(r));
     t["visibility"] = c.spec->hidden ? book.rubric.hidden_visibility : std::string("visible");
     const TaskSpec* ts = task_of(r, c);
     t["tags"] = Json::array({c.spec->task, ts ? ts->category : std::string()});
@@ -469,7 +481,7 @@ Json prairielearn_results(const GradeReport& r) {
     t["message"] = c.status == "passed"
                        ? std::string("Passed")
                        : (c.failures.empty() ? std::string("Failed") : c.failures.front());
-    t["output"] = case_output(c, r.terms_page);
+    t["output"] = case_output(c, terms_page_of(r));
     tests.push_back(t);
   }
   j["tests"] = tests;
@@ -504,7 +516,7 @@ std::string junit_xml(const GradeReport& r) {
       if (c->status == "failed")
         o << "<failure message=\""
           << xml_escape(c->failures.empty() ? "failed" : c->failures.front()) << "\">"
-          << xml_escape(case_output(*c, r.terms_page)) << "</failure>";
+          << xml_escape(case_output(*c, terms_page_of(r))) << "</failure>";
       o << "</testcase>\n";
     }
     o << "  </testsuite>\n";
@@ -555,7 +567,7 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
     if (r.failed_files.empty() && !r.build.ok)
       o << "## Your code did not compile\n\n" << markdown_code_block(r.build.errors) << "\n";
   }
-  const std::string page = terms_link.empty() ? r.terms_page : terms_link;
+  const TermsPage page{terms_link.empty() ? r.terms_page : terms_link, r.contracts};
   // The summary: one row per task, its points and verdict, linked to its section below.
   o << "| Task | Points | Result | Tests passed |\n|---|---|---|---|\n";
   for (const TaskResult& t : r.tasks) {
@@ -565,10 +577,10 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
         << ") | " << task_points(t) << " | " << (n.passed == n.run ? "pass" : "**fail**") << " | "
         << n.passed << "/" << n.run << " |\n";
   }
-  if (!page.empty())
+  if (!page.path.empty())
     o << "\nThe words of the messages (tolerances, contract sections) are explained in [reading "
          "your report]("
-      << page << ").\n";
+      << page.path << ").\n";
   o << "\n";
   // The course scene's plot and frames, in the section of the task whose test records them.
   const auto course_scene = [&]() {
@@ -682,7 +694,7 @@ HtmlData html_course_scene(const GradeReport& r, const CourseFrames* frames,
 }
 
 // One failed test: its messages (terms linked to `page`), its hint.
-HtmlData html_failed_test(const CaseResult& c, const std::string& page) {
+HtmlData html_failed_test(const CaseResult& c, const TermsPage& page) {
   HtmlList failures;
   for (const std::string& f : c.failures) {
     const bool pre = f.find('\n') != std::string::npos;
@@ -706,7 +718,7 @@ HtmlData html_task_row(const TaskResult& t) {
 }
 
 // One task's section: its failed tests (the first shown, the others folded), its passed ones.
-HtmlData html_task_section(const TaskResult& t, const std::string& page, bool scene_here) {
+HtmlData html_task_section(const TaskResult& t, const TermsPage& page, bool scene_here) {
   const TaskCount n = count(t);
   HtmlData section = html_task_row(t);
   section.set("id", t.spec->id);
@@ -736,7 +748,7 @@ HtmlData html_task_section(const TaskResult& t, const std::string& page, bool sc
 
 std::string html_report(const GradeReport& r, const CourseFrames* frames,
                         const std::filesystem::path& dir, const std::string& terms_link) {
-  const std::string page = terms_link.empty() ? r.terms_page : terms_link;
+  const TermsPage page{terms_link.empty() ? r.terms_page : terms_link, r.contracts};
   HtmlData d;
   d.set("report_failed_test",
         kainjow::mustache::partial{[] { return std::string(report_failed_test_template()); }});
@@ -760,8 +772,8 @@ std::string html_report(const GradeReport& r, const CourseFrames* frames,
   d.set("link_errors", r.build.link_errors);
   d.set("has_compile_errors", !r.compiled && r.failed_files.empty() && !r.build.ok);
   d.set("compile_errors", r.build.errors);
-  d.set("has_terms_page", !page.empty());
-  d.set("terms_page", page);
+  d.set("has_terms_page", !page.path.empty());
+  d.set("terms_page", page.path);
   const TaskResult* scene_task = course_scene_task(r);
   HtmlList summary, sections;
   for (const TaskResult& t : r.tasks) {

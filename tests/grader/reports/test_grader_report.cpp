@@ -189,6 +189,16 @@ TEST(GraderReport, TheWordsOfTheMessagesLinkToTheHandout) {
   EXPECT_NE(
       gs["tests"][1]["output"].get<std::string>().find("Words: see " + kPage + "#tolerance-step"),
       std::string::npos);
+  // A contract the manifest names (`contracts`) links to its own anchors; one it does not name
+  // links as the general "contract §N".
+  Fixture named;
+  named.report.contracts = {"drag"};
+  named.report.cases[1].failures = {"speed (drag contract §4, ballistics contract §2)"};
+  const std::string named_md = markdown_report(named.report);
+  EXPECT_NE(named_md.find("[drag contract §4](" + kPage + "#drag-contract-4)"), std::string::npos)
+      << named_md;
+  EXPECT_NE(named_md.find("ballistics [contract §2](" + kPage + "#contract-2)"), std::string::npos)
+      << named_md;
   // Without the page (an assignment without one), no links and no pointers.
   Fixture bare;
   bare.report.terms_page.clear();

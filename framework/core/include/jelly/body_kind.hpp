@@ -7,6 +7,8 @@
 // (BUILD/bodies/linked_body_kinds.cpp), so adding a kind edits no general file.
 #pragma once
 
+#include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,12 +23,49 @@ class World;
 class Simulator;
 class CsvWriter;
 struct State;
+struct TaskTable;
+struct TaskStatus;
 
 namespace params_detail {
 struct Decl;
 struct Collection;
 struct CrossError;
 }  // namespace params_detail
+
+/// The values of one `jelly study effects` run that its body's kind measures, by the framework's
+/// measure names (docs/parameters.md, "What is measured"); NaN where the kind does not take the
+/// measure.
+struct BodyStudyValues {
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  double rest_volume = kNone;    ///< cave_in: the volume inside the body's surface at t = 0 [m³]
+  double cave_in = kNone;        ///< cave_in: largest 1 − V(t)/V(0) so far
+  double cave_in_final = kNone;  ///< cave_in: 1 − V(t)/V(0) now
+  double volume_ratio = kNone;   ///< V(t)/V(0) now (the time series)
+  double sag = kNone;            ///< sag: largest drop of the centre of mass below t = 0 [m]
+  double sag_final = kNone;      ///< sag: the drop now [m]
+  double swing = kNone;          ///< swing: largest distance of the centre of mass across g [m]
+  double sink = kNone;           ///< sink: largest depth of a free particle in a sphere [m]
+  double sink_final = kNone;     ///< sink: the same now [m]
+};
+
+/// Where a study's body is: the centre of mass of the measured particles
+/// (BodyKindModule::measured_particles) and its height along `up` (against gravity).
+struct StudyLook {
+  Vec3 com = Vec3::Zero();
+  double height = 0.0;
+  Vec3 up = Vec3::UnitY();
+};
+
+/// One run's measuring that belongs to a kind (`jelly study effects`): made from the start state
+/// by BodyKindModule::study, then shown the state after every step.
+class BodyStudy {
+ public:
+  virtual ~BodyStudy() = default;
+  /// The state after a step, and where the body is then.
+  virtual void observe(const State& s, const StudyLook& now) = 0;
+  /// The values so far (after the start state, before the first observe).
+  virtual const BodyStudyValues& values() const = 0;
+};
 
 /// One kind of body: what a scene of this kind says (its section of the parameter table), and
 /// how it becomes a World.
@@ -67,6 +106,15 @@ class BodyKindModule {
   /// on without giving them. Unchanged (SpringSettings' defaults) unless the kind says otherwise.
   virtual void spring_defaults(SpringSettings& settings) const { (void)settings; }
 
+  // ----- the TaskTable slots that build its springs (jelly/task_probe.hpp) -----
+  /// The slots whose smoke test is this kind's (they take its lattice or grid), in order; none by
+  /// default.
+  virtual std::vector<std::string_view> probe_slots() const;
+  /// Probes `slot` (one of probe_slots()) of `tasks` on a small body of this kind, reporting it
+  /// as task `id` named `name`.
+  virtual TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                                const TaskTable& tasks) const;
+
   // ----- checks and building -----
   /// The checks of a whole scene of this kind that involve several keys; the first problem.
   virtual std::optional<params_detail::CrossError> check(const SceneSpec& scene) const;
@@ -91,6 +139,29 @@ class BodyKindModule {
   virtual std::string check_report(const SceneSpec& scene, const World& world) const;
   /// Why `jelly check` recommends half the stable step ("contact stiffens the cube").
   virtual std::string_view stability_reason() const;
+  /// What `jelly run --help` adds for this kind to the text of `option` ("--summary": its own
+  /// columns; "--threads": when threads pay off); "" (the default) for nothing.
+  virtual std::string_view run_help(std::string_view option) const;
+
+  // ----- what the studies measure on it (jelly study effects) -----
+  /// How many particles, from the first, a study's centre of mass, speeds and rest are taken over.
+  /// By default every particle of the state.
+  virtual Eigen::Index measured_particles(const World& world) const;
+  /// The measuring of one run from its start state `start` (`look`: where the body is), for the
+  /// measures named in `measures` (a manifest's [studies] measures); nullptr (the default) when
+  /// the kind measures none of them, so that every BodyStudyValues measure is NaN.
+  virtual std::unique_ptr<BodyStudy> study(const World& world, const State& start,
+                                           const StudyLook& look,
+                                           const std::vector<std::string>& measures) const;
+  /// The lines `jelly study effects --help` gives for `measure` when this kind takes it; "" (the
+  /// default) otherwise.
+  virtual std::string_view measure_help(std::string_view measure) const;
+  /// The y label of `measure`'s plot against the swept value when this kind takes it; "" (the
+  /// default) otherwise.
+  virtual std::string_view measure_plot_label(std::string_view measure) const;
+  /// What the help adds to "measures needing a contact are nan when nothing touched a terrain"
+  /// for this kind; "" by default.
+  virtual std::string_view contact_help() const;
 };
 
 /// printf into a std::string (the reports above keep the format of the printf calls they were).

@@ -24,24 +24,6 @@ struct FrameSummary {
 /// Computes the summary of state s of world w at time t.
 FrameSummary summarize(const World& w, const State& s, double t);
 
-/// One recorded frame of a cloth scene (cloth contract decision 12): `cloth` is the cloth's own
-/// summary (centre of mass of every cloth particle, pinned ones included; the cloth's kinetic and
-/// gravitational energy, measured from y = 0; the spring energy; the cloth's largest speed), with
-/// the cloth's lowest y and each sphere's centre and velocity beside it, in scene order.
-struct ClothFrameSummary {
-  FrameSummary cloth;
-  double lowest_y = 0.0;                ///< lowest y of any cloth particle [m]
-  std::vector<Vec3> sphere_centers;     ///< [m]
-  std::vector<Vec3> sphere_velocities;  ///< [m/s]
-};
-
-/// Computes the summary of state s of a cloth world w at time t (decision 12).
-ClothFrameSummary summarize_cloth(const World& w, const State& s, double t);
-
-/// The `--summary` header of a cloth scene with `spheres` spheres: the columns of
-/// kSummaryHeader, then lowest_y, then sphere<i>_x,_y,_z,_vx,_vy,_vz for each sphere.
-std::string cloth_summary_header(int spheres);
-
 /// Appends CSV rows to a file as frames arrive, so that what was written survives a stopped run.
 /// Numbers are written in the shortest form that reads back to the same double.
 class CsvWriter {
@@ -57,8 +39,8 @@ class CsvWriter {
   void write_particles(long frame, double time, const State& s);
   /// Summary row: `time,com_x,com_y,com_z,kinetic,potential,spring,max_speed`.
   void write_summary(const FrameSummary& f);
-  /// Cloth summary row: the columns of write_summary, then cloth_summary_header's.
-  void write_cloth_summary(const ClothFrameSummary& f);
+  /// A row of numbers, in the order given (a body kind's own `--summary` row).
+  void write_row(const std::vector<double>& values);
   /// Flushes to the OS.
   void flush();
 

@@ -45,11 +45,11 @@ struct ManifestTask {
 struct AssignmentManifest {
   std::string id;                            ///< folder name and CLI name: "hw1"
   std::string ns;                            ///< C++ namespace of the tasks: jelly::<ns>
-  std::string title;                         ///< "The jelly cube"
+  std::string title;                         ///< "The course's first homework"
   std::vector<std::string> files;            ///< the files a student edits, in build order
   std::vector<std::string> reference_files;  ///< the reference's extra files
   std::vector<std::string> task_modules;     ///< shared tasks' modules (solutions/tasks/<module>/)
-  std::vector<std::string> bodies;           ///< scene bodies it simulates ("cube")
+  std::vector<std::string> bodies;           ///< the body kinds (body.type) of its scenes
   std::string default_scene;                 ///< a scene name ("course-2023"); may be empty
   std::string handout;                       ///< the handout's front page, relative
   std::vector<std::string> study_measures;   ///< what `jelly study effects` reports
@@ -59,6 +59,9 @@ struct AssignmentManifest {
   /// on top); scores.csv gives it as `hand_graded_max`, the handout quotes it.
   double hand_graded_points = 0.0;
   std::string hidden_visibility = "after_due_date";
+  /// The contracts its grader's messages cite by name besides the physics contract
+  /// (`contracts`): a report links "<name> contract §N" to the handout's #<name>-contract-N.
+  std::vector<std::string> contracts;
   std::vector<ManifestTask> tasks;
   /// The folder the manifest was read from (empty for a manifest compiled into a program).
   std::filesystem::path dir;

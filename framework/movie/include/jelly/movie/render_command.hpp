@@ -13,7 +13,7 @@ namespace jelly::movie {
 /// Writes DIR/frame_00000.png …, and DIR/video.mp4 when ffmpeg is on PATH (encode_mp4, mp4.hpp).
 /// With `--replay FILE.csv` [--label TEXT] it simulates nothing: it draws the recorded positions of
 /// each frame of FILE (replay.hpp) into DIR/frame_00000.png … in file order, the scene giving
-/// terrains and cube.
+/// the terrains and the body.
 /// Returns the exit code (0 ok, 1 run error or instability, 2 usage or input error).
 int render_command(int argc, char** argv);
 

@@ -1,9 +1,10 @@
 // Which linked assignment runs a scene, and its manifest and task table
 // (jelly/linked_assignments.hpp).
 //
-// A scene's body ([body] kind = "cube", "particles", ...) names what it simulates; the assignment
-// whose manifest lists that body in `bodies` runs it. Several assignments can be linked into one
-// program (the viewer, the CLI): each runs its own scenes with its own tasks.
+// A scene's body ([body] type, a registered body kind: jelly/body_kind.hpp) names what it
+// simulates; the assignment whose manifest lists that body in `bodies` runs it. Several
+// assignments can be linked into one program (the viewer, the CLI): each runs its own scenes with
+// its own tasks.
 #pragma once
 
 #include <string>
@@ -18,7 +19,7 @@
 
 namespace jelly::session {
 
-/// The name a manifest's `bodies` uses for a scene's body kind: "cube", "particles".
+/// The name a manifest's `bodies` uses for a scene's body kind (the kind's `body.type`).
 std::string_view body_name(BodyKind kind);
 
 /// The linked assignment with this id. Throws std::runtime_error listing the linked ones.
