@@ -61,7 +61,7 @@ RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const 
   StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
   monitor.start(sim.detector_energy());
   const long evaluations0 = sim.evaluations();
-  auto collisions = [&] {  // terrain responses (A1), or impulses of a cloth scene (A2)
+  auto collisions = [&] {  // terrain responses, or the impulses of a body kind's own physics
     const auto& c = sim.world().counters();
     return std::accumulate(c.collisions.begin(), c.collisions.end(), 0L) +
            static_cast<long>(c.impulses);

@@ -111,7 +111,7 @@ void BackwardEulerSolver::step(JacobianSystem& system, State& s, double h) {
   for (Eigen::Index i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) b_[3 * i + d] = h * (force_(d, i) + h * dfdx_v_(d, i));
 
-  // Fixed particles (pinned cloth particles, w = 0) keep Δv = 0: their rows and columns become
+  // Fixed particles (pinned particles, w = 0) keep Δv = 0: their rows and columns become
   // the identity's and their right-hand side zero, so the free particles see them as walls.
   bool any_fixed = false;
   for (Eigen::Index i = 0; i < n && !any_fixed; ++i) any_fixed = system.is_fixed(i);

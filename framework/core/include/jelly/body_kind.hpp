@@ -1,7 +1,7 @@
 // A kind of scene body as one module (framework/bodies/<kind>/, docs/architecture.md "Bodies").
 //
 // General code (the scene reader and writer, the parameter table, build_world, the CLI's summary,
-// the studies) never asks "is this a cube?": it finds the scene's kind in the registry
+// the studies) never asks which kind a body is: it finds the scene's kind in the registry
 // (find_body_kind) and asks it. A kind module implements BodyKindModule and registers itself with
 // one line in its folder's body.cmake; CMake writes the list of the kinds a build links
 // (BUILD/bodies/linked_body_kinds.cpp), so adding a kind edits no general file.
@@ -74,11 +74,11 @@ class BodyKindModule {
   virtual ~BodyKindModule() = default;
 
   // ----- its scene section -----
-  /// `body.type` as a scene writes it ("cube").
+  /// `body.type` as a scene writes it ("rope" for a kind of ropes).
   virtual std::string_view name() const = 0;
-  /// What it is, for body.type's description ("a jelly cube").
+  /// What it is, for body.type's description ("a rope of beads").
   virtual std::string_view description() const = 0;
-  /// How messages name a scene's body of this kind ("a cube", "particles").
+  /// How messages name a scene's body of this kind ("a rope", "particles").
   virtual std::string_view body_phrase() const = 0;
   /// Its rows of the parameter table that are not in a collection, in table order: the [body]
   /// keys, then any table of its own ([collision]). Read by the parameter table once.
@@ -137,7 +137,7 @@ class BodyKindModule {
   /// `jelly check`'s line after the particles and springs: gravity and what else the world holds.
   /// By default the terrains.
   virtual std::string check_report(const SceneSpec& scene, const World& world) const;
-  /// Why `jelly check` recommends half the stable step ("contact stiffens the cube").
+  /// Why `jelly check` recommends half the stable step ("contact stiffens the body").
   virtual std::string_view stability_reason() const;
   /// What `jelly run --help` adds for this kind to the text of `option` ("--summary": its own
   /// columns; "--threads": when threads pay off); "" (the default) for nothing.
@@ -179,7 +179,7 @@ const BodyKindModule* find_body_kind(std::string_view name);
 /// The kind of a scene. Throws std::runtime_error naming the scene's file when the program does
 /// not link it.
 const BodyKindModule& body_kind_of(const SceneSpec& scene);
-/// "cube, particles, cloth": the linked kinds, for messages.
+/// The linked kinds' names, comma-separated in their order, for messages.
 std::string body_kind_names();
 
 }  // namespace jelly

@@ -41,7 +41,7 @@ class JacobianSystem : public System {
   virtual std::vector<std::pair<int, int>> jacobian_pattern() const = 0;
   /// Writes ∂f/∂x and ∂f/∂v at state s into `jac` (whose pattern is jacobian_pattern()).
   virtual void force_jacobians(const State& s, ForceJacobians& jac) = 0;
-  /// Whether particle i is held fixed (inverse mass 0: a pinned cloth particle). The stability
+  /// Whether particle i is held fixed (inverse mass 0: a pinned particle). The stability
   /// estimate is that of the other particles, and backward Euler leaves fixed ones at rest.
   /// Default: no particle is fixed.
   virtual bool is_fixed(Eigen::Index i) const {

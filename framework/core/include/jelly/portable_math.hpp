@@ -4,7 +4,7 @@
 // The C library's sin, cos, exp and pow are not the same code everywhere: glibc, macOS's libm,
 // MinGW-w64's CRT (x87 fsin/fcos) and MSVC's UCRT round differently in the last bits. The core
 // uses these instead wherever such a value reaches the simulation state or a printed result (the
-// cube's initial rotation, the stability detector's frequency grid, the two-particle spring's
+// bodies' initial rotations, the stability detector's frequency grid, the two-particle spring's
 // exact solution), so a student on Windows or macOS computes what the grader computes on Linux.
 //
 // They use only +, −, × and ÷ of doubles (correctly rounded by IEEE 754 on every compiler the

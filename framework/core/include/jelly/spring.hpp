@@ -7,14 +7,14 @@
 
 namespace jelly {
 
-/// The kinds of spring of the jelly cube (physics contract §2). Face and body shear diagonals share
+/// The kinds of spring of a lattice (physics contract §2). Face and body shear diagonals share
 /// the shear coefficients unless a scene sets `springs.shear_body` apart.
 enum class SpringType : std::uint8_t { Structural, Shear, ShearBody, Bending };
 
 /// Stable lower-case name of a spring type ("structural", "shear", "shear_body", "bending").
 std::string_view to_string(SpringType type);
 
-/// A spring shorter than this share of its body's length scale (the cube's grid spacing, the
+/// A spring shorter than this share of its body's length scale (a lattice's grid spacing, the
 /// shortest rest length of explicit springs) has no direction and gets zero force (contract §2).
 inline constexpr double kDegenerateShare = 1e-12;
 /// The degenerate length of the springs of a body with length scale `spacing` [m].

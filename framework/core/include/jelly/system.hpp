@@ -10,7 +10,7 @@ namespace jelly {
 /// A system of particles whose acceleration the framework knows how to evaluate.
 ///
 /// The jelly world (gravity, springs, dampers, contact), a free particle, a lone spring and the
-/// linearised cube are all Systems, so every integrator can be stepped on any of them.
+/// linearised lattice are all Systems, so every integrator can be stepped on any of them.
 class System {
  public:
   virtual ~System() = default;

@@ -1,5 +1,5 @@
 // Framework-provided systems to step integrators on without any student force code: a free
-// particle and linear spring networks (the two-particle spring, the linearised cube). The grader
+// particle and linear spring networks (the two-particle spring, a linearised lattice). The grader
 // tests integrators on these, so a bug in a student's springs cannot fail an integrator test.
 #pragma once
 
@@ -27,7 +27,7 @@ class FreeFallSystem : public JacobianSystem {
 
 /// A linear spring network: f = m g − K (x − x_eq) − C v with constant block matrices K and C
 /// (the negated Jacobians of a World's springs at an equilibrium configuration x_eq). Exact for a
-/// two-particle spring moving along its axis; the small-motion model of the cube.
+/// two-particle spring moving along its axis; the small-motion model of a lattice.
 class LinearSystem : public JacobianSystem {
  public:
   /// Linearises `world`'s springs at configuration x_eq (springs at rest there), with the world's

@@ -1,6 +1,6 @@
 // Tables in a terminal, for every program of the project (jelly's params, check and probe, the
 // grader's summary): columns sized to their widest cell and padded by display width, so that
-// "Cloth–sphere" (an en dash: three bytes, one column) lines up with "Sphere–sphere".
+// a title with an en dash (three bytes, one column) lines up with one without.
 #pragma once
 
 #include <algorithm>
