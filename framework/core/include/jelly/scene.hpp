@@ -45,10 +45,10 @@ std::optional<Terrain> terrain_preset(std::string_view name);
 /// All preset names.
 std::vector<std::string_view> terrain_preset_names();
 
-/// The course's 2023 scene as scenes/course-2023.toml describes it (its body: n = 10 at (−4.8, 11, 0),
-/// ks 2000 / kd 60 on every spring type, gravity, the floor with its hole then the bowl, h = 0.001,
-/// 10 s, symplectic Euler), built in code: for tests and benchmarks that must not depend on scene
-/// files, and for the viewer when the file is missing.
+/// The course's 2023 scene as scenes/course-2023.toml describes it (an n = 10 body at
+/// (−4.8, 11, 0), ks 2000 / kd 60 on every spring type, gravity, the floor with its hole then the
+/// bowl, h = 0.001, 10 s, symplectic Euler), built in code: for tests and benchmarks that must not
+/// depend on scene files, and for the viewer when the file is missing.
 SceneSpec course_2023_scene();
 
 }  // namespace jelly
