@@ -9,6 +9,7 @@
 #include <string>
 #include <typeinfo>
 
+#include "jelly/spring_check.hpp"
 #include "jelly/world.hpp"
 
 namespace jelly {
@@ -93,17 +94,7 @@ void CubePhysics::build_cube_springs(int cube, SpringType type, double ks, doubl
   // The framework never trusts a builder's output blindly: a bad index would crash the force pass.
   const int lo = lattice.first_index();
   const int hi = lo + lattice.particle_count();
-  for (std::size_t k = 0; k < group.springs.size(); ++k) {
-    const Spring& s = group.springs[k];
-    if (s.a < lo || s.a >= hi || s.b < lo || s.b >= hi || s.a == s.b ||
-        !std::isfinite(s.rest_length) || s.rest_length < 0.0) {
-      throw std::runtime_error(
-          std::string(builder) + " produced spring #" + std::to_string(k) + " joining particles " +
-          std::to_string(s.a) + " and " + std::to_string(s.b) + " with rest length " +
-          std::to_string(s.rest_length) + "; expected two different particles in " +
-          std::to_string(lo) + ".." + std::to_string(hi - 1) + " and a finite rest length ≥ 0");
-    }
-  }
+  check_built_springs(group, lo, hi, builder);
   w.add_spring_group(std::move(group));
 }
 
