@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 
@@ -16,7 +17,7 @@ using namespace jelly;
 SceneSpec course_scene(int n, IntegratorKind kind) {
   SceneSpec s = course_2023_scene();
   s.integrator = kind;
-  s.cube.n = n;
+  cube_spec(s).n = n;
   return s;
 }
 

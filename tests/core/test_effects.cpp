@@ -5,6 +5,7 @@
 #include <atomic>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
 
@@ -104,7 +105,8 @@ TEST(Effects, NoGravityMeansNoGravityTerm) {
 
 TEST(Effects, TerrainWithCollisionOffIsNeverAskedForCollision) {
   SceneSpec scene = testing::course_2023();
-  scene.cube.center = Vec3(-6.0, 2.05, 0.0);  // resting just above the floor, outside the hole
+  cube_spec(scene).center =
+      Vec3(-6.0, 2.05, 0.0);  // resting just above the floor, outside the hole
   scene.terrains[0].collision = false;
   scene.terrains[1].contact = false;
   Simulator sim(build_world(scene, counting_table()), {IntegratorKind::ExplicitEuler, 0.001});

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/task_table.hpp"
@@ -73,12 +74,12 @@ TEST(SceneLoader, Course2023IsTheCourseScene) {
   EXPECT_EQ(s.duration, 10.0);
   ASSERT_TRUE(s.gravity);
   EXPECT_EQ(*s.gravity, Vec3(0.0, -9.8, 0.0));
-  EXPECT_EQ(s.body_kind, BodyKind::Cube);
-  EXPECT_EQ(s.cube.n, 10);
-  EXPECT_EQ(s.cube.edge, 4.0);
-  EXPECT_EQ(s.cube.mass, 1.0);
-  EXPECT_EQ(s.cube.center, Vec3(-4.8, 11.0, 0.0));
-  EXPECT_EQ(s.cube.rotation_degrees, 0.0);
+  EXPECT_EQ(s.body_kind, kCubeKind);
+  EXPECT_EQ(cube_spec(s).n, 10);
+  EXPECT_EQ(cube_spec(s).edge, 4.0);
+  EXPECT_EQ(cube_spec(s).mass, 1.0);
+  EXPECT_EQ(cube_spec(s).center, Vec3(-4.8, 11.0, 0.0));
+  EXPECT_EQ(cube_spec(s).rotation_degrees, 0.0);
   for (const SpringSettings* st : {&s.structural, &s.shear, &s.bending}) {
     EXPECT_TRUE(st->enabled);
     EXPECT_EQ(st->ks, 2000.0);
@@ -134,7 +135,7 @@ TEST(SceneLoader, Course2021ScenesHaveOneTerrainEach) {
         Case{"course-2021-bowl.toml", "bowl", 1}, Case{"course-2021-tilted.toml", "tilted", 0}}) {
     SCOPED_TRACE(c.file);
     const SceneSpec s = load_ok(c.file);
-    EXPECT_EQ(s.cube.center, Vec3(0.0, 9.0, 0.0));
+    EXPECT_EQ(cube_spec(s).center, Vec3(0.0, 9.0, 0.0));
     ASSERT_EQ(s.terrains.size(), 1u);
     EXPECT_EQ(s.terrains[0].name, c.terrain);
     EXPECT_EQ(s.terrains[0].shape.index(), c.shape_index);
@@ -152,10 +153,10 @@ TEST(SceneLoader, FreeFallAndTwoParticleSpring) {
   EXPECT_TRUE(ff.terrains.empty());
   ASSERT_TRUE(ff.gravity);
   EXPECT_EQ(ff.duration, 1.0);
-  EXPECT_EQ(ff.cube.center, Vec3(-4.8, 11.0, 0.0));
+  EXPECT_EQ(cube_spec(ff).center, Vec3(-4.8, 11.0, 0.0));
 
   const SceneSpec tp = load_ok("two-particle-spring.toml");
-  EXPECT_EQ(tp.body_kind, BodyKind::Particles);
+  EXPECT_EQ(tp.body_kind, BodyKind{"particles"});
   EXPECT_FALSE(tp.gravity);
   EXPECT_TRUE(tp.terrains.empty());
   ASSERT_EQ(tp.particles.positions.cols(), 2);
@@ -275,11 +276,11 @@ center = [0, 5, 0]
                                     "minimal");
   ASSERT_TRUE(r) << r.error->text();
   const SceneSpec& s = *r.scene;
-  EXPECT_EQ(s.cube.n, 10);
-  EXPECT_EQ(s.cube.edge, 4.0);
-  EXPECT_EQ(s.cube.mass, 1.0);
-  EXPECT_EQ(s.cube.rotation_axis, Vec3(1.0, 0.0, 1.0));
-  EXPECT_EQ(s.cube.velocity, Vec3::Zero());
+  EXPECT_EQ(cube_spec(s).n, 10);
+  EXPECT_EQ(cube_spec(s).edge, 4.0);
+  EXPECT_EQ(cube_spec(s).mass, 1.0);
+  EXPECT_EQ(cube_spec(s).rotation_axis, Vec3(1.0, 0.0, 1.0));
+  EXPECT_EQ(cube_spec(s).velocity, Vec3::Zero());
   EXPECT_EQ(s.dt, 0.001);
   EXPECT_FALSE(s.gravity) << "no [gravity] table: no gravity term";
   EXPECT_TRUE(s.structural.enabled);

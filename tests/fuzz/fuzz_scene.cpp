@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include "jelly/cloth_scene.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
 
@@ -25,11 +27,12 @@ namespace {
 /// What validation promises about an accepted scene (what build_world and the simulation rely on).
 void check_valid(const jelly::SceneSpec& s) {
   if (!(s.dt > 0.0) || !(s.duration > 0.0)) fail("accepted a non-positive dt or duration", "");
-  if (s.body_kind == jelly::BodyKind::Cube) {
-    if (s.cube.n < 2 || s.cube.n > 64 || !(s.cube.mass > 0.0) || !(s.cube.edge > 0.0))
-      fail("accepted a bad cube", std::to_string(s.cube.n));
-  } else if (s.body_kind == jelly::BodyKind::Cloth) {
-    const jelly::ClothSpec& c = s.cloth;
+  if (s.body_kind == jelly::kCubeKind) {
+    if (cube_spec(s).n < 2 || cube_spec(s).n > 64 || !(cube_spec(s).mass > 0.0) ||
+        !(cube_spec(s).edge > 0.0))
+      fail("accepted a bad cube", std::to_string(cube_spec(s).n));
+  } else if (s.body_kind == jelly::kClothKind) {
+    const jelly::ClothSpec& c = cloth_spec(s);
     if (c.n < 2 || c.n > 200 || !(c.mass > 0.0) || !(c.size > 0.0) || !(c.air_drag >= 0.0))
       fail("accepted a bad cloth", std::to_string(c.n));
     for (const std::string& set : c.pin_sets)
@@ -39,12 +42,12 @@ void check_valid(const jelly::SceneSpec& s) {
         fail("accepted a pin outside the grid", std::to_string(p[0]) + "," + std::to_string(p[1]));
     if (!s.terrains.empty()) fail("accepted a terrain in a cloth scene", "");
     if (s.shear_body.enabled) fail("accepted body diagonals in a cloth", "");
-    const jelly::ClothCollisionSettings& k = s.collisions;
+    const jelly::ClothCollisionSettings& k = cloth_collisions(s);
     if (!(k.cloth_restitution >= 0.0 && k.cloth_restitution <= 1.0) ||
         !(k.sphere_restitution >= 0.0 && k.sphere_restitution <= 1.0) || !(k.tolerance >= 0.0) ||
         !(k.friction >= 0.0) || !(k.push_out >= 0.0 && k.push_out <= 1.0))
       fail("accepted bad collision settings", "");
-    for (const jelly::SphereSpec& sp : s.spheres) {
+    for (const jelly::SphereSpec& sp : sphere_specs(s)) {
       if (!(sp.radius > 0.0) || (sp.mass && !(*sp.mass > 0.0)))
         fail("accepted a bad sphere", std::to_string(sp.radius));
       for (std::size_t i = 1; i < sp.schedule.size(); ++i)
@@ -59,7 +62,7 @@ void check_valid(const jelly::SceneSpec& s) {
       if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b || !(sp.rest_length > 0.0))
         fail("accepted a bad spring", std::to_string(sp.a) + "," + std::to_string(sp.b));
   }
-  if (s.body_kind != jelly::BodyKind::Cloth && !s.spheres.empty())
+  if (s.body_kind != jelly::kClothKind && !sphere_specs(s).empty())
     fail("accepted spheres in a scene without a cloth", "");
   for (const jelly::Terrain& t : s.terrains) {
     if (const auto* p = std::get_if<jelly::Plane>(&t.shape)) {

@@ -39,6 +39,7 @@
 #include "jelly/cloth.hpp"
 #include "jelly/cloth_physics.hpp"
 #include "jelly/cube.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/spheres.hpp"
 #include "jelly/world.hpp"
@@ -119,7 +120,7 @@ double com_y_after(IntegratorKind kind, double t) {
 
 std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::vector<Spring>&),
                          int n) {
-  CubeSpec spec = course_2023_scene().cube;
+  CubeSpec spec = cube_spec(course_2023_scene());
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
@@ -130,7 +131,7 @@ std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::ve
 // Shear springs of the course cube whose grid offset has three non-zero components (body
 // diagonals).
 std::size_t body_diagonals(int n) {
-  CubeSpec spec = course_2023_scene().cube;
+  CubeSpec spec = cube_spec(course_2023_scene());
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
@@ -204,10 +205,10 @@ std::map<std::string, Fact> a1_facts() {
                   spring_count(&TaskTable::add_shear_springs, 10) +
                   spring_count(&TaskTable::add_bending_springs, 10));
   });
-  f["course.n"] = value([] { return double(course_2023_scene().cube.n); });
+  f["course.n"] = value([] { return double(cube_spec(course_2023_scene()).n); });
   f["course.dt"] = value([] { return course_2023_scene().dt; });
-  f["course.center_x"] = value([] { return course_2023_scene().cube.center.x(); });
-  f["course.center_y"] = value([] { return course_2023_scene().cube.center.y(); });
+  f["course.center_x"] = value([] { return cube_spec(course_2023_scene()).center.x(); });
+  f["course.center_y"] = value([] { return cube_spec(course_2023_scene()).center.y(); });
   f["course.kd"] = value([] { return course_2023_scene().structural.kd; });
   f["course.floor.epsilon"] = value([] { return course_floor().surface.epsilon; });
   f["course.floor.restitution"] = value([] { return course_floor().surface.restitution; });

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/terrain_geometry.hpp"
 
 namespace jelly::hard {
@@ -91,8 +92,9 @@ Outcome run_case(const SceneSpec& scene, IntegratorKind kind, double h, double h
   double eps = 0.0;
   for (const Terrain& t : terrains) eps = std::max(eps, t.surface().epsilon);
   // The lattice spacing: the cube's, or the shortest explicit spring's rest length.
-  double spacing = scene.body_kind == BodyKind::Cube ? scene.cube.edge / (scene.cube.n - 1) : 1.0;
-  if (scene.body_kind == BodyKind::Particles)
+  double spacing =
+      scene.body_kind == kCubeKind ? cube_spec(scene).edge / (cube_spec(scene).n - 1) : 1.0;
+  if (scene.body_kind == BodyKind{"particles"})
     for (const Spring& sp : scene.particles.springs) spacing = std::min(spacing, sp.rest_length);
   o.depth_bound = eps + 2.0 * h * o.v_peak + spacing;
   return o;

@@ -8,6 +8,7 @@
 #include "jelly/a2/task_table.hpp"
 #include "jelly/bodies/cloth/view/cloth_controls.hpp"
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cloth_scene.hpp"
 #include "jelly/render/captions.hpp"
 #include "jelly/simulator.hpp"
 
@@ -134,13 +135,13 @@ TEST(ClothControls, NothingToDriveOrPinWithoutACloth) {
 // spheres").
 TEST(ClothCaption, SaysOneSphereAndTwoSpheres) {
   SceneSpec scene;
-  scene.body_kind = BodyKind::Cloth;
+  scene.body_kind = kClothKind;
   SphereSpec kinematic;
   kinematic.kinematic = true;
-  scene.spheres = {kinematic};
+  sphere_specs(scene) = {kinematic};
   const std::string one = caption(RunSetup::from_scene(scene), 0.0);
   EXPECT_NE(one.find("\n1 sphere (1 kinematic)"), std::string::npos) << one;
-  scene.spheres.push_back(SphereSpec{});
+  sphere_specs(scene).push_back(SphereSpec{});
   const std::string two = caption(RunSetup::from_scene(scene), 0.0);
   EXPECT_NE(two.find("\n2 spheres (1 kinematic)"), std::string::npos) << two;
 }

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/movie/render_command.hpp"
 #include "jelly/render/backend.hpp"
 #include "jelly/render/captions.hpp"
@@ -144,7 +145,7 @@ TEST_F(HeadlessCourse, AtStartJellyFloorHoleAndBowlAreWhereThePhysicsPutsThem) {
 
   EXPECT_EQ(class_at(img, camera_, jelly_centre()), PixelClass::Jelly);
   // 1.5 m above the cube's top is not jelly.
-  const double half = 0.5 * run_->setup().scene.cube.edge;
+  const double half = 0.5 * cube_spec(run_->setup().scene).edge;
   EXPECT_NE(class_at(img, camera_, jelly_centre() + Vec3(0, half + 1.5, 0)), PixelClass::Jelly);
   // The hole's edge is drawn at its physical radius: just outside is floor, just inside we see
   // down into the bowl, on the near and on the far side.
@@ -202,7 +203,7 @@ TEST_F(HeadlessCourse, AfterLandingTheJellyIsInTheBowl) {
   const Image img = render("course-landed.png");
   EXPECT_EQ(class_at(img, camera_, c), PixelClass::Jelly);
   // Where it started is empty now (sky or far floor, not jelly).
-  EXPECT_NE(class_at(img, camera_, run_->setup().scene.cube.center), PixelClass::Jelly);
+  EXPECT_NE(class_at(img, camera_, cube_spec(run_->setup().scene).center), PixelClass::Jelly);
   EXPECT_EQ(class_at(img, camera_, p.hole_center + (p.hole_radius + 3.0) * across()),
             PixelClass::Floor);
 }

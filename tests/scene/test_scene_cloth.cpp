@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "jelly/cloth_scene.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
 #include "scene_compare.hpp"
@@ -85,62 +86,62 @@ TEST(SceneCloth, TheBaseClothSceneReadsAsWritten) {
   const SceneResult r = parse_scene(kCloth, "cloth.toml");
   ASSERT_TRUE(r) << r.error->text();
   const SceneSpec& s = *r.scene;
-  EXPECT_EQ(s.body_kind, BodyKind::Cloth);
-  EXPECT_EQ(s.cloth.n, 5);
-  EXPECT_EQ(s.cloth.size, 2.0);
-  EXPECT_EQ(s.cloth.pin_sets, std::vector<std::string>{"corners"});
-  EXPECT_TRUE(s.cloth.pins.empty());
-  EXPECT_EQ(s.cloth.air_drag, 3.4e-4);
+  EXPECT_EQ(s.body_kind, kClothKind);
+  EXPECT_EQ(cloth_spec(s).n, 5);
+  EXPECT_EQ(cloth_spec(s).size, 2.0);
+  EXPECT_EQ(cloth_spec(s).pin_sets, std::vector<std::string>{"corners"});
+  EXPECT_TRUE(cloth_spec(s).pins.empty());
+  EXPECT_EQ(cloth_spec(s).air_drag, 3.4e-4);
   // A cloth's spring table without kd takes decision 10's default (750), not A1's 60.
   EXPECT_TRUE(s.structural.enabled);
   EXPECT_EQ(s.structural.ks, 20000.0);
   EXPECT_EQ(s.structural.kd, 750.0);
   EXPECT_FALSE(s.shear.enabled);
-  EXPECT_EQ(s.collisions.tolerance, 0.02);
-  EXPECT_EQ(s.collisions.sphere_restitution, 0.8);  // decision 10 defaults
-  EXPECT_EQ(s.collisions.cloth_restitution, 0.0);
-  ASSERT_EQ(s.spheres.size(), 2u);
-  EXPECT_FALSE(s.spheres[0].kinematic);
-  EXPECT_FALSE(s.spheres[0].mass.has_value());
+  EXPECT_EQ(cloth_collisions(s).tolerance, 0.02);
+  EXPECT_EQ(cloth_collisions(s).sphere_restitution, 0.8);  // decision 10 defaults
+  EXPECT_EQ(cloth_collisions(s).cloth_restitution, 0.0);
+  ASSERT_EQ(sphere_specs(s).size(), 2u);
+  EXPECT_FALSE(sphere_specs(s)[0].kinematic);
+  EXPECT_FALSE(sphere_specs(s)[0].mass.has_value());
   EXPECT_EQ(*get_parameter(s, "sphere.0.mass"), "125");  // 1000·r³ when not given
-  EXPECT_TRUE(s.spheres[1].kinematic);
-  ASSERT_EQ(s.spheres[1].schedule.size(), 2u);
-  EXPECT_EQ(s.spheres[1].schedule[1].time, 0.5);
-  EXPECT_EQ(s.spheres[1].schedule[1].velocity, Vec3(1, 0, 0));
+  EXPECT_TRUE(sphere_specs(s)[1].kinematic);
+  ASSERT_EQ(sphere_specs(s)[1].schedule.size(), 2u);
+  EXPECT_EQ(sphere_specs(s)[1].schedule[1].time, 0.5);
+  EXPECT_EQ(sphere_specs(s)[1].schedule[1].velocity, Vec3(1, 0, 0));
   EXPECT_TRUE(s.terrains.empty());
 }
 
 TEST(SceneCloth, TheCourseScenesHaveTheContractNumbers) {
   const SceneSpec a = load_ok("cloth-2022.toml");
-  EXPECT_EQ(a.cloth.n, 25);
-  EXPECT_EQ(a.cloth.size, 4.0);
-  EXPECT_EQ(a.cloth.center, Vec3(0, 0, 0));
-  EXPECT_EQ(a.cloth.air_drag, 3.4e-4);
+  EXPECT_EQ(cloth_spec(a).n, 25);
+  EXPECT_EQ(cloth_spec(a).size, 4.0);
+  EXPECT_EQ(cloth_spec(a).center, Vec3(0, 0, 0));
+  EXPECT_EQ(cloth_spec(a).air_drag, 3.4e-4);
   EXPECT_EQ(a.structural.ks, 25000.0);
   EXPECT_EQ(a.bending.kd, 750.0);
-  ASSERT_EQ(a.spheres.size(), 4u);
+  ASSERT_EQ(sphere_specs(a).size(), 4u);
   // x-major, then z (cloth contract §6).
   const std::vector<Vec3> centres = {
       {-0.75, 1, -0.75}, {-0.75, 1, 0.75}, {0.75, 1, -0.75}, {0.75, 1, 0.75}};
   for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(a.spheres[i].center, centres[i]);
-    EXPECT_EQ(a.spheres[i].radius, 0.5);
-    EXPECT_FALSE(a.spheres[i].kinematic);
+    EXPECT_EQ(sphere_specs(a)[i].center, centres[i]);
+    EXPECT_EQ(sphere_specs(a)[i].radius, 0.5);
+    EXPECT_FALSE(sphere_specs(a)[i].kinematic);
   }
-  EXPECT_EQ(a.collisions.sphere_restitution, 0.8);
+  EXPECT_EQ(cloth_collisions(a).sphere_restitution, 0.8);
 
   const SceneSpec b = load_ok("cloth-2024.toml");
-  EXPECT_EQ(b.cloth.center, Vec3(0, 1, 0));
+  EXPECT_EQ(cloth_spec(b).center, Vec3(0, 1, 0));
   EXPECT_EQ(b.shear.ks, 20000.0);
-  ASSERT_EQ(b.spheres.size(), 1u);
-  EXPECT_TRUE(b.spheres[0].kinematic);
-  EXPECT_EQ(b.spheres[0].radius, 1.0);
-  ASSERT_EQ(b.spheres[0].schedule.size(), 4u);
-  EXPECT_EQ(b.spheres[0].schedule[2].time, 1.0);
-  EXPECT_EQ(b.spheres[0].schedule[2].velocity, Vec3(-2, 0, 0));
+  ASSERT_EQ(sphere_specs(b).size(), 1u);
+  EXPECT_TRUE(sphere_specs(b)[0].kinematic);
+  EXPECT_EQ(sphere_specs(b)[0].radius, 1.0);
+  ASSERT_EQ(sphere_specs(b)[0].schedule.size(), 4u);
+  EXPECT_EQ(sphere_specs(b)[0].schedule[2].time, 1.0);
+  EXPECT_EQ(sphere_specs(b)[0].schedule[2].velocity, Vec3(-2, 0, 0));
 
-  EXPECT_EQ(load_ok("cloth-curtain.toml").cloth.pin_sets, std::vector<std::string>{"edge"});
-  EXPECT_EQ(load_ok("cloth-flag.toml").cloth.rotation_axis, Vec3(0, 0, 1));
+  EXPECT_EQ(cloth_spec(load_ok("cloth-curtain.toml")).pin_sets, std::vector<std::string>{"edge"});
+  EXPECT_EQ(cloth_spec(load_ok("cloth-flag.toml")).rotation_axis, Vec3(0, 0, 1));
 }
 
 TEST(SceneCloth, ParamsListTheClothKeysAndNoCubeKeys) {
@@ -180,28 +181,28 @@ TEST(SceneCloth, ACubeSceneHasNoClothKeys) {
 TEST(SceneCloth, SetKeysOfAClothScene) {
   SceneSpec s = load_ok("cloth-2022.toml");
   EXPECT_EQ(set_parameter(s, "body.air_drag", "0.01"), std::nullopt);
-  EXPECT_EQ(s.cloth.air_drag, 0.01);
+  EXPECT_EQ(cloth_spec(s).air_drag, 0.01);
   EXPECT_EQ(set_parameter(s, "collision.friction", "0.4"), std::nullopt);
-  EXPECT_EQ(s.collisions.friction, 0.4);
+  EXPECT_EQ(cloth_collisions(s).friction, 0.4);
   EXPECT_EQ(set_parameter(s, "collision.push_out", "1"), std::nullopt);
-  EXPECT_EQ(s.collisions.push_out, 1.0);
+  EXPECT_EQ(cloth_collisions(s).push_out, 1.0);
   EXPECT_EQ(set_parameter(s, "sphere.2.radius", "0.25"), std::nullopt);
-  EXPECT_EQ(s.spheres[2].radius, 0.25);
+  EXPECT_EQ(sphere_specs(s)[2].radius, 0.25);
   EXPECT_EQ(*get_parameter(s, "sphere.2.mass"), "15.625");  // follows the radius when not given
   EXPECT_EQ(set_parameter(s, "sphere.2.mass", "10"), std::nullopt);
-  EXPECT_EQ(*s.spheres[2].mass, 10.0);
+  EXPECT_EQ(*sphere_specs(s)[2].mass, 10.0);
   EXPECT_EQ(set_parameter(s, "sphere.0.velocity", "0,-1,0"), std::nullopt);
-  EXPECT_EQ(s.spheres[0].velocity, Vec3(0, -1, 0));
+  EXPECT_EQ(sphere_specs(s)[0].velocity, Vec3(0, -1, 0));
   EXPECT_EQ(set_parameter(s, "body.pins", "corners,edge"), std::nullopt);
-  EXPECT_EQ(s.cloth.pin_sets, (std::vector<std::string>{"corners", "edge"}));
+  EXPECT_EQ(cloth_spec(s).pin_sets, (std::vector<std::string>{"corners", "edge"}));
   EXPECT_EQ(set_parameter(s, "body.pins", ""), std::nullopt);
-  EXPECT_TRUE(s.cloth.pin_sets.empty());
+  EXPECT_TRUE(cloth_spec(s).pin_sets.empty());
   EXPECT_EQ(set_parameter(s, "body.pin_points", "0,12; 24,12"), std::nullopt);
-  EXPECT_EQ(s.cloth.pins, (std::vector<GridCoord>{{0, 12}, {24, 12}}));
+  EXPECT_EQ(cloth_spec(s).pins, (std::vector<GridCoord>{{0, 12}, {24, 12}}));
   EXPECT_EQ(set_parameter(s, "sphere.1.kinematic", "true"), std::nullopt);
   EXPECT_EQ(set_parameter(s, "sphere.1.schedule", "0: 0,0,0; 1.5: 1,0,0"), std::nullopt);
-  ASSERT_EQ(s.spheres[1].schedule.size(), 2u);
-  EXPECT_EQ(s.spheres[1].schedule[1].time, 1.5);
+  ASSERT_EQ(sphere_specs(s)[1].schedule.size(), 2u);
+  EXPECT_EQ(sphere_specs(s)[1].schedule[1].time, 1.5);
   EXPECT_EQ(*get_parameter(s, "sphere.1.schedule"), "0: 0,0,0; 1.5: 1,0,0");
 
   // What --set refuses, with what was expected.

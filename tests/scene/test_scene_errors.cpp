@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "jelly/body_kind.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly {
@@ -54,6 +55,40 @@ bool contains(const std::string& s, const std::string& part) {
 }
 
 TEST(SceneErrors, TheBaseSceneIsValid) { EXPECT_TRUE(parse_scene(kBase, "base.toml")); }
+
+// A body kind is a module (framework/bodies/<kind>/): a scene naming one this program does not
+// link is refused with the file, line and key, and the kinds it has.
+TEST(SceneErrors, ABodyKindTheProgramDoesNotLinkIsAnErrorNamingTheScene) {
+  const std::string linked = body_kind_names();
+  EXPECT_NE(linked, "none");
+  const SceneError e = error_of(with("type = \"cube\"", "type = \"rope\""), "scenes/rope.toml");
+  EXPECT_EQ(e.file, "scenes/rope.toml");
+  EXPECT_EQ(e.key, "body.type");
+  EXPECT_EQ(e.line, 13);
+  EXPECT_TRUE(contains(e.message, linked)) << e.message;
+  EXPECT_TRUE(contains(e.message, "\"rope\"")) << e.message;
+  // A scene made in code with such a kind: building it names its file and the linked kinds.
+  SceneSpec made;
+  made.source = "made.toml";
+  made.body_kind = BodyKind{"rope"};
+  try {
+    (void)body_kind_of(made);
+    ADD_FAILURE() << "body_kind_of accepted a kind no module registers";
+  } catch (const std::runtime_error& err) {
+    EXPECT_TRUE(
+        contains(err.what(), "made.toml: body.type: this program has no body kind \"rope\""))
+        << err.what();
+    EXPECT_TRUE(contains(err.what(), "(it links: " + linked + ")")) << err.what();
+  }
+}
+
+// A scene that names no body.type has the first kind the program registers, the default that
+// `jelly params` gives body.type.
+TEST(SceneErrors, ASceneMadeInCodeHasTheFirstRegisteredKind) {
+  ASSERT_FALSE(body_kinds().empty());
+  EXPECT_EQ(SceneSpec{}.body_kind.name, body_kinds().front()->name());
+  EXPECT_EQ(default_body_kind().name, body_kinds().front()->name());
+}
 
 TEST(SceneErrors, MissingFile) {
   const SceneResult r = load_scene("/nonexistent/dir/nope.toml");

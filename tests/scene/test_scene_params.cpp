@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
 #include "scene_compare.hpp"
@@ -162,7 +163,7 @@ TEST(SceneParams, SetAssignmentSplitsAtTheFirstEqualsSign) {
   EXPECT_EQ(set_assignment(s, " springs.shear.ks = 5000 "), std::nullopt);
   EXPECT_EQ(s.shear.ks, 5000.0);
   EXPECT_EQ(set_assignment(s, "body.center=-5,11,0"), std::nullopt);
-  EXPECT_EQ(s.cube.center, Vec3(-5.0, 11.0, 0.0));
+  EXPECT_EQ(cube_spec(s).center, Vec3(-5.0, 11.0, 0.0));
   const SceneSpec before = s;
   for (const char* bad : {"springs.shear.ks", "=5000", " = 5000", ""}) {
     const auto e = set_assignment(s, bad);
@@ -181,15 +182,15 @@ TEST(SceneParams, SetParsesByTypeAndValidatesLikeTheFile) {
   EXPECT_EQ(set_parameter(s, "springs.shear.ks", "5000"), std::nullopt);
   EXPECT_EQ(s.shear.ks, 5000.0);
   EXPECT_EQ(set_parameter(s, "body.center", "-5,11,0"), std::nullopt);
-  EXPECT_EQ(s.cube.center, Vec3(-5.0, 11.0, 0.0));
+  EXPECT_EQ(cube_spec(s).center, Vec3(-5.0, 11.0, 0.0));
   EXPECT_EQ(set_parameter(s, "body.center", " [1, 2.5, -3] "), std::nullopt);
-  EXPECT_EQ(s.cube.center, Vec3(1.0, 2.5, -3.0));
+  EXPECT_EQ(cube_spec(s).center, Vec3(1.0, 2.5, -3.0));
   EXPECT_EQ(set_parameter(s, "simulation.integrator", "rk4"), std::nullopt);
   EXPECT_EQ(s.integrator, IntegratorKind::RK4);
   EXPECT_EQ(set_parameter(s, "terrain.floor.project", "true"), std::nullopt);
   EXPECT_TRUE(s.terrains[0].project);
   EXPECT_EQ(set_parameter(s, "body.n", "+12"), std::nullopt);
-  EXPECT_EQ(s.cube.n, 12);
+  EXPECT_EQ(cube_spec(s).n, 12);
   EXPECT_EQ(set_parameter(s, "terrain.floor.normal", "0,2,0"), std::nullopt);
   EXPECT_EQ(std::get<Plane>(s.terrains[0].shape).normal, Vec3(0.0, 1.0, 0.0));
 

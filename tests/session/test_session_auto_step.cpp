@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 SceneSpec stiff_scene(bool auto_dt) {
   SceneSpec s = course_2023_scene();
-  s.cube.n = 4;
+  cube_spec(s).n = 4;
   for (SpringSettings* sp : {&s.structural, &s.shear, &s.bending}) sp->ks = 1e5;
   s.integrator = IntegratorKind::ExplicitEuler;
   s.dt = 0.005;  // far above explicit Euler's limit for ks = 1e5

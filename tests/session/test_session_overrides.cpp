@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/captions.hpp"
 #include "jelly/session/overrides.hpp"
@@ -18,7 +19,7 @@ TEST(ApplyOverrides, SetsEachKeyAndAcceptsCommasInValues) {
       s, " springs.structural.ks = 5000 ;body.center=-5,12,0\nsprings.shear.kd=7; "));
   EXPECT_EQ(s.structural.ks, 5000.0);
   EXPECT_EQ(s.shear.kd, 7.0);
-  EXPECT_EQ(s.cube.center, Vec3(-5.0, 12.0, 0.0));
+  EXPECT_EQ(cube_spec(s).center, Vec3(-5.0, 12.0, 0.0));
   EXPECT_EQ(s.bending.ks, course_2023_scene().bending.ks);  // untouched
   ASSERT_FALSE(apply_overrides(s, ""));
   ASSERT_FALSE(apply_overrides(s, " ; \n"));
@@ -43,7 +44,7 @@ TEST(ApplyOverrides, StiffRunBlowsUpBesideTheUnchangedOne) {
   GTEST_SKIP() << "needs the reference's forces (a student release has stubs)";
 #endif
   SceneSpec base = course_2023_scene();
-  base.cube.n = 4;
+  cube_spec(base).n = 4;
   RunSetup soft{base, IntegratorKind::ExplicitEuler, 0.001, {}};
   RunSetup stiff = soft;
   stiff.overrides = "springs.structural.ks=1e5; springs.shear.ks=1e5; springs.bending.ks=1e5";

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 
 SceneSpec small_scene() {
   SceneSpec s = course_2023_scene();
-  s.cube.n = 3;
+  cube_spec(s).n = 3;
   return s;
 }
 
@@ -23,7 +24,7 @@ TEST(RunHistory, SamplesEnergyHeightAndCost) {
   ASSERT_GE(run.history().size(), 2u);
   EXPECT_DOUBLE_EQ(run.history().front().time, 0.0);
   EXPECT_NEAR(run.history().back().time, 0.2, 1e-9);
-  EXPECT_NEAR(run.history().front().com_height, run.setup().scene.cube.center.y(), 1e-9);
+  EXPECT_NEAR(run.history().front().com_height, cube_spec(run.setup().scene).center.y(), 1e-9);
   EXPECT_GT(run.ms_per_step(), 0.0);
 }
 

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "jelly/cloth_scene.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly::testing {
@@ -27,17 +29,18 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
   JELLY_CMP(a.gravity.has_value(), b.gravity.has_value(), "gravity present", i);
   if (a.gravity) JELLY_CMP(*a.gravity, *b.gravity, "gravity", v3);
   JELLY_CMP(std::string(a.body_kind.name), std::string(b.body_kind.name), "body kind", str);
-  if (a.body_kind == BodyKind::Cube) {
-    JELLY_CMP(a.cube.n, b.cube.n, "cube.n", i);
-    JELLY_CMP(a.cube.edge, b.cube.edge, "cube.edge", num);
-    JELLY_CMP(a.cube.mass, b.cube.mass, "cube.mass", num);
-    JELLY_CMP(a.cube.center, b.cube.center, "cube.center", v3);
-    JELLY_CMP(a.cube.velocity, b.cube.velocity, "cube.velocity", v3);
-    JELLY_CMP(a.cube.rotation_axis, b.cube.rotation_axis, "cube.rotation_axis", v3);
-    JELLY_CMP(a.cube.rotation_degrees, b.cube.rotation_degrees, "cube.rotation_degrees", num);
-  } else if (a.body_kind == BodyKind::Cloth) {
-    const ClothSpec& c = a.cloth;
-    const ClothSpec& d = b.cloth;
+  if (a.body_kind == kCubeKind) {
+    JELLY_CMP(cube_spec(a).n, cube_spec(b).n, "cube.n", i);
+    JELLY_CMP(cube_spec(a).edge, cube_spec(b).edge, "cube.edge", num);
+    JELLY_CMP(cube_spec(a).mass, cube_spec(b).mass, "cube.mass", num);
+    JELLY_CMP(cube_spec(a).center, cube_spec(b).center, "cube.center", v3);
+    JELLY_CMP(cube_spec(a).velocity, cube_spec(b).velocity, "cube.velocity", v3);
+    JELLY_CMP(cube_spec(a).rotation_axis, cube_spec(b).rotation_axis, "cube.rotation_axis", v3);
+    JELLY_CMP(cube_spec(a).rotation_degrees, cube_spec(b).rotation_degrees, "cube.rotation_degrees",
+              num);
+  } else if (a.body_kind == kClothKind) {
+    const ClothSpec& c = cloth_spec(a);
+    const ClothSpec& d = cloth_spec(b);
     JELLY_CMP(c.n, d.n, "cloth.n", i);
     JELLY_CMP(c.size, d.size, "cloth.size", num);
     JELLY_CMP(c.mass, d.mass, "cloth.mass", num);
@@ -48,17 +51,17 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
     JELLY_CMP(c.air_drag, d.air_drag, "cloth.air_drag", num);
     if (c.pin_sets != d.pin_sets) return "cloth.pin_sets differ";
     if (c.pins != d.pins) return "cloth.pins differ";
-    const ClothCollisionSettings& e = a.collisions;
-    const ClothCollisionSettings& f = b.collisions;
+    const ClothCollisionSettings& e = cloth_collisions(a);
+    const ClothCollisionSettings& f = cloth_collisions(b);
     JELLY_CMP(e.cloth_restitution, f.cloth_restitution, "collision.cloth_restitution", num);
     JELLY_CMP(e.sphere_restitution, f.sphere_restitution, "collision.sphere_restitution", num);
     JELLY_CMP(e.tolerance, f.tolerance, "collision.tolerance", num);
     JELLY_CMP(e.friction, f.friction, "collision.friction", num);
     JELLY_CMP(e.push_out, f.push_out, "collision.push_out", num);
-    JELLY_CMP(a.spheres.size(), b.spheres.size(), "sphere count", i);
-    for (std::size_t k = 0; k < a.spheres.size(); ++k) {
-      const SphereSpec& p = a.spheres[k];
-      const SphereSpec& q = b.spheres[k];
+    JELLY_CMP(sphere_specs(a).size(), sphere_specs(b).size(), "sphere count", i);
+    for (std::size_t k = 0; k < sphere_specs(a).size(); ++k) {
+      const SphereSpec& p = sphere_specs(a)[k];
+      const SphereSpec& q = sphere_specs(b)[k];
       const std::string at = "spheres[" + std::to_string(k) + "]";
       JELLY_CMP(p.center, q.center, at + ".center", v3);
       JELLY_CMP(p.radius, q.radius, at + ".radius", num);

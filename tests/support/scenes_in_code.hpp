@@ -36,7 +36,7 @@ inline SceneSpec two_particle_spring(IntegratorKind kind, double h) {
   SceneSpec s;
   s.integrator = kind;
   s.dt = h;
-  s.body_kind = BodyKind::Particles;
+  s.body_kind = BodyKind{"particles"};
   const State init = TwoParticleSpring::initial_state(0.1);
   s.particles.positions = init.x;
   s.particles.velocities = init.v;

@@ -8,6 +8,7 @@
 #include "cloth_summary.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cloth_scene.hpp"
 #include "jelly/recorder.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/world.hpp"
@@ -47,7 +48,7 @@ std::optional<std::string> schedule_order(const std::vector<ScheduleEntry>& list
 std::optional<std::string> check_pin_points(const Decl&, const SceneSpec& s, const Ctx&,
                                             const Value& v) {
   const auto& pins = std::get<std::vector<IndexPair>>(v);
-  const int n = s.cloth.n;
+  const int n = cloth_spec(s).n;
   for (std::size_t i = 0; i < pins.size(); ++i)
     if (pins[i][0] < 0 || pins[i][1] < 0 || pins[i][0] >= n || pins[i][1] >= n)
       return pin_message(i, pins[i][0], pins[i][1], n);
@@ -61,15 +62,15 @@ std::optional<std::string> check_schedule(const Decl&, const SceneSpec&, const C
 
 // ----- [[sphere]] -----
 
-SphereSpec& sphere_spec(SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
-const SphereSpec& sphere_spec(const SceneSpec& s, const Ctx& c) { return s.spheres[c.index]; }
+SphereSpec& sphere_spec(SceneSpec& s, const Ctx& c) { return sphere_specs(s)[c.index]; }
+const SphereSpec& sphere_spec(const SceneSpec& s, const Ctx& c) { return sphere_specs(s)[c.index]; }
 
 /// Rows of dynamic spheres only, and of kinematic ones only.
 Decl dynamic_only(Decl d) {
   return applies_when(
       std::move(d), "dynamic spheres",
       [](const SceneSpec& s, const Ctx& c) {
-        return c.index < s.spheres.size() && !s.spheres[c.index].kinematic;
+        return c.index < sphere_specs(s).size() && !sphere_specs(s)[c.index].kinematic;
       },
       [](const Bound& b, const SceneSpec&) {
         return std::string(key_local(b.decl->pattern)) +
@@ -81,7 +82,7 @@ Decl kinematic_only(Decl d) {
   return applies_when(
       std::move(d), "kinematic spheres",
       [](const SceneSpec& s, const Ctx& c) {
-        return c.index < s.spheres.size() && s.spheres[c.index].kinematic;
+        return c.index < sphere_specs(s).size() && sphere_specs(s)[c.index].kinematic;
       },
       [](const Bound& b, const SceneSpec&) {
         return std::string(key_local(b.decl->pattern)) +
@@ -157,12 +158,12 @@ std::vector<Decl> sphere_rows() {
                   check_schedule),
               "cloth contract decision 5")),
       },
-      [](SceneSpec& s, const Decl&) { s.spheres.emplace_back(); });
+      [](SceneSpec& s, const Decl&) { sphere_specs(s).emplace_back(); });
 }
 
 std::vector<std::string> sphere_names(const SceneSpec& s) {
   std::vector<std::string> out;
-  for (std::size_t i = 0; i < s.spheres.size(); ++i) out.push_back(std::to_string(i));
+  for (std::size_t i = 0; i < sphere_specs(s).size(); ++i) out.push_back(std::to_string(i));
   return out;
 }
 
@@ -180,53 +181,57 @@ class ClothKind final : public BodyKindModule {
                 "body.n", Scope::Body, ValueKind::Integer, "", Default::Yes, kClothN,
                 "Particles per cloth edge (n² particles)",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return static_cast<long long>(s.cloth.n);
+                  return static_cast<long long>(cloth_spec(s).n);
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.cloth.n = static_cast<int>(std::get<long long>(v));
+                  cloth_spec(s).n = static_cast<int>(std::get<long long>(v));
                 }),
             make(
                 "body.size", Scope::Body, ValueKind::Real, "m", Default::Yes, kPositive,
                 "Side L of the square cloth; spacing L/(n-1)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.size; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.size = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).size; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cloth_spec(s).size = real(v); }),
             make(
                 "body.mass", Scope::Body, ValueKind::Real, "kg", Default::Yes, kPositive,
                 "Mass of every cloth particle",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.mass; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.mass = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).mass; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cloth_spec(s).mass = real(v); }),
             make(
                 "body.center", Scope::Body, ValueKind::Vector3, "m", Default::Yes, kAny,
                 "Centre c0; the horizontal square grid is centred exactly on it",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.center; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.center = vec(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).center; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cloth_spec(s).center = vec(v); }),
             make(
                 "body.velocity", Scope::Body, ValueKind::Vector3, "m/s", Default::Yes, kAny,
                 "Initial velocity of every unpinned particle (not rotated)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.velocity; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.velocity = vec(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).velocity; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cloth_spec(s).velocity = vec(v); }),
             make(
                 "body.rotation_axis", Scope::Body, ValueKind::Vector3, "", Default::Yes, kAny,
                 "Axis of the initial rotation about c0 (normalised when used)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_axis; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.rotation_axis = vec(v); },
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).rotation_axis; },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  cloth_spec(s).rotation_axis = vec(v);
+                },
                 {},
                 /*nonzero=*/true),
             make(
                 "body.rotation_degrees", Scope::Body, ValueKind::Real, "deg", Default::Yes, kAny,
                 "Initial rotation angle about rotation_axis (90 about x: a curtain; 90 about z: a "
                 "flag)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.rotation_degrees; },
+                [](const SceneSpec& s, const Ctx&) -> Value {
+                  return cloth_spec(s).rotation_degrees;
+                },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.cloth.rotation_degrees = real(v);
+                  cloth_spec(s).rotation_degrees = real(v);
                 }),
             make(
                 "body.pins", Scope::Body, ValueKind::NameList, "", Default::Yes, kAny,
                 "Named sets of pinned particles: corners (the four), edge (the row k = 0); [] for "
                 "none",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.pin_sets; },
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).pin_sets; },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.cloth.pin_sets = std::get<std::vector<std::string>>(v);
+                  cloth_spec(s).pin_sets = std::get<std::vector<std::string>>(v);
                 },
                 {kPinSets.begin(), kPinSets.end()}),
             written_if(
@@ -235,59 +240,72 @@ class ClothKind final : public BodyKindModule {
                             kAny, "Further pinned particles by grid coordinates [[i, k], ...]",
                             [](const SceneSpec& s, const Ctx&) -> Value {
                               std::vector<IndexPair> out;
-                              for (const GridCoord& p : s.cloth.pins) out.push_back({p[0], p[1]});
+                              for (const GridCoord& p : cloth_spec(s).pins)
+                                out.push_back({p[0], p[1]});
                               return out;
                             },
                             [](SceneSpec& s, const Ctx&, const Value& v) {
-                              s.cloth.pins.clear();
+                              cloth_spec(s).pins.clear();
                               for (const IndexPair& p : std::get<std::vector<IndexPair>>(v))
-                                s.cloth.pins.push_back(
+                                cloth_spec(s).pins.push_back(
                                     {static_cast<int>(p[0]), static_cast<int>(p[1])});
                             }),
                         check_pin_points),
-                [](const SceneSpec& s, const Ctx&) { return !s.cloth.pins.empty(); }),
+                [](const SceneSpec& s, const Ctx&) { return !cloth_spec(s).pins.empty(); }),
             make(
                 "body.air_drag", Scope::Body, ValueKind::Real, "N*s/m", Default::Yes, kNonNegative,
                 "Air drag k_air: force -k_air v on every cloth particle (the course: 3.4e-4)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cloth.air_drag; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cloth.air_drag = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cloth_spec(s).air_drag; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cloth_spec(s).air_drag = real(v); }),
             // [collision] of a cloth scene (cloth contract §4)
             make(
                 "collision.cloth_restitution", Scope::Body, ValueKind::Real, "", Default::Yes,
                 kUnitInterval, "Restitution e_cloth of cloth-sphere impulses (the course: 0)",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return s.collisions.cloth_restitution;
+                  return cloth_collisions(s).cloth_restitution;
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.collisions.cloth_restitution = real(v);
+                  cloth_collisions(s).cloth_restitution = real(v);
                 }),
             make(
                 "collision.sphere_restitution", Scope::Body, ValueKind::Real, "", Default::Yes,
                 kUnitInterval, "Restitution e_sphere of sphere-sphere impulses",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return s.collisions.sphere_restitution;
+                  return cloth_collisions(s).sphere_restitution;
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.collisions.sphere_restitution = real(v);
+                  cloth_collisions(s).sphere_restitution = real(v);
                 }),
             make(
                 "collision.tolerance", Scope::Body, ValueKind::Real, "m", Default::Yes,
                 kNonNegative,
                 "Tolerance ε: a pair collides when its gap φ < ε and it approaches (both kinds of "
                 "pair)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.tolerance; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.tolerance = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value {
+                  return cloth_collisions(s).tolerance;
+                },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  cloth_collisions(s).tolerance = real(v);
+                }),
             make(
                 "collision.friction", Scope::Body, ValueKind::Real, "", Default::Yes, kNonNegative,
                 "Coulomb friction μ of every pair's impulse (the course's bonus; 0: none)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.friction; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.friction = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value {
+                  return cloth_collisions(s).friction;
+                },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  cloth_collisions(s).friction = real(v);
+                }),
             make(
                 "collision.push_out", Scope::Body, ValueKind::Real, "", Default::Yes, kUnitInterval,
                 "Push-out β: a particle inside a sphere moves the share β of its depth out (0: "
                 "none)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.collisions.push_out; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.collisions.push_out = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value {
+                  return cloth_collisions(s).push_out;
+                },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  cloth_collisions(s).push_out = real(v);
+                }),
         });
   }
 
@@ -297,7 +315,7 @@ class ClothKind final : public BodyKindModule {
     // schedule for a kinematic one).
     Collection c =
         collection("sphere", "<i>", "sphere", Layout::Indexed, sphere_names, sphere_rows());
-    c.append = [](SceneSpec& s) { s.spheres.emplace_back(); };
+    c.append = [](SceneSpec& s) { sphere_specs(s).emplace_back(); };
     c.first_key = "kinematic";
     return {std::move(c)};
   }
@@ -334,7 +352,7 @@ class ClothKind final : public BodyKindModule {
   }
 
   std::optional<CrossError> check(const SceneSpec& s) const override {
-    const ClothSpec& c = s.cloth;
+    const ClothSpec& c = cloth_spec(s);
     for (std::size_t i = 0; i < c.pins.size(); ++i)
       if (c.pins[i][0] < 0 || c.pins[i][1] < 0 || c.pins[i][0] >= c.n || c.pins[i][1] >= c.n)
         return CrossError{"body.pin_points", pin_message(i, c.pins[i][0], c.pins[i][1], c.n)};
@@ -347,13 +365,13 @@ class ClothKind final : public BodyKindModule {
       return CrossError{"springs.shear_body",
                         "a cloth has no body diagonals; its spring types are structural, shear "
                         "and bending"};
-    for (std::size_t i = 0; i < s.spheres.size(); ++i)
-      if (auto msg = schedule_order(s.spheres[i].schedule))
+    for (std::size_t i = 0; i < sphere_specs(s).size(); ++i)
+      if (auto msg = schedule_order(sphere_specs(s)[i].schedule))
         return CrossError{"sphere." + std::to_string(i) + ".schedule", *msg};
     return std::nullopt;
   }
   std::optional<CrossError> check_absent(const SceneSpec& s) const override {
-    if (s.spheres.empty()) return std::nullopt;
+    if (sphere_specs(s).empty()) return std::nullopt;
     return CrossError{"sphere",
                       "spheres ([[sphere]]) belong to cloth scenes (body.type = "
                       "\"cloth\"), and this scene's body is " +
@@ -365,7 +383,7 @@ class ClothKind final : public BodyKindModule {
     // decision 9's order), the spheres in scene order (it is part of the result), the collision
     // coefficients and gravity. A cloth scene has no terrains (the reader refuses them).
     ClothPhysics& physics = cloth_physics(world);  // installed in the empty world
-    const int cloth = physics.add_cloth(scene.cloth);
+    const int cloth = physics.add_cloth(cloth_spec(scene));
     if (scene.structural.enabled)
       physics.build_cloth_springs(cloth, SpringType::Structural, scene.structural.ks,
                                   scene.structural.kd);
@@ -373,8 +391,8 @@ class ClothKind final : public BodyKindModule {
       physics.build_cloth_springs(cloth, SpringType::Shear, scene.shear.ks, scene.shear.kd);
     if (scene.bending.enabled)
       physics.build_cloth_springs(cloth, SpringType::Bending, scene.bending.ks, scene.bending.kd);
-    for (const SphereSpec& sphere : scene.spheres) physics.add_sphere(sphere);
-    physics.set_cloth_collisions(scene.collisions);
+    for (const SphereSpec& sphere : sphere_specs(scene)) physics.add_sphere(sphere);
+    physics.set_cloth_collisions(cloth_collisions(scene));
     world.set_gravity(scene.gravity);
   }
 

@@ -1,5 +1,6 @@
 // The course's 2023 cube scene built in code (jelly/scene.hpp, course_2023_scene): for tests and
 // benchmarks that must not depend on scene files, and for the viewer when the file is missing.
+#include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly {
@@ -13,8 +14,8 @@ SceneSpec course_2023_scene() {
   s.dt = 0.001;
   s.duration = 10.0;
   s.gravity = Vec3(0.0, -9.8, 0.0);
-  s.body_kind = BodyKind::Cube;
-  s.cube.center = Vec3(-4.8, 11.0, 0.0);
+  s.body_kind = kCubeKind;
+  cube_spec(s).center = Vec3(-4.8, 11.0, 0.0);
   s.structural = {true, 2000.0, 60.0};
   s.shear = {true, 2000.0, 60.0};
   s.bending = {true, 2000.0, 60.0};

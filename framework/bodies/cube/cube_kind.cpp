@@ -4,6 +4,7 @@
 #include "cube_study.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/cube_physics.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/world.hpp"
 #include "param_rows.hpp"
 
@@ -29,43 +30,48 @@ class CubeKind final : public BodyKindModule {
                 "body.n", Scope::Body, ValueKind::Integer, "", Default::Yes, kCubeN,
                 "Particles per cube edge (n³ particles)",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return static_cast<long long>(s.cube.n);
+                  return static_cast<long long>(cube_spec(s).n);
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.cube.n = static_cast<int>(std::get<long long>(v));
+                  cube_spec(s).n = static_cast<int>(std::get<long long>(v));
                 }),
             make(
                 "body.edge", Scope::Body, ValueKind::Real, "m", Default::Yes, kPositive,
                 "Cube edge length L",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.edge; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.edge = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cube_spec(s).edge; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cube_spec(s).edge = real(v); }),
             make(
                 "body.mass", Scope::Body, ValueKind::Real, "kg", Default::Yes, kPositive,
                 "Mass of every particle",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.mass; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.mass = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cube_spec(s).mass; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cube_spec(s).mass = real(v); }),
             make(
                 "body.center", Scope::Body, ValueKind::Vector3, "m", Default::Yes, kAny,
                 "Initial centre c0; the grid is centred exactly on it",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.center; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.center = vec(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cube_spec(s).center; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cube_spec(s).center = vec(v); }),
             make(
                 "body.velocity", Scope::Body, ValueKind::Vector3, "m/s", Default::Yes, kAny,
                 "Initial velocity of every particle (not rotated)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.velocity; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.velocity = vec(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return cube_spec(s).velocity; },
+                [](SceneSpec& s, const Ctx&, const Value& v) { cube_spec(s).velocity = vec(v); }),
             make(
                 "body.rotation_axis", Scope::Body, ValueKind::Vector3, "", Default::Yes, kAny,
                 "Axis of the initial rotation about c0 (normalised when used)",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_axis; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.cube.rotation_axis = vec(v); }, {},
+                [](const SceneSpec& s, const Ctx&) -> Value { return cube_spec(s).rotation_axis; },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  cube_spec(s).rotation_axis = vec(v);
+                },
+                {},
                 /*nonzero=*/true),
             make(
                 "body.rotation_degrees", Scope::Body, ValueKind::Real, "deg", Default::Yes, kAny,
                 "Initial rotation angle about rotation_axis, right-hand rule",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.cube.rotation_degrees; },
+                [](const SceneSpec& s, const Ctx&) -> Value {
+                  return cube_spec(s).rotation_degrees;
+                },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.cube.rotation_degrees = real(v);
+                  cube_spec(s).rotation_degrees = real(v);
                 }),
         });
   }
@@ -96,7 +102,7 @@ class CubeKind final : public BodyKindModule {
 
   void build(const SceneSpec& scene, World& world) const override {
     CubePhysics& physics = cube_physics(world);  // the cube's lattices, the default physics' rest
-    const int cube = physics.add_cube(scene.cube);
+    const int cube = physics.add_cube(cube_spec(scene));
     if (scene.structural.enabled)
       physics.build_cube_springs(cube, SpringType::Structural, scene.structural.ks,
                                  scene.structural.kd);

@@ -136,6 +136,11 @@ std::string body_kind_names() {
   return out.empty() ? std::string("none") : out;
 }
 
+BodyKind default_body_kind() {
+  const std::vector<const BodyKindModule*>& kinds = body_kinds();
+  return kinds.empty() ? BodyKind{} : BodyKind{kinds.front()->name()};
+}
+
 const BodyKindModule& body_kind_of(const SceneSpec& scene) {
   if (const BodyKindModule* k = find_body_kind(scene.body_kind.name)) return *k;
   throw std::runtime_error((scene.source.empty() ? std::string("<scene>") : scene.source) +

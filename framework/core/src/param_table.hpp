@@ -18,6 +18,7 @@
 
 #include "jelly/params.hpp"
 #include "jelly/scene_spec.hpp"
+#include "jelly/schedule.hpp"
 
 namespace jelly::params_detail {
 

@@ -209,7 +209,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
   m.task_modules =
       r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
-  m.bodies = r.strings("bodies", false, "a list of scene body kinds, e.g. [\"cube\"]");
+  m.bodies = r.strings("bodies", false,
+                       "a list of the body.type names of framework/bodies/ its tasks simulate");
   m.default_scene = r.string("default_scene", false, "a scene name");
   m.contracts = r.strings("contracts", false,
                           "a list of contract names (the handout's anchors <name>-contract-N)");

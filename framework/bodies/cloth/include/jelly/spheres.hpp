@@ -5,16 +5,10 @@
 #include <optional>
 #include <vector>
 
+#include "jelly/schedule.hpp"
 #include "jelly/types.hpp"
 
 namespace jelly {
-
-/// One entry of a kinematic sphere's velocity schedule: from `time` on, the sphere moves at
-/// `velocity` (cloth contract §3, decision 5).
-struct ScheduleEntry {
-  double time = 0.0;             ///< [s]
-  Vec3 velocity{0.0, 0.0, 0.0};  ///< [m/s]
-};
 
 /// A sphere as a scene describes it.
 struct SphereSpec {

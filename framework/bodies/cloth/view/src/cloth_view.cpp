@@ -5,6 +5,7 @@
 
 #include "jelly/bodies/cloth/view/cloth_view.hpp"
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cloth_scene.hpp"
 #include "jelly/session/captions.hpp"
 
 namespace jelly::cloth_view {
@@ -87,7 +88,7 @@ bool ClothView::frame(const World& world, const std::function<void(const Vec3&)>
 }
 
 std::string ClothView::caption_body(const SceneSpec& sc) const {
-  const ClothSpec& c = sc.cloth;
+  const ClothSpec& c = cloth_spec(sc);
   std::string pins;
   for (const std::string& p : c.pin_sets) pins += (pins.empty() ? "" : "+") + p;
   if (!c.pins.empty()) pins += (pins.empty() ? "" : "+") + std::to_string(c.pins.size());
@@ -97,10 +98,10 @@ std::string ClothView::caption_body(const SceneSpec& sc) const {
 }
 
 std::string ClothView::caption_tail(const SceneSpec& sc) const {
-  const ClothCollisionSettings& k = sc.collisions;
+  const ClothCollisionSettings& k = cloth_collisions(sc);
   std::size_t kinematic = 0;
-  for (const SphereSpec& sp : sc.spheres) kinematic += sp.kinematic ? 1 : 0;
-  const std::size_t n = sc.spheres.size();
+  for (const SphereSpec& sp : sphere_specs(sc)) kinematic += sp.kinematic ? 1 : 0;
+  const std::size_t n = sphere_specs(sc).size();
   return "\n" + std::to_string(n) + (n == 1 ? " sphere (" : " spheres (") +
          std::to_string(kinematic) + " kinematic): e_cloth " +
          format_number("%g", k.cloth_restitution) + " e_sphere " +

@@ -5,6 +5,7 @@
 
 #include "jelly/bodies/cube/view/cube_view.hpp"
 #include "jelly/cube_physics.hpp"
+#include "jelly/cube_scene.hpp"
 #include "jelly/session/captions.hpp"
 
 namespace jelly::cube_view {
@@ -61,9 +62,9 @@ class CubeView final : public render::BodyView {
   }
   std::string caption_body(const SceneSpec& sc) const override {
     using session::format_number;
-    return "\ncube: n = " + std::to_string(sc.cube.n) +
-           ", L = " + format_number("%.3g m", sc.cube.edge) +
-           ", m = " + format_number("%.3g kg", sc.cube.mass) + "\n";
+    return "\ncube: n = " + std::to_string(cube_spec(sc).n) +
+           ", L = " + format_number("%.3g m", cube_spec(sc).edge) +
+           ", m = " + format_number("%.3g kg", cube_spec(sc).mass) + "\n";
   }
   std::string_view surface_label() const override { return "jelly surface"; }
 };
