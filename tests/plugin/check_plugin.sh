@@ -2,7 +2,9 @@
 # Proof that an assignment is a plug-in (issue 19, docs/new-assignment.md):
 #   check_plugin.sh SOURCE_DIR FIXTURE_DIR WORK_DIR [CMAKE_ARG...]
 # copies SOURCE_DIR's files (git's tracked and unignored files: no build/) to WORK_DIR/tree, adds
-# FIXTURE_DIR's assignments/projectile/ and solutions/projectile/ and NOTHING else, then in that
+# FIXTURE_DIR's assignments/projectile/ and solutions/projectile/ and its toy body kind
+# framework/bodies/point/ (which the projectile's manifest simulates; plugin.body,
+# check_plugin_body.sh, checks it on this build) and NOTHING else, then in that
 # tree: configures and builds (JELLY_TASKS=solutions, no viewer, benchmarks or tests), generates
 # the projectile reference data, grades the reference (full marks), the stubs (0) and the mutants
 # (each caught in its own task), builds selfcheck-projectile, grades A1's reference (80/80 beside
@@ -23,6 +25,7 @@ work=$3
 shift 3
 extra_args=("$@")
 id=projectile
+kind=point
 jobs=${JELLY_PLUGIN_JOBS:-2}
 start=$SECONDS
 
@@ -56,14 +59,16 @@ if compgen -G "$src/third_party/*/" >/dev/null; then
 fi
 [[ -e $tree/assignments/$id || -e $tree/solutions/$id ]] &&
   fail "the source tree already has an assignment '$id'"
+[[ -e $tree/framework/bodies/$kind ]] && fail "the source tree already has a body kind '$kind'"
 # A baseline commit, so that `git status` shows exactly what the steps below change.
 git -C "$tree" init -q
 git -C "$tree" add -A
 git -C "$tree" -c user.name=plugin -c user.email=plugin@invalid commit -q -m baseline
 
-step "adding the fixture: assignments/$id and solutions/$id only"
+step "adding the fixture: assignments/$id, solutions/$id and framework/bodies/$kind only"
 cp -a "$fixture/assignments/$id" "$tree/assignments/$id"
 cp -a "$fixture/solutions/$id" "$tree/solutions/$id"
+cp -a "$fixture/framework/bodies/$kind" "$tree/framework/bodies/$kind"
 
 step "configuring and building"
 launcher=()
@@ -170,7 +175,7 @@ read -r a1_score a1_max < <(score_of "$work/a1/results.json")
 
 step "no tracked file changed"
 changed=$(git -C "$tree" status --porcelain --untracked-files=all |
-  grep -v -E "^\?\? (assignments/$id/|solutions/$id/|grader/data/$id/hidden/)" || true)
+  grep -v -E "^\?\? (assignments/$id/|solutions/$id/|grader/data/$id/hidden/|framework/bodies/$kind/)" || true)
 if [[ -n $changed ]]; then
   echo "$changed" | head -40 >&2
   fail "the plug-in needed changes outside its own folders (above)"
@@ -181,7 +186,7 @@ if "$tree/tools/make-student-release" --help 2>&1 | grep -q -- --assignments; th
   step "make-student-release --assignments $id"
   release=$work/release
   # The instructor commits the new folders (the release ships what git tracks).
-  git -C "$tree" add "assignments/$id" "solutions/$id" "grader/data/$id"
+  git -C "$tree" add "assignments/$id" "solutions/$id" "grader/data/$id" "framework/bodies/$kind"
   git -C "$tree" -c user.name=plugin -c user.email=plugin@invalid commit -q -m "add $id"
   "$tree/tools/make-student-release" "$release" --assignments "$id" --no-verify \
     >"$work/release.log" 2>&1 || {
