@@ -11,7 +11,6 @@
 namespace jelly::grade {
 
 void register_grid_spring_cases(Registry& r);
-void register_force_cases(Registry& r);
 void register_collision_cases(Registry& r);
 void register_friction_cases(Registry& r);
 void register_integrator_cases(Registry& r);

@@ -2,7 +2,9 @@
 // the linear two-particle spring, and a small cloth linearised about its rest shape with some of
 // its particles pinned, inverse mass 0): no student force, spring or collision code runs, so a
 // wrong spring sign cannot fail an integrator test. The pinned cloth also proves that a pin stays
-// bitwise where it was under the student's integrator (cloth contract §1, §7).
+// bitwise where it was under the student's integrator (cloth contract §1, §7). Free fall and
+// convergence are the mass_spring module's slot-level cases (grader/runner/mass_spring_cases.cpp);
+// the cloth's are A2's own.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -14,86 +16,21 @@
 #include "cases.hpp"
 #include "jelly/test_systems.hpp"
 #include "jelly/world.hpp"
+#include "mass_spring_cases.hpp"
 
 namespace jelly::grade {
 
 namespace {
 
-struct Method {
-  const char* key;   // params.method
-  const char* name;  // the student's function
-  StepFunction TaskTable::*member;
-};
-
-const Method kMethods[] = {
-    {"explicit_euler", "explicit_euler_step", &TaskTable::explicit_euler_step},
-    {"implicit_euler", "implicit_euler_step", &TaskTable::implicit_euler_step},
-    {"midpoint", "midpoint_step", &TaskTable::midpoint_step},
-    {"rk4", "rk4_step", &TaskTable::rk4_step},
-};
-
-const Method& method(const Params& params) {
-  const std::string key = params.text("method");
-  for (const Method& m : kMethods)
-    if (key == m.key) return m;
-  throw std::runtime_error(
-      "params.method: expected explicit_euler, implicit_euler, midpoint or rk4, got " + key);
-}
-
-void step_n(StepFunction fn, System& system, State& s, double h, long n) {
-  Workspace w;
-  for (long i = 0; i < n; ++i) {
-    w.resize(system.particle_count());
-    fn(system, s, h, w);
-  }
-}
-
-// Free fall of three particles (physics contract §9, which the cloth keeps: cloth contract §7).
-void run_free_fall(const TaskTable& t, const Params& params, Outputs& out) {
-  const Method& m = method(params);
-  const double h = params.number("h");
-  const long steps = params.integer("steps");
-  FreeFallSystem system(3, Vec3(0.0, -9.8, 0.0));
-  State s;
-  s.resize(3);
-  s.x << -2.0, 0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 0.5, -0.5;
-  s.v << 0.0, 0.5, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0;
-  step_n(t.*(m.member), system, s, h, steps);
-  char what[160];
-  std::snprintf(what, sizeof what,
-                "after %ld steps of %g s of a cloth particle dropped from rest at y = 1 m [m]",
-                steps, h);
-  out.value("y0", s.x(1, 0), std::string("height ") + what);
-  out.array("x", s.x, "positions of three falling particles at the end [m]");
-  out.array("v", s.v, "velocities of three falling particles at the end [m/s]");
-}
-
-// Observed order on the linear two-particle spring, damping params.damping, one run to t = 1 s
-// per step size in params.h (at least two).
-void run_convergence(const TaskTable& t, const Params& params, Outputs& out) {
-  const Method& m = method(params);
-  const double damping = params.number("damping");
-  std::vector<double> hs = params.numbers("h");
-  if (hs.size() < 2) throw std::runtime_error("params.h: expected at least two step sizes");
-  std::vector<double> errors;
-  std::string list;
-  for (double h : hs) {
-    auto system = make_linear_two_particle_spring(damping);
-    State s = TwoParticleSpring::initial_state(damping);
-    step_n(t.*(m.member), *system, s, h, std::lround(1.0 / h));
-    const double exact = TwoParticleSpring::exact_x1(1.0, damping);
-    const double e = std::max(std::abs(s.x(0, 1) - exact), std::abs(s.x(0, 0) + exact));
-    errors.push_back(e);
-    char b[32];
-    std::snprintf(b, sizeof b, "%s%g", list.empty() ? "" : ", ", h);
-    list += b;
-  }
-  const std::size_t k = errors.size();
-  out.values(
-      "errors", errors,
-      "largest position error at t = 1 s on the two-particle spring for h = " + list + " [m]");
-  out.value("order", std::log2(errors[k - 2] / errors[k - 1]),
-            "observed order of accuracy from the last two step sizes (log2 of the error ratio)");
+// The free fall's start (the mass_spring module's integrator_free_fall): three particles, the
+// first a cloth particle dropped from rest at y = 1 m (physics contract §9, which the cloth keeps:
+// cloth contract §7).
+FreeFallStart a2_free_fall() {
+  FreeFallStart start{Vec3Array(3, 3), Vec3Array(3, 3),
+                      "a cloth particle dropped from rest at y = 1 m"};
+  start.x << -2.0, 0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 0.5, -0.5;
+  start.v << 0.0, 0.5, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0;
+  return start;
 }
 
 // prepare(): the REFERENCE springs of the cloth params.cloth, per type, into input["springs"].
@@ -130,7 +67,7 @@ class PinnedSystem : public System {
 // state perturbed by params.dx·U (positions) and params.dv·U (velocities) except at the pins;
 // params.steps steps (default 1) of params.h with the student's integrator.
 void run_cloth_steps(const TaskTable& t, const Params& params, const Json& input, Outputs& out) {
-  const Method& m = method(params);
+  const IntegratorMethod& m = integrator_method(params);
   const double h = params.number("h");
   const long steps = params.integer("steps", 1);
   const ClothSpec spec = cloth_from_params(params.table("cloth"));
@@ -201,14 +138,8 @@ void run_cloth_steps(const TaskTable& t, const Params& params, const Json& input
 
 // Every generator takes params.method (explicit_euler, implicit_euler, midpoint, rk4).
 void register_integrator_cases(Registry& r) {
-  r.add({"integrator_free_fall", "one integrator on three particles in free fall", nullptr,
-         [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
-           run_free_fall(t, p, o);
-         }});
-  r.add({"integrator_convergence", "one integrator's order of accuracy on the two-particle spring",
-         nullptr, [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
-           run_convergence(t, p, o);
-         }});
+  register_integrator_free_fall(r, a2_free_fall());
+  register_integrator_convergence(r);
   r.add({"integrator_cloth_steps",
          "steps of one integrator on a damped linear cloth with pinned particles",
          &prepare_cloth_springs,
