@@ -31,7 +31,7 @@ Motion course_motion(const Skeleton& skeleton, const std::string& name) {
 // E(rx, ry, rz) = R_z·R_y·R_x from Eigen's angle-axis and the C library, independent of the
 // module's rotation code.
 Mat3 independent_e(const Vec3& degrees) {
-  const Vec3 r = degrees * (M_PI / 180.0);
+  const Vec3 r = degrees * (3.14159265358979323846 / 180.0);
   return (Eigen::AngleAxisd(r.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(r.y(), Vec3::UnitY()) *
           Eigen::AngleAxisd(r.x(), Vec3::UnitX()))
       .toRotationMatrix();

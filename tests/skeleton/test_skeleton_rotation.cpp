@@ -13,7 +13,7 @@ namespace jelly::skeleton {
 namespace {
 
 Mat3 independent_e(const Vec3& degrees) {
-  const Vec3 r = degrees * (M_PI / 180.0);
+  const Vec3 r = degrees * (3.14159265358979323846 / 180.0);
   return (Eigen::AngleAxisd(r.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(r.y(), Vec3::UnitY()) *
           Eigen::AngleAxisd(r.x(), Vec3::UnitX()))
       .toRotationMatrix();

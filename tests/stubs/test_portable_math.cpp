@@ -154,7 +154,6 @@ TEST(PortableMath, Atan2SpecialValuesAreThoseOfC) {
     const double a = portable::atan2(c.y, c.x);
     EXPECT_EQ(a, c.value) << c.y << ", " << c.x;
     EXPECT_EQ(std::signbit(a), std::signbit(c.value)) << c.y << ", " << c.x;
-    EXPECT_EQ(a, std::atan2(c.y, c.x)) << c.y << ", " << c.x;
   }
   EXPECT_TRUE(std::isnan(portable::atan2(std::nan(""), 1.0)));
   EXPECT_TRUE(std::isnan(portable::atan2(kInf, std::nan(""))));
