@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "jelly/skeleton/rotation.hpp"
 #include "skeleton_test_files.hpp"
@@ -121,6 +122,25 @@ TEST(AsfReader, NotesAnUnknownKeyOfABoneBlock) {
   ASSERT_EQ(r.notes.size(), 1u);
   EXPECT_EQ(r.notes[0].line, 32);
   EXPECT_NE(r.notes[0].message.find("bone 'b': unknown key 'bodymass'"), std::string::npos);
+}
+
+TEST(AsfReader, AParentOnTwoLinesAppendsItsChildren) {
+  const SkeletonResult r = parse(text_of(kAsf, 36, "root b"));
+  ASSERT_TRUE(r) << r.error->text();
+  EXPECT_EQ(r.skeleton->bones[0].children, (std::vector<int>{1, 2}));
+  EXPECT_EQ(r.skeleton->bones[2].parent, 0);
+}
+
+TEST(AsfReader, AFileOnDiskIsNamedByItsPathInErrors) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "jelly_skeleton_test_bad.asf";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << text_of(kAsf, 19, "length -2");
+  }
+  const SkeletonResult r = read_asf(path, 0.2);
+  std::filesystem::remove(path);
+  test::expect_error(r, path.string(), 19, "length: expected one number ≥ 0");
 }
 
 // ---- Sections
