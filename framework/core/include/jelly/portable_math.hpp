@@ -1,19 +1,19 @@
 #pragma once
 // Transcendental functions that give the same bits on every platform.
 //
-// The C library's sin, cos, atan2, exp and pow are not the same code everywhere: glibc, macOS's libm,
-// MinGW-w64's CRT (x87 fsin/fcos) and MSVC's UCRT round differently in the last bits. The core
-// uses these instead wherever such a value reaches the simulation state or a printed result (the
-// bodies' initial rotations, the stability detector's frequency grid, the two-particle spring's
-// exact solution, Euler angles of rotations), so a student on Windows or macOS computes what the
-// grader computes on Linux.
+// The C library's sin, cos, atan2, exp and pow are not the same code everywhere: glibc, macOS's
+// libm, MinGW-w64's CRT (x87 fsin/fcos) and MSVC's UCRT round differently in the last bits. The
+// core uses these instead wherever such a value reaches the simulation state or a printed result
+// (the bodies' initial rotations, the stability detector's frequency grid, the two-particle
+// spring's exact solution, Euler angles of rotations), so a student on Windows or macOS computes
+// what the grader computes on Linux.
 //
 // They use only +, −, × and ÷ of doubles (correctly rounded by IEEE 754 on every compiler the
 // project supports, with -ffp-contract=off or /fp:precise): the argument is reduced and a Taylor
 // series summed in double-double arithmetic (≈ 106 bits), then rounded once (atan2: a table of
-// atan(k/16) and the series of atan u, |u| ≤ 1/32). The result is the
-// correctly rounded value except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also
-// agrees with glibc wherever glibc is correctly rounded (tests/stubs/test_portable_math.cpp).
+// atan(k/16) and the series of atan u, |u| ≤ 1/32). The result is the correctly rounded value
+// except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also agrees with glibc
+// wherever glibc is correctly rounded (tests/stubs/test_portable_math.cpp).
 namespace jelly::portable {
 
 // sin x and cos x for x in radians. Exact for x = 0; NaN for ±∞ and NaN. Intended for |x| up to
