@@ -87,6 +87,17 @@ foreach(d IN LISTS _assignment_header_dirs)
   endif()
 endforeach()
 
+# A body module's header folders (jelly/<folder>/ under framework/bodies/<module>/include): core
+# code, as the module's sources are.
+file(GLOB _body_header_dirs LIST_DIRECTORIES true RELATIVE "${ROOT}/framework/bodies"
+     "${ROOT}/framework/bodies/*/include/jelly/*")
+set(_body_folders "")
+foreach(d IN LISTS _body_header_dirs)
+  if(IS_DIRECTORY "${ROOT}/framework/bodies/${d}" AND d MATCHES "^[^/]+/include/jelly/([^/]+)$")
+    list(APPEND _body_folders ${CMAKE_MATCH_1})
+  endif()
+endforeach()
+
 # Layer of an included header path "jelly/..."; "?" when no layer owns its folder. For an
 # assignment's header, `owner` is the assignment's id.
 function(_header_layer header out owner)
@@ -96,6 +107,8 @@ function(_header_layer header out owner)
   elseif(header MATCHES "^jelly/bodies/[^/]+/view/")
     set(${out} body_view PARENT_SCOPE)
   elseif(header MATCHES "^jelly/[^/]+$")
+    set(${out} core PARENT_SCOPE)
+  elseif(header MATCHES "^jelly/([^/]+)/" AND CMAKE_MATCH_1 IN_LIST _body_folders)
     set(${out} core PARENT_SCOPE)
   elseif(header MATCHES "^jelly/(session|render|movie|cli_common|process|cli|app|grader)/")
     set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)

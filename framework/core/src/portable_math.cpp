@@ -66,11 +66,53 @@ DD div(DD a, double b) {
   return quick_two_sum(q, r);
 }
 
+// a / b for double-doubles: three quotient digits, each correcting the remainder.
+DD div(DD a, DD b) {
+  const double q1 = a.hi / b.hi;
+  DD r = add(a, neg(mul(b, q1)));
+  const double q2 = r.hi / b.hi;
+  r = add(r, neg(mul(b, q2)));
+  const double q3 = r.hi / b.hi;
+  return add(quick_two_sum(q1, q2), {q3, 0.0});
+}
+
+// √a for a double-double a ≥ 0: the double root and one Newton step (r² exact).
+DD sqrt_dd(DD a) {
+  const double r = std::sqrt(a.hi);
+  if (r == 0.0) return {0.0, 0.0};
+  const DD r2 = two_prod(r, r);
+  return quick_two_sum(r, (((a.hi - r2.hi) - r2.lo) + a.lo) / (2.0 * r));
+}
+
+bool less(DD a, DD b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
+
 // π/2 in three parts (π/2 = kPio2[0] + kPio2[1] + kPio2[2] to ≈ 2⁻¹⁶⁰).
 constexpr double kPio2[3] = {0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54, -0x1.f1976b7ed8fbcp-110};
 constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
 constexpr DD kLn2 = {0x1.62e42fefa39efp-1, 0x1.abc9e3b39803fp-56};
 constexpr DD kLog2Of10 = {0x1.a934f0979a371p+1, 0x1.7f2495fb7fa6dp-53};
+constexpr DD kPi = {0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
+constexpr DD kHalfPi = {0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54};
+// atan(k/16) for k = 0 … 16 in double-double (300-bit mpmath, rounded to hi + lo).
+constexpr DD kAtanSixteenths[17] = {
+    {0.0, 0.0},
+    {0x1.ff55bb72cfdeap-5, -0x1.c934d86d23f1dp-60},
+    {0x1.fd5ba9aac2f6ep-4, -0x1.cd37686760c17p-59},
+    {0x1.7b97b4bce5b02p-3, 0x1.347b0b4f881cap-58},
+    {0x1.f5b75f92c80ddp-3, 0x1.8ab6e3cf7afbdp-57},
+    {0x1.362773707ebccp-2, -0x1.963a544b672d8p-57},
+    {0x1.6f61941e4def1p-2, -0x1.c63aae6f6e918p-56},
+    {0x1.a64eec3cc23fdp-2, -0x1.24dec1b50b7ffp-56},
+    {0x1.dac670561bb4fp-2, 0x1.a2b7f222f65e2p-56},
+    {0x1.0657e94db30d0p-1, -0x1.d5b495f6349e6p-56},
+    {0x1.1e00babdefeb4p-1, -0x1.928df287a668fp-58},
+    {0x1.345f01cce37bbp-1, 0x1.1021137c71102p-55},
+    {0x1.4978fa3269ee1p-1, 0x1.2419a87f2a458p-56},
+    {0x1.5d58987169b18p-1, 0x1.0028e4bc5e7cap-57},
+    {0x1.700a7c5784634p-1, -0x1.8c34d25aadef6p-56},
+    {0x1.819d0b7158a4dp-1, -0x1.bf76229d3b917p-56},
+    {0x1.921fb54442d18p-1, 0x1.1a62633145c07p-55},
+};
 // Terms of the series are summed until they fall below this fraction of the first one.
 constexpr double kSeriesTolerance = 0x1p-110;
 
@@ -116,6 +158,71 @@ double sin_quadrant(DD r, int quadrant) {
     default: return -cos_series(r).hi;
   }
 }
+
+// atan r for 0 ≤ r ≤ 1: atan r = atan c + atan u with c = k/16 the nearest sixteenth and
+// u = (r − c)/(1 + r·c), |u| ≤ 1/32, whose series u − u³/3 + u⁵/5 − … is summed.
+DD atan_unit(DD r) {
+  const int k = static_cast<int>(std::nearbyint(r.hi * 16.0));
+  const double c = k / 16.0;
+  const DD u = div(add(r, {-c, 0.0}), add({1.0, 0.0}, mul(r, c)));
+  const DD u2 = mul(u, u);
+  DD power = u;
+  DD sum = u;
+  for (int n = 3; std::fabs(power.hi) > kSeriesTolerance * std::fabs(u.hi); n += 2) {
+    power = neg(mul(power, u2));
+    sum = add(sum, div(power, static_cast<double>(n)));
+  }
+  return add(kAtanSixteenths[k], sum);
+}
+
+// The angle of (x, y) for x, y ≥ 0, not both zero, in [0, π/2].
+DD atan2_first_quadrant(DD y, DD x) {
+  if (!less(x, y)) return atan_unit(div(y, x));
+  return add(kHalfPi, neg(atan_unit(div(x, y))));
+}
+
+// atan2 where x or y is infinite (the other not NaN), as C's atan2 defines it.
+double atan2_infinite(double y, double x) {
+  double angle = 0.0;
+  if (std::isinf(y)) {
+    angle = !std::isinf(x) ? kHalfPi.hi
+            : x > 0.0      ? kHalfPi.hi * 0.5
+                           : add(kPi, neg(mul(kHalfPi, 0.5))).hi;
+  } else {
+    angle = x > 0.0 ? 0.0 : kPi.hi;
+  }
+  return std::copysign(angle, y);
+}
+
+// atan2 where y = ±0 or x = ±0 (both finite).
+double atan2_zero(double y, double x) {
+  if (y != 0.0) return std::copysign(kHalfPi.hi, y);
+  return std::signbit(x) ? std::copysign(kPi.hi, y) : y;
+}
+
+// |y| and |x| finite, non-zero: scaled by the larger's power of two (exact) so that the double-
+// double steps neither overflow nor underflow. A ratio below 2⁻⁶⁰⁰ leaves atan r = r (and π/2 − r,
+// π − r = π/2, π) to far below the rounding.
+double atan2_finite(double y, double x) {
+  const double ay = std::fabs(y), ax = std::fabs(x);
+  const int gap = std::ilogb(ay) - std::ilogb(ax);
+  double angle = 0.0;
+  if (gap < -600) {
+    angle = x > 0.0 ? ay / ax : kPi.hi;
+  } else if (gap > 600) {
+    angle = kHalfPi.hi;
+  } else {
+    int e = 0;
+    std::frexp(std::max(ay, ax), &e);
+    DD a = atan2_first_quadrant({std::ldexp(ay, -e), 0.0}, {std::ldexp(ax, -e), 0.0});
+    if (x < 0.0) a = add(kPi, neg(a));
+    angle = a.hi;
+  }
+  return std::copysign(angle, y);
+}
+
+// √(1 − x²) for |x| ≤ 1 in double-double: 1 − |x| and 1 + |x| are exact double-doubles.
+DD cosine_of_sine(double ax) { return sqrt_dd(mul(two_sum(1.0, -ax), two_sum(1.0, ax))); }
 
 }  // namespace
 
@@ -168,6 +275,27 @@ double exp10(double y) {
     sum = add(sum, term);
   }
   return std::ldexp(sum.hi, static_cast<int>(n));  // exact scaling while the result is normal
+}
+
+double atan2(double y, double x) {
+  if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isinf(x) || std::isinf(y)) return atan2_infinite(y, x);
+  if (x == 0.0 || y == 0.0) return atan2_zero(y, x);
+  return atan2_finite(y, x);
+}
+
+double asin(double x) {
+  if (!(std::fabs(x) <= 1.0)) return std::numeric_limits<double>::quiet_NaN();
+  if (x == 0.0) return x;  // keeps the sign of −0
+  const double ax = std::fabs(x);
+  return std::copysign(atan2_first_quadrant({ax, 0.0}, cosine_of_sine(ax)).hi, x);
+}
+
+double acos(double x) {
+  if (!(std::fabs(x) <= 1.0)) return std::numeric_limits<double>::quiet_NaN();
+  const double ax = std::fabs(x);
+  const DD a = atan2_first_quadrant(cosine_of_sine(ax), {ax, 0.0});
+  return (x < 0.0 ? add(kPi, neg(a)) : a).hi;
 }
 
 }  // namespace jelly::portable

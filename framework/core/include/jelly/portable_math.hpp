@@ -1,17 +1,19 @@
 #pragma once
 // Transcendental functions that give the same bits on every platform.
 //
-// The C library's sin, cos, exp and pow are not the same code everywhere: glibc, macOS's libm,
-// MinGW-w64's CRT (x87 fsin/fcos) and MSVC's UCRT round differently in the last bits. The core
-// uses these instead wherever such a value reaches the simulation state or a printed result (the
-// bodies' initial rotations, the stability detector's frequency grid, the two-particle spring's
-// exact solution), so a student on Windows or macOS computes what the grader computes on Linux.
+// The C library's sin, cos, atan2, exp and pow are not the same code everywhere: glibc, macOS's
+// libm, MinGW-w64's CRT (x87 fsin/fcos) and MSVC's UCRT round differently in the last bits. The
+// core uses these instead wherever such a value reaches the simulation state or a printed result
+// (the bodies' initial rotations, the stability detector's frequency grid, the two-particle
+// spring's exact solution, Euler angles of rotations), so a student on Windows or macOS computes
+// what the grader computes on Linux.
 //
 // They use only +, −, × and ÷ of doubles (correctly rounded by IEEE 754 on every compiler the
 // project supports, with -ffp-contract=off or /fp:precise): the argument is reduced and a Taylor
-// series summed in double-double arithmetic (≈ 106 bits), then rounded once. The result is the
-// correctly rounded value except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also
-// agrees with glibc wherever glibc is correctly rounded (tests/core/test_portable_math.cpp).
+// series summed in double-double arithmetic (≈ 106 bits), then rounded once (atan2: a table of
+// atan(k/16) and the series of atan u, |u| ≤ 1/32). The result is the correctly rounded value
+// except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also agrees with glibc
+// wherever glibc is correctly rounded (tests/stubs/test_portable_math.cpp).
 namespace jelly::portable {
 
 // sin x and cos x for x in radians. Exact for x = 0; NaN for ±∞ and NaN. Intended for |x| up to
@@ -25,5 +27,16 @@ double hypot(double x, double y);
 
 // 10^y (y finite, |y| ≤ 300); +∞/0 beyond the double range, NaN for NaN.
 double exp10(double y);
+
+// The angle of (x, y) in radians, in [−π, π], with std::atan2's special values: ±0 for y = ±0
+// and x > 0 or x = +0, ±π for y = ±0 and x < 0 or x = −0, ±π/2 for x = ±0 and y ≠ 0, ±π/4 and
+// ±3π/4 for two infinities, NaN for NaN. Correctly rounded (as above) for every finite pair.
+double atan2(double y, double x);
+
+// asin x ∈ [−π/2, π/2] and acos x ∈ [0, π] for x ∈ [−1, 1] (NaN outside and for NaN), computed
+// as the angle of (x, √(1 − x²)) with the root in double-double: correctly rounded as above.
+// asin(±0) = ±0, acos(1) = +0.
+double asin(double x);
+double acos(double x);
 
 }  // namespace jelly::portable
