@@ -65,17 +65,28 @@ double trig_argument(Draw& d, int i) {
     ASSERT_EQ(bits(f_), bits(a_)) << std::hexfloat << what << ": " << f_ << " vs " << a_; \
   } while (0)
 
-TEST(PortableMathFast, SinAndCosGiveTheAccuratePathsBits) {
+TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
   Draw d;
   for (int i = 0; i < 150000; ++i) {
     const double x = trig_argument(d, i);
     EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
     EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
   }
+  for (int i = 0; i < 20000; ++i) {
+    const double x = trig_argument(d, i);
+    double s = 0.0, c = 0.0;
+    portable::sin_cos(x, s, c);
+    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
+    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+  }
   for (double x : {0.0, -0.0, 0x1p-1074, -0x1p-1030, 0x1p-26, 0x1.fffffffffffffp-27, 0x1p28, 1e7,
                    1e300, kHalfPi, 2 * kHalfPi, 0.78, -0.78, 0x1.8fffffffffffp-1}) {
     EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
     EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
+    double s = 0.0, c = 0.0;
+    portable::sin_cos(x, s, c);
+    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
+    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
   }
 }
 

@@ -162,39 +162,61 @@ Reduced reduce_fast(double x) {
   return {r, static_cast<int>(static_cast<std::int64_t>(k) & 3), 0x1p-98};
 }
 
-// sin r (cosine false) or cos r for r = rh + rl, |rh| ≤ 0.8. r = a + B with a = j/64 and
-// B = b + rl, |B| ≤ 2⁻⁷ (1 + 2⁻⁵²). With (F, G) = (sin a, cos a) for sin, (cos a, −sin a) for cos:
-// value = F + G·B + F·(cos B − 1) + G·(sin B − B). Left out: G.lo·rl and G.lo·(sin B − B), below
-// 2⁻⁶⁸ of the value (for sin with j ≠ 0, |value| ≥ max(|sin a|, |B|)/2.3; for j = 0 the value is
-// ≈ B; for cos, |value| ≥ 0.68).
-Approx sin_cos_kernel(DD r, bool cosine) {
-  const double rh = r.hi, rl = r.lo;
-  const int j = static_cast<int>(rh * 64.0 + (rh < 0.0 ? -0.5 : 0.5));  // |rh − j/64| ≤ 1/128
-  const double b = rh - j / 64.0;  // exact: a multiple of ulp(rh) below 2⁻⁷
-  const SinCosEntry& entry = kSinCos64[j < 0 ? -j : j];
-  const DD sin_a = j < 0 ? neg(entry.sin) : entry.sin;
-  const DD f = cosine ? entry.cos : sin_a;
-  const DD g = cosine ? neg(sin_a) : entry.cos;
-  const double b2 = b * b + 2.0 * b * rl;  // B², leaving out rl² ≤ 2⁻¹⁰⁶·B²
-  const double bd = b + rl;
+// r = rh + rl (|rh| ≤ 0.8) split as r = a + B, a = j/64 (j = rh·64 rounded), B = b + rl with
+// |B| ≤ 2⁻⁷ (1 + 2⁻⁵²), and what both sin r and cos r need of it.
+struct Split {
+  DD sin_a, cos_a;
+  double b, rl;
+  double sin_b_minus_b, cos_b_minus_1;
+};
+
+Split split(DD r) {
+  constexpr double kRound = 0x1.8p52;
+  const double j = (r.hi * 64.0 + kRound) - kRound;
+  const double b = r.hi - j * (1.0 / 64.0);  // exact: a multiple of ulp(rh) below 2⁻⁷
+  const int index = static_cast<int>(j);
+  const SinCosEntry& entry = kSinCos64[index < 0 ? -index : index];
+  const double b2 = b * b + 2.0 * b * r.lo;  // B², leaving out rl² ≤ 2⁻¹⁰⁶·B²
+  const double b4 = b2 * b2;
   // sin B − B and cos B − 1: Taylor polynomials, truncated below |B|⁹/9! ≤ 2⁻⁷⁴·|B| and
-  // B¹⁰/10! ≤ 2⁻⁹¹.
-  const double sin_b_minus_b = bd * b2 * (-1.0 / 6.0 + b2 * (1.0 / 120.0 - b2 * (1.0 / 5040.0)));
+  // B¹⁰/10! ≤ 2⁻⁹¹; their terms shrink by 2⁻¹⁰ or more, so each is within ≈ 6u of its value.
+  const double sin_b_minus_b =
+      (b + r.lo) * b2 * ((-1.0 / 6.0 + b2 * (1.0 / 120.0)) - b4 * (1.0 / 5040.0));
   const double cos_b_minus_1 =
-      b2 * (-0.5 + b2 * (1.0 / 24.0 + b2 * (-1.0 / 720.0 + b2 * (1.0 / 40320.0))));
-  const DD gb = two_prod(g.hi, b);
+      b2 * ((-0.5 + b2 * (1.0 / 24.0)) + b4 * (-1.0 / 720.0 + b2 * (1.0 / 40320.0)));
+  return {index < 0 ? neg(entry.sin) : entry.sin, entry.cos, b, r.lo, sin_b_minus_b, cos_b_minus_1};
+}
+
+// sin(r + q·π/2) for q = quadrant: sin r, cos r, −sin r, −cos r. With (F, G) = (sin a, cos a)
+// for sin r and (cos a, −sin a) for cos r: F + G·B + F·(cos B − 1) + G·(sin B − B), the
+// sign applied by rounds_surely. Left out: G.lo·rl and G.lo·(sin B − B), below 2⁻⁶⁸ of the
+// value (for sin with j ≠ 0, |value| ≥ max(|sin a|, |B|)/2.3; for j = 0 the value is ≈ B; for
+// cos, |value| ≥ 0.68).
+Approx sin_cos_kernel(const Split& p, int quadrant) {
+  const bool cosine = (quadrant & 1) != 0;
+  const DD f = cosine ? p.cos_a : p.sin_a;
+  const DD g = cosine ? neg(p.sin_a) : p.cos_a;
+  const DD gb = two_prod(g.hi, p.b);
   const double t[7] = {gb.lo,
                        f.lo,
-                       g.hi * rl,
-                       g.lo * b,
-                       f.hi * cos_b_minus_1,
-                       f.lo * cos_b_minus_1,
-                       g.hi * sin_b_minus_b};
+                       g.hi * p.rl,
+                       g.lo * p.b,
+                       f.hi * p.cos_b_minus_1,
+                       f.lo * p.cos_b_minus_1,
+                       g.hi * p.sin_b_minus_b};
   const double small = ((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + t[6]);
   const double magnitude =
       ((std::fabs(t[0]) + std::fabs(t[1])) + (std::fabs(t[2]) + std::fabs(t[3]))) +
       ((std::fabs(t[4]) + std::fabs(t[5])) + std::fabs(t[6]));
   return combine(two_sum(f.hi, gb.hi), small, magnitude, std::fabs(gb.hi) + std::fabs(f.hi));
+}
+
+// sin(x + shift·π/2) by the fast path into `out`, or false.
+bool sin_shifted(const Reduced& red, const Split& p, int shift, double& out) {
+  const int quadrant = (red.quadrant + shift) & 3;
+  Approx a = sin_cos_kernel(p, quadrant);
+  a.err += red.err;
+  return rounds_surely(a, quadrant >= 2, out);
 }
 
 // ---- atan2, asin, acos -------------------------------------------------------------------------
@@ -260,27 +282,32 @@ bool moderate(double a) { return a >= 0x1p-300 && a <= 0x1p300; }
 
 }  // namespace
 
-// sin x or cos x (cosine true) by the fast path, or false.
-bool sin_or_cos_fast(double x, bool cosine, double& out) {
-  Reduced red = reduce_fast(x);
-  const int quadrant = (red.quadrant + (cosine ? 1 : 0)) & 3;  // sin(r + q·π/2)
-  Approx a = sin_cos_kernel(red.r, (quadrant & 1) != 0);
-  a.err += red.err;
-  return rounds_surely(a, quadrant >= 2, out);
-}
-
 double sin(double x) {
   const double ax = std::fabs(x);
+  if (!(ax >= 0x1p-26 && ax <= 0x1p20)) return detail::sin_accurate(x);  // 0, tiny, huge, ∞, NaN
+  const Reduced red = reduce_fast(x);
   double out = 0.0;
-  // 0, tiny, huge, ∞ and NaN: the accurate path.
-  if (ax >= 0x1p-26 && ax <= 0x1p20 && sin_or_cos_fast(x, false, out)) return out;
-  return detail::sin_accurate(x);
+  return sin_shifted(red, split(red.r), 0, out) ? out : detail::sin_accurate(x);
 }
 
 double cos(double x) {
+  if (!(std::fabs(x) <= 0x1p20)) return detail::cos_accurate(x);  // huge, ∞, NaN
+  const Reduced red = reduce_fast(x);
   double out = 0.0;
-  if (std::fabs(x) <= 0x1p20 && sin_or_cos_fast(x, true, out)) return out;  // huge, ∞, NaN: no
-  return detail::cos_accurate(x);
+  return sin_shifted(red, split(red.r), 1, out) ? out : detail::cos_accurate(x);
+}
+
+void sin_cos(double x, double& s, double& c) {
+  const double ax = std::fabs(x);
+  if (!(ax <= 0x1p20)) {
+    s = detail::sin_accurate(x);
+    c = detail::cos_accurate(x);
+    return;
+  }
+  const Reduced red = reduce_fast(x);
+  const Split p = split(red.r);
+  if (!(ax >= 0x1p-26 && sin_shifted(red, p, 0, s))) s = detail::sin_accurate(x);
+  if (!sin_shifted(red, p, 1, c)) c = detail::cos_accurate(x);
 }
 
 double atan2(double y, double x) {

@@ -15,10 +15,10 @@
 // except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also agrees with glibc
 // wherever glibc is correctly rounded (tests/stubs/test_portable_math.cpp).
 //
-// sin, cos, atan2, asin and acos first take a fast path (portable_math_fast.cpp): a table and a
-// short polynomial in plain double arithmetic with a rigorous error bound. When the bound shows
-// that every value within it rounds to the same double, that double is returned: it is then the
-// accurate path's result too. Otherwise (about one call in a few hundred) the accurate path
+// sin, cos, sin_cos, atan2, asin and acos first take a fast path (portable_math_fast.cpp): a table
+// and a short polynomial in plain double arithmetic with a rigorous error bound. When the bound
+// shows that every value within it rounds to the same double, that double is returned: it is then
+// the accurate path's result too. Otherwise (about one call in a few hundred) the accurate path
 // (detail::) computes it. Both give the same bits for every input (tests/stubs/
 // test_portable_math_fast.cpp compares them).
 namespace jelly::portable {
@@ -28,6 +28,8 @@ namespace jelly::portable {
 // but lose accuracy.
 double sin(double x);
 double cos(double x);
+// sin x and cos x at once (the bits of sin(x) and cos(x)), sharing the reduction and the table.
+void sin_cos(double x, double& s, double& c);
 
 // √(x² + y²) without overflow or underflow in between (as std::hypot; the C libraries' differ).
 double hypot(double x, double y);
