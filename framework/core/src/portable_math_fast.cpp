@@ -192,7 +192,7 @@ Split split(DD r) {
 // sign applied by rounds_surely. Left out: G.lo·rl and G.lo·(sin B − B), below 2⁻⁶⁸ of the
 // value (for sin with j ≠ 0, |value| ≥ max(|sin a|, |B|)/2.3; for j = 0 the value is ≈ B; for
 // cos, |value| ≥ 0.68).
-Approx sin_cos_kernel(const Split& p, int quadrant) {
+inline Approx sin_cos_kernel(const Split& p, int quadrant) {
   const bool cosine = (quadrant & 1) != 0;
   const DD f = cosine ? p.cos_a : p.sin_a;
   const DD g = cosine ? neg(p.sin_a) : p.cos_a;
@@ -291,6 +291,7 @@ double sin(double x) {
 }
 
 double cos(double x) {
+  if (x == 0.0) return 1.0;  // absent channels' angles: no kernel
   if (!(std::fabs(x) <= 0x1p20)) return detail::cos_accurate(x);  // huge, ∞, NaN
   const Reduced red = reduce_fast(x);
   double out = 0.0;
@@ -298,16 +299,29 @@ double cos(double x) {
 }
 
 void sin_cos(double x, double& s, double& c) {
+  if (x == 0.0) {  // absent channels' angles: no kernel
+    s = x;         // keeps the sign of −0, as sin does
+    c = 1.0;
+    return;
+  }
   const double ax = std::fabs(x);
   if (!(ax <= 0x1p20)) {
     s = detail::sin_accurate(x);
     c = detail::cos_accurate(x);
     return;
   }
+  // sin x = sin(r + q·π/2), cos x = sin(r + (q + 1)·π/2): one needs sin r, the other cos r. Both
+  // kernels before either decision, so that their dependency chains overlap.
   const Reduced red = reduce_fast(x);
   const Split p = split(red.r);
-  if (!(ax >= 0x1p-26 && sin_shifted(red, p, 0, s))) s = detail::sin_accurate(x);
-  if (!sin_shifted(red, p, 1, c)) c = detail::cos_accurate(x);
+  Approx sin_r = sin_cos_kernel(p, 0), cos_r = sin_cos_kernel(p, 1);
+  sin_r.err += red.err;
+  cos_r.err += red.err;
+  const int q = red.quadrant;
+  const bool odd = (q & 1) != 0;
+  if (!(ax >= 0x1p-26 && rounds_surely(odd ? cos_r : sin_r, q >= 2, s)))
+    s = detail::sin_accurate(x);
+  if (!rounds_surely(odd ? sin_r : cos_r, ((q + 1) & 3) >= 2, c)) c = detail::cos_accurate(x);
 }
 
 double atan2(double y, double x) {
