@@ -144,8 +144,10 @@ constexpr SinCosEntry kSinCos64[53] = {
 // r = r_acc = x. Otherwise (0.78 ≤ |x| ≤ 2²⁰, so |k| < 2²⁰) Cody and Waite's reduction with
 // π/2 = kP1 + kP2 + kP3 + δ, kP1 and kP2 of 33 bits, |δ| ≤ 2⁻¹²²: k·kP1 and k·kP2 are exact;
 // x − k·kP1 is exact (both are multiples of 2⁻⁵³, the difference below 1); its sum with −k·kP2
-// is a two_sum. Errors: k·kP3 and the next subtraction ≤ 2⁻¹⁰¹ each, k·δ ≤ 2⁻¹⁰², and r_acc is
-// within 2⁻¹⁰³·|r| + 2⁻¹³⁵ of the exact x − k·π/2: |r − r_acc| ≤ 2⁻⁹⁹ + 2⁻¹⁰³·|r|.
+// is a two_sum. Errors: k·kP3 and the next subtraction ≤ 2⁻¹⁰¹ each, k·δ ≤ 2⁻¹⁰²; r_acc is
+// within 9·2⁻¹⁰⁶·|r| + 2⁻¹³⁵ of the exact x − k·π/2 (three double-double additions, each within
+// 3·2⁻¹⁰⁶ of its exact sum, Joldes, Muller and Popescu 2017). So |r − r_acc| ≤ 2⁻⁹⁸ (returned)
+// + 2⁻¹⁰²·|r| (in the kernel's 2⁻⁶⁵·|value|).
 struct Reduced {
   DD r;
   int quadrant;
@@ -221,42 +223,45 @@ bool sin_shifted(const Reduced& red, const Split& p, int shift, double& out) {
 
 // ---- atan2, asin, acos -------------------------------------------------------------------------
 
-// n/d for double-doubles n, d > 0 (|d.lo| ≤ 4u·d.hi): the double quotient and one correction from
-// the remainder (n.hi − p.hi is exact); relative error ≤ 2⁻⁹⁹.
+// n/d for double-doubles n, d > 0 (|d.lo| ≤ 4u·d.hi) with one division: q = n.hi·(1/d.hi) (within
+// 3u of n/d, so n.hi − p.hi is exact) and the remainder's correction, also times 1/d.hi. The
+// remainder is ≤ 9u·|n| and computed within 36u²·|n|, its quotient within 54u²·t: relative error
+// ≤ 2⁻⁹⁹.
 DD quotient(DD n, DD d) {
-  const double q = n.hi / d.hi;
+  const double inv = 1.0 / d.hi;
+  const double q = n.hi * inv;
   const DD p = two_prod(q, d.hi);
   const double r = (((n.hi - p.hi) - p.lo) + n.lo) - q * d.lo;
-  return quick_two_sum(q, r / d.hi);
+  return quick_two_sum(q, r * inv);
 }
 
-// atan(n/d) for n, d > 0 in [2⁻³⁰⁰, 2³⁰⁰] with n ≤ d up to rounding: t = n/d, c = k/16 the
-// nearest sixteenth, u = (t − c)/(1 + t·c) with |u| ≤ 1/32 (1 + ε), atan t = atan c + atan u.
-// An error δ in t or u changes atan by ≤ δ/(1 + t²) ≤ (δ/t)·atan t, so the quotients' 2⁻⁹⁹ stay
-// relative; |u| ≤ 1.01·atan t.
+// atan(n/d) for n, d > 0 in [2⁻³⁰⁰, 2³⁰⁰] with n.hi ≤ d.hi: c = k/16 near q = n.hi/d.hi and
+// u = (n − c·d)/(d + c·n) = (t − c)/(1 + t·c), t = n/d, |u| ≤ |t − c| ≤ 0.51/16 + 2⁻⁵²;
+// atan t = atan c + atan u. k ≥ 1 only where q ≥ 0.51/16, so n.hi/(c·d.hi) ∈ [0.509, 1.52] and
+// n.hi − (c·d.hi).hi is exact (Sterbenz). The other parts of n − c·d and d + c·n are within
+// 2⁻¹⁰²·d, which moves u and atan by ≤ 2⁻¹⁰², ≤ 2⁻⁹⁷ of atan t ≥ atan(0.509/16) when k ≥ 1 (for
+// k = 0 they are n and d exactly). The quotient's 2⁻⁹⁹ moves atan u by ≤ 2⁻⁹⁹·|u|, and
+// |u| ≤ 1.01·atan t.
 Approx atan_ratio(DD n, DD d) {
-  const DD t = quotient(n, d);
-  const int k = static_cast<int>(t.hi * 16.0 + 0.5);
-  const double c = k / 16.0;
-  const DD num = two_sum(t.hi - c, t.lo);  // t.hi − c exact: c = 0, or t.hi ∈ [c/2, 2c]
-  const DD tc = two_prod(t.hi, c);
-  const DD one_plus_tc = two_sum(1.0, tc.hi);
-  const DD den = {one_plus_tc.hi, one_plus_tc.lo + tc.lo + t.lo * c};  // error ≤ 2⁻¹⁰²
+  const int k = static_cast<int>((n.hi / d.hi) * 16.0 + 0.49);
+  const double c = k * 0.0625;
+  const DD cd = two_prod(c, d.hi), cn = two_prod(c, n.hi);
+  const DD num = two_sum(n.hi - cd.hi, (n.lo - cd.lo) - c * d.lo);
+  const DD d1 = two_sum(d.hi, cn.hi);
+  const DD den = {d1.hi, ((d1.lo + d.lo) + cn.lo) + c * n.lo};  // |den.lo| ≤ 4u·den.hi
   const DD u = quotient(num, den);
-  // atan u − u = u³·(−1/3 + u²/5 − …) truncated below |u|¹⁵/15 ≤ 2⁻⁷³·|u|, at u.hi; u.lo's effect
-  // through the cube is −u²·u.lo (the rest ≤ u⁴·|u.lo| ≤ 2⁻⁷³·|u|).
-  const double s = u.hi * u.hi;
-  const double poly =
-      -1.0 / 3.0 +
-      s * (1.0 / 5.0 + s * (-1.0 / 7.0 + s * (1.0 / 9.0 + s * (-1.0 / 11.0 + s * (1.0 / 13.0)))));
-  const double terms[4] = {kAtanSixteenths[k].lo, u.lo, u.hi * s * poly, -s * u.lo};
-  double small = 0.0, magnitude = 0.0;
-  for (double x : terms) {
-    small += x;
-    magnitude += std::fabs(x);
-  }
-  const DD big = two_sum(kAtanSixteenths[k].hi, u.hi);
-  return combine(big, small, magnitude, std::fabs(big.hi));
+  // atan u − u = u³·(−1/3 + u²/5 − …) truncated below |u|¹⁵/15 ≤ 2⁻⁷³·|u|, at u.hi (Estrin's
+  // scheme, terms shrinking by 2⁻¹⁰); u.lo's effect through the cube is −u²·u.lo (the rest
+  // ≤ u⁴·|u.lo| ≤ 2⁻⁷³·|u|).
+  const double s = u.hi * u.hi, s2 = s * s;
+  const double poly = (-1.0 / 3.0 + s * (1.0 / 5.0)) +
+                      s2 * ((-1.0 / 7.0 + s * (1.0 / 9.0)) + s2 * (-1.0 / 11.0 + s * (1.0 / 13.0)));
+  const double t[4] = {kAtanSixteenths[k].lo, u.lo, u.hi * s * poly, -s * u.lo};
+  const double small = (t[0] + t[1]) + (t[2] + t[3]);
+  const double magnitude =
+      (std::fabs(t[0]) + std::fabs(t[1])) + (std::fabs(t[2]) + std::fabs(t[3]));
+  return combine(two_sum(kAtanSixteenths[k].hi, u.hi), small, magnitude,
+                 std::fabs(kAtanSixteenths[k].hi) + std::fabs(u.hi));
 }
 
 // c − a for c = π/2 or π (double-double) and 0 ≤ a ≤ c/2 (up to rounding).
