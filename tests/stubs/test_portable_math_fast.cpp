@@ -28,7 +28,8 @@ class Draw {
   double unit() { return static_cast<double>(gen_() >> 11) * 0x1p-53; }  // [0, 1)
   double sym(double a) { return (2.0 * unit() - 1.0) * a; }              // [−a, a)
   double log_uniform(int lo, int hi) {                                   // ± 2^[lo, hi)
-    const double m = std::ldexp(1.0 + unit(), lo + static_cast<int>(gen_() % (hi - lo)));
+    const double mantissa = 1.0 + unit();  // one draw per statement: the same order everywhere
+    const double m = std::ldexp(mantissa, lo + static_cast<int>(gen_() % (hi - lo)));
     return (gen_() & 1) != 0 ? -m : m;
   }
   double ulps(double x, int n) {  // x moved by up to ±n ulps
@@ -100,7 +101,8 @@ TEST(PortableMathFast, Atan2GivesTheAccuratePathsBits) {
       case 2: x = d.log_uniform(-60, 60), y = d.ulps(x, 3); break;                // |y| ≈ |x|
       default:  // ratios near k/16, where the table's interval changes
         x = d.log_uniform(-10, 10);
-        y = d.ulps(x * static_cast<double>(d.integer(16)) / 16.0, 1000) * (1.0 + d.sym(0x1p-40));
+        y = d.ulps(x * static_cast<double>(d.integer(16)) / 16.0, 1000);
+        y *= 1.0 + d.sym(0x1p-40);
     }
     EXPECT_SAME_BITS(portable::atan2(y, x), portable::detail::atan2_accurate(y, x),
                      "atan2 " << y << ", " << x);
@@ -113,9 +115,11 @@ TEST(PortableMathFast, AsinAndAcosGiveTheAccuratePathsBits) {
     double x = 0.0;
     switch (i % 3) {
       case 0: x = d.sym(1.0); break;
-      case 1:
-        x = (1.0 - std::ldexp(d.unit(), -static_cast<int>(d.integer(52) + 53))) * (i % 2 ? 1 : -1);
+      case 1: {  // within 2⁻¹ … 2⁻¹⁰⁵ of ±1 (one draw per statement: the same order everywhere)
+        const double below = d.unit();
+        x = (1.0 - std::ldexp(below, -static_cast<int>(d.integer(52) + 53))) * (i % 2 ? 1 : -1);
         break;
+      }
       default: x = d.log_uniform(-330, 0);
     }
     EXPECT_SAME_BITS(portable::asin(x), portable::detail::asin_accurate(x), "asin " << x);
