@@ -68,7 +68,7 @@ double trig_argument(Draw& d, int i) {
 
 TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
   Draw d;
-  for (int i = 0; i < 150000; ++i) {
+  for (int i = 0; i < 80000; ++i) {
     const double x = trig_argument(d, i);
     EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
     EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
@@ -93,7 +93,7 @@ TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
 
 TEST(PortableMathFast, Atan2GivesTheAccuratePathsBits) {
   Draw d;
-  for (int i = 0; i < 150000; ++i) {
+  for (int i = 0; i < 80000; ++i) {
     double y = 0.0, x = 0.0;
     switch (i % 4) {
       case 0: y = d.sym(1.0), x = d.sym(1.0); break;  // rotation entries
@@ -111,7 +111,7 @@ TEST(PortableMathFast, Atan2GivesTheAccuratePathsBits) {
 
 TEST(PortableMathFast, AsinAndAcosGiveTheAccuratePathsBits) {
   Draw d;
-  for (int i = 0; i < 60000; ++i) {
+  for (int i = 0; i < 30000; ++i) {
     double x = 0.0;
     switch (i % 3) {
       case 0: x = d.sym(1.0); break;
