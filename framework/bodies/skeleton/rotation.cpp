@@ -17,8 +17,10 @@ constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 // The half-angle quaternion of a rotation by `degrees` about axis k (0 = x, 1 = y, 2 = z).
 Quaternion axis_quaternion(double degrees, int k) {
   const double half = degrees * kRadiansPerDegree * 0.5;
-  Quaternion q(portable::cos(half), 0.0, 0.0, 0.0);
-  q.vec()[k] = portable::sin(half);
+  double s = 0.0, c = 0.0;
+  portable::sin_cos(half, s, c);
+  Quaternion q(c, 0.0, 0.0, 0.0);
+  q.vec()[k] = s;
   return q;
 }
 
@@ -32,7 +34,8 @@ double half_open_degrees(double radians) {
 
 Mat3 rotation_x(double degrees) {
   const double a = degrees * kRadiansPerDegree;
-  const double c = portable::cos(a), s = portable::sin(a);
+  double s = 0.0, c = 0.0;
+  portable::sin_cos(a, s, c);
   Mat3 r;
   r << 1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c;
   return r;
@@ -40,7 +43,8 @@ Mat3 rotation_x(double degrees) {
 
 Mat3 rotation_y(double degrees) {
   const double a = degrees * kRadiansPerDegree;
-  const double c = portable::cos(a), s = portable::sin(a);
+  double s = 0.0, c = 0.0;
+  portable::sin_cos(a, s, c);
   Mat3 r;
   r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
   return r;
@@ -48,7 +52,8 @@ Mat3 rotation_y(double degrees) {
 
 Mat3 rotation_z(double degrees) {
   const double a = degrees * kRadiansPerDegree;
-  const double c = portable::cos(a), s = portable::sin(a);
+  double s = 0.0, c = 0.0;
+  portable::sin_cos(a, s, c);
   Mat3 r;
   r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
   return r;

@@ -14,6 +14,13 @@
 // atan(k/16) and the series of atan u, |u| ≤ 1/32). The result is the correctly rounded value
 // except in cases closer than ≈ 2⁻¹⁰⁰ to a rounding boundary, so it also agrees with glibc
 // wherever glibc is correctly rounded (tests/stubs/test_portable_math.cpp).
+//
+// sin, cos, sin_cos, atan2, asin and acos first take a fast path (portable_math_fast.cpp): a table
+// and a short polynomial in plain double arithmetic with a rigorous error bound. When the bound
+// shows that every value within it rounds to the same double, that double is returned: it is then
+// the accurate path's result too. Otherwise (about one call in a few hundred) the accurate path
+// (detail::) computes it. Both give the same bits for every input (tests/stubs/
+// test_portable_math_fast.cpp compares them).
 namespace jelly::portable {
 
 // sin x and cos x for x in radians. Exact for x = 0; NaN for ±∞ and NaN. Intended for |x| up to
@@ -21,6 +28,8 @@ namespace jelly::portable {
 // but lose accuracy.
 double sin(double x);
 double cos(double x);
+// sin x and cos x at once (the bits of sin(x) and cos(x)), sharing the reduction and the table.
+void sin_cos(double x, double& s, double& c);
 
 // √(x² + y²) without overflow or underflow in between (as std::hypot; the C libraries' differ).
 double hypot(double x, double y);
@@ -38,5 +47,15 @@ double atan2(double y, double x);
 // asin(±0) = ±0, acos(1) = +0.
 double asin(double x);
 double acos(double x);
+
+namespace detail {
+// The accurate path alone (double-double series), which the functions above fall back on: their
+// results for every argument. For tests that compare the two paths.
+double sin_accurate(double x);
+double cos_accurate(double x);
+double atan2_accurate(double y, double x);
+double asin_accurate(double x);
+double acos_accurate(double x);
+}  // namespace detail
 
 }  // namespace jelly::portable

@@ -1,0 +1,357 @@
+// The fast path of the portable sin, cos, atan2, asin and acos (Ziv's strategy). Each function
+// computes an approximation hi + lo of the exact value (hi = hi + lo rounded) in plain double
+// arithmetic from a table and a short polynomial, together with a rigorous bound `err` on
+// |exact − (hi + lo)|. The accurate path (portable_math.cpp) returns its double-double result
+// rounded to nearest, within 2⁻¹⁰⁰·|value| of the exact value (its documented accuracy; taken as
+// 2⁻⁹⁶ here). If rounding to nearest gives hi at both ends of [hi + lo − e, hi + lo + e] (e the
+// sum of both bounds), it gives hi everywhere in between (rounding is monotone), in particular at
+// the accurate path's result: hi is returned. Otherwise the accurate path is called. So the result
+// is the accurate path's for every argument.
+//
+// Error analysis, with u = 2⁻⁵³ (the rounding error of one operation):
+// - two_sum and two_prod (Dekker, no FMA) are exact; the table entries are exact values rounded to
+//   double-doubles (relative error ≤ 2⁻¹⁰⁶).
+// - Every "small term" t_i below is computed from exact or table inputs with at most ~12 roundings
+//   in products and Horner steps whose terms shrink (|B²|, |u²| ≤ 2⁻¹⁰), so |error| ≤ 12u·|t_i|,
+//   and summing up to 8 of them adds ≤ 8u·Σ|t_i|. The bound used, 2⁻⁴⁷·Σ|t_i| = 64u·Σ|t_i|, has
+//   a margin of 3 for this and for Σ|t_i| itself being rounded.
+// - Truncated series, terms left out (named where they are) and the errors of the reduced
+//   argument's and quotients' last bits are each ≤ 2⁻⁶⁸ relative to the result; the bound adds
+//   2⁻⁶⁵·|hi|.
+// A bound of ≈ 2⁻⁶² relative, against a rounding gap of 2⁻⁵³…2⁻⁵², sends about one argument in 500
+// to the accurate path.
+#include <cstdint>
+#include <limits>
+
+#include "double_double.hpp"
+#include "jelly/portable_math.hpp"
+
+namespace jelly::portable {
+
+namespace {
+
+using namespace dd;  // NOLINT: the arithmetic of this file
+
+// hi + lo (hi = hi + lo rounded) within err of the exact value.
+struct Approx {
+  double hi;
+  double lo;
+  double err;
+};
+
+// The relative error of the accurate path, with a margin (see the top of the file).
+constexpr double kAccurateError = 0x1p-96;
+constexpr double kArithmeticBound = 0x1p-47;  // × Σ|t_i|
+constexpr double kLumpBound = 0x1p-65;        // × |hi|
+
+// True (and `out` = ±hi) when every value within the bounds rounds to hi. e = 2·(…) ≥ twice the
+// bound, so lo ± e rounded still lies beyond lo ± bound (|lo| ≤ 2⁻⁵³·|hi|, bound ≥ 2⁻⁹⁶·|hi|).
+bool rounds_surely(const Approx& a, bool negate, double& out) {
+  const double e = 2.0 * (a.err + kAccurateError * std::fabs(a.hi));
+  if (a.hi + (a.lo + e) != a.hi || a.hi + (a.lo - e) != a.hi) return false;
+  out = negate ? -a.hi : a.hi;
+  return true;
+}
+
+// big + Σ small, where big = b1 + b2 exactly (two_sum) and |big| ≥ |Σ small|.
+Approx combine(DD big, double small, double small_magnitude, double value_scale) {
+  const DD s = quick_two_sum(big.hi, big.lo + small);
+  return {s.hi, s.lo,
+          kArithmeticBound * (small_magnitude + std::fabs(big.lo)) + kLumpBound * value_scale};
+}
+
+// ---- sin and cos -------------------------------------------------------------------------------
+
+// sin(j/64) and cos(j/64) for j = 0 … 52 as double-doubles (300-bit mpmath, rounded to hi + lo).
+struct SinCosEntry {
+  DD sin;
+  DD cos;
+};
+constexpr SinCosEntry kSinCos64[53] = {
+    {{0.0, 0.0}, {0x1.0000000000000p+0, 0.0}},
+    {{0x1.fffaaaaeeeed5p-7, -0x1.2ab639a9f0776p-63}, {0x1.fff000155549fp-1, 0x1.28a28a03a5ef3p-55}},
+    {{0x1.ffeaaaeeee86fp-6, -0x1.cd406fb224ae2p-60},
+     {0x1.ffc00155527d3p-1, -0x1.3b54492d89b5bp-55}},
+    {{0x1.7fdc01032fba9p-5, -0x1.599bdf46e997ap-59},
+     {0x1.ff7006bfdf99fp-1, -0x1.8b3b560648d5fp-56}},
+    {{0x1.ffaaaeeed4edbp-5, -0x1.2d16d32684b69p-59}, {0x1.ff0015549f4d3p-1, 0x1.328387b99426fp-55}},
+    {{0x1.3facb12d1755bp-4, -0x1.921915299468bp-58},
+     {0x1.fe7034129ef6fp-1, -0x1.cbf4337c96f97p-57}},
+    {{0x1.7f701032550e4p-4, 0x1.afc2d1800501ap-60}, {0x1.fdc06bf7e6b9bp-1, 0x1.31902b535f8dbp-55}},
+    {{0x1.bf1b78568391dp-4, 0x1.e91841dea4cc8p-58}, {0x1.fcf0c800e99b1p-1, 0x1.ea3d786d186acp-57}},
+    {{0x1.feaaeee86ee36p-4, -0x1.afcb2bcc6f03bp-59}, {0x1.fc015527d5bd3p-1, 0x1.b68f35094efb8p-55}},
+    {{0x1.1f0d3d7afceafp-3, -0x1.6ef95099769a5p-57},
+     {0x1.faf22263c4bd3p-1, -0x1.52ace133a2769p-58}},
+    {{0x1.3eb312c5d66cbp-3, 0x1.47d666b66cb91p-57}, {0x1.f9c340a7cc428p-1, 0x1.c5b6b063b7462p-55}},
+    {{0x1.5e44fcfa126f3p-3, -0x1.6f443063f89b6p-57},
+     {0x1.f874c2e1eecf6p-1, -0x1.c6514e1332b16p-55}},
+    {{0x1.7dc102fbaf2b5p-3, 0x1.5ab50e23c97c3p-59}, {0x1.f706bdf9ece1cp-1, -0x1.698c80c36dcb4p-55}},
+    {{0x1.9d252d0cec312p-3, 0x1.9c43d80b1137dp-58}, {0x1.f57948cff6797p-1, 0x1.e3a0d3e03b1d4p-57}},
+    {{0x1.bc6f84edc6199p-3, 0x1.9c1a56a7b0cabp-57}, {0x1.f3cc7c3b3d16ep-1, -0x1.21a3ad28a3494p-57}},
+    {{0x1.db9e15fb5a5d0p-3, -0x1.32e20d6cc6fc2p-57}, {0x1.f20073086649fp-1, 0x1.b940416c1984bp-56}},
+    {{0x1.faaeed4f31577p-3, -0x1.15d88508e32b8p-57}, {0x1.f01549f7deea1p-1, 0x1.d3c1e99e5cafdp-55}},
+    {{0x1.0cd00cef36436p-2, -0x1.9fb0a0c93e2b4p-56},
+     {0x1.ee0b1fbc0f11cp-1, -0x1.bfd2380bbc3b1p-59}},
+    {{0x1.1c37d64c6b876p-2, 0x1.46076fe0dcff4p-56}, {0x1.ebe214f76efa8p-1, -0x1.02f9f12ba543ep-55}},
+    {{0x1.2b8ddc43eb49fp-2, 0x1.1553899f2d807p-57}, {0x1.e99a4c3a7cd83p-1, -0x1.2264b1bc53ce8p-55}},
+    {{0x1.3ad129769d3d8p-2, 0x1.03d550487839ap-63}, {0x1.e733ea0193d40p-1, -0x1.6428b3546ce13p-55}},
+    {{0x1.4a00c9b0f3d20p-2, 0x1.823ba6bb08eadp-56}, {0x1.e4af14b2a449cp-1, -0x1.68ca02e8a6833p-55}},
+    {{0x1.591bc9fa2f597p-2, 0x1.7c74bac3fe0cbp-57}, {0x1.e20bf49acd6c1p-1, -0x1.660aec7ef636bp-58}},
+    {{0x1.682138a38d7f7p-2, -0x1.d889202444aadp-56},
+     {0x1.df4ab3ebd875ep-1, -0x1.e2d8a7e6736c4p-55}},
+    {{0x1.7710255764214p-2, -0x1.6ead7314bb6cep-57}, {0x1.dc6b7eb995912p-1, 0x1.4b364776dcd35p-58}},
+    {{0x1.85e7a12826949p-2, 0x1.8a40e9b5face0p-56}, {0x1.d96e82f71a9dcp-1, 0x1.ff61bd5d2039dp-55}},
+    {{0x1.94a6be9f546c5p-2, -0x1.69ce13e683f58p-56},
+     {0x1.d653f073e4040p-1, -0x1.76236434bec37p-55}},
+    {{0x1.a34c91cc50ccap-2, -0x1.a310e3b50cecdp-58}, {0x1.d31bf8d8d7c06p-1, 0x1.e60dd3089cbddp-56}},
+    {{0x1.b1d8305321617p-2, -0x1.ae242cb99f519p-56}, {0x1.cfc6cfa52ad9fp-1, 0x1.8b5b5508f2a0dp-55}},
+    {{0x1.c048b17b140a3p-2, 0x1.19fe6757e9fa7p-57}, {0x1.cc54aa2b2972ep-1, 0x1.4ee162ba83a98p-57}},
+    {{0x1.ce9d2e3d4a51fp-2, -0x1.2fc8a12dae298p-57}, {0x1.c8c5bf8ce1a84p-1, 0x1.ab3d1a1590123p-56}},
+    {{0x1.dcd4c15329c9ap-2, 0x1.0d4c6e171fd9ap-56}, {0x1.c51a48b8b175ep-1, -0x1.1bbb43b9aa880p-57}},
+    {{0x1.eaee8744b05f0p-2, -0x1.789b43c9b027dp-58},
+     {0x1.c1528065b7d50p-1, -0x1.892111312e828p-55}},
+    {{0x1.f8e99e76abc97p-2, 0x1.9d950af2d00a3p-58}, {0x1.bd6ea310294f5p-1, 0x1.31bbcc88c109dp-56}},
+    {{0x1.0362939c69955p-1, -0x1.2d8cd78397b01p-55}, {0x1.b96eeef58840ep-1, 0x1.45a3cc78fade0p-58}},
+    {{0x1.0a4021e9e1001p-1, -0x1.6f643a13914f6p-55}, {0x1.b553a410c104ep-1, 0x1.8ff7947027a15p-58}},
+    {{0x1.110d0c4b69c3bp-1, 0x1.d918998809981p-55}, {0x1.b11d04162a4c6p-1, 0x1.1dd561efbc0c2p-56}},
+    {{0x1.17c8e5f2eedb0p-1, 0x1.35e57102e2488p-57}, {0x1.accb526f69de5p-1, 0x1.8fb6a8dd6b6ccp-55}},
+    {{0x1.1e7343236574cp-1, 0x1.22a3fa4f41d5ap-56}, {0x1.a85ed4373e02dp-1, 0x1.9be06385ec792p-57}},
+    {{0x1.250bb93788bbbp-1, 0x1.ea3d02457bccep-56}, {0x1.a3d7d0352bdcfp-1, -0x1.68dbaeca19669p-55}},
+    {{0x1.2b91dea88421ep-1, -0x1.fa371db216ab0p-55},
+     {0x1.9f368ed912f85p-1, -0x1.1d200c5791606p-55}},
+    {{0x1.32054b148bc4fp-1, 0x1.f6b42095a135bp-55}, {0x1.9a7b5a36a6514p-1, 0x1.722cfcc9fa7a9p-55}},
+    {{0x1.386597456282bp-1, -0x1.10fada93b07a8p-56},
+     {0x1.95a67e00cb1fdp-1, -0x1.0befda21f862dp-55}},
+    {{0x1.3eb25d36cd53ap-1, -0x1.be570e1570fc0p-58},
+     {0x1.90b84784ddaf7p-1, -0x1.0feb10ab93b87p-56}},
+    {{0x1.44eb381cf386bp-1, -0x1.3ed6c1e6a5505p-55}, {0x1.8bb105a5dc900p-1, 0x1.863e03e9474c1p-55}},
+    {{0x1.4b0fc46aab761p-1, 0x1.0da05738cc59cp-61}, {0x1.869108d77a6c6p-1, 0x1.338ffe2bfe9ddp-56}},
+    {{0x1.511f9fd7b351cp-1, -0x1.5c0e861c48831p-55},
+     {0x1.8158a31916d5dp-1, -0x1.de8b90b8228dep-57}},
+    {{0x1.571a6966d59b3p-1, 0x1.c843b4d0fb197p-58}, {0x1.7c0827f09e54fp-1, -0x1.c73d6d72aee68p-57}},
+    {{0x1.5cffc16bf8f0dp-1, 0x1.96cb370eb578ap-55}, {0x1.769fec655211fp-1, -0x1.827d5cf8c68c5p-57}},
+    {{0x1.62cf49921ac79p-1, -0x1.edd9855b6241ap-55}, {0x1.712046fa77678p-1, 0x1.425b0a5029c81p-55}},
+    {{0x1.6888a4e134b2fp-1, -0x1.6b7d37644d5e6p-55}, {0x1.6b898fa9efb5dp-1, 0x1.15ac786ccf4b2p-56}},
+    {{0x1.6e2b77c40bde1p-1, -0x1.0e729857fad53p-56},
+     {0x1.65dc1fdeb8cbap-1, -0x1.97c1b47337c77p-58}},
+    {{0x1.73b7680dea578p-1, -0x1.2248306dc12a2p-56}, {0x1.6018526f563dfp-1, 0x1.46ca5e0e432d0p-55}},
+};
+
+// The reduced argument r = x − k·π/2 (|r| ≤ π/4 + ε), the quadrant k mod 4 and a bound on
+// |r − r_acc|, r_acc being the accurate path's reduced argument (its Taylor series are of r_acc;
+// sin and cos change by at most that much). k is the accurate path's: x·(2/π) rounded to nearest
+// even, here by adding and subtracting 1.5·2⁵² (exact for |k| < 2⁵¹). For |x| < 0.78, k = 0 and
+// r = r_acc = x. Otherwise (0.78 ≤ |x| ≤ 2²⁰, so |k| < 2²⁰) Cody and Waite's reduction with
+// π/2 = kP1 + kP2 + kP3 + δ, kP1 and kP2 of 33 bits, |δ| ≤ 2⁻¹²²: k·kP1 and k·kP2 are exact;
+// x − k·kP1 is exact (both are multiples of 2⁻⁵³, the difference below 1); its sum with −k·kP2
+// is a two_sum. Errors: k·kP3 and the next subtraction ≤ 2⁻¹⁰¹ each, k·δ ≤ 2⁻¹⁰²; r_acc is
+// within 9·2⁻¹⁰⁶·|r| + 2⁻¹³⁵ of the exact x − k·π/2 (three double-double additions, each within
+// 3·2⁻¹⁰⁶ of its exact sum, Joldes, Muller and Popescu 2017). So |r − r_acc| ≤ 2⁻⁹⁸ (returned)
+// + 2⁻¹⁰²·|r| (in the kernel's 2⁻⁶⁵·|value|).
+struct Reduced {
+  DD r;
+  int quadrant;
+  double err;
+};
+
+Reduced reduce_fast(double x) {
+  if (std::fabs(x) < 0.78) return {{x, 0.0}, 0, 0.0};
+  constexpr double kRound = 0x1.8p52;
+  constexpr double kP1 = 0x1.921fb544p+0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
+  const double k = (x * kTwoOverPi + kRound) - kRound;
+  const DD s = two_sum(x - k * kP1, -(k * kP2));
+  const DD r = two_sum(s.hi, s.lo - k * kP3);
+  return {r, static_cast<int>(static_cast<std::int64_t>(k) & 3), 0x1p-98};
+}
+
+// r = rh + rl (|rh| ≤ 0.8) split as r = a + B, a = j/64 (j = rh·64 rounded), B = b + rl with
+// |B| ≤ 2⁻⁷ (1 + 2⁻⁵²), and what both sin r and cos r need of it.
+struct Split {
+  DD sin_a, cos_a;
+  double b, rl;
+  double sin_b_minus_b, cos_b_minus_1;
+};
+
+Split split(DD r) {
+  constexpr double kRound = 0x1.8p52;
+  const double j = (r.hi * 64.0 + kRound) - kRound;
+  const double b = r.hi - j * (1.0 / 64.0);  // exact: a multiple of ulp(rh) below 2⁻⁷
+  const int index = static_cast<int>(j);
+  const SinCosEntry& entry = kSinCos64[index < 0 ? -index : index];
+  const double b2 = b * b + 2.0 * b * r.lo;  // B², leaving out rl² ≤ 2⁻¹⁰⁶·B²
+  const double b4 = b2 * b2;
+  // sin B − B and cos B − 1: Taylor polynomials, truncated below |B|⁹/9! ≤ 2⁻⁷⁴·|B| and
+  // B¹⁰/10! ≤ 2⁻⁹¹; their terms shrink by 2⁻¹⁰ or more, so each is within ≈ 6u of its value.
+  const double sin_b_minus_b =
+      (b + r.lo) * b2 * ((-1.0 / 6.0 + b2 * (1.0 / 120.0)) - b4 * (1.0 / 5040.0));
+  const double cos_b_minus_1 =
+      b2 * ((-0.5 + b2 * (1.0 / 24.0)) + b4 * (-1.0 / 720.0 + b2 * (1.0 / 40320.0)));
+  return {index < 0 ? neg(entry.sin) : entry.sin, entry.cos, b, r.lo, sin_b_minus_b, cos_b_minus_1};
+}
+
+// sin(r + q·π/2) for q = quadrant: sin r, cos r, −sin r, −cos r. With (F, G) = (sin a, cos a)
+// for sin r and (cos a, −sin a) for cos r: F + G·B + F·(cos B − 1) + G·(sin B − B), the
+// sign applied by rounds_surely. Left out: G.lo·rl and G.lo·(sin B − B), below 2⁻⁶⁸ of the
+// value (for sin with j ≠ 0, |value| ≥ max(|sin a|, |B|)/2.3; for j = 0 the value is ≈ B; for
+// cos, |value| ≥ 0.68).
+inline Approx sin_cos_kernel(const Split& p, int quadrant) {
+  const bool cosine = (quadrant & 1) != 0;
+  const DD f = cosine ? p.cos_a : p.sin_a;
+  const DD g = cosine ? neg(p.sin_a) : p.cos_a;
+  const DD gb = two_prod(g.hi, p.b);
+  const double t[7] = {gb.lo,
+                       f.lo,
+                       g.hi * p.rl,
+                       g.lo * p.b,
+                       f.hi * p.cos_b_minus_1,
+                       f.lo * p.cos_b_minus_1,
+                       g.hi * p.sin_b_minus_b};
+  const double small = ((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + t[6]);
+  const double magnitude =
+      ((std::fabs(t[0]) + std::fabs(t[1])) + (std::fabs(t[2]) + std::fabs(t[3]))) +
+      ((std::fabs(t[4]) + std::fabs(t[5])) + std::fabs(t[6]));
+  return combine(two_sum(f.hi, gb.hi), small, magnitude, std::fabs(gb.hi) + std::fabs(f.hi));
+}
+
+// sin(x + shift·π/2) by the fast path into `out`, or false.
+bool sin_shifted(const Reduced& red, const Split& p, int shift, double& out) {
+  const int quadrant = (red.quadrant + shift) & 3;
+  Approx a = sin_cos_kernel(p, quadrant);
+  a.err += red.err;
+  return rounds_surely(a, quadrant >= 2, out);
+}
+
+// ---- atan2, asin, acos -------------------------------------------------------------------------
+
+// n/d for double-doubles n, d > 0 (|d.lo| ≤ 4u·d.hi) with one division: q = n.hi·(1/d.hi) (within
+// 3u of n/d, so n.hi − p.hi is exact) and the remainder's correction, also times 1/d.hi. The
+// remainder is ≤ 9u·|n| and computed within 36u²·|n|, its quotient within 54u²·t: relative error
+// ≤ 2⁻⁹⁹.
+DD quotient(DD n, DD d) {
+  const double inv = 1.0 / d.hi;
+  const double q = n.hi * inv;
+  const DD p = two_prod(q, d.hi);
+  const double r = (((n.hi - p.hi) - p.lo) + n.lo) - q * d.lo;
+  return quick_two_sum(q, r * inv);
+}
+
+// atan(n/d) for n, d > 0 in [2⁻³⁰⁰, 2³⁰⁰] with n.hi ≤ d.hi: c = k/16 near q = n.hi/d.hi and
+// u = (n − c·d)/(d + c·n) = (t − c)/(1 + t·c), t = n/d, |u| ≤ |t − c| ≤ 0.51/16 + 2⁻⁵²;
+// atan t = atan c + atan u. k ≥ 1 only where q ≥ 0.51/16, so n.hi/(c·d.hi) ∈ [0.509, 1.52] and
+// n.hi − (c·d.hi).hi is exact (Sterbenz). The other parts of n − c·d and d + c·n are within
+// 2⁻¹⁰²·d, which moves u and atan by ≤ 2⁻¹⁰², ≤ 2⁻⁹⁷ of atan t ≥ atan(0.509/16) when k ≥ 1 (for
+// k = 0 they are n and d exactly). The quotient's 2⁻⁹⁹ moves atan u by ≤ 2⁻⁹⁹·|u|, and
+// |u| ≤ 1.01·atan t.
+Approx atan_ratio(DD n, DD d) {
+  const int k = static_cast<int>((n.hi / d.hi) * 16.0 + 0.49);
+  const double c = k * 0.0625;
+  const DD cd = two_prod(c, d.hi), cn = two_prod(c, n.hi);
+  const DD num = two_sum(n.hi - cd.hi, (n.lo - cd.lo) - c * d.lo);
+  const DD d1 = two_sum(d.hi, cn.hi);
+  const DD den = {d1.hi, ((d1.lo + d.lo) + cn.lo) + c * n.lo};  // |den.lo| ≤ 4u·den.hi
+  const DD u = quotient(num, den);
+  // atan u − u = u³·(−1/3 + u²/5 − …) truncated below |u|¹⁵/15 ≤ 2⁻⁷³·|u|, at u.hi (Estrin's
+  // scheme, terms shrinking by 2⁻¹⁰); u.lo's effect through the cube is −u²·u.lo (the rest
+  // ≤ u⁴·|u.lo| ≤ 2⁻⁷³·|u|).
+  const double s = u.hi * u.hi, s2 = s * s;
+  const double poly = (-1.0 / 3.0 + s * (1.0 / 5.0)) +
+                      s2 * ((-1.0 / 7.0 + s * (1.0 / 9.0)) + s2 * (-1.0 / 11.0 + s * (1.0 / 13.0)));
+  const double t[4] = {kAtanSixteenths[k].lo, u.lo, u.hi * s * poly, -s * u.lo};
+  const double small = (t[0] + t[1]) + (t[2] + t[3]);
+  const double magnitude =
+      (std::fabs(t[0]) + std::fabs(t[1])) + (std::fabs(t[2]) + std::fabs(t[3]));
+  return combine(two_sum(kAtanSixteenths[k].hi, u.hi), small, magnitude,
+                 std::fabs(kAtanSixteenths[k].hi) + std::fabs(u.hi));
+}
+
+// c − a for c = π/2 or π (double-double) and 0 ≤ a ≤ c/2 (up to rounding).
+Approx subtract_from(DD c, const Approx& a) {
+  Approx r = combine(two_sum(c.hi, -a.hi), c.lo - a.lo, std::fabs(c.lo) + std::fabs(a.lo),
+                     std::fabs(c.hi));
+  r.err += a.err;
+  return r;
+}
+
+// The angle of (x, y) in [0, π/2] for x, y > 0 in [2⁻³⁰⁰, 2³⁰⁰].
+Approx angle_first_quadrant(DD y, DD x) {
+  if (y.hi <= x.hi) return atan_ratio(y, x);
+  return subtract_from(kHalfPi, atan_ratio(x, y));
+}
+
+// √(1 − x²) for 0 ≤ x < 1 (relative error ≤ 2⁻¹⁰²).
+DD cosine_of(double ax) { return sqrt_dd(mul(two_sum(1.0, -ax), two_sum(1.0, ax))); }
+
+// Where the fast atan2 applies: both magnitudes in [2⁻³⁰⁰, 2³⁰⁰] (false for 0, ∞ and NaN), so no
+// product or quotient above overflows or leaves the normal range where it matters.
+bool moderate(double a) { return a >= 0x1p-300 && a <= 0x1p300; }
+
+}  // namespace
+
+double sin(double x) {
+  const double ax = std::fabs(x);
+  if (!(ax >= 0x1p-26 && ax <= 0x1p20)) return detail::sin_accurate(x);  // 0, tiny, huge, ∞, NaN
+  const Reduced red = reduce_fast(x);
+  double out = 0.0;
+  return sin_shifted(red, split(red.r), 0, out) ? out : detail::sin_accurate(x);
+}
+
+double cos(double x) {
+  if (x == 0.0) return 1.0;  // absent channels' angles: no kernel
+  if (!(std::fabs(x) <= 0x1p20)) return detail::cos_accurate(x);  // huge, ∞, NaN
+  const Reduced red = reduce_fast(x);
+  double out = 0.0;
+  return sin_shifted(red, split(red.r), 1, out) ? out : detail::cos_accurate(x);
+}
+
+void sin_cos(double x, double& s, double& c) {
+  if (x == 0.0) {  // absent channels' angles: no kernel
+    s = x;         // keeps the sign of −0, as sin does
+    c = 1.0;
+    return;
+  }
+  const double ax = std::fabs(x);
+  if (!(ax <= 0x1p20)) {
+    s = detail::sin_accurate(x);
+    c = detail::cos_accurate(x);
+    return;
+  }
+  // sin x = sin(r + q·π/2), cos x = sin(r + (q + 1)·π/2): one needs sin r, the other cos r. Both
+  // kernels before either decision, so that their dependency chains overlap.
+  const Reduced red = reduce_fast(x);
+  const Split p = split(red.r);
+  Approx sin_r = sin_cos_kernel(p, 0), cos_r = sin_cos_kernel(p, 1);
+  sin_r.err += red.err;
+  cos_r.err += red.err;
+  const int q = red.quadrant;
+  const bool odd = (q & 1) != 0;
+  if (!(ax >= 0x1p-26 && rounds_surely(odd ? cos_r : sin_r, q >= 2, s)))
+    s = detail::sin_accurate(x);
+  if (!rounds_surely(odd ? sin_r : cos_r, ((q + 1) & 3) >= 2, c)) c = detail::cos_accurate(x);
+}
+
+double atan2(double y, double x) {
+  if (!moderate(std::fabs(y)) || !moderate(std::fabs(x))) return detail::atan2_accurate(y, x);
+  Approx a = angle_first_quadrant({std::fabs(y), 0.0}, {std::fabs(x), 0.0});
+  if (x < 0.0) a = subtract_from(kPi, a);
+  double out = 0.0;
+  return rounds_surely(a, y < 0.0, out) ? out : detail::atan2_accurate(y, x);
+}
+
+double asin(double x) {
+  const double ax = std::fabs(x);
+  if (!(ax >= 0x1p-300 && ax < 1.0)) return detail::asin_accurate(x);
+  double out = 0.0;
+  const Approx a = angle_first_quadrant({ax, 0.0}, cosine_of(ax));
+  return rounds_surely(a, x < 0.0, out) ? out : detail::asin_accurate(x);
+}
+
+double acos(double x) {
+  const double ax = std::fabs(x);
+  if (!(ax >= 0x1p-300 && ax < 1.0)) return detail::acos_accurate(x);
+  Approx a = angle_first_quadrant(cosine_of(ax), {ax, 0.0});
+  if (x < 0.0) a = subtract_from(kPi, a);
+  double out = 0.0;
+  return rounds_surely(a, false, out) ? out : detail::acos_accurate(x);
+}
+
+}  // namespace jelly::portable
