@@ -10,6 +10,7 @@
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cloth_tasks.hpp"
 
 namespace jelly {
 namespace {
@@ -102,8 +103,8 @@ TEST(ClothCollisions, SphereSpherePairsFirstThenEachSphereOverEveryParticleInInd
   std::vector<std::string> log;
   g_log = &log;
   TaskTable t = a2::task_table();
-  t.collide_particle_sphere = &logging_particle_sphere;
-  t.collide_spheres = &logging_spheres;
+  cloth_tasks(t).collide_particle_sphere = &logging_particle_sphere;
+  cloth_tasks(t).collide_spheres = &logging_spheres;
   auto world = std::make_unique<World>(t);
   ClothSpec spec;
   spec.n = 2;

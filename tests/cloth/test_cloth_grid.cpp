@@ -6,6 +6,7 @@
 
 #include "cloth_worlds.hpp"
 #include "jelly/a2/springs.hpp"
+#include "jelly/cube.hpp"
 #include "jelly/cloth_physics.hpp"
 
 namespace jelly {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "jelly/a2/task_table.hpp"
+#include "jelly/cloth_tasks.hpp"
 #include "jelly/task_probe.hpp"
 
 namespace jelly {
@@ -31,11 +32,11 @@ TEST(ClothProbes, TheReferenceLooksImplementedInEveryNewSlot) {
 
 TEST(ClothProbes, StubsAndMissingSlotsLookMissing) {
   TaskTable stub;
-  stub.add_grid_structural_springs = stub.add_grid_shear_springs = stub.add_grid_bending_springs =
-      &no_springs;
-  stub.collide_particle_sphere = &no_impulse_ps;
-  stub.collide_spheres = &no_impulse_ss;
-  stub.friction_impulse = &no_friction;
+  cloth_tasks(stub).add_grid_structural_springs = cloth_tasks(stub).add_grid_shear_springs =
+      cloth_tasks(stub).add_grid_bending_springs = &no_springs;
+  cloth_tasks(stub).collide_particle_sphere = &no_impulse_ps;
+  cloth_tasks(stub).collide_spheres = &no_impulse_ss;
+  cloth_tasks(stub).friction_impulse = &no_friction;
   for (const char* slot : kSlots) {
     const TaskStatus st = probe_slot(slot, "A2.Tx", "x", stub);
     EXPECT_FALSE(st.implemented) << slot << ": " << st.evidence;

@@ -6,6 +6,7 @@
 
 #include "jelly/a1/task_table.hpp"
 #include "jelly/cube_scene.hpp"
+#include "jelly/cube_tasks.hpp"
 #include "jelly/simulator.hpp"
 #include "scenes_in_code.hpp"
 
@@ -24,17 +25,17 @@ TaskTable counting_table() {
   g_inner = a1::task_table();
   g_calls = {};
   TaskTable t = g_inner;
-  t.add_structural_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+  cube_tasks(t).add_structural_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
     ++g_calls.structural;
-    g_inner.add_structural_springs(c, o);
+    cube_tasks(g_inner).add_structural_springs(c, o);
   };
-  t.add_shear_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+  cube_tasks(t).add_shear_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
     ++g_calls.shear;
-    g_inner.add_shear_springs(c, o);
+    cube_tasks(g_inner).add_shear_springs(c, o);
   };
-  t.add_bending_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
+  cube_tasks(t).add_bending_springs = [](const CubeLattice& c, std::vector<Spring>& o) {
     ++g_calls.bending;
-    g_inner.add_bending_springs(c, o);
+    cube_tasks(g_inner).add_bending_springs(c, o);
   };
   t.spring_force = [](const Vec3& xa, const Vec3& xb, double ks, double rest, double degenerate) {
     ++g_calls.spring_force;

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_tasks.hpp"
 #include "jelly/spring_pass.hpp"
 #include "jelly/task_table.hpp"
 
@@ -37,9 +38,9 @@ Fixture cube_fixture() {
     g.ks = ks[k];
     g.kd = kd[k];
     g.degenerate_length = degenerate_length_for(cube.spacing());
-    if (k == 0) t.add_structural_springs(cube, g.springs);
-    if (k == 1) t.add_shear_springs(cube, g.springs);
-    if (k == 2) t.add_bending_springs(cube, g.springs);
+    if (k == 0) cube_tasks(t).add_structural_springs(cube, g.springs);
+    if (k == 1) cube_tasks(t).add_shear_springs(cube, g.springs);
+    if (k == 2) cube_tasks(t).add_bending_springs(cube, g.springs);
     fx.groups.push_back(std::move(g));
   }
   fx.s.resize(cube.particle_count());

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_tasks.hpp"
 #include "jelly/task_table.hpp"
 
 namespace jelly {
@@ -30,9 +31,9 @@ TEST_P(SpringBuilder, CountsMatchTheContract) {
   const CubeLattice cube(spec);
   const TaskTable t = a1::task_table();
   std::vector<Spring> structural, shear, bending;
-  t.add_structural_springs(cube, structural);
-  t.add_shear_springs(cube, shear);
-  t.add_bending_springs(cube, bending);
+  cube_tasks(t).add_structural_springs(cube, structural);
+  cube_tasks(t).add_shear_springs(cube, shear);
+  cube_tasks(t).add_bending_springs(cube, bending);
   const Counts want = expected(n);
   EXPECT_EQ(structural.size(), want.structural);
   EXPECT_EQ(shear.size(), want.shear);
@@ -48,9 +49,9 @@ TEST_P(SpringBuilder, NoSpringTwiceAndRestLengthsFromGeometry) {
   const double s = cube.spacing();
   const TaskTable t = a1::task_table();
   std::vector<Spring> all;
-  t.add_structural_springs(cube, all);
-  t.add_shear_springs(cube, all);
-  t.add_bending_springs(cube, all);
+  cube_tasks(t).add_structural_springs(cube, all);
+  cube_tasks(t).add_shear_springs(cube, all);
+  cube_tasks(t).add_bending_springs(cube, all);
   std::set<std::pair<int, int>> seen;
   for (const Spring& sp : all) {
     const auto key = std::minmax(sp.a, sp.b);

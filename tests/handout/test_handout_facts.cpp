@@ -33,6 +33,8 @@
 
 #include "a1_manifest.hpp"
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cloth_tasks.hpp"
+#include "jelly/cube_tasks.hpp"
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/task_table.hpp"
@@ -118,13 +120,13 @@ double com_y_after(IntegratorKind kind, double t) {
   return sim.state().x.row(1).mean();
 }
 
-std::size_t spring_count(void (*TaskTable::*builder)(const CubeLattice&, std::vector<Spring>&),
+std::size_t spring_count(void (*CubeTasks::*builder)(const CubeLattice&, std::vector<Spring>&),
                          int n) {
   CubeSpec spec = cube_spec(course_2023_scene());
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
-  (a1::task_table().*builder)(cube, springs);
+  (cube_tasks(a1::task_table()).*builder)(cube, springs);
   return springs.size();
 }
 
@@ -135,7 +137,7 @@ std::size_t body_diagonals(int n) {
   spec.n = n;
   const CubeLattice cube(spec, 0);
   std::vector<Spring> springs;
-  a1::task_table().add_shear_springs(cube, springs);
+  cube_tasks(a1::task_table()).add_shear_springs(cube, springs);
   std::size_t count = 0;
   for (const Spring& s : springs) {
     const int a = s.a, b = s.b;
@@ -192,18 +194,18 @@ std::map<std::string, Fact> a1_facts() {
   const auto n10 = [](auto builder) {
     return [builder] { return double(spring_count(builder, 10)); };
   };
-  f["springs.structural.n10"] = value(n10(&TaskTable::add_structural_springs));
+  f["springs.structural.n10"] = value(n10(&CubeTasks::add_structural_springs));
   f["springs.structural_both_ways.n10"] =
-      value([] { return 2.0 * spring_count(&TaskTable::add_structural_springs, 10); });
-  f["springs.shear.n10"] = value(n10(&TaskTable::add_shear_springs));
+      value([] { return 2.0 * spring_count(&CubeTasks::add_structural_springs, 10); });
+  f["springs.shear.n10"] = value(n10(&CubeTasks::add_shear_springs));
   f["springs.shear_face.n10"] = value(
-      [] { return double(spring_count(&TaskTable::add_shear_springs, 10) - body_diagonals(10)); });
+      [] { return double(spring_count(&CubeTasks::add_shear_springs, 10) - body_diagonals(10)); });
   f["springs.shear_body.n10"] = value([] { return double(body_diagonals(10)); });
-  f["springs.bending.n10"] = value(n10(&TaskTable::add_bending_springs));
+  f["springs.bending.n10"] = value(n10(&CubeTasks::add_bending_springs));
   f["springs.all.n10"] = value([] {
-    return double(spring_count(&TaskTable::add_structural_springs, 10) +
-                  spring_count(&TaskTable::add_shear_springs, 10) +
-                  spring_count(&TaskTable::add_bending_springs, 10));
+    return double(spring_count(&CubeTasks::add_structural_springs, 10) +
+                  spring_count(&CubeTasks::add_shear_springs, 10) +
+                  spring_count(&CubeTasks::add_bending_springs, 10));
   });
   f["course.n"] = value([] { return double(cube_spec(course_2023_scene()).n); });
   f["course.dt"] = value([] { return course_2023_scene().dt; });
@@ -316,12 +318,12 @@ ClothSpec course_cloth(int n) {
   return spec;
 }
 
-using GridBuilder = void (*TaskTable::*)(const ClothGrid&, std::vector<Spring>&);
+using GridBuilder = void (*ClothTasks::*)(const ClothGrid&, std::vector<Spring>&);
 
 std::vector<Spring> grid_springs(GridBuilder builder, int n) {
   const ClothGrid cloth(course_cloth(n), 0);
   std::vector<Spring> springs;
-  (a2::task_table().*builder)(cloth, springs);
+  (cloth_tasks(a2::task_table()).*builder)(cloth, springs);
   return springs;
 }
 
@@ -526,9 +528,9 @@ std::map<std::string, Fact> a2_facts() {
   f["sphere_mass.r1"] = value([] { return default_sphere_mass(1.0); });
 
   const std::pair<const char*, GridBuilder> builders[] = {
-      {"structural", &TaskTable::add_grid_structural_springs},
-      {"shear", &TaskTable::add_grid_shear_springs},
-      {"bending", &TaskTable::add_grid_bending_springs}};
+      {"structural", &ClothTasks::add_grid_structural_springs},
+      {"shear", &ClothTasks::add_grid_shear_springs},
+      {"bending", &ClothTasks::add_grid_bending_springs}};
   for (const auto& [name, builder] : builders) {
     const GridBuilder b = builder;
     for (int n : {5, 25})
@@ -543,11 +545,11 @@ std::map<std::string, Fact> a2_facts() {
       return total;
     });
   f["springs.structural_both_ways.n25"] =
-      value([] { return 2.0 * grid_count(&TaskTable::add_grid_structural_springs, 25); });
+      value([] { return 2.0 * grid_count(&ClothTasks::add_grid_structural_springs, 25); });
   // Shear springs along the (1,1) diagonal only: index step n + 1.
   f["springs.shear_one_diagonal.n25"] = value([] {
     double count = 0;
-    for (const Spring& s : grid_springs(&TaskTable::add_grid_shear_springs, 25))
+    for (const Spring& s : grid_springs(&ClothTasks::add_grid_shear_springs, 25))
       count += s.b - s.a == 25 + 1;
     return count;
   });

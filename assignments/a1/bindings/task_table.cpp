@@ -2,6 +2,7 @@
 // library this file is compiled into (the stubs, the reference or a submission). Part of the
 // framework: students do not edit it.
 #include "jelly/a1/task_table.hpp"
+#include "jelly/cube_tasks.hpp"
 
 #include "jelly/a1/collision.hpp"
 #include "jelly/a1/contact.hpp"
@@ -17,9 +18,9 @@ namespace jelly::a1 {
 
 TaskTable task_table() {
   TaskTable t;
-  t.add_structural_springs = &add_structural_springs;
-  t.add_shear_springs = &add_shear_springs;
-  t.add_bending_springs = &add_bending_springs;
+  cube_tasks(t).add_structural_springs = &add_structural_springs;
+  cube_tasks(t).add_shear_springs = &add_shear_springs;
+  cube_tasks(t).add_bending_springs = &add_bending_springs;
   t.spring_force = &spring_force;
   t.damper_force = &damper_force;
   t.collide_plane = &collide_plane;

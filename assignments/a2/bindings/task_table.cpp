@@ -2,6 +2,7 @@
 // library this file is compiled into (the stubs, the reference or a submission). Part of the
 // framework: students do not edit it.
 #include "jelly/a2/task_table.hpp"
+#include "jelly/cloth_tasks.hpp"
 
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/forces.hpp"
@@ -17,14 +18,14 @@ namespace jelly::a2 {
 
 TaskTable task_table() {
   TaskTable t;
-  t.add_grid_structural_springs = &add_structural_springs;
-  t.add_grid_shear_springs = &add_shear_springs;
-  t.add_grid_bending_springs = &add_bending_springs;
+  cloth_tasks(t).add_grid_structural_springs = &add_structural_springs;
+  cloth_tasks(t).add_grid_shear_springs = &add_shear_springs;
+  cloth_tasks(t).add_grid_bending_springs = &add_bending_springs;
   t.spring_force = &spring_force;
   t.damper_force = &damper_force;
-  t.collide_particle_sphere = &collide_particle_sphere;
-  t.collide_spheres = &collide_spheres;
-  t.friction_impulse = &friction_impulse;
+  cloth_tasks(t).collide_particle_sphere = &collide_particle_sphere;
+  cloth_tasks(t).collide_spheres = &collide_spheres;
+  cloth_tasks(t).friction_impulse = &friction_impulse;
   t.explicit_euler_step = &explicit_euler_step;
   t.implicit_euler_step = &implicit_euler_step;
   t.midpoint_step = &midpoint_step;

@@ -1,6 +1,7 @@
 // The physics of a cloth world (assignment A2, cloth contract §1–§5): cloths with pins, spheres,
 // the accelerations a = g + w·Σf and the impulse response at the start of every step.
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cloth_tasks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -91,15 +92,15 @@ void ClothPhysics::build_cloth_springs(int cloth, SpringType type, double ks, do
   const char* builder = "";
   switch (type) {
     case SpringType::Structural:
-      fn = tasks.add_grid_structural_springs;
+      fn = cloth_tasks(tasks).add_grid_structural_springs;
       builder = "add_grid_structural_springs";
       break;
     case SpringType::Shear:
-      fn = tasks.add_grid_shear_springs;
+      fn = cloth_tasks(tasks).add_grid_shear_springs;
       builder = "add_grid_shear_springs";
       break;
     case SpringType::Bending:
-      fn = tasks.add_grid_bending_springs;
+      fn = cloth_tasks(tasks).add_grid_bending_springs;
       builder = "add_grid_bending_springs";
       break;
     case SpringType::ShearBody:
@@ -281,7 +282,7 @@ void ClothPhysics::acceleration(const State& s, Vec3Array& a) {
 void ClothPhysics::apply_collisions(State& s) {
   if (spheres_.empty()) return;  // an effect the scene does not name costs nothing
   World& w = world();
-  const TaskTable& tasks = w.tasks();
+  const ClothTasks& tasks = cloth_tasks(w.tasks());  // looked up once, not per pair
   const Eigen::VectorXd& mass = w.masses();
   const Eigen::VectorXd& inv_mass = w.inverse_masses();
   EffectCounters& effects = counters(w);

@@ -1,6 +1,7 @@
 // The physics of a world with jelly cubes: the cubes' lattices and their springs (contract §2);
 // the rest is the default physics of particles over terrains.
 #include "jelly/cube_physics.hpp"
+#include "jelly/cube_tasks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,16 +60,16 @@ void CubePhysics::build_cube_springs(int cube, SpringType type, double ks, doubl
   switch (type) {
     case SpringType::Structural:
       builder = "add_structural_springs";
-      tasks.add_structural_springs(lattice, group.springs);
+      cube_tasks(tasks).add_structural_springs(lattice, group.springs);
       break;
     case SpringType::Bending:
       builder = "add_bending_springs";
-      tasks.add_bending_springs(lattice, group.springs);
+      cube_tasks(tasks).add_bending_springs(lattice, group.springs);
       break;
     case SpringType::Shear:
     case SpringType::ShearBody: {
       builder = "add_shear_springs";
-      tasks.add_shear_springs(lattice, group.springs);
+      cube_tasks(tasks).add_shear_springs(lattice, group.springs);
       if (type == SpringType::ShearBody) {
         // Keep the body diagonals here and take them out of the cube's face-shear group.
         auto& springs = group.springs;

@@ -1,5 +1,6 @@
 // The smoke tests of the TaskTable slots that build a cube's springs (jelly/task_probe.hpp).
 #include "cube_probe.hpp"
+#include "jelly/cube_tasks.hpp"
 
 namespace jelly::bodies {
 
@@ -30,9 +31,9 @@ std::vector<std::string_view> cube_probe_slots() {
 
 TaskStatus probe_cube_slot(std::string_view slot, std::string id, std::string name,
                            const TaskTable& t) {
-  SpringBuilder fn = slot == "add_structural_springs" ? t.add_structural_springs
-                     : slot == "add_shear_springs"    ? t.add_shear_springs
-                                                      : t.add_bending_springs;
+  SpringBuilder fn = slot == "add_structural_springs" ? cube_tasks(t).add_structural_springs
+                     : slot == "add_shear_springs"    ? cube_tasks(t).add_shear_springs
+                                                      : cube_tasks(t).add_bending_springs;
   return probe_builder(std::move(id), std::move(name), fn);
 }
 

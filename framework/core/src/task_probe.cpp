@@ -96,47 +96,6 @@ TaskStatus probe_damper_force(std::string id, std::string name, const TaskTable&
   return st;
 }
 
-TaskStatus probe_particle_sphere(std::string id, std::string name, const TaskTable& t) {
-  // A particle 5 mm above a resting sphere of inverse mass 0, falling at 1 m/s: φ < ε, approaching.
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
-  if (!t.collide_particle_sphere) return st;
-  const Vec3 incoming(0.0, -1.0, 0.0);
-  PointBody p{Vec3(0.0, 1.005, 0.0), incoming, 1.0};
-  SphereBody sphere{Vec3::Zero(), Vec3::Zero(), 1.0, 0.0};
-  const Impulse imp = t.collide_particle_sphere(p, sphere, ImpulseSettings{});
-  st.implemented = imp.applied || p.velocity != incoming;
-  st.evidence = st.implemented ? "a particle falling onto a sphere responded"
-                               : "a particle falling onto a sphere did not collide";
-  return st;
-}
-
-TaskStatus probe_spheres(std::string id, std::string name, const TaskTable& t) {
-  // Two spheres of radius 0.5, 5 mm apart, meeting at ±1 m/s.
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
-  if (!t.collide_spheres) return st;
-  SphereBody a{Vec3(-0.5025, 0.0, 0.0), Vec3(1.0, 0.0, 0.0), 0.5, 1.0};
-  SphereBody b{Vec3(0.5025, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0), 0.5, 1.0};
-  const Impulse imp = t.collide_spheres(a, b, ImpulseSettings{0.8, 0.01});
-  st.implemented =
-      imp.applied || a.velocity != Vec3(1.0, 0.0, 0.0) || b.velocity != Vec3(-1.0, 0.0, 0.0);
-  st.evidence = st.implemented ? "two spheres meeting head-on responded"
-                               : "two spheres meeting head-on did not collide";
-  return st;
-}
-
-TaskStatus probe_friction(std::string id, std::string name, const TaskTable& t) {
-  // A particle sliding at 1 m/s along a resting sphere's surface after a normal impulse of 1 N·s.
-  TaskStatus st{std::move(id), std::move(name), false, "function missing from the task table", {}};
-  if (!t.friction_impulse) return st;
-  const Vec3 sliding(1.0, 0.0, 0.0);
-  Vec3 va = sliding, vb = Vec3::Zero();
-  t.friction_impulse(Impulse{true, Vec3(0.0, 1.0, 0.0), 1.0}, 0.5, 1.0, 0.0, va, vb);
-  st.implemented = va != sliding || vb != Vec3::Zero();
-  st.evidence = st.implemented ? "a sliding particle was slowed"
-                               : "a sliding particle kept its tangential velocity";
-  return st;
-}
-
 Plane probe_plane() { return Plane{}; }  // y = 0, normal +y, no hole, ε = 0.01
 
 Bowl probe_bowl() {  // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whose bottom is the
@@ -152,11 +111,10 @@ Bowl probe_bowl() {  // centre (0, 1, 0), R = 1, rim at y = 1: a hemisphere whos
 
 std::vector<std::string_view> probe_slots() {
   std::vector<std::string_view> slots = {
-      "spring_force",    "damper_force", "collide_plane",           "collide_bowl",
-      "contact_plane",   "contact_bowl", "explicit_euler_step",     "implicit_euler_step",
-      "midpoint_step",   "rk4_step",     "collide_particle_sphere", "collide_spheres",
-      "friction_impulse"};
-  // Then the slots that take a body kind's lattice or grid (its spring builders).
+      "spring_force",  "damper_force", "collide_plane",       "collide_bowl",
+      "contact_plane", "contact_bowl", "explicit_euler_step", "implicit_euler_step",
+      "midpoint_step", "rk4_step"};
+  // Then the slots that take a body kind's own types (its lattice or grid, its bodies).
   for (const BodyKindModule* kind : body_kinds())
     for (std::string_view slot : kind->probe_slots()) slots.push_back(slot);
   return slots;
@@ -182,10 +140,6 @@ TaskStatus probe_slot(std::string_view slot, std::string id, std::string name, c
   if (slot == "midpoint_step")
     return probe_integrator(std::move(id), std::move(name), t.midpoint_step);
   if (slot == "rk4_step") return probe_integrator(std::move(id), std::move(name), t.rk4_step);
-  if (slot == "collide_particle_sphere")
-    return probe_particle_sphere(std::move(id), std::move(name), t);
-  if (slot == "collide_spheres") return probe_spheres(std::move(id), std::move(name), t);
-  if (slot == "friction_impulse") return probe_friction(std::move(id), std::move(name), t);
   for (const BodyKindModule* kind : body_kinds()) {
     const std::vector<std::string_view> own = kind->probe_slots();
     if (std::find(own.begin(), own.end(), slot) != own.end())

@@ -12,6 +12,7 @@
 
 #include "cases.hpp"
 #include "jelly/cube.hpp"
+#include "jelly/cube_tasks.hpp"
 
 namespace jelly::grade {
 
@@ -185,9 +186,9 @@ void register_spring_cases(Registry& r) {
       "one spring builder on a cube lattice the framework makes; classifies what it returned";
   def.run = [](const TaskTable& tasks, const Params& params, const Json&, Outputs& out) {
     const std::string which = params.text("builder");
-    Builder TaskTable::*member = which == "structural" ? &TaskTable::add_structural_springs
-                                 : which == "shear"    ? &TaskTable::add_shear_springs
-                                 : which == "bending"  ? &TaskTable::add_bending_springs
+    Builder CubeTasks::*member = which == "structural" ? &CubeTasks::add_structural_springs
+                                 : which == "shear"    ? &CubeTasks::add_shear_springs
+                                 : which == "bending"  ? &CubeTasks::add_bending_springs
                                                        : nullptr;
     if (!member)
       throw std::runtime_error("params.builder: expected structural, shear or bending, got " +
@@ -196,7 +197,7 @@ void register_spring_cases(Registry& r) {
     const CubeSpec spec = cube_from_params(params.table("cube"));
     const CubeLattice cube(spec, first);
     std::vector<Spring> springs;
-    (tasks.*member)(cube, springs);
+    (cube_tasks(tasks).*member)(cube, springs);
     classify(cube, lattice_words(spec, first), springs, out);
   };
   r.add(std::move(def));

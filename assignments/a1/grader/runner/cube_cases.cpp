@@ -2,6 +2,7 @@
 // input (moved from the general harness: only A1's cases build cubes).
 #include "cases.hpp"
 #include "jelly/cube_physics.hpp"
+#include "jelly/cube_tasks.hpp"
 
 namespace jelly::grade {
 
@@ -18,9 +19,9 @@ CubeSpec cube_from_params(const Params& cube) {
 void prepare_cube_springs(const TaskTable& reference, const Params& params, Json& input) {
   const CubeLattice cube(cube_from_params(params.table("cube")), 0);
   std::vector<Spring> structural, shear, bending;
-  reference.add_structural_springs(cube, structural);
-  reference.add_shear_springs(cube, shear);
-  reference.add_bending_springs(cube, bending);
+  cube_tasks(reference).add_structural_springs(cube, structural);
+  cube_tasks(reference).add_shear_springs(cube, shear);
+  cube_tasks(reference).add_bending_springs(cube, bending);
   input["springs"] = {{"structural", springs_to_json(structural)},
                       {"shear", springs_to_json(shear)},
                       {"bending", springs_to_json(bending)}};

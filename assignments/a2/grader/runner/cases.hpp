@@ -7,6 +7,7 @@
 
 #include "harness.hpp"
 #include "jelly/cloth.hpp"
+#include "jelly/cloth_tasks.hpp"
 
 namespace jelly::grade {
 

@@ -162,7 +162,7 @@ void run_particle_sphere(const TaskTable& t, const Params& params, Outputs& out)
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     ParticleSpherePair p = pairs[i];
     const std::string words = particle_words(pairs[i]);
-    const Impulse imp = t.collide_particle_sphere(p.particle, p.sphere, settings);
+    const Impulse imp = cloth_tasks(t).collide_particle_sphere(p.particle, p.sphere, settings);
     char name[32];
     std::snprintf(name, sizeof name, "p%02zu", i);
     per_pair.vec(std::string(name) + "_v", p.particle.velocity,
@@ -274,7 +274,7 @@ void run_sphere_pairs(const TaskTable& t, const Params& params, Outputs& out) {
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     SpherePair p = pairs[i];
     const std::string words = sphere_words(pairs[i]);
-    const Impulse imp = t.collide_spheres(p.a, p.b, settings);
+    const Impulse imp = cloth_tasks(t).collide_spheres(p.a, p.b, settings);
     char name[32];
     std::snprintf(name, sizeof name, "p%02zu", i);
     per_pair.vec(std::string(name) + "_ua", p.a.velocity,

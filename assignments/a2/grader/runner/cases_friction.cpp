@@ -89,7 +89,7 @@ void run_friction(const TaskTable& t, const Params& params, Outputs& out) {
   std::vector<Vec3> after_a, after_b;
   for (const FrictionInput& f : in) {
     Vec3 v_a = f.v_a, v_b = f.v_b;
-    t.friction_impulse(f.normal, f.mu, f.w_a, f.w_b, v_a, v_b);
+    cloth_tasks(t).friction_impulse(f.normal, f.mu, f.w_a, f.w_b, v_a, v_b);
     after_a.push_back(v_a);
     after_b.push_back(v_b);
     // The relative tangential velocity before and after: friction may slow it, stop it, never

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cases.hpp"
+#include "jelly/cloth_tasks.hpp"
 #include "jelly/test_systems.hpp"
 #include "jelly/world.hpp"
 #include "mass_spring_cases.hpp"
@@ -37,9 +38,9 @@ FreeFallStart a2_free_fall() {
 void prepare_cloth_springs(const TaskTable& reference, const Params& params, Json& input) {
   const ClothGrid cloth(cloth_from_params(params.table("cloth")), 0);
   std::vector<Spring> structural, shear, bending;
-  reference.add_grid_structural_springs(cloth, structural);
-  reference.add_grid_shear_springs(cloth, shear);
-  reference.add_grid_bending_springs(cloth, bending);
+  cloth_tasks(reference).add_grid_structural_springs(cloth, structural);
+  cloth_tasks(reference).add_grid_shear_springs(cloth, shear);
+  cloth_tasks(reference).add_grid_bending_springs(cloth, bending);
   input["springs"] = {{"structural", springs_to_json(structural)},
                       {"shear", springs_to_json(shear)},
                       {"bending", springs_to_json(bending)}};

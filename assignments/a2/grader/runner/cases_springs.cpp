@@ -230,10 +230,10 @@ void register_grid_spring_cases(Registry& r) {
       "one spring builder on a cloth grid the framework makes; classifies what it returned";
   def.run = [](const TaskTable& tasks, const Params& params, const Json&, Outputs& out) {
     const std::string which = params.text("builder");
-    Builder TaskTable::*member = which == "structural" ? &TaskTable::add_grid_structural_springs
-                                 : which == "shear"    ? &TaskTable::add_grid_shear_springs
-                                 : which == "bending"  ? &TaskTable::add_grid_bending_springs
-                                                       : nullptr;
+    Builder ClothTasks::*member = which == "structural" ? &ClothTasks::add_grid_structural_springs
+                                  : which == "shear"    ? &ClothTasks::add_grid_shear_springs
+                                  : which == "bending"  ? &ClothTasks::add_grid_bending_springs
+                                                        : nullptr;
     if (!member)
       throw std::runtime_error("params.builder: expected structural, shear or bending, got " +
                                which);
@@ -241,7 +241,7 @@ void register_grid_spring_cases(Registry& r) {
     const ClothSpec spec = cloth_from_params(params.table("cloth"));
     const ClothGrid cloth(spec, first);
     std::vector<Spring> springs;
-    (tasks.*member)(cloth, springs);
+    (cloth_tasks(tasks).*member)(cloth, springs);
     classify(cloth, which, cloth_words(spec, first), springs, out);
   };
   r.add(std::move(def));

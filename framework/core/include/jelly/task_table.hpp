@@ -15,9 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "jelly/cloth.hpp"
-#include "jelly/cube.hpp"
-#include "jelly/spheres.hpp"
+#include "jelly/kind_parts.hpp"
 #include "jelly/spring.hpp"
 #include "jelly/spring_group_pass.hpp"
 #include "jelly/system.hpp"
@@ -29,10 +27,6 @@ namespace jelly {
 using StepFunction = void (*)(System& system, State& s, double h, Workspace& w);
 
 struct TaskTable {
-  // Spring builders of a cube lattice (physics contract §2).
-  void (*add_structural_springs)(const CubeLattice&, std::vector<Spring>&) = nullptr;
-  void (*add_shear_springs)(const CubeLattice&, std::vector<Spring>&) = nullptr;
-  void (*add_bending_springs)(const CubeLattice&, std::vector<Spring>&) = nullptr;
   // The force of one spring and one damper on its particle a; the framework applies them to a
   // spring group (jelly/spring_pass.hpp).
   Vec3 (*spring_force)(const Vec3&, const Vec3&, double, double, double) = nullptr;
@@ -48,24 +42,16 @@ struct TaskTable {
   // Contact and friction forces (contract §5).
   bool (*contact_plane)(const Plane&, const Vec3&, const Vec3&, Vec3&) = nullptr;
   bool (*contact_bowl)(const Bowl&, const Vec3&, const Vec3&, Vec3&) = nullptr;
-  // Spring builders of a cloth grid (cloth contract §2): structural (1,0) (0,1), shear (1,1)
-  // (1,−1), bending (2,0) (0,2), each particle owning the springs to its forward neighbours.
-  void (*add_grid_structural_springs)(const ClothGrid&, std::vector<Spring>&) = nullptr;
-  void (*add_grid_shear_springs)(const ClothGrid&, std::vector<Spring>&) = nullptr;
-  void (*add_grid_bending_springs)(const ClothGrid&, std::vector<Spring>&) = nullptr;
-  // Impulses between point bodies (cloth contract §4): a cloth particle (A) and a sphere (B);
-  // two spheres (A = the first in scene order). Each changes the velocities it was given only
-  // when the pair collides, and says what it applied.
-  Impulse (*collide_particle_sphere)(PointBody&, SphereBody&, const ImpulseSettings&) = nullptr;
-  Impulse (*collide_spheres)(SphereBody&, SphereBody&, const ImpulseSettings&) = nullptr;
-  // Coulomb friction right after a normal impulse (cloth contract §4, the bonus): called by the
-  // framework only when the scene's μ > 0, with the normal impulse, μ, w_A, w_B, v_A, v_B.
-  void (*friction_impulse)(const Impulse&, double, double, double, Vec3&, Vec3&) = nullptr;
   // The course's four integrators (contract §6).
   StepFunction explicit_euler_step = nullptr;
   StepFunction implicit_euler_step = nullptr;
   StepFunction midpoint_step = nullptr;
   StepFunction rk4_step = nullptr;
+
+  /// The slots that take a body kind's own types (its lattice or grid, its bodies), one struct per
+  /// kind, declared and reached through the kind's header (framework/bodies/<kind>/include/jelly/
+  /// <kind>_tasks.hpp). Filled by the bindings like the slots above; all null by default.
+  KindParts kinds;
 
   /// Where the table's functions come from: "assignments", "solutions" or "submission".
   std::string_view origin;

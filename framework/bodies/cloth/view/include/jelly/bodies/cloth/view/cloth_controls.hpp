@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "jelly/cloth.hpp"
 #include "jelly/world.hpp"
 
 namespace jelly::cloth_view {
