@@ -251,7 +251,7 @@ Approx atan_ratio(DD n, DD d) {
   const DD den = {d1.hi, ((d1.lo + d.lo) + cn.lo) + c * n.lo};  // |den.lo| ≤ 4u·den.hi
   const DD u = quotient(num, den);
   // atan u − u = u³·(−1/3 + u²/5 − …) truncated below |u|¹⁵/15 ≤ 2⁻⁷³·|u|, at u.hi (Estrin's
-  // scheme, terms shrinking by 2⁻¹⁰); u.lo's effect through the cube is −u²·u.lo (the rest
+  // scheme, terms shrinking by 2⁻¹⁰); u.lo's effect through u³ is −u²·u.lo (the rest
   // ≤ u⁴·|u.lo| ≤ 2⁻⁷³·|u|).
   const double s = u.hi * u.hi, s2 = s * s;
   const double poly = (-1.0 / 3.0 + s * (1.0 / 5.0)) +

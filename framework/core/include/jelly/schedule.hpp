@@ -1,5 +1,5 @@
 // A schedule of vectors over time, as a scene writes it ("t: x,y,z; t: x,y,z", a value kind of the
-// parameter table): for example a kinematic sphere's velocities (cloth contract §3, decision 5).
+// parameter table): for example a kinematic obstacle's velocities.
 #pragma once
 
 #include "jelly/types.hpp"
