@@ -76,18 +76,9 @@ std::string plot_label(std::string_view measure) {
   return std::string(measure);
 }
 
-}  // namespace
-
-std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const std::string& prefix,
-                                                 const std::string& title, std::string& note) {
-  namespace fs = std::filesystem;
-  const fs::path base(prefix);
-  if (base.has_parent_path()) fs::create_directories(base.parent_path());
-  const auto with = [&](const char* ext) { return fs::path(prefix + ext); };
-  std::vector<fs::path> written;
+/// The CSV: one row per run, with the columns of the measures the scene's assignment reports.
+std::string effects_csv(const EffectsResult& r) {
   const EffectsOptions& o = r.options;
-
-  // ----- CSV: one row per run; the columns of the measures the scene's assignment reports -----
   const Measures& m = o.measures;
   std::ostringstream csv;
   csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,"
@@ -120,10 +111,13 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
     csv << num(row.sim_time) << ',' << row.evaluations << ',' << row.cg_iterations << ','
         << num(row.wall) << ',' << num(row.wall_per_sim()) << ',' << csv_text(row.reason) << '\n';
   }
-  write_file(with(".csv"), csv.str());
-  written.push_back(with(".csv"));
+  return csv.str();
+}
 
-  // ----- Markdown -----
+/// The Markdown table of the runs, under the heading `title`.
+std::string effects_markdown(const EffectsResult& r, const std::string& title) {
+  const EffectsOptions& o = r.options;
+  const Measures& m = o.measures;
   std::ostringstream md;
   md << "### " << title << "\n\n";
   md << "Scene `" << r.scene_name << "`";
@@ -182,17 +176,38 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
                           : 0.0)
        << " |\n";
   }
-  write_file(with(".md"), md.str());
-  written.push_back(with(".md"));
+  return md.str();
+}
 
-  // ----- measures against the swept value: one block per integrator -----
-  const std::vector<double> xs = numeric_values(r);
-  const bool numeric = !xs.empty();
-  const bool logx =
-      numeric && *std::min_element(xs.begin(), xs.end()) > 0.0 &&
-      *std::max_element(xs.begin(), xs.end()) >= 20.0 * *std::min_element(xs.begin(), xs.end());
-  const std::size_t per_block = o.key.empty() ? r.rows.size() : o.values.size();
-  const std::size_t blocks = per_block ? r.rows.size() / per_block : 0;
+/// How the runs are laid out against the swept value: one block per integrator.
+struct SweepLayout {
+  std::vector<double> xs;  ///< the swept values when numeric, else none
+  bool numeric = false;
+  bool logx = false;
+  std::size_t per_block = 0;
+  std::size_t blocks = 0;
+};
+
+SweepLayout sweep_layout(const EffectsResult& r) {
+  const EffectsOptions& o = r.options;
+  SweepLayout l;
+  l.xs = numeric_values(r);
+  l.numeric = !l.xs.empty();
+  l.logx = l.numeric && *std::min_element(l.xs.begin(), l.xs.end()) > 0.0 &&
+           *std::max_element(l.xs.begin(), l.xs.end()) >=
+               20.0 * *std::min_element(l.xs.begin(), l.xs.end());
+  l.per_block = o.key.empty() ? r.rows.size() : o.values.size();
+  l.blocks = l.per_block ? r.rows.size() / l.per_block : 0;
+  return l;
+}
+
+/// The measures against the swept value, one block per integrator (gnuplot's data file).
+std::string effects_sweep_dat(const EffectsResult& r, const SweepLayout& l) {
+  const EffectsOptions& o = r.options;
+  const Measures& m = o.measures;
+  const std::vector<double>& xs = l.xs;
+  const bool numeric = l.numeric;
+  const std::size_t per_block = l.per_block, blocks = l.blocks;
   std::ostringstream dat;
   // The sag, swing and sink follow the label (a study without them keeps the file it had).
   const bool moving_columns = m.sag || m.swing || m.sink;
@@ -216,10 +231,20 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
       dat << '\n';
     }
   }
-  write_file(with(".dat"), dat.str());
-  written.push_back(with(".dat"));
+  return dat.str();
+}
 
-  const std::string dat_name = with(".dat").filename().string();
+/// The gnuplot script of the measures against the swept value (`gp`: its file, `dat`: the data's).
+std::string effects_sweep_plot(const EffectsResult& r, const SweepLayout& l,
+                               const std::string& title, const std::filesystem::path& gp,
+                               const std::filesystem::path& dat, const std::filesystem::path& svg,
+                               const std::filesystem::path& png) {
+  const EffectsOptions& o = r.options;
+  const Measures& m = o.measures;
+  const std::vector<double>& xs = l.xs;
+  const bool numeric = l.numeric, logx = l.logx;
+  const std::size_t per_block = l.per_block, blocks = l.blocks;
+  const std::string dat_name = dat.filename().string();
   const std::string xlabel = o.key.empty() ? "integrator" : o.key;
   // The panels of the measures the scene's assignment reports, then the cost.
   constexpr int kPanels = 9;
@@ -281,7 +306,7 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   }
   body << "unset multiplot\n";
   std::ostringstream header;
-  header << "# Written by `jelly study effects`; run: gnuplot " << with(".gp").filename().string()
+  header << "# Written by `jelly study effects`; run: gnuplot " << gp.filename().string()
          << " (in this folder). Crosses: the stability detector fired in that run.\n"
          << "set datafile missing 'nan'\nset grid\nset key top left font ',9'\nset xlabel '"
          << xlabel << "' noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
@@ -289,15 +314,12 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
          << ":" << (numeric ? num(*std::max_element(xs.begin(), xs.end())) : num(per_block + 0.5))
          << "]\n"
          << (logx ? "set logscale x\n" : "") << "set pointsize 1.0\n";
-  write_file(with(".gp"), plot_script(header.str(), with(".svg").filename().string(),
-                                      with(".png").filename().string(), body.str(), 1500, 800));
-  written.push_back(with(".gp"));
-  if (run_gnuplot(with(".gp"), with(".svg"), with(".png"), note)) {
-    if (fs::exists(with(".svg"))) written.push_back(with(".svg"));
-    if (fs::exists(with(".png"))) written.push_back(with(".png"));
-  }
+  return plot_script(header.str(), svg.filename().string(), png.filename().string(), body.str(),
+                     1500, 800);
+}
 
-  // ----- each run over time -----
+/// Each run over time (gnuplot's data file).
+std::string effects_time_dat(const EffectsResult& r) {
   std::ostringstream tdat;
   tdat << "# t com_height com_speed volume_ratio max_particle_speed energy\n";
   for (std::size_t i = 0; i < r.series.size(); ++i) {
@@ -309,9 +331,15 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
            << num(s.volume_ratio[j]) << ' ' << num(s.max_speed[j]) << ' ' << num(s.energy[j])
            << '\n';
   }
-  write_file(with("-time.dat"), tdat.str());
-  written.push_back(with("-time.dat"));
-  const std::string tdat_name = with("-time.dat").filename().string();
+  return tdat.str();
+}
+
+/// The gnuplot script of each run over time (`gp`: its file, `dat`: the data's).
+std::string effects_time_plot(const EffectsResult& r, const std::string& title,
+                              const std::filesystem::path& gp, const std::filesystem::path& dat,
+                              const std::filesystem::path& svg, const std::filesystem::path& png) {
+  const Measures& m = r.options.measures;
+  const std::string tdat_name = dat.filename().string();
   const char* tpanels[4][2] = {{"2", "centre-of-mass height [m]"},
                                {"4", "volume / rest volume"},
                                {"3", "centre-of-mass speed [m/s]"},
@@ -334,24 +362,54 @@ std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const s
   std::ostringstream theader;
   theader
       << "# Written by `jelly study effects`: every run over time; run: gnuplot "
-      << with("-time.gp").filename().string() << " (in this folder).\n"
+      << gp.filename().string() << " (in this folder).\n"
       << "set datafile missing 'nan'\nset grid\nset key top right font ',8'\nset xlabel 't [s]'\n";
-  write_file(with("-time.gp"),
-             plot_script(theader.str(), with("-time.svg").filename().string(),
-                         with("-time.png").filename().string(), tbody.str(), 1300, 800));
-  written.push_back(with("-time.gp"));
-  if (run_gnuplot(with("-time.gp"), with("-time.svg"), with("-time.png"), note)) {
-    if (fs::exists(with("-time.svg"))) written.push_back(with("-time.svg"));
-    if (fs::exists(with("-time.png"))) written.push_back(with("-time.png"));
-  }
-  // A panel with one value (a single run) makes gnuplot widen its range and say so: not news.
+  return plot_script(theader.str(), svg.filename().string(), png.filename().string(), tbody.str(),
+                     1300, 800);
+}
+
+/// gnuplot's notes without the empty-range ones: a panel with one value (a single run) makes
+/// gnuplot widen its range and say so, which is not news.
+std::string without_range_notes(const std::string& note) {
   std::istringstream lines(note);
   std::string kept;
   for (std::string line; std::getline(lines, line);)
     if (line.find("empty y range") == std::string::npos &&
         line.find("empty x range") == std::string::npos)
       kept += line + '\n';
-  note = kept;
+  return kept;
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const std::string& prefix,
+                                                 const std::string& title, std::string& note) {
+  namespace fs = std::filesystem;
+  const fs::path base(prefix);
+  if (base.has_parent_path()) fs::create_directories(base.parent_path());
+  const auto with = [&](const char* ext) { return fs::path(prefix + ext); };
+  std::vector<fs::path> written;
+  const auto write = [&](const fs::path& path, const std::string& text) {
+    write_file(path, text);
+    written.push_back(path);
+  };
+  const auto plot = [&](const char* gp, const char* svg, const char* png) {
+    if (!run_gnuplot(with(gp), with(svg), with(png), note)) return;
+    if (fs::exists(with(svg))) written.push_back(with(svg));
+    if (fs::exists(with(png))) written.push_back(with(png));
+  };
+  write(with(".csv"), effects_csv(r));
+  write(with(".md"), effects_markdown(r, title));
+  const SweepLayout layout = sweep_layout(r);
+  write(with(".dat"), effects_sweep_dat(r, layout));
+  write(with(".gp"), effects_sweep_plot(r, layout, title, with(".gp"), with(".dat"), with(".svg"),
+                                        with(".png")));
+  plot(".gp", ".svg", ".png");
+  write(with("-time.dat"), effects_time_dat(r));
+  write(with("-time.gp"), effects_time_plot(r, title, with("-time.gp"), with("-time.dat"),
+                                            with("-time.svg"), with("-time.png")));
+  plot("-time.gp", "-time.svg", "-time.png");
+  note = without_range_notes(note);
   return written;
 }
 
