@@ -6,8 +6,8 @@
 
 #include "cloth_worlds.hpp"
 #include "jelly/a2/springs.hpp"
-#include "jelly/cube.hpp"
 #include "jelly/cloth_physics.hpp"
+#include "jelly/cube.hpp"
 
 namespace jelly {
 namespace {

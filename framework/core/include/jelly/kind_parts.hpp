@@ -1,7 +1,8 @@
 // Values whose types only their own modules know: a scene's data of its body kind (SceneSpec::
 // body_data), for example a body's size or its obstacles, and a task table's slots of a kind
 // (TaskTable::kinds). General code copies and moves them and never looks inside; the module that
-// owns a type reads and writes it through its header's accessors (framework/bodies/<kind>/include/).
+// owns a type reads and writes it through its header's accessors
+// (framework/bodies/<kind>/include/).
 #pragma once
 
 #include <any>
