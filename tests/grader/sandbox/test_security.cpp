@@ -841,9 +841,11 @@ const OsRoute kOsRoutes[] = {
    "  for (int i = 0; i < 4; ++i) if (fork() == 0) { close(ready[0]); for (int k = 0; k < 10; ++k) { char* p = static_cast<char*>(std::malloc(70u << 20)); if (!p) break; std::memset(p, 1, 70u << 20); }"
    " if (write(ready[1], \"x\", 1) != 1) _exit(1); pause(); _exit(0); }\n"
    "  close(ready[1]);\n"
-   "  // Until all four hold their memory (or 8 s: the ones stopped at the cap never say so).\n"
-   "  char b[4]; int got = 0; for (int waited = 0; got < 4 && waited < 80; ++waited) { pollfd p{ready[0], POLLIN, 0};"
-   " if (poll(&p, 1, 100) > 0) { const long n = read(ready[0], b, sizeof b); if (n <= 0) break; got += static_cast<int>(n); } }\n"
+   "  // Until each of the four holds its memory or was stopped at the cap (and never says so). No\n"
+   "  // clock: on a loaded machine the memory takes its time.\n"
+   "  char b[4]; int got = 0, gone = 0;\n"
+   "  while (got + gone < 4) { pollfd p{ready[0], POLLIN, 0}; if (poll(&p, 1, 100) > 0) { const long n = read(ready[0], b, sizeof b); if (n > 0) got += static_cast<int>(n); }"
+   " while (waitpid(-1, nullptr, WNOHANG) > 0) ++gone; }\n"
    "  std::printf(\"jelly-memory: %d of 4 hold 700 MiB\\n\", got);\n  return 0; }();\n"},
   // 600 processes.
   {"os_fork_many", false,
@@ -1035,7 +1037,7 @@ void hostile_neighbours(const std::string& isolation) {
   }
   const std::string console = run("batch " + in.string() + " --out " + out.string() + " --config " +
                                   c.config.string() + " --assignment " + T->id +
-                                  " --jobs 2 --visibility all --timeout 10 --no-frames "
+                                  " --jobs 2 --visibility all --timeout 30 --no-frames "
                                   "--isolation " +
                                   isolation);
   std::ofstream(c.root / "console.txt") << console;
@@ -1182,7 +1184,10 @@ TEST_P(GraderSecurityOs, HostileNeighboursInBubblewrap) {
 }
 
 // A process that keeps the pipes of its test open after the test ended stalls nothing: the read
-// stops once the test's process is gone (here without any sandbox).
+// stops once the test's process is gone (here without any sandbox). The holder keeps them for 400
+// s; grading, about a minute on a loaded machine, must end long before it lets go (a grader that
+// waited for the pipes would take those 400 s, still within the test's TIMEOUT, so that this
+// message and not CTest's timeout says what went wrong).
 TEST_P(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
   const Clone c = make_clone("pipes");
   const fs::path in = c.root / "in", solutions = in_clone(c, T->solutions);
@@ -1191,7 +1196,7 @@ TEST_P(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
   std::ofstream(in / "holder" / T->compile_file, std::ios::binary)
       << replace_all(kReadRequest, "@CASE@", T->run_case)
       << "static int jelly_hold = [] { if (!jelly_target()) return 0; if (fork() == 0) { setsid();"
-         " if (fork() == 0) { sleep(60); _exit(0); } _exit(0); } return 0; }();\n"
+         " if (fork() == 0) { sleep(400); _exit(0); } _exit(0); } return 0; }();\n"
       << read_text(solutions / T->compile_file);
   const auto start = std::chrono::steady_clock::now();
   const std::string console =
@@ -1199,11 +1204,15 @@ TEST_P(GraderSecurityOs, PipesHeldByALeftoverDoNotStallTheGrader) {
           " --config " + c.config.string() + " --assignment " + T->id +
           " --visibility public --format gradescope --isolation none");
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(s, 45.0) << "a leftover holding the pipes stalled jelly-grade\n" << console;
+  EXPECT_LT(s, 300.0) << "a leftover holding the pipes stalled jelly-grade\n" << console;
   EXPECT_TRUE(fs::exists(c.root / "out" / "results.json")) << console;
-  // Where jelly-grade can make a cgroup (root here), the holder was found and stopped as well.
+  // Where jelly-grade can make a cgroup (root here), the holder was found and stopped as well;
+  // elsewhere the test stops it.
   if (geteuid() == 0) {
     EXPECT_EQ(processes_naming(c.root.string()), "");
+  } else {
+    std::istringstream left(processes_naming(c.root.string()));
+    for (std::string line; std::getline(left, line);) kill(std::stoi(line), SIGKILL);
   }
   std::error_code ec;
   fs::remove_all(c.root.parent_path(), ec);
