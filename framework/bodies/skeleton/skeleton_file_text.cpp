@@ -1,12 +1,12 @@
 // Lines, tokens and numbers of the ASF and AMC files (internal; skeleton_file_text.hpp).
 #include "skeleton_file_text.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <locale>
+#include <limits>
 #include <sstream>
 
+#include "jelly/number_text.hpp"
 #include "jelly/skeleton/skeleton_files.hpp"
 
 namespace jelly::skeleton {
@@ -86,30 +86,16 @@ std::string lower(std::string_view s) {
 
 std::optional<double> parse_number(std::string_view t) {
   if (!looks_decimal(t)) return std::nullopt;
-  if (t.front() == '+') t.remove_prefix(1);
-  double v = 0.0;
-#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
-  // libc++ before LLVM 20 (Debian 12's) has no from_chars for double: the classic "C" locale
-  // reads the same characters, correctly rounded (as param_text.cpp does).
-  std::istringstream in{std::string(t)};
-  in.imbue(std::locale::classic());
-  in >> std::noskipws >> v;
-  if (in.fail() || in.peek() != std::char_traits<char>::eof()) return std::nullopt;
-#else
-  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
-#endif
-  if (!std::isfinite(v)) return std::nullopt;
+  const auto v = read_double(t);
+  if (!v || !std::isfinite(*v)) return std::nullopt;
   return v;
 }
 
 std::optional<int> parse_integer(std::string_view t) {
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  if (t.empty() || t.front() == '+') return std::nullopt;
-  int v = 0;
-  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
-  return v;
+  const auto v = read_integer(t);
+  if (!v || *v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
+    return std::nullopt;
+  return static_cast<int>(*v);
 }
 
 std::string quote_token(std::string_view token) {

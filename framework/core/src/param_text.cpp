@@ -2,11 +2,8 @@
 // "x,y,z; x,y,z"), parsed by a declaration's kind, and the shortest text of a double.
 #include <charconv>
 #include <string>
-#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
-#include <locale>
-#include <sstream>
-#endif
 
+#include "jelly/number_text.hpp"
 #include "param_table.hpp"
 
 namespace jelly::params_detail {
@@ -35,34 +32,9 @@ std::string in_quotes(std::string_view t) {
 
 namespace {
 
-std::optional<double> parse_double(std::string_view t) {
-  t = trim(t);
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  if (t.empty() || t.front() == '+') return std::nullopt;
-  double v = 0.0;
-#if defined(_LIBCPP_VERSION) && !defined(__cpp_lib_to_chars)
-  // libc++ before LLVM 20 (Apple's Xcode, Debian 12's libc++) has no from_chars for double: read
-  // it with the classic "C" locale (correctly rounded there too), the same number of characters.
-  std::istringstream in{std::string(t)};
-  in.imbue(std::locale::classic());
-  in >> std::noskipws >> v;
-  if (in.fail() || in.peek() != std::char_traits<char>::eof()) return std::nullopt;
-#else
-  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
-#endif
-  return v;
-}
+std::optional<double> parse_double(std::string_view t) { return read_double(trim(t)); }
 
-std::optional<long long> parse_integer(std::string_view t) {
-  t = trim(t);
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  if (t.empty() || t.front() == '+') return std::nullopt;
-  long long v = 0;
-  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (res.ec != std::errc() || res.ptr != t.data() + t.size()) return std::nullopt;
-  return v;
-}
+std::optional<long long> parse_integer(std::string_view t) { return read_integer(trim(t)); }
 
 std::vector<std::string_view> split(std::string_view t, char sep) {
   std::vector<std::string_view> out;
