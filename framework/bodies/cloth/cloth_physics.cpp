@@ -389,8 +389,9 @@ const char* ClothPhysics::refuses_terrain() const {
 
 ClothPhysics& cloth_physics(World& world) {
   if (auto* physics = dynamic_cast<ClothPhysics*>(&world.physics())) return *physics;
+  const BodyPhysics& current = world.physics();
   if (world.particle_count() > 0 || !world.terrains().empty() ||
-      typeid(world.physics()) != typeid(TerrainPhysics))
+      typeid(current) != typeid(TerrainPhysics))
     throw std::logic_error(
         "a cloth world holds cloths and spheres only (no cube, free particle or terrain)");
   auto made = std::make_unique<ClothPhysics>(world);

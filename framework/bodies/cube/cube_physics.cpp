@@ -101,7 +101,8 @@ void CubePhysics::build_cube_springs(int cube, SpringType type, double ks, doubl
 
 CubePhysics& cube_physics(World& world) {
   if (auto* physics = dynamic_cast<CubePhysics*>(&world.physics())) return *physics;
-  if (typeid(world.physics()) != typeid(TerrainPhysics))
+  const BodyPhysics& current = world.physics();
+  if (typeid(current) != typeid(TerrainPhysics))
     throw std::logic_error("add_cube: a cube goes into a world of particles and terrains only");
   auto made = std::make_unique<CubePhysics>(world);
   CubePhysics& physics = *made;
