@@ -18,7 +18,7 @@ namespace jelly::grade {
 
 namespace {
 
-// A path as the table shows it: relative to the checkout when inside it ("solutions/a1").
+// A path as the table shows it: relative to the checkout when inside it ("solutions/<id>").
 std::string in_tree(const GradeConfig& config, const fs::path& p) {
   const fs::path rel =
       p.lexically_normal().lexically_relative(config.source_dir.lexically_normal());

@@ -86,7 +86,7 @@ struct GradeReport {
   std::string isolation_description;
   std::string isolation_warning;  ///< non-empty when hidden tests were not protected
   /// The handout page that explains the report's terms (tolerance names, contract sections),
-  /// relative to the framework's top folder ("assignments/a1/handout/reading-your-report.md"); ""
+  /// relative to the framework's top folder ("assignments/<id>/handout/reading-your-report.md"); ""
   /// when the assignment has none.
   std::string terms_page;
   /// The contracts its messages cite by name (the manifest's `contracts`): the report links

@@ -1,7 +1,7 @@
 // Terrains: the surfaces particles collide with and rest on (physics contract §3).
 //
 // These are plain descriptions. The collision and contact tests for the plane and the bowl are
-// student tasks (jelly/a1/collision.hpp, jelly/a1/contact.hpp); the framework's own geometric
+// student tasks (TaskTable::collide_plane and the slots beside it); the framework's own geometric
 // queries (for drawing, optional projection and diagnostics) live in jelly/terrain_geometry.hpp.
 #pragma once
 
