@@ -98,6 +98,9 @@ int play_command(const SceneSpec& scene, const BodyKindModule& kind,
   std::string report;
   try {
     report = kind.play(scene, tasks, options);
+  } catch (const std::system_error& e) {  // an output file that cannot be written
+    std::fprintf(stderr, "jelly run: %s\n", e.what());
+    return kExitInternal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "jelly run: %s\n", e.what());
     if (!no_assignment.empty()) std::fprintf(stderr, "jelly run: %s\n", no_assignment.c_str());

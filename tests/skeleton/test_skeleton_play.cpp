@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "jelly/body_kind.hpp"
@@ -306,6 +307,12 @@ TEST_F(SkeletonPlay, ASlotTheTasksDoNotFillIsAnErrorNamingItAndWritesNothing) {
   e = play_error(course_scene("hw2-blend-2022.toml"), fk_only, summary_path());
   EXPECT_NE(e.find("a skeleton blend needs the task blend_motions"), std::string::npos) << e;
   EXPECT_FALSE(fs::exists(summary_path()));
+}
+
+TEST_F(SkeletonPlay, ASummaryThatCannotBeWrittenIsAnOutputError) {
+  const std::string path = (dir_ / "no-such-folder" / "summary.csv").string();
+  EXPECT_THROW(kind().play(course_scene("hw2-fk-2022.toml"), test_table(), {path, 1}),
+               std::system_error);
 }
 
 void short_fk(const Skeleton&, const Posture&, BoneFrames& out) { out = BoneFrames{}; }

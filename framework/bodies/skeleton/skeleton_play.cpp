@@ -4,6 +4,7 @@
 // a wrong answer is an error naming the task, never a crash.
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 
 #include "jelly/recorder.hpp"
 #include "jelly/skeleton/rotation.hpp"
@@ -162,9 +163,13 @@ std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
   Postures postures(scene, in, slots);
   const bool quaternions = skeleton_scene(scene).mode != SkeletonMode::Playback;
   std::unique_ptr<CsvWriter> summary;
-  if (!options.summary_path.empty())
-    summary = std::make_unique<CsvWriter>(
-        options.summary_path, std::string(kSummaryColumns) + (quaternions ? ",qw,qx,qy,qz" : ""));
+  try {
+    if (!options.summary_path.empty())
+      summary = std::make_unique<CsvWriter>(
+          options.summary_path, std::string(kSummaryColumns) + (quaternions ? ",qw,qx,qy,qz" : ""));
+  } catch (const std::runtime_error& e) {  // an output, not the input: BodyKindModule::play
+    throw std::system_error(std::make_error_code(std::errc::io_error), e.what());
+  }
   // simulation.duration: the frames i with i / fps ≤ duration (all of them by default).
   const double fps = skeleton_scene(scene).fps;
   int played = 0;

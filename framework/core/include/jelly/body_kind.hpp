@@ -158,7 +158,8 @@ class BodyKindModule {
   virtual std::string check_frames(const SceneSpec& scene) const;
   /// `jelly run` of such a scene through `tasks`: plays it frame by frame, writes the summary
   /// rows and returns the report of what it did. Inputs and slots are checked before any file is
-  /// written. Throws std::runtime_error saying what is wrong (a bad input, a slot not filled).
+  /// written. Throws std::runtime_error saying what is wrong (a bad input, a slot not filled),
+  /// std::system_error when an output file cannot be written.
   virtual std::string play(const SceneSpec& scene, const TaskTable& tasks,
                            const FramePlayOptions& options) const;
 
