@@ -2,6 +2,7 @@
 // blend's) through the SkeletonTasks slots, its forward kinematics, and one `--summary` row per
 // frame and bone (docs/skeleton-scenes.md). What a task returns is checked before it is used, so
 // a wrong answer is an error naming the task, never a crash.
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <system_error>
@@ -153,6 +154,17 @@ std::string what_plays(const SceneSpec& scene, const SkeletonInputs& in, int fra
   return "the motion " + in.amc_file;
 }
 
+/// The --summary file with its header, or nullptr when none is asked for.
+std::unique_ptr<CsvWriter> open_summary(const std::string& path, bool quaternions) {
+  if (path.empty()) return nullptr;
+  try {
+    return std::make_unique<CsvWriter>(
+        path, std::string(kSummaryColumns) + (quaternions ? ",qw,qx,qy,qz" : ""));
+  } catch (const std::runtime_error& e) {  // an output, not the input: BodyKindModule::play
+    throw std::system_error(std::make_error_code(std::errc::io_error), e.what());
+  }
+}
+
 }  // namespace
 
 std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
@@ -162,14 +174,8 @@ std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
   const SkeletonTasks& slots = skeleton_tasks(tasks);
   Postures postures(scene, in, slots);
   const bool quaternions = skeleton_scene(scene).mode != SkeletonMode::Playback;
-  std::unique_ptr<CsvWriter> summary;
-  try {
-    if (!options.summary_path.empty())
-      summary = std::make_unique<CsvWriter>(
-          options.summary_path, std::string(kSummaryColumns) + (quaternions ? ",qw,qx,qy,qz" : ""));
-  } catch (const std::runtime_error& e) {  // an output, not the input: BodyKindModule::play
-    throw std::system_error(std::make_error_code(std::errc::io_error), e.what());
-  }
+  const std::unique_ptr<CsvWriter> summary = open_summary(options.summary_path, quaternions);
+  const long every = std::max(1L, options.every);
   // simulation.duration: the frames i with i / fps ≤ duration (all of them by default).
   const double fps = skeleton_scene(scene).fps;
   int played = 0;
@@ -178,8 +184,7 @@ std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
   for (int i = 0; i < postures.count() && static_cast<double>(i) <= scene.duration * fps; ++i) {
     const Posture& p = postures.at(i);
     forward_kinematics(slots, in, p, i, frames);
-    if (summary && i % options.every == 0)
-      rows += write_frame(*summary, i, in, p, frames, quaternions);
+    if (summary && i % every == 0) rows += write_frame(*summary, i, in, p, frames, quaternions);
     ++played;
   }
   std::string report =
