@@ -361,6 +361,28 @@ TEST_F(SkeletonPlay, CheckReportsTheCountsOfTheCourseFiles) {
   EXPECT_NE(r.find("blend: a 127, b 1, window 20: 274 frames"), std::string::npos) << r;
 }
 
+TEST_F(SkeletonPlay, CheckListsTheNotesOfWhatTheReadersSkipped) {
+  // CMU's bodymass after line 20 of the course's skeleton; an unknown AMC header keyword.
+  std::ifstream asf(kSource / "data" / "mocap" / "skeleton.asf");
+  std::ofstream noted(dir_ / "noted.asf");
+  int n = 0;
+  for (std::string line; std::getline(asf, line);)
+    noted << line << "\n" << (++n == 20 ? "     bodymass 3.2\n" : "");
+  noted.close();
+  std::ifstream walk(kSource / "data" / "mocap" / "walk.amc");
+  std::ofstream amc(dir_ / "noted.amc");
+  amc << ":SPEED fast\n" << walk.rdbuf();
+  amc.close();
+  SceneSpec scene = course_scene("hw2-fk-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "body.asf", (dir_ / "noted.asf").generic_string()));
+  ASSERT_FALSE(set_parameter(scene, "body.amc", (dir_ / "noted.amc").generic_string()));
+  const std::string r = kind().check_frames(scene);
+  EXPECT_NE(r.find("2 notes (skipped sections and keys):"), std::string::npos) << r;
+  EXPECT_NE(r.find((dir_ / "noted.asf").generic_string() + ":21: "), std::string::npos) << r;
+  EXPECT_NE(r.find("bodymass"), std::string::npos) << r;
+  EXPECT_NE(r.find((dir_ / "noted.amc").generic_string() + ":1: "), std::string::npos) << r;
+}
+
 TEST_F(SkeletonPlay, ArgumentsTheContractCallsErrorsNameTheSceneKeyAndBound) {
   const std::string warp = (kSource / "scenes" / "hw2-warp-2022.toml").string();
   std::string e = check_with("hw2-warp-2022.toml", "body.keyframe_in", "449");
