@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +25,7 @@
 #include "jelly/skeleton/skeleton_files.hpp"
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/skeleton_tasks.hpp"
+#include "jelly/task_probe.hpp"
 
 namespace jelly {
 namespace {
@@ -433,6 +435,48 @@ TEST_F(SkeletonPlay, ABrokenMotionFileGivesItsFirstErrorWithFileAndLine) {
     e = err.what();
   }
   EXPECT_EQ(e.rfind((dir_ / "broken.amc").generic_string() + ":7: ", 0), 0u) << e;
+}
+
+// ----- the probes of the slots (jelly probe) -----
+
+Mat3 stub_rotation(const Vec3&) { return Mat3::Identity(); }
+void stub_fk(const Skeleton& s, const Posture&, BoneFrames& out) {
+  out.rotation.assign(s.bones.size(), Mat3::Identity());
+  out.start.assign(s.bones.size(), Vec3::Zero());
+  out.end.assign(s.bones.size(), Vec3::Zero());
+}
+double stub_time_map(int, const skeleton::TimeWarp&) { return 0.0; }
+void stub_warped_posture(const Skeleton& s, const Motion&, double, Posture& out) {
+  out = Posture::zero(s.bones.size());
+}
+void stub_blend(const Skeleton&, const Motion&, const Motion&, const skeleton::Blend&, Motion&) {}
+
+TEST(SkeletonProbe, TellsTheContractsTasksFromStubsAndMissingOnes) {
+  const std::vector<std::string_view> all = probe_slots();
+  TaskTable stubs;
+  SkeletonTasks& k = skeleton_tasks(stubs);
+  k.local_rotation = stub_rotation;
+  k.forward_kinematics = stub_fk;
+  k.time_map = stub_time_map;
+  k.warped_posture = stub_warped_posture;
+  k.blend_motions = stub_blend;
+  for (const char* slot :
+       {"local_rotation", "forward_kinematics", "time_map", "warped_posture", "blend_motions"}) {
+    EXPECT_NE(std::find(all.begin(), all.end(), slot), all.end()) << slot;
+    const TaskStatus done = probe_slot(slot, "A3.T", "task", test_table());
+    EXPECT_TRUE(done.implemented) << slot << ": " << done.evidence;
+    const TaskStatus stub = probe_slot(slot, "A3.T", "task", stubs);
+    EXPECT_FALSE(stub.implemented) << slot << ": " << stub.evidence;
+    const TaskStatus none = probe_slot(slot, "A3.T", "task", TaskTable{});
+    EXPECT_FALSE(none.implemented) << slot;
+    EXPECT_EQ(none.evidence, "function missing from the task table") << slot;
+  }
+  EXPECT_EQ(probe_slot("time_map", "A3.T3", "time map", test_table()).evidence,
+            "s(2) = 1 for a uniform warp of 3 to 5 frames");
+  // A wrong-sized answer counts as implemented and is never read past.
+  TaskTable wrong = test_table();
+  skeleton_tasks(wrong).forward_kinematics = short_fk;
+  EXPECT_TRUE(probe_slot("forward_kinematics", "A3.T2", "fk", wrong).implemented);
 }
 
 }  // namespace

@@ -3,4 +3,5 @@
 # by frame through the SkeletonTasks slots rather than simulated (docs/skeleton-scenes.md).
 jelly_body_kind(skeleton ORDER 40 MODULE skeleton_kind
                 SOURCES skeleton.cpp rotation.cpp skeleton_file_text.cpp asf_reader.cpp asf_bone_block.cpp
-                        asf_hierarchy.cpp amc_reader.cpp skeleton_kind.cpp skeleton_inputs.cpp skeleton_play.cpp)
+                        asf_hierarchy.cpp amc_reader.cpp skeleton_kind.cpp skeleton_inputs.cpp skeleton_play.cpp
+                        skeleton_probe.cpp)

@@ -6,6 +6,7 @@
 #include "jelly/world.hpp"
 #include "param_rows.hpp"
 #include "skeleton_play.hpp"
+#include "skeleton_probe.hpp"
 
 namespace jelly::bodies {
 
@@ -231,6 +232,13 @@ class SkeletonKind final : public BodyKindModule {
                  "\n                      start_x,start_y,start_z,end_x,end_y,end_z, and for a "
                  "warp or a\n                      blend qw,qx,qy,qz; docs/skeleton-scenes.md)"
                : "";
+  }
+
+  // ----- the smoke tests of its task slots (jelly probe, the viewer's hints) -----
+  std::vector<std::string_view> probe_slots() const override { return skeleton_probe_slots(); }
+  TaskStatus probe_slot(std::string_view slot, std::string id, std::string name,
+                        const TaskTable& tasks) const override {
+    return probe_skeleton_slot(slot, std::move(id), std::move(name), tasks);
   }
 
   /// A skeleton builds no World: `jelly run` and `jelly check` play and read it (plays_frames).
