@@ -228,7 +228,8 @@ class SkeletonKind final : public BodyKindModule {
   std::string_view stability_reason() const override { return "(a skeleton is not simulated)"; }
   std::string_view run_help(std::string_view option) const override {
     return option == "--summary"
-               ? "\n                      (a skeleton scene: per frame and bone frame,bone,name,"
+               ? "\n                      (a skeleton scene is played, not simulated: per frame i"
+                 "\n                      with i / fps ≤ --duration and per bone frame,bone,name,"
                  "\n                      start_x,start_y,start_z,end_x,end_y,end_z, and for a "
                  "warp or a\n                      blend qw,qx,qy,qz; docs/skeleton-scenes.md)"
                : "";
