@@ -78,6 +78,15 @@ int check_command(int argc, char** argv) {
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const auto scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
+  if (const BodyKindModule& kind = body_kind_of(*scene); kind.plays_frames()) {
+    try {
+      std::printf("%s", kind.check_frames(*scene).c_str());  // what it reads: no World, no steps
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "jelly check: %s\n", e.what());
+      return kExitUsage;
+    }
+    return kExitOk;
+  }
   std::unique_ptr<World> world;
   try {
     world = build_world(*scene, session::tasks_for(*scene));

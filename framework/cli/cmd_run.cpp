@@ -77,6 +77,39 @@ std::string run_help() {
   return text + session::scenes_line(dir) + "\n";
 }
 
+/// `jelly run` of a scene whose kind plays frames (a recorded motion) instead of simulating.
+int play_command(const SceneSpec& scene, const BodyKindModule& kind,
+                 const FramePlayOptions& options, const std::string& out_path, bool quiet) {
+  if (!out_path.empty()) {
+    std::fprintf(stderr,
+                 "jelly run: --out writes particles, and %s scene has none; use --summary\n",
+                 std::string(kind.body_phrase()).c_str());
+    return kExitUsage;
+  }
+  // A build with no assignment for this kind plays with no tasks: the kind names the slot missing.
+  TaskTable tasks;
+  std::string no_assignment;
+  try {
+    tasks = session::tasks_for(scene);
+  } catch (const std::exception& e) {
+    no_assignment = e.what();
+  }
+  if (!quiet && no_assignment.empty()) print_missing_tasks_note(scene);
+  std::string report;
+  try {
+    report = kind.play(scene, tasks, options);
+  } catch (const std::system_error& e) {  // an output file that cannot be written
+    std::fprintf(stderr, "jelly run: %s\n", e.what());
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "jelly run: %s\n", e.what());
+    if (!no_assignment.empty()) std::fprintf(stderr, "jelly run: %s\n", no_assignment.c_str());
+    return kExitUsage;
+  }
+  if (!quiet) std::printf("%s", report.c_str());
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_command(int argc, char** argv) {
@@ -97,6 +130,8 @@ int run_command(int argc, char** argv) {
   if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
   const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
   if (!scene) return kExitUsage;
+  if (const BodyKindModule& kind = body_kind_of(*scene); kind.plays_frames())
+    return play_command(*scene, kind, {summary_path, every > 0 ? every : 1}, out_path, quiet);
   if (!quiet) print_missing_tasks_note(*scene);
 
   std::unique_ptr<Simulator> sim;

@@ -16,12 +16,29 @@
 #include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/skeleton_scene.hpp"
 
 namespace {
 
 [[noreturn]] void fail(const char* what, const std::string& detail) {
   std::fprintf(stderr, "fuzz_scene: %s\n%s\n", what, detail.c_str());
   std::abort();
+}
+
+/// A skeleton scene: its files named, its numbers in range (those bounded by the motion are
+/// checked when it is read), a keyframe whole, a blend's motion B named, nothing simulated.
+void check_valid_skeleton(const jelly::SceneSpec& s) {
+  const jelly::SkeletonSceneSpec& k = jelly::skeleton_scene(s);
+  if (k.asf.empty() || k.amc.empty()) fail("accepted a skeleton scene without its files", "");
+  if (!(k.scale > 0.0) || !(k.fps > 0.0)) fail("accepted a bad skeleton scale or fps", "");
+  if (k.frames < 0 || k.frames == 1) fail("accepted a warp of fewer than 2 frames", "");
+  for (long long key : {k.keyframe_in, k.keyframe_out})
+    if (key < -1 || key == 0) fail("accepted a keyframe at 0 or below -1", std::to_string(key));
+  if ((k.keyframe_in < 0) != (k.keyframe_out < 0)) fail("accepted half a keyframe", "");
+  if (k.a < 0 || k.b < 0 || k.window < 2) fail("accepted a bad blend", "");
+  if (k.mode == jelly::SkeletonMode::Blend && k.amc_b.empty())
+    fail("accepted a blend without motion B", "");
+  if (!s.terrains.empty() || s.gravity) fail("accepted a terrain or gravity in a skeleton", "");
 }
 
 /// What validation promises about an accepted scene (what build_world and the simulation rely on).
@@ -54,6 +71,8 @@ void check_valid(const jelly::SceneSpec& s) {
         if (!(sp.schedule[i].time > sp.schedule[i - 1].time))
           fail("accepted a schedule whose times do not increase", "");
     }
+  } else if (s.body_kind == jelly::kSkeletonKind) {
+    check_valid_skeleton(s);
   } else {
     const auto n = s.particles.positions.cols();
     if (n < 1 || s.particles.velocities.cols() != n || !(s.particles.mass > 0.0))

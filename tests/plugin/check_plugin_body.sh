@@ -29,7 +29,7 @@ jelly=$(find "$tree/build" -name jelly -type f -perm -u+x | head -1)
 scene=$tree/assignments/projectile/scenes/point-drop.toml
 
 echo "== plugin.body: CMake registered the kind"
-grep -q "Jelly Lab body kinds: cube, particles, cloth, point" "$work/configure.log" ||
+grep -q "Jelly Lab body kinds: cube, particles, cloth, skeleton, point" "$work/configure.log" ||
   fail "CMake did not register the point kind: $(grep 'body kinds' "$work/configure.log" || true)"
 
 echo "== plugin.body: jelly run steps the point (the projectile assignment's scene)"

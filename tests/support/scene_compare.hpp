@@ -8,6 +8,7 @@
 #include "jelly/cloth_scene.hpp"
 #include "jelly/cube_scene.hpp"
 #include "jelly/scene.hpp"
+#include "jelly/skeleton_scene.hpp"
 
 namespace jelly::testing {
 
@@ -38,6 +39,21 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
     JELLY_CMP(cube_spec(a).rotation_axis, cube_spec(b).rotation_axis, "cube.rotation_axis", v3);
     JELLY_CMP(cube_spec(a).rotation_degrees, cube_spec(b).rotation_degrees, "cube.rotation_degrees",
               num);
+  } else if (a.body_kind == kSkeletonKind) {
+    const SkeletonSceneSpec& c = skeleton_scene(a);
+    const SkeletonSceneSpec& d = skeleton_scene(b);
+    JELLY_CMP(c.asf, d.asf, "skeleton.asf", str);
+    JELLY_CMP(c.amc, d.amc, "skeleton.amc", str);
+    JELLY_CMP(c.scale, d.scale, "skeleton.scale", num);
+    JELLY_CMP(c.fps, d.fps, "skeleton.fps", num);
+    JELLY_CMP(static_cast<int>(c.mode), static_cast<int>(d.mode), "skeleton.mode", i);
+    JELLY_CMP(c.frames, d.frames, "skeleton.frames", i);
+    JELLY_CMP(c.keyframe_in, d.keyframe_in, "skeleton.keyframe_in", i);
+    JELLY_CMP(c.keyframe_out, d.keyframe_out, "skeleton.keyframe_out", i);
+    JELLY_CMP(c.amc_b, d.amc_b, "skeleton.amc_b", str);
+    JELLY_CMP(c.a, d.a, "skeleton.a", i);
+    JELLY_CMP(c.b, d.b, "skeleton.b", i);
+    JELLY_CMP(c.window, d.window, "skeleton.window", i);
   } else if (a.body_kind == kClothKind) {
     const ClothSpec& c = cloth_spec(a);
     const ClothSpec& d = cloth_spec(b);

@@ -1,4 +1,7 @@
-# The skeleton (A3 and A4, the kinematics contract §1–§3): the ASF and AMC readers, postures,
-# motions and rotations. Shared code for now: the body kind that uses it registers later.
-jelly_body_module(SOURCES skeleton.cpp rotation.cpp skeleton_file_text.cpp asf_reader.cpp asf_bone_block.cpp
-                          asf_hierarchy.cpp amc_reader.cpp)
+# The skeleton (A3 and A4, the kinematics contract): the ASF and AMC readers, postures, motions and
+# rotations (§1–§3), and the body kind body.type = "skeleton" (§7), whose scenes are played frame
+# by frame through the SkeletonTasks slots rather than simulated (docs/skeleton-scenes.md).
+jelly_body_kind(skeleton ORDER 40 MODULE skeleton_kind
+                SOURCES skeleton.cpp rotation.cpp skeleton_file_text.cpp asf_reader.cpp asf_bone_block.cpp
+                        asf_hierarchy.cpp amc_reader.cpp skeleton_kind.cpp skeleton_inputs.cpp skeleton_play.cpp
+                        skeleton_probe.cpp)

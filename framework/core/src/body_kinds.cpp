@@ -86,6 +86,17 @@ std::string BodyKindModule::check_report(const SceneSpec& scene, const World& wo
   return out;
 }
 
+bool BodyKindModule::plays_frames() const { return false; }
+
+std::string BodyKindModule::check_frames(const SceneSpec&) const {
+  throw std::logic_error("the body kind " + std::string(name()) + " plays no frames");
+}
+
+std::string BodyKindModule::play(const SceneSpec&, const TaskTable&,
+                                 const FramePlayOptions&) const {
+  throw std::logic_error("the body kind " + std::string(name()) + " plays no frames");
+}
+
 std::string_view BodyKindModule::stability_reason() const { return "since the body stiffens"; }
 
 std::string_view BodyKindModule::run_help(std::string_view) const { return ""; }

@@ -95,6 +95,19 @@ void CsvWriter::write_row(const std::vector<double>& values) {
   if (buffer_.size() > (1u << 20)) flush();
 }
 
+void CsvWriter::write_cells(const std::vector<std::variant<double, std::string>>& cells) {
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (k) buffer_ += ',';
+    if (const double* v = std::get_if<double>(&cells[k])) {
+      put(*v);
+    } else {
+      buffer_ += std::get<std::string>(cells[k]);
+    }
+  }
+  buffer_ += '\n';
+  if (buffer_.size() > (1u << 20)) flush();
+}
+
 void CsvWriter::flush() {
   if (file_ && !buffer_.empty()) {
     std::fwrite(buffer_.data(), 1, buffer_.size(), file_);

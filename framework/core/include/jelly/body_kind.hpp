@@ -67,6 +67,12 @@ class BodyStudy {
   virtual const BodyStudyValues& values() const = 0;
 };
 
+/// What `jelly run` asks of a kind whose scenes play frames (BodyKindModule::plays_frames).
+struct FramePlayOptions {
+  std::string summary_path;  ///< the `--summary` file; "" for none
+  long every = 1;            ///< write every `every`-th frame (frame 0 always)
+};
+
 /// One kind of body: what a scene of this kind says (its section of the parameter table), and
 /// how it becomes a World.
 class BodyKindModule {
@@ -142,6 +148,20 @@ class BodyKindModule {
   /// What `jelly run --help` adds for this kind to the text of `option` ("--summary": its own
   /// columns; "--threads": when threads pay off); "" (the default) for nothing.
   virtual std::string_view run_help(std::string_view option) const;
+
+  // ----- a kind whose scenes play frames instead of being simulated (a recorded motion) -----
+  /// Whether `jelly run` and `jelly check` hand its scenes to play() and check_frames() instead
+  /// of building and stepping a World. False by default.
+  virtual bool plays_frames() const;
+  /// `jelly check` of such a scene: reads what it names and returns the report (counts, notes).
+  /// Throws std::runtime_error with the first error (the file and line, or the scene's key).
+  virtual std::string check_frames(const SceneSpec& scene) const;
+  /// `jelly run` of such a scene through `tasks`: plays it frame by frame, writes the summary
+  /// rows and returns the report of what it did. Inputs and slots are checked before any file is
+  /// written. Throws std::runtime_error saying what is wrong (a bad input, a slot not filled),
+  /// std::system_error when an output file cannot be written.
+  virtual std::string play(const SceneSpec& scene, const TaskTable& tasks,
+                           const FramePlayOptions& options) const;
 
   // ----- what the studies measure on it (jelly study effects) -----
   /// How many particles, from the first, a study's centre of mass, speeds and rest are taken over.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "jelly/world.hpp"
@@ -41,6 +42,10 @@ class CsvWriter {
   void write_summary(const FrameSummary& f);
   /// A row of numbers, in the order given (a body kind's own `--summary` row).
   void write_row(const std::vector<double>& values);
+  /// A row of numbers and text cells, in the order given (a body kind's row that names something:
+  /// a bone of a kind's body). Numbers as write_row writes them; text as given, so it must hold no
+  /// comma, quote or line break.
+  void write_cells(const std::vector<std::variant<double, std::string>>& cells);
   /// Flushes to the OS.
   void flush();
 

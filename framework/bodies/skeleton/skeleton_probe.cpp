@@ -1,0 +1,154 @@
+// The smoke tests of the skeleton's TaskTable slots (jelly/task_probe.hpp). Each calls its slot on
+// a root and one bone `a` (direction +y, length 1, channels rx ry rz) made in code, and counts it
+// implemented when the answer differs from what a stub that fills nothing gives (the identity,
+// zeros, nothing). An answer of the wrong size counts as implemented (never read past it).
+#include "skeleton_probe.hpp"
+
+#include "jelly/skeleton_tasks.hpp"
+#include "param_table.hpp"
+
+namespace jelly::bodies {
+
+namespace {
+
+using params_detail::format_double;
+using skeleton::Channel;
+using skeleton::Motion;
+using skeleton::Posture;
+using skeleton::Skeleton;
+
+Skeleton probe_skeleton() {
+  Skeleton s;
+  s.scale = 1.0;
+  s.bones.resize(2);
+  s.bones[0].name = "root";
+  s.bones[0].children = {1};
+  s.bones[0].channels = {Channel::tx, Channel::ty, Channel::tz,
+                         Channel::rx, Channel::ry, Channel::rz};
+  s.bones[1].name = "a";
+  s.bones[1].parent = 0;
+  s.bones[1].channels = {Channel::rx, Channel::ry, Channel::rz};
+  s.bones[1].direction = Vec3(0.0, 1.0, 0.0);
+  s.bones[1].length = 1.0;
+  skeleton::derive_bone_data(s);
+  return s;
+}
+
+Posture probe_posture(const Vec3& root, const Vec3& a_angles) {
+  Posture p = Posture::zero(2);
+  p.root_translation = root;
+  p.angles[1] = a_angles;
+  return p;
+}
+
+std::string vec_text(const Vec3& v) {
+  return "(" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) +
+         ")";
+}
+
+TaskStatus missing(std::string id, std::string name) {
+  return {std::move(id), std::move(name), false, "function missing from the task table", {}};
+}
+
+TaskStatus probe_local_rotation(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.local_rotation) return missing(std::move(id), std::move(name));
+  const skeleton::Mat3 r = t.local_rotation(Vec3(30.0, 20.0, 10.0));
+  const bool stub = r == skeleton::Mat3::Identity() || r == skeleton::Mat3::Zero();
+  return {std::move(id),
+          std::move(name),
+          !stub,
+          stub ? "E(30°, 20°, 10°) is the identity or zero" : "E(30°, 20°, 10°) is a rotation",
+          {}};
+}
+
+TaskStatus probe_forward_kinematics(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.forward_kinematics) return missing(std::move(id), std::move(name));
+  skeleton::BoneFrames f;
+  t.forward_kinematics(probe_skeleton(), probe_posture(Vec3(1.0, 2.0, 3.0), Vec3(90.0, 0.0, 0.0)),
+                       f);
+  if (f.start.size() != 2 || f.end.size() != 2)
+    return {std::move(id),
+            std::move(name),
+            true,
+            "returned " + std::to_string(f.end.size()) + " bone ends for 2 bones",
+            {}};
+  const bool stub = f.end[1] == f.start[1];
+  return {std::move(id),
+          std::move(name),
+          !stub,
+          stub ? "a bone of length 1 ends where it starts, " + vec_text(f.end[1])
+               : "a bone of length 1 from " + vec_text(f.start[1]) + " to " + vec_text(f.end[1]),
+          {}};
+}
+
+TaskStatus probe_time_map(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.time_map) return missing(std::move(id), std::move(name));
+  skeleton::TimeWarp w;
+  w.input_frames = 3;
+  w.output_frames = 5;
+  const double s = t.time_map(2, w);
+  return {std::move(id),
+          std::move(name),
+          s != 0.0,
+          "s(2) = " + format_double(s) + " for a uniform warp of 3 to 5 frames",
+          {}};
+}
+
+Motion two_frames() {
+  Motion m;
+  m.frames = {probe_posture(Vec3::Zero(), Vec3::Zero()),
+              probe_posture(Vec3(2.0, 0.0, 0.0), Vec3(0.0, 0.0, 40.0))};
+  return m;
+}
+
+TaskStatus probe_warped_posture(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.warped_posture) return missing(std::move(id), std::move(name));
+  Posture p = Posture::zero(2);
+  t.warped_posture(probe_skeleton(), two_frames(), 0.5, p);
+  if (p.angles.size() != 2)
+    return {std::move(id),
+            std::move(name),
+            true,
+            "returned " + std::to_string(p.angles.size()) + " angle triples for 2 bones",
+            {}};
+  const bool stub = p.root_translation == Vec3::Zero() && p.angles[1] == Vec3::Zero();
+  return {std::move(id),
+          std::move(name),
+          !stub,
+          "halfway between two postures: root " + vec_text(p.root_translation) + ", bone a " +
+              vec_text(p.angles[1]) + "°",
+          {}};
+}
+
+TaskStatus probe_blend(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.blend_motions) return missing(std::move(id), std::move(name));
+  const Motion m = two_frames();
+  Motion a = m, b = m, out;
+  a.frames.push_back(m.frames[1]);
+  b.frames.push_back(m.frames[0]);
+  t.blend_motions(probe_skeleton(), a, b, skeleton::Blend{1, 1, 2}, out);
+  return {std::move(id),
+          std::move(name),
+          !out.frames.empty(),
+          std::to_string(out.frames.size()) + " frames from A and B of 3 (a 1, b 1, window 2)",
+          {}};
+}
+
+}  // namespace
+
+std::vector<std::string_view> skeleton_probe_slots() {
+  return {"local_rotation", "forward_kinematics", "time_map", "warped_posture", "blend_motions"};
+}
+
+TaskStatus probe_skeleton_slot(std::string_view slot, std::string id, std::string name,
+                               const TaskTable& t) {
+  const SkeletonTasks& k = skeleton_tasks(t);
+  if (slot == "local_rotation") return probe_local_rotation(std::move(id), std::move(name), k);
+  if (slot == "forward_kinematics")
+    return probe_forward_kinematics(std::move(id), std::move(name), k);
+  if (slot == "time_map") return probe_time_map(std::move(id), std::move(name), k);
+  if (slot == "warped_posture") return probe_warped_posture(std::move(id), std::move(name), k);
+  return probe_blend(std::move(id), std::move(name), k);
+}
+
+}  // namespace jelly::bodies

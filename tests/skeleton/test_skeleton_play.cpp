@@ -1,0 +1,483 @@
+// `jelly run` and `jelly check` of the course's skeleton scenes (scenes/hw2-*.toml), in process,
+// through a TaskTable whose skeleton slots this file fills with a small implementation written
+// from the kinematics contract (§3–§5) with Eigen's angle-axis rotations and slerp: an independent
+// check of the kind's frame loop, its summary and the contract's §8 numbers. Also: each argument
+// the contract calls an error, once the motion is read; a slot not filled; a task that returns a
+// wrong answer.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "jelly/body_kind.hpp"
+#include "jelly/params.hpp"
+#include "jelly/scene.hpp"
+#include "jelly/skeleton/rotation.hpp"
+#include "jelly/skeleton/skeleton_files.hpp"
+#include "jelly/skeleton_scene.hpp"
+#include "jelly/skeleton_tasks.hpp"
+#include "jelly/task_probe.hpp"
+
+namespace jelly {
+namespace {
+
+namespace fs = std::filesystem;
+using skeleton::BoneFrames;
+using skeleton::Mat3;
+using skeleton::Motion;
+using skeleton::Posture;
+using skeleton::Skeleton;
+
+const fs::path kSource(JELLY_SOURCE_DIR);
+
+// ----- the test's implementation of the slots, from the contract -----
+
+Eigen::Quaterniond test_quaternion(const Vec3& degrees) {
+  const Vec3 r = degrees * (3.14159265358979323846 / 180.0);
+  return Eigen::AngleAxisd(r.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(r.y(), Vec3::UnitY()) *
+         Eigen::AngleAxisd(r.x(), Vec3::UnitX());
+}
+
+Mat3 test_e(const Vec3& degrees) { return test_quaternion(degrees).toRotationMatrix(); }
+
+// §4, recursively from the root.
+void fk_bone(const Skeleton& s, const Posture& p, int i, BoneFrames& out) {
+  const skeleton::Bone& b = s.bones[i];
+  if (b.parent < 0) {
+    out.rotation[i] = test_e(p.angles[i]);
+    out.start[i] = out.end[i] = p.root_translation;
+  } else {
+    out.rotation[i] = out.rotation[b.parent] * b.C * test_e(p.angles[i]);
+    out.start[i] = out.end[b.parent];
+    out.end[i] = out.start[i] + b.L * out.rotation[i] * b.d;
+  }
+  for (int c : b.children) fk_bone(s, p, c, out);
+}
+
+void test_fk(const Skeleton& s, const Posture& p, BoneFrames& out) {
+  out.rotation.assign(s.bones.size(), Mat3::Identity());
+  out.start.assign(s.bones.size(), Vec3::Zero());
+  out.end.assign(s.bones.size(), Vec3::Zero());
+  fk_bone(s, p, 0, out);
+}
+
+double test_time_map(int i, const skeleton::TimeWarp& w) {
+  const int n = w.input_frames, m = w.output_frames;
+  if (!w.has_keyframe()) return static_cast<double>(i) * (n - 1) / (m - 1);
+  if (i <= w.keyframe_out) return static_cast<double>(i) * w.keyframe_in / w.keyframe_out;
+  return w.keyframe_in + static_cast<double>(i - w.keyframe_out) * (n - 1 - w.keyframe_in) /
+                             (m - 1 - w.keyframe_out);
+}
+
+Posture mix(const Skeleton& s, const Posture& l, const Posture& r, double t) {
+  Posture out = Posture::zero(s.bones.size());
+  out.root_translation = (1.0 - t) * l.root_translation + t * r.root_translation;
+  for (std::size_t b = 0; b < s.bones.size(); ++b)
+    if (!s.bones[b].channels.empty())
+      out.angles[b] = skeleton::quaternion_to_euler(
+          test_quaternion(l.angles[b]).slerp(t, test_quaternion(r.angles[b])));
+  return out;
+}
+
+void test_warped_posture(const Skeleton& s, const Motion& in, double time, Posture& out) {
+  const int last = static_cast<int>(in.frames.size()) - 1;
+  const int l = static_cast<int>(time);
+  const int r = std::min(l + 1, last);
+  out = mix(s, in.frames[l], in.frames[r], time - l);
+}
+
+void test_blend(const Skeleton& s, const Motion& a, const Motion& b, const skeleton::Blend& k,
+                Motion& out) {
+  Vec3 delta = a.frames[k.a].root_translation - b.frames[k.b].root_translation;
+  delta.y() = 0.0;
+  out.fps = a.fps;
+  out.frames.assign(a.frames.begin(), a.frames.begin() + k.a);
+  for (std::size_t j = k.b; j < b.frames.size(); ++j) {
+    Posture moved = b.frames[j];
+    moved.root_translation += delta;
+    const int i = static_cast<int>(j) - k.b;
+    if (i < k.window) {
+      const double w = (1.0 - std::cos(3.14159265358979323846 * (i + 1) / k.window)) / 2.0;
+      moved = mix(s, a.frames[k.a + i], moved, w);
+    }
+    out.frames.push_back(moved);
+  }
+}
+
+TaskTable test_table() {
+  TaskTable t;
+  SkeletonTasks& k = skeleton_tasks(t);
+  k.local_rotation = test_e;
+  k.forward_kinematics = test_fk;
+  k.time_map = test_time_map;
+  k.warped_posture = test_warped_posture;
+  k.blend_motions = test_blend;
+  return t;
+}
+
+// ----- running a scene and reading its summary -----
+
+const BodyKindModule& kind() { return *find_body_kind("skeleton"); }
+
+SceneSpec course_scene(const std::string& name) {
+  const SceneResult r = load_scene(kSource / "scenes" / name);
+  EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
+  return r ? *r.scene : SceneSpec{};
+}
+
+struct Summary {
+  std::string header;
+  std::vector<std::vector<std::string>> rows;
+  double number(std::size_t row, std::size_t column) const {
+    return std::strtod(rows.at(row).at(column).c_str(), nullptr);
+  }
+  Vec3 point(int frame, int bone, int bones, int first_column) const {
+    const std::size_t r = static_cast<std::size_t>(frame) * bones + bone;
+    return {number(r, first_column), number(r, first_column + 1), number(r, first_column + 2)};
+  }
+};
+
+class SkeletonPlay : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "skeleton" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  std::string summary_path() const { return (dir_ / "summary.csv").string(); }
+
+  // Plays `scene` with the test's table (or `tasks`) and reads the summary it wrote.
+  Summary play(const SceneSpec& scene, const TaskTable& tasks = test_table(), long every = 1) {
+    report_ = kind().play(scene, tasks, {summary_path(), every});
+    Summary s;
+    std::ifstream in(summary_path());
+    std::getline(in, s.header);
+    for (std::string line; std::getline(in, line);) {
+      std::vector<std::string> cells;
+      std::stringstream ss(line);
+      for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+      s.rows.push_back(cells);
+    }
+    return s;
+  }
+
+  fs::path dir_;
+  std::string report_;
+};
+
+constexpr int kBones = 31;
+constexpr const char* kColumns = "frame,bone,name,start_x,start_y,start_z,end_x,end_y,end_z";
+
+void expect_near(const Vec3& got, const Vec3& expected, const std::string& what) {
+  // The contract prints 5 decimals: within half a unit of the last digit.
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], expected[k], 5.01e-6) << what << " " << k;
+}
+
+int bone(const Skeleton& s, const char* name) { return *s.find(name); }
+
+Skeleton course_skeleton() {
+  return *skeleton::read_asf(kSource / "data" / "mocap" / "skeleton.asf", 0.2).skeleton;
+}
+
+TEST_F(SkeletonPlay, Fk2022GivesTheContractsReferenceNumbers) {
+  const Summary s = play(course_scene("hw2-fk-2022.toml"));
+  EXPECT_EQ(s.header, kColumns);
+  ASSERT_EQ(s.rows.size(), 148u * kBones);
+  EXPECT_EQ(s.rows[0][0], "0");
+  EXPECT_EQ(s.rows[0][2], "root");
+  EXPECT_EQ(s.rows.back()[0], "147");
+  const Skeleton sk = course_skeleton();
+  const int head = bone(sk, "head"), fingers = bone(sk, "rfingers");
+  EXPECT_EQ(s.rows[head][2], "head");
+  // Contract §8, walk.amc.
+  expect_near(s.point(0, 0, kBones, 3), {2.57906, 3.55306, -4.64220}, "frame 0 root start");
+  expect_near(s.point(0, 0, kBones, 6), {2.57906, 3.55306, -4.64220}, "frame 0 root end");
+  expect_near(s.point(0, head, kBones, 6), {2.65770, 5.79724, -4.31246}, "frame 0 head end");
+  expect_near(s.point(0, fingers, kBones, 6), {2.06460, 2.78074, -3.81936}, "frame 0 rfingers");
+  expect_near(s.point(147, 0, kBones, 3), {2.89442, 3.54780, -0.77105}, "frame 147 root");
+  expect_near(s.point(147, fingers, kBones, 6), {2.13008, 2.81343, 0.08133}, "frame 147 rfingers");
+  EXPECT_NE(report_.find("played 148 of 148 frames"), std::string::npos) << report_;
+  EXPECT_NE(report_.find("wrote 4588 summary rows"), std::string::npos) << report_;
+}
+
+TEST_F(SkeletonPlay, SummaryNumbersReadBackToTheSameDoubles) {
+  const Summary s = play(course_scene("hw2-fk-2022.toml"));
+  const Skeleton sk = course_skeleton();
+  const Motion m = *skeleton::read_amc(kSource / "data" / "mocap" / "walk.amc", sk).motion;
+  BoneFrames f;
+  test_fk(sk, m.frames[5], f);
+  for (int b = 0; b < kBones; ++b) {
+    EXPECT_EQ(s.point(5, b, kBones, 3), f.start[b]) << b;
+    EXPECT_EQ(s.point(5, b, kBones, 6), f.end[b]) << b;
+  }
+}
+
+// The positions and local quaternions of output frame `out` equal those of input frame `in`.
+void expect_frame_is_input(const Summary& s, int out, const Motion& m, int in, const Skeleton& sk) {
+  BoneFrames f;
+  test_fk(sk, m.frames[in], f);
+  for (int b = 0; b < kBones; ++b) {
+    const std::string what = "output " + std::to_string(out) + " bone " + std::to_string(b);
+    EXPECT_LT((s.point(out, b, kBones, 6) - f.end[b]).norm(), 1e-9) << what;
+    const std::size_t r = static_cast<std::size_t>(out) * kBones + b;
+    const skeleton::Quaternion q(s.number(r, 9), s.number(r, 10), s.number(r, 11), s.number(r, 12));
+    EXPECT_TRUE(
+        skeleton::same_rotation(q, skeleton::euler_to_quaternion(m.frames[in].angles[b]), 1e-9))
+        << what;
+  }
+}
+
+TEST_F(SkeletonPlay, Warp2022MapsFirstKeyframeAndLastFramesExactly) {
+  const Summary s = play(course_scene("hw2-warp-2022.toml"));
+  EXPECT_EQ(s.header, std::string(kColumns) + ",qw,qx,qy,qz");
+  ASSERT_EQ(s.rows.size(), 450u * kBones);
+  const Skeleton sk = course_skeleton();
+  const Motion m = *skeleton::read_amc(kSource / "data" / "mocap" / "punch_kick.amc", sk).motion;
+  expect_frame_is_input(s, 0, m, 0, sk);      // s(0) = 0
+  expect_frame_is_input(s, 150, m, 160, sk);  // the keyframe
+  expect_frame_is_input(s, 449, m, 449, sk);  // s(M − 1) = N − 1
+  EXPECT_EQ(s.rows.back()[0], "449");
+}
+
+TEST_F(SkeletonPlay, UniformRetimingOfTheWalkHas200Frames) {
+  const Summary s = play(course_scene("hw2-retime-2023.toml"));
+  ASSERT_EQ(s.rows.size(), 200u * kBones);
+  const Skeleton sk = course_skeleton();
+  const Motion m = *skeleton::read_amc(kSource / "data" / "mocap" / "walk.amc", sk).motion;
+  expect_frame_is_input(s, 0, m, 0, sk);
+  expect_frame_is_input(s, 199, m, 147, sk);
+}
+
+TEST_F(SkeletonPlay, BlendPlaysAThenTheWindowThenMovedB) {
+  const Summary s = play(course_scene("hw2-blend-2022.toml"));
+  ASSERT_EQ(s.rows.size(), 274u * kBones);  // a + |B| − b = 127 + 148 − 1
+  const Skeleton sk = course_skeleton();
+  const Motion a = *skeleton::read_amc(kSource / "data" / "mocap" / "walk.amc", sk).motion;
+  expect_frame_is_input(s, 126, a, 126, sk);
+  // The window's last frame has weight 1: B'[b + W − 1] = B[20] moved by Δ.
+  const Motion b = *skeleton::read_amc(kSource / "data" / "mocap" / "running.amc", sk).motion;
+  Vec3 delta = a.frames[127].root_translation - b.frames[1].root_translation;
+  delta.y() = 0.0;
+  EXPECT_LT((s.point(146, 0, kBones, 3) - (b.frames[20].root_translation + delta)).norm(), 1e-9);
+}
+
+TEST_F(SkeletonPlay, DurationAndEveryChooseTheFramesWritten) {
+  SceneSpec scene = course_scene("hw2-fk-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "simulation.duration", "0.5").has_value());
+  Summary s = play(scene);
+  EXPECT_EQ(s.rows.size(), 61u * kBones) << "frames i with i / 120 ≤ 0.5";
+  EXPECT_NE(report_.find("played 61 of 148 frames"), std::string::npos) << report_;
+  s = play(course_scene("hw2-fk-2022.toml"), test_table(), 10);
+  ASSERT_EQ(s.rows.size(), 15u * kBones);  // frames 0, 10, …, 140
+  EXPECT_EQ(s.rows[kBones][0], "10");
+}
+
+// ----- what is refused -----
+
+std::string play_error(const SceneSpec& scene, const TaskTable& tasks, const std::string& path) {
+  try {
+    kind().play(scene, tasks, {path, 1});
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an error";
+  return "";
+}
+
+TEST_F(SkeletonPlay, ASlotTheTasksDoNotFillIsAnErrorNamingItAndWritesNothing) {
+  std::string e = play_error(course_scene("hw2-fk-2022.toml"), TaskTable{}, summary_path());
+  EXPECT_NE(e.find("needs the task forward_kinematics"), std::string::npos) << e;
+  EXPECT_NE(e.find("SkeletonTasks::forward_kinematics is null"), std::string::npos) << e;
+  EXPECT_FALSE(fs::exists(summary_path()));
+  TaskTable fk_only;
+  skeleton_tasks(fk_only).forward_kinematics = test_fk;
+  e = play_error(course_scene("hw2-warp-2022.toml"), fk_only, summary_path());
+  EXPECT_NE(e.find("a skeleton warp needs the task time_map"), std::string::npos) << e;
+  skeleton_tasks(fk_only).time_map = test_time_map;
+  e = play_error(course_scene("hw2-warp-2022.toml"), fk_only, summary_path());
+  EXPECT_NE(e.find("needs the task warped_posture"), std::string::npos) << e;
+  e = play_error(course_scene("hw2-blend-2022.toml"), fk_only, summary_path());
+  EXPECT_NE(e.find("a skeleton blend needs the task blend_motions"), std::string::npos) << e;
+  EXPECT_FALSE(fs::exists(summary_path()));
+}
+
+TEST_F(SkeletonPlay, ASummaryThatCannotBeWrittenIsAnOutputError) {
+  const std::string path = (dir_ / "no-such-folder" / "summary.csv").string();
+  EXPECT_THROW(kind().play(course_scene("hw2-fk-2022.toml"), test_table(), {path, 1}),
+               std::system_error);
+}
+
+void short_fk(const Skeleton&, const Posture&, BoneFrames& out) { out = BoneFrames{}; }
+double past_the_end(int i, const skeleton::TimeWarp& w) { return i + w.input_frames; }
+
+TEST_F(SkeletonPlay, ATaskThatReturnsAWrongAnswerIsAnErrorNamingIt) {
+  TaskTable t = test_table();
+  skeleton_tasks(t).forward_kinematics = short_fk;
+  std::string e = play_error(course_scene("hw2-fk-2022.toml"), t, summary_path());
+  EXPECT_NE(e.find("task forward_kinematics, output frame 0"), std::string::npos) << e;
+  EXPECT_NE(e.find("the skeleton has 31 bones"), std::string::npos) << e;
+  t = test_table();
+  skeleton_tasks(t).time_map = past_the_end;
+  e = play_error(course_scene("hw2-warp-2022.toml"), t, summary_path());
+  EXPECT_NE(e.find("task time_map, output frame 0: returned s = 450; expected 0 ≤ s ≤ N − 1 = 449"),
+            std::string::npos)
+      << e;
+}
+
+// `jelly check`'s report, or its first error, of the scene with `key` set to `value`.
+std::string check_with(const std::string& scene_name, const std::string& key,
+                       const std::string& value) {
+  SceneSpec scene = course_scene(scene_name);
+  if (!key.empty()) {
+    const auto err = set_parameter(scene, key, value);
+    EXPECT_FALSE(err.has_value()) << err->text();
+  }
+  try {
+    return kind().check_frames(scene);
+  } catch (const std::runtime_error& e) {
+    return std::string("error: ") + e.what();
+  }
+}
+
+TEST_F(SkeletonPlay, CheckReportsTheCountsOfTheCourseFiles) {
+  std::string r = check_with("hw2-fk-2022.toml", "", "");
+  EXPECT_EQ(r.rfind("hw2-fk-2022: valid. skeleton ", 0), 0u) << r;
+  EXPECT_NE(r.find("data/mocap/skeleton.asf: 31 bones, 62 channels (scale 0.2)"), std::string::npos)
+      << r;
+  EXPECT_NE(r.find("data/mocap/walk.amc: 148 frames at 120 fps"), std::string::npos) << r;
+  r = check_with("hw2-warp-2022.toml", "", "");
+  EXPECT_NE(r.find("punch_kick.amc: 450 frames"), std::string::npos) << r;
+  EXPECT_NE(r.find("warp: 450 -> 450 frames, keyframe 160 -> 150"), std::string::npos) << r;
+  r = check_with("hw2-blend-2022.toml", "", "");
+  EXPECT_NE(r.find("running.amc: 148 frames"), std::string::npos) << r;
+  EXPECT_NE(r.find("blend: a 127, b 1, window 20: 274 frames"), std::string::npos) << r;
+}
+
+TEST_F(SkeletonPlay, CheckListsTheNotesOfWhatTheReadersSkipped) {
+  // CMU's bodymass after line 20 of the course's skeleton; an unknown AMC header keyword.
+  std::ifstream asf(kSource / "data" / "mocap" / "skeleton.asf");
+  std::ofstream noted(dir_ / "noted.asf");
+  int n = 0;
+  for (std::string line; std::getline(asf, line);)
+    noted << line << "\n" << (++n == 20 ? "     bodymass 3.2\n" : "");
+  noted.close();
+  std::ifstream walk(kSource / "data" / "mocap" / "walk.amc");
+  std::ofstream amc(dir_ / "noted.amc");
+  amc << ":SPEED fast\n" << walk.rdbuf();
+  amc.close();
+  SceneSpec scene = course_scene("hw2-fk-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "body.asf", (dir_ / "noted.asf").generic_string()));
+  ASSERT_FALSE(set_parameter(scene, "body.amc", (dir_ / "noted.amc").generic_string()));
+  const std::string r = kind().check_frames(scene);
+  EXPECT_NE(r.find("2 notes (skipped sections and keys):"), std::string::npos) << r;
+  EXPECT_NE(r.find((dir_ / "noted.asf").generic_string() + ":21: "), std::string::npos) << r;
+  EXPECT_NE(r.find("bodymass"), std::string::npos) << r;
+  EXPECT_NE(r.find((dir_ / "noted.amc").generic_string() + ":1: "), std::string::npos) << r;
+}
+
+TEST_F(SkeletonPlay, ArgumentsTheContractCallsErrorsNameTheSceneKeyAndBound) {
+  const std::string warp = (kSource / "scenes" / "hw2-warp-2022.toml").string();
+  std::string e = check_with("hw2-warp-2022.toml", "body.keyframe_in", "449");
+  EXPECT_EQ(e.rfind("error: " + warp +
+                        ": body.keyframe_in: must satisfy 0 < keyframe_in < N − 1 "
+                        "= 449 (punch_kick.amc has 450 frames",
+                    0),
+            0u)
+      << e;
+  e = check_with("hw2-warp-2022.toml", "body.keyframe_out", "449");
+  EXPECT_NE(e.find(": body.keyframe_out: must satisfy 0 < keyframe_out < M − 1 = 449"),
+            std::string::npos)
+      << e;
+  e = check_with("hw2-warp-2022.toml", "body.frames", "100");
+  EXPECT_NE(e.find("body.keyframe_out: must satisfy 0 < keyframe_out < M − 1 = 99"),
+            std::string::npos)
+      << e;
+  e = check_with("hw2-blend-2022.toml", "body.a", "129");
+  EXPECT_NE(e.find("body.a: must satisfy a + window ≤ the motion's frames (walk.amc has 148 "
+                   "frames; kinematics contract §5), got 129 + 20 = 149"),
+            std::string::npos)
+      << e;
+  e = check_with("hw2-blend-2022.toml", "body.b", "200");
+  EXPECT_NE(e.find("body.b: must satisfy b + window"), std::string::npos) << e;
+  e = check_with("hw2-fk-2022.toml", "body.amc", "../data/mocap/missing.amc");
+  EXPECT_EQ(
+      e.rfind("error: " + (kSource / "scenes" / "hw2-fk-2022.toml").string() + ": body.amc: ", 0),
+      0u)
+      << e;
+  EXPECT_NE(e.find("data/mocap/missing.amc"), std::string::npos) << e;
+}
+
+TEST_F(SkeletonPlay, ABrokenMotionFileGivesItsFirstErrorWithFileAndLine) {
+  std::ifstream walk(kSource / "data" / "mocap" / "walk.amc");
+  std::ofstream broken(dir_ / "broken.amc");
+  int n = 0;
+  for (std::string line; std::getline(walk, line);)
+    broken << (++n == 7 ? std::string("upperback 1.5 x 0.3") : line) << "\n";
+  broken.close();
+  SceneSpec scene = course_scene("hw2-fk-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "body.amc", (dir_ / "broken.amc").generic_string()));
+  ASSERT_FALSE(set_parameter(scene, "body.asf",
+                             (kSource / "data" / "mocap" / "skeleton.asf").generic_string()));
+  std::string e;
+  try {
+    kind().check_frames(scene);
+  } catch (const std::runtime_error& err) {
+    e = err.what();
+  }
+  EXPECT_EQ(e.rfind((dir_ / "broken.amc").generic_string() + ":7: ", 0), 0u) << e;
+}
+
+// ----- the probes of the slots (jelly probe) -----
+
+Mat3 stub_rotation(const Vec3&) { return Mat3::Identity(); }
+void stub_fk(const Skeleton& s, const Posture&, BoneFrames& out) {
+  out.rotation.assign(s.bones.size(), Mat3::Identity());
+  out.start.assign(s.bones.size(), Vec3::Zero());
+  out.end.assign(s.bones.size(), Vec3::Zero());
+}
+double stub_time_map(int, const skeleton::TimeWarp&) { return 0.0; }
+void stub_warped_posture(const Skeleton& s, const Motion&, double, Posture& out) {
+  out = Posture::zero(s.bones.size());
+}
+void stub_blend(const Skeleton&, const Motion&, const Motion&, const skeleton::Blend&, Motion&) {}
+
+TEST(SkeletonProbe, TellsTheContractsTasksFromStubsAndMissingOnes) {
+  const std::vector<std::string_view> all = probe_slots();
+  TaskTable stubs;
+  SkeletonTasks& k = skeleton_tasks(stubs);
+  k.local_rotation = stub_rotation;
+  k.forward_kinematics = stub_fk;
+  k.time_map = stub_time_map;
+  k.warped_posture = stub_warped_posture;
+  k.blend_motions = stub_blend;
+  for (const char* slot :
+       {"local_rotation", "forward_kinematics", "time_map", "warped_posture", "blend_motions"}) {
+    EXPECT_NE(std::find(all.begin(), all.end(), slot), all.end()) << slot;
+    const TaskStatus done = probe_slot(slot, "A3.T", "task", test_table());
+    EXPECT_TRUE(done.implemented) << slot << ": " << done.evidence;
+    const TaskStatus stub = probe_slot(slot, "A3.T", "task", stubs);
+    EXPECT_FALSE(stub.implemented) << slot << ": " << stub.evidence;
+    const TaskStatus none = probe_slot(slot, "A3.T", "task", TaskTable{});
+    EXPECT_FALSE(none.implemented) << slot;
+    EXPECT_EQ(none.evidence, "function missing from the task table") << slot;
+  }
+  EXPECT_EQ(probe_slot("time_map", "A3.T3", "time map", test_table()).evidence,
+            "s(2) = 1 for a uniform warp of 3 to 5 frames");
+  // A wrong-sized answer counts as implemented and is never read past.
+  TaskTable wrong = test_table();
+  skeleton_tasks(wrong).forward_kinematics = short_fk;
+  EXPECT_TRUE(probe_slot("forward_kinematics", "A3.T2", "fk", wrong).implemented);
+}
+
+}  // namespace
+}  // namespace jelly
