@@ -1,6 +1,6 @@
 // Numbers read from text the same way on every platform and in every locale: a whole token, in
 // C's decimal form, correctly rounded. What scene parameters (`--set`, `jelly params`) and the
-// skeleton's ASF and AMC files read.
+// data files of body modules read.
 #pragma once
 
 #include <optional>
