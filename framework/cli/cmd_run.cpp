@@ -243,7 +243,8 @@ void print_missing_tasks_note(const SceneSpec& scene) {
   std::string list;
   for (const std::string& id : missing) list += (list.empty() ? "" : ", ") + id;
   // The handout the manifest names, beside the manifest the program was built with (relative to
-  // the working folder when it is below it: "assignments/<id>/handout/README.md" from the checkout).
+  // the working folder when it is below it: "assignments/<id>/handout/README.md" from the
+  // checkout).
   const AssignmentManifest& manifest = session::manifest_of(assignment);
   std::string handout = manifest.id + "'s handout";
   if (!manifest.handout.empty()) {

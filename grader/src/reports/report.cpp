@@ -100,7 +100,8 @@ std::vector<const CaseResult*> report_order(const GradeReport& r) {
   return out;
 }
 
-// The anchor of a task's section: "task-<id>-t13" for task <ID>.T13 (ids are letters, digits and dots).
+// The anchor of a task's section: "task-<id>-t13" for task <ID>.T13 (ids are letters, digits and
+// dots).
 std::string task_anchor(const TaskResult& t) {
   std::string a = "task-";
   for (const char ch : t.spec->id)
