@@ -11,7 +11,9 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app_loop.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/exit_codes.hpp"
+#include "jelly/session/assignments.hpp"
 #include "jelly/session/overrides.hpp"
 
 namespace jelly::app {
@@ -26,14 +28,39 @@ std::vector<SimulationRun*> AppState::run_pointers() const {
   return out;
 }
 
+namespace {
+
+// Why this program cannot show `scene`, or "": a kind that plays frames has no viewer yet, and a
+// kind no linked assignment simulates has no tasks to run.
+std::string why_not_shown(const SceneSpec& scene) {
+  const BodyKindModule& kind = body_kind_of(scene);
+  if (kind.plays_frames())
+    return "jelly-lab does not draw scenes of " + std::string(kind.body_phrase()) +
+           " yet; `jelly run SCENE --summary FILE` plays it and `jelly check SCENE` reads it";
+  try {
+    session::assignment_for(scene);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
 bool load_scene_into(AppState& s, int index, const std::string& path) {
   SceneResult r;
   if (index >= 0 && index < static_cast<int>(s.scenes.size()))
     r = load_entry(s.scenes[index]);
   else
     r = resolve_scene(path, s.scenes_dir);
+  s.scene_not_shown = false;
   if (!r) {
     s.scene_error = r.error->text();
+    return false;
+  }
+  if (std::string why = why_not_shown(*r.scene); !why.empty()) {
+    s.scene_error = r.scene->name + ": " + why;
+    s.scene_not_shown = true;
     return false;
   }
   s.scene_error.clear();

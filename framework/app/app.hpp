@@ -61,10 +61,12 @@ struct AppState {
   std::filesystem::path scenes_dir;
   std::vector<session::SceneEntry> scenes;
   int scene_index = -1;
-  std::string open_path;    ///< the "open a file" text field
-  std::string scene_error;  ///< last load or --set error, shown in the panel
-  SceneSpec original;       ///< as loaded (the "reset to the scene's values" target)
-  SceneSpec edited;         ///< with the panel's changes
+  std::string open_path;         ///< the "open a file" text field
+  std::string scene_error;       ///< last load or --set error, shown in the panel
+  bool scene_not_shown = false;  ///< the last load was a scene this program cannot show (its
+                                 ///< kind plays frames, or no linked assignment simulates it)
+  SceneSpec original;            ///< as loaded (the "reset to the scene's values" target)
+  SceneSpec edited;              ///< with the panel's changes
   // simulation
   IntegratorKind integrator = IntegratorKind::ExplicitEuler;
   double dt = 0.001;
