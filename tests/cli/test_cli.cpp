@@ -4,6 +4,7 @@
 
 #include "display_column.hpp"
 #include "run_jelly.hpp"
+#include "test_folder.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -28,12 +29,7 @@ std::string file_text(const fs::path& p) {
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "cli" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = jelly::testing::fresh_test_folder("cli"); }
   // Writes a scene file with one line replaced (or appended) and returns its path.
   std::string variant(const std::string& from, const std::string& old_line,
                       const std::string& new_line) {

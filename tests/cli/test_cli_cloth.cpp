@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "run_jelly.hpp"
+#include "test_folder.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -27,12 +28,7 @@ bool has(const std::string& text, const std::string& part) {
 
 class CliCloth : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "cli-cloth" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = jelly::testing::fresh_test_folder("cli-cloth"); }
   fs::path dir_;
 };
 

@@ -10,6 +10,7 @@
 
 #include "jelly/manifest.hpp"
 #include "run_jelly.hpp"
+#include "test_folder.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,12 +25,7 @@ bool has(const std::string& text, const std::string& part) {
 
 class CliSkeleton : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "cli-skeleton" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = jelly::testing::fresh_test_folder("cli-skeleton"); }
   std::string out() const { return (dir_ / "out.csv").string(); }
   fs::path dir_;
 };

@@ -26,6 +26,7 @@
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/skeleton_tasks.hpp"
 #include "jelly/task_probe.hpp"
+#include "test_folder.hpp"
 
 namespace jelly {
 namespace {
@@ -148,12 +149,7 @@ struct Summary {
 
 class SkeletonPlay : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(JELLY_BINARY_DIR) / "artifacts" / "skeleton" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = jelly::testing::fresh_test_folder("skeleton"); }
   std::string summary_path() const { return (dir_ / "summary.csv").string(); }
 
   // Plays `scene` with the test's table (or `tasks`) and reads the summary it wrote.
