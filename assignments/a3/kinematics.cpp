@@ -4,6 +4,7 @@
 #include "jelly/a3/kinematics.hpp"
 
 #include "jelly/portable_math.hpp"
+#include "jelly/skeleton/rotation.hpp"
 
 namespace jelly::a3 {
 
@@ -23,7 +24,8 @@ void forward_kinematics(const skeleton::Skeleton& skeleton, const skeleton::Post
   out.end.assign(n, Vec3::Zero());
   // TODO(A3.T2): fill every bone's global rotation R_i, start s_i and end e_i: the root from
   // the posture's angles and translation, every other bone from its parent's R_p and e_p (visit
-  // a parent before its children). assignments/a3/handout/T2-forward-kinematics.md.
+  // a parent before its children). E(θ) is the framework's skeleton::euler_matrix.
+  // assignments/a3/handout/T2-forward-kinematics.md.
   (void)posture;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "jelly/portable_math.hpp"
+#include "jelly/skeleton/rotation.hpp"
 
 namespace jelly::a3 {
 
@@ -33,7 +34,7 @@ skeleton::Mat3 axis_rotation(double degrees, int k) {
 void place_bone(const skeleton::Skeleton& skeleton, const skeleton::Posture& posture, int i,
                 skeleton::BoneFrames& out) {
   const skeleton::Bone& bone = skeleton.bones[i];
-  const skeleton::Mat3 local = local_rotation(posture.angles[i]);
+  const skeleton::Mat3 local = skeleton::euler_matrix(posture.angles[i]);
   if (bone.parent < 0) {
     out.rotation[i] = local;
     out.start[i] = posture.root_translation;

@@ -4,7 +4,11 @@
 
 namespace jelly::grade {
 
-void register_assignment_cases(Registry& r) { (void)r; }
+void register_assignment_cases(Registry& r) {
+  register_kinematics_cases(r);
+  register_warp_cases(r);
+  register_blend_cases(r);
+}
 
 TaskTable assignment_task_table() { return a3::task_table(); }
 

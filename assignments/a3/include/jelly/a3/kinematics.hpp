@@ -18,8 +18,10 @@ skeleton::Mat3 local_rotation(const Vec3& degrees);
 /// `out.start` and `out.end` to the bone count and fills, for every bone i:
 /// - the root (bone 0): R_0 = E(θ_0), s_0 = e_0 = T (the posture's root translation);
 /// - bone i with parent p: R_i = R_p·C_i·E(θ_i), s_i = e_p, e_i = s_i + L_i·R_i·d_i,
-/// where θ_i = posture.angles[i] (zero for channels the bone lacks), and C_i, d_i, L_i are the
-/// bone's derived data (skeleton.bones[i].C, .d, .L). Any order that visits a parent before its
+/// where θ_i = posture.angles[i] (zero for channels the bone lacks), E is the framework's
+/// skeleton::euler_matrix (jelly/skeleton/rotation.hpp, the same E as your T1: use the framework's,
+/// so that a slip in T1 costs points in T1 only), and C_i, d_i, L_i are the bone's derived data
+/// (skeleton.bones[i].C, .d, .L). Any order that visits a parent before its
 /// children gives the same numbers (bones[i].children lists them; the file order does not
 /// promise it).
 void forward_kinematics(const skeleton::Skeleton& skeleton, const skeleton::Posture& posture,
