@@ -32,8 +32,9 @@ struct SkeletonInput {
 void prepare_skeleton_input(const Params& params, Json& input);
 
 /// The case's skeleton and motions: the prepared course files, or params.random = { seed, bones,
-/// frames, frames_b, scale, angle, translation, near } (a random tree, random axes, directions,
-/// lengths and dof orders; random postures, frames `near` degrees apart when given).
+/// frames, frames_b, scale, angle, translation, near, gimbal } (a random tree, random axes,
+/// directions, lengths and dof orders; random postures, frames `near` degrees apart when given,
+/// every ry at ±90° with gimbal = 1).
 SkeletonInput skeleton_input(const Params& params, const Json& input);
 
 /// The angles' rotations E(θ) (the framework's), one per bone: a posture's rotations compared as

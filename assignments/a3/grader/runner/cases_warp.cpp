@@ -111,10 +111,18 @@ std::vector<double> warp_times(const Params& params, int frames, std::string& ho
 
 void run_warped_posture(const TaskTable& t, const Params& params, const Json& input,
                         Outputs& out) {
-  const SkeletonInput in = skeleton_input(params, input);
+  SkeletonInput in = skeleton_input(params, input);
   std::string how;
   const std::vector<double> times =
       warp_times(params, static_cast<int>(in.motion.frames.size()), how);
+  // Past the last frame lies a frame with a NaN root and no angles, whose memory stays there: a
+  // read past the end (r not clamped at s = N − 1) gets NaN or stops on the missing angles every
+  // time, never a harmless copy times t = 0.
+  skeleton::Posture poison;
+  poison.root_translation = Vec3::Constant(std::nan(""));
+  in.motion.frames.reserve(in.motion.frames.size() + 1);
+  in.motion.frames.push_back(poison);
+  in.motion.frames.pop_back();
   // One posture for every output frame, as `jelly run` does: what it held before is no input.
   skeleton::Posture posture;
   for (std::size_t k = 0; k < times.size(); ++k) {
