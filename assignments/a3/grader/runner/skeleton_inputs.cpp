@@ -166,7 +166,7 @@ Motion random_motion(Sequence& r, const Skeleton& s, long frames, const Params& 
       m.frames.push_back(random_posture(r, s, angle, translation));
     }
   }
-  // gimbal = 1: every ry at ±90° exactly (gimbal lock, contract §11.9), + on even frames.
+  // gimbal = 1: every ry at ±90° exactly (gimbal lock, kinematics contract §11.9), + on even frames.
   if (p.integer("gimbal", 0) != 0)
     for (std::size_t f = 0; f < m.frames.size(); ++f)
       for (std::size_t b = 0; b < s.bones.size(); ++b)
