@@ -10,17 +10,18 @@ namespace jelly::a3 {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kHalfTurn = 3.14159265358979323846;  // π radians
 
 // (1 − w)·A + w·B: the translation lerped, each bone with channels slerped.
 skeleton::Posture mix(const skeleton::Skeleton& skeleton, const skeleton::Posture& a,
                       const skeleton::Posture& b, double w) {
   skeleton::Posture out = skeleton::Posture::zero(skeleton.bones.size());
   out.root_translation = (1.0 - w) * a.root_translation + w * b.root_translation;
-  for (std::size_t i = 0; i < skeleton.bones.size(); ++i) {
-    if (skeleton.bones[i].channels.empty()) continue;
-    out.angles[i] = skeleton::quaternion_to_euler(skeleton::slerp(
-        skeleton::euler_to_quaternion(a.angles[i]), skeleton::euler_to_quaternion(b.angles[i]), w));
+  for (std::size_t bone = 0; bone < skeleton.bones.size(); ++bone) {
+    if (skeleton.bones[bone].channels.empty()) continue;
+    const skeleton::Quaternion q_a = skeleton::euler_to_quaternion(a.angles[bone]);
+    const skeleton::Quaternion q_b = skeleton::euler_to_quaternion(b.angles[bone]);
+    out.angles[bone] = skeleton::quaternion_to_euler(skeleton::slerp(q_a, q_b, w));
   }
   return out;
 }
@@ -42,7 +43,7 @@ void blend_motions(const skeleton::Skeleton& skeleton, const skeleton::Motion& a
     moved.root_translation += delta;
     const int k = static_cast<int>(j) - blend.b;
     if (k < blend.window) {
-      const double w = (1.0 - portable::cos(kPi * (k + 1) / blend.window)) / 2.0;
+      const double w = (1.0 - portable::cos(kHalfTurn * (k + 1) / blend.window)) / 2.0;
       moved = mix(skeleton, a_motion.frames[blend.a + k], moved, w);
     }
     out.frames.push_back(moved);

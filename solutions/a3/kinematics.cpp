@@ -13,21 +13,20 @@ namespace jelly::a3 {
 
 namespace {
 
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+constexpr double kPiOver180 = 3.14159265358979323846 / 180.0;  // radians per degree
 
 // The right-handed rotation about axis k (0 = x, 1 = y, 2 = z) by `degrees`.
 skeleton::Mat3 axis_rotation(double degrees, int k) {
-  double s = 0.0, c = 0.0;
-  portable::sin_cos(degrees * kRadiansPerDegree, s, c);
-  skeleton::Mat3 r;
-  if (k == 0) {
-    r << 1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c;
-  } else if (k == 1) {
-    r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
-  } else {
-    r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
-  }
-  return r;
+  double sine = 0.0, cosine = 0.0;
+  portable::sin_cos(degrees * kPiOver180, sine, cosine);
+  // The plane the rotation turns: axes a → b (x → y about z, y → z about x, z → x about y).
+  const int a = (k + 1) % 3, b = (k + 2) % 3;
+  skeleton::Mat3 turn = skeleton::Mat3::Identity();
+  turn(a, a) = cosine;
+  turn(a, b) = -sine;
+  turn(b, a) = sine;
+  turn(b, b) = cosine;
+  return turn;
 }
 
 // Bone i's frame from its parent's (contract §4).
@@ -61,7 +60,7 @@ void forward_kinematics(const skeleton::Skeleton& skeleton, const skeleton::Post
   out.rotation.assign(n, skeleton::Mat3::Identity());
   out.start.assign(n, Vec3::Zero());
   out.end.assign(n, Vec3::Zero());
-  if (n == 0) return;
+  if (skeleton.bones.empty()) return;
   // Depth first from the root: a parent is placed before its children.
   std::vector<int> to_visit{0};
   while (!to_visit.empty()) {
