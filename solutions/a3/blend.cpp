@@ -34,8 +34,8 @@ void blend_motions(const skeleton::Skeleton& skeleton, const skeleton::Motion& a
   out.frames.clear();
   out.fps = a_motion.fps;
   out.first_frame_number = a_motion.first_frame_number;
-  Vec3 delta = a_motion.frames[blend.a].root_translation -
-               b_motion.frames[blend.b].root_translation;
+  Vec3 delta =
+      a_motion.frames[blend.a].root_translation - b_motion.frames[blend.b].root_translation;
   delta.y() = 0.0;
   for (int i = 0; i < blend.a; ++i) out.frames.push_back(a_motion.frames[i]);
   for (std::size_t j = blend.b; j < b_motion.frames.size(); ++j) {

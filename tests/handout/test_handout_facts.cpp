@@ -38,9 +38,9 @@
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/task_table.hpp"
-#include "jelly/cloth.hpp"
 #include "jelly/a3/kinematics.hpp"
 #include "jelly/a3/time_warp.hpp"
+#include "jelly/cloth.hpp"
 #include "jelly/cloth_physics.hpp"
 #include "jelly/cloth_tasks.hpp"
 #include "jelly/cube.hpp"
@@ -638,11 +638,15 @@ std::map<std::string, Fact> a3_facts() {
     const char *name, *amc;
     int frame;
     const char* bone;
-  } points[] = {{"ik.0.root", "IK.amc", 0, "root"},         {"ik.0.lowerback", "IK.amc", 0, "lowerback"},
-                {"ik.0.head", "IK.amc", 0, "head"},         {"ik.0.rfingers", "IK.amc", 0, "rfingers"},
-                {"walk.0.root", "walk.amc", 0, "root"},     {"walk.0.head", "walk.amc", 0, "head"},
+  } points[] = {{"ik.0.root", "IK.amc", 0, "root"},
+                {"ik.0.lowerback", "IK.amc", 0, "lowerback"},
+                {"ik.0.head", "IK.amc", 0, "head"},
+                {"ik.0.rfingers", "IK.amc", 0, "rfingers"},
+                {"walk.0.root", "walk.amc", 0, "root"},
+                {"walk.0.head", "walk.amc", 0, "head"},
                 {"walk.0.rfingers", "walk.amc", 0, "rfingers"},
-                {"walk.147.root", "walk.amc", 147, "root"}, {"walk.147.rfingers", "walk.amc", 147, "rfingers"}};
+                {"walk.147.root", "walk.amc", 147, "root"},
+                {"walk.147.rfingers", "walk.amc", 147, "rfingers"}};
   for (const auto& p : points)
     for (int k = 0; k < 3; ++k)
       f[std::string("fk.") + p.name + "." + "xyz"[k]] =

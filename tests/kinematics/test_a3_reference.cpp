@@ -117,9 +117,9 @@ TEST(A3Reference, TheTimeMapsEndsAndKeyframeLandExactly) {
        {uniform(148, 200), uniform(450, 450), uniform(2, 2), uniform(2, 7), uniform(301, 17),
         keyframe(450, 450, 160, 150), keyframe(450, 450, 150, 160), keyframe(3, 3, 1, 1),
         keyframe(148, 211, 13, 190)}) {
-    const std::string what = "N " + std::to_string(w.input_frames) + ", M " +
-                             std::to_string(w.output_frames) + ", K " +
-                             std::to_string(w.keyframe_in) + " -> " + std::to_string(w.keyframe_out);
+    const std::string what =
+        "N " + std::to_string(w.input_frames) + ", M " + std::to_string(w.output_frames) + ", K " +
+        std::to_string(w.keyframe_in) + " -> " + std::to_string(w.keyframe_out);
     EXPECT_EQ(a3::time_map(0, w), 0.0) << what;
     EXPECT_EQ(a3::time_map(w.output_frames - 1, w), w.input_frames - 1.0) << what;
     if (w.has_keyframe()) {
@@ -180,10 +180,11 @@ TEST(A3Reference, AWarpedPostureHalfwayIsTheSlerpAndTheLerp) {
   const Posture &l = walk.frames[10], &r = walk.frames[11];
   EXPECT_EQ(p.root_translation, 0.75 * l.root_translation + 0.25 * r.root_translation);
   const int humerus = bone(s, "rhumerus");
-  const skeleton::Quaternion want = skeleton::slerp(skeleton::euler_to_quaternion(l.angles[humerus]),
-                                                    skeleton::euler_to_quaternion(r.angles[humerus]),
-                                                    0.25);
-  EXPECT_TRUE(skeleton::same_rotation(skeleton::euler_to_quaternion(p.angles[humerus]), want, 1e-9));
+  const skeleton::Quaternion want =
+      skeleton::slerp(skeleton::euler_to_quaternion(l.angles[humerus]),
+                      skeleton::euler_to_quaternion(r.angles[humerus]), 0.25);
+  EXPECT_TRUE(
+      skeleton::same_rotation(skeleton::euler_to_quaternion(p.angles[humerus]), want, 1e-9));
   EXPECT_EQ(p.angles[bone(s, "lhipjoint")], Vec3::Zero()) << "a bone without channels";
 }
 
@@ -210,8 +211,8 @@ TEST(A3Reference, TheBlendKeepsAsPrefixMovesBsSuffixAndMixesTheWindow) {
     const double weight = (1.0 - portable::cos(3.14159265358979323846 * (w + 1) / k.window)) / 2.0;
     const Vec3 b_moved = run.frames[k.b + w].root_translation + delta;
     const Vec3 want = (1.0 - weight) * walk.frames[k.a + w].root_translation + weight * b_moved;
-    expect_near(out.frames[k.a + w].root_translation, want, 1e-15, "window frame " +
-                                                                       std::to_string(w));
+    expect_near(out.frames[k.a + w].root_translation, want, 1e-15,
+                "window frame " + std::to_string(w));
   }
   // The last window frame has weight 1: B' itself, as a rotation.
   Posture last_b = run.frames[k.b + k.window - 1];

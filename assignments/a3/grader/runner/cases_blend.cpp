@@ -27,8 +27,8 @@ void run_blend(const TaskTable& t, const Params& params, const Json& input, Outp
   skeleton_tasks(t).blend_motions(in.skeleton, in.motion, in.motion_b, k, blended);
   const std::string what = "the blend of " + in.words + " (A " +
                            std::to_string(in.motion.frames.size()) + " frames, B " +
-                           std::to_string(in.motion_b.frames.size()) + " frames, a = " +
-                           std::to_string(k.a) + ", b = " + std::to_string(k.b) +
+                           std::to_string(in.motion_b.frames.size()) +
+                           " frames, a = " + std::to_string(k.a) + ", b = " + std::to_string(k.b) +
                            ", W = " + std::to_string(k.window) + ")";
   out.value("frames", static_cast<double>(blended.frames.size()),
             "the number of frames of " + what + ": a + |B| − b");

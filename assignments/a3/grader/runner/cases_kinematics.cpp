@@ -52,7 +52,8 @@ void emit_frames(const std::string& prefix, const skeleton::BoneFrames& f, const
                  const std::string& bones, Outputs& out) {
   Vec3Array start(3, static_cast<Eigen::Index>(f.start.size()));
   Vec3Array end(3, static_cast<Eigen::Index>(f.end.size()));
-  for (std::size_t i = 0; i < f.start.size(); ++i) start.col(static_cast<Eigen::Index>(i)) = f.start[i];
+  for (std::size_t i = 0; i < f.start.size(); ++i)
+    start.col(static_cast<Eigen::Index>(i)) = f.start[i];
   for (std::size_t i = 0; i < f.end.size(); ++i) end.col(static_cast<Eigen::Index>(i)) = f.end[i];
   out.array(prefix + "_end", end,
             "every bone's end e_i of " + what + " ([particle i, …] is bone i" +

@@ -28,11 +28,11 @@ skeleton::TimeWarp warp_of(const Params& w) {
 }
 
 std::string warp_text(const skeleton::TimeWarp& w) {
-  std::string s = "a warp of N = " + std::to_string(w.input_frames) + " to M = " +
-                  std::to_string(w.output_frames) + " frames";
+  std::string s = "a warp of N = " + std::to_string(w.input_frames) +
+                  " to M = " + std::to_string(w.output_frames) + " frames";
   if (w.has_keyframe())
-    s += ", keyframe K_in = " + std::to_string(w.keyframe_in) + " -> K_out = " +
-         std::to_string(w.keyframe_out);
+    s += ", keyframe K_in = " + std::to_string(w.keyframe_in) +
+         " -> K_out = " + std::to_string(w.keyframe_out);
   else
     s += ", uniform";
   return s;
@@ -71,9 +71,9 @@ void run_time_map(const TaskTable& t, const Params& params, Outputs& out) {
     if (w.has_keyframe()) ends.push_back(s[static_cast<std::size_t>(w.keyframe_out)]);
     char name[32];
     std::snprintf(name, sizeof name, "w%02zu", k);
-    out.values(std::string(name) + "_s", s,
-               "s(i) for every output frame i = 0 … M − 1 of " + warp_text(w) +
-                   " (entry i is s(i))");
+    out.values(
+        std::string(name) + "_s", s,
+        "s(i) for every output frame i = 0 … M − 1 of " + warp_text(w) + " (entry i is s(i))");
     out.values(std::string(name) + "_exact", ends,
                "s(0) = 0 and s(M − 1) = N − 1" +
                    std::string(w.has_keyframe() ? ", then s(K_out) = K_in" : "") +
@@ -109,8 +109,7 @@ std::vector<double> warp_times(const Params& params, int frames, std::string& ho
   return s;
 }
 
-void run_warped_posture(const TaskTable& t, const Params& params, const Json& input,
-                        Outputs& out) {
+void run_warped_posture(const TaskTable& t, const Params& params, const Json& input, Outputs& out) {
   SkeletonInput in = skeleton_input(params, input);
   std::string how;
   const std::vector<double> times =

@@ -28,16 +28,22 @@ using skeleton::Posture;
 using skeleton::Skeleton;
 
 Json vec_json(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
-Vec3 json_vec(const Json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
+Vec3 json_vec(const Json& j) {
+  return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>());
+}
 
 Json skeleton_json(const Skeleton& s) {
   Json bones = Json::array();
   for (const Bone& b : s.bones) {
     Json channels = Json::array();
     for (Channel c : b.channels) channels.push_back(static_cast<int>(c));
-    bones.push_back({{"name", b.name}, {"parent", b.parent}, {"children", b.children},
-                     {"channels", channels}, {"direction", vec_json(b.direction)},
-                     {"length", b.length}, {"axis", vec_json(b.axis)}});
+    bones.push_back({{"name", b.name},
+                     {"parent", b.parent},
+                     {"children", b.children},
+                     {"channels", channels},
+                     {"direction", vec_json(b.direction)},
+                     {"length", b.length},
+                     {"axis", vec_json(b.axis)}});
   }
   return {{"scale", s.scale}, {"bones", bones}};
 }
@@ -83,7 +89,8 @@ Motion json_motion(const Json& j, std::size_t bones) {
     if (v.size() != 3 + 3 * bones) throw std::runtime_error("input: a frame of the wrong size");
     Posture p = Posture::zero(bones);
     p.root_translation = Vec3(v[0], v[1], v[2]);
-    for (std::size_t b = 0; b < bones; ++b) p.angles[b] = Vec3(v[3 + 3 * b], v[4 + 3 * b], v[5 + 3 * b]);
+    for (std::size_t b = 0; b < bones; ++b)
+      p.angles[b] = Vec3(v[3 + 3 * b], v[4 + 3 * b], v[5 + 3 * b]);
     m.frames.push_back(std::move(p));
   }
   return m;
@@ -166,7 +173,8 @@ Motion random_motion(Sequence& r, const Skeleton& s, long frames, const Params& 
       m.frames.push_back(random_posture(r, s, angle, translation));
     }
   }
-  // gimbal = 1: every ry at ±90° exactly (gimbal lock, kinematics contract §11.9), + on even frames.
+  // gimbal = 1: every ry at ±90° exactly (gimbal lock, kinematics contract §11.9), + on even
+  // frames.
   if (p.integer("gimbal", 0) != 0)
     for (std::size_t f = 0; f < m.frames.size(); ++f)
       for (std::size_t b = 0; b < s.bones.size(); ++b)
@@ -235,8 +243,8 @@ void emit_rotations(Outputs& out, const std::string& prefix,
     for (std::size_t i = 0; i < rotations.size(); ++i)
       column.col(static_cast<Eigen::Index>(i)) = rotations[i].col(c);
     out.array(prefix + "_axis_" + names[c], column,
-              std::string("every bone's ") + names[c] + " axis turned by " + what +
-                  " (column " + std::to_string(c) + " of the rotation; [particle i, …] is bone i)");
+              std::string("every bone's ") + names[c] + " axis turned by " + what + " (column " +
+                  std::to_string(c) + " of the rotation; [particle i, …] is bone i)");
   }
 }
 
