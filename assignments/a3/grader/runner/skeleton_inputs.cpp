@@ -135,7 +135,7 @@ Skeleton random_skeleton(Sequence& r, int bones, double scale) {
     Vec3 d = r.next3();
     if (d.norm() < 1e-2) d = Vec3(0.0, 1.0, 0.0);
     b.direction = d.normalized();
-    b.length = below(r, 8) == 0 ? 0.0 : 3.0 + 2.5 * r.next();
+    b.length = below(r, 8) == 0 ? 0.0 : (11.0 + 5.0 * r.next()) / 2.0;  // 0 or in [3, 8)
     b.axis = 180.0 * r.next3();
     const long dofs = below(r, 5);  // 0 … 3 channels, 3 twice as often
     for (int c : shuffled(r, 3))
