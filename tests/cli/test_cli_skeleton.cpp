@@ -126,4 +126,31 @@ TEST_F(CliSkeleton, RunWithSkeletonTasksWritesARowPerFrameAndBone) {
   EXPECT_EQ(rows, 450 * 31);
 }
 
+// The forward kinematics scene through the reference: kinematics contract §8's frame 0 of walk.amc
+// in the summary (rfingers, bone 29, ends at (2.06460, 2.78074, −3.81936)).
+TEST_F(CliSkeleton, RunOfTheFkSceneWritesTheContractsNumbers) {
+  if (!an_assignment_simulates_the_skeleton()) GTEST_SKIP() << "no assignment fills the slots";
+  if (std::string(JELLY_CLI_TASKS) != "solutions") GTEST_SKIP() << "needs the reference tasks";
+  const Result r = jelly("run " + scene("hw2-fk-2022.toml") + " --summary " + out());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "played 148 of 148 frames")) << r.output;
+  std::ifstream in(out());
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "frame,bone,name,start_x,start_y,start_z,end_x,end_y,end_z");
+  bool found = false;
+  while (std::getline(in, line))
+    if (line.rfind("0,29,rfingers,", 0) == 0) {
+      found = true;
+      std::istringstream row(line.substr(14));
+      double v[6] = {};
+      char comma = 0;
+      for (int k = 0; k < 6; ++k) row >> v[k] >> comma;
+      EXPECT_NEAR(v[3], 2.06460, 1e-5) << line;
+      EXPECT_NEAR(v[4], 2.78074, 1e-5) << line;
+      EXPECT_NEAR(v[5], -3.81936, 1e-5) << line;
+    }
+  EXPECT_TRUE(found) << "no row of rfingers at frame 0";
+}
+
 }  // namespace

@@ -2,7 +2,8 @@
 // 20 for A2): spring counts from the reference builders, free-fall heights and orders of
 // convergence by simulating, stability limits by running the detector, points from each
 // assignment's manifest, the course scenes' coefficients from the framework (A1) or the scene files
-// (A2), impulses from the A2 reference. Each assignment has its own facts (a1_facts, a2_facts): in
+// (A2), impulses from the A2 reference, forward kinematics and the time map from the A3 reference.
+// Each assignment has its own facts (a1_facts, a2_facts, a3_facts): in
 // assignments/ID/handout/*.md a quoted number carries a tag right after it, invisible in the
 // rendered page:
 //
@@ -28,6 +29,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,8 @@
 #include "jelly/a2/collision.hpp"
 #include "jelly/a2/friction.hpp"
 #include "jelly/a2/task_table.hpp"
+#include "jelly/a3/kinematics.hpp"
+#include "jelly/a3/time_warp.hpp"
 #include "jelly/cloth.hpp"
 #include "jelly/cloth_physics.hpp"
 #include "jelly/cloth_tasks.hpp"
@@ -43,6 +47,7 @@
 #include "jelly/cube_scene.hpp"
 #include "jelly/cube_tasks.hpp"
 #include "jelly/simulator.hpp"
+#include "jelly/skeleton/skeleton_files.hpp"
 #include "jelly/spheres.hpp"
 #include "jelly/world.hpp"
 #include "scenes_in_code.hpp"
@@ -611,6 +616,55 @@ std::map<std::string, Fact> a2_facts() {
   return f;
 }
 
+// A3's forward kinematics of one course posture (the reference, scale 0.2): bone `bone`'s end, or
+// the root's start.
+Vec3 a3_course_point(const std::string& amc, int frame, const std::string& bone) {
+  const fs::path mocap = kSource / "data" / "mocap";
+  const skeleton::SkeletonResult s = skeleton::read_asf(mocap / "skeleton.asf", 0.2);
+  if (!s) throw std::runtime_error(s.error->text());
+  const skeleton::MotionResult m = skeleton::read_amc(mocap / amc, *s.skeleton);
+  if (!m) throw std::runtime_error(m.error->text());
+  skeleton::BoneFrames f;
+  a3::forward_kinematics(*s.skeleton, m.motion->frames.at(static_cast<std::size_t>(frame)), f);
+  const int i = s.skeleton->find(bone).value();
+  return bone == "root" ? f.start[static_cast<std::size_t>(i)] : f.end[static_cast<std::size_t>(i)];
+}
+
+// A3 (forward kinematics and time warping): the kinematics contract's §8 numbers from the
+// reference's forward kinematics, the time map's examples, the points.
+std::map<std::string, Fact> a3_facts() {
+  std::map<std::string, Fact> f;
+  const struct {
+    const char *name, *amc;
+    int frame;
+    const char* bone;
+  } points[] = {{"ik.0.root", "IK.amc", 0, "root"},
+                {"ik.0.lowerback", "IK.amc", 0, "lowerback"},
+                {"ik.0.head", "IK.amc", 0, "head"},
+                {"ik.0.rfingers", "IK.amc", 0, "rfingers"},
+                {"walk.0.root", "walk.amc", 0, "root"},
+                {"walk.0.head", "walk.amc", 0, "head"},
+                {"walk.0.rfingers", "walk.amc", 0, "rfingers"},
+                {"walk.147.root", "walk.amc", 147, "root"},
+                {"walk.147.rfingers", "walk.amc", 147, "rfingers"}};
+  for (const auto& p : points)
+    for (int k = 0; k < 3; ++k)
+      f[std::string("fk.") + p.name + "." + "xyz"[k]] =
+          value([p, k] { return a3_course_point(p.amc, p.frame, p.bone)[k]; });
+  f["time.retime.s1"] = value([] { return a3::time_map(1, {148, 200, -1, -1}); });
+  f["time.retime.s100"] = value([] { return a3::time_map(100, {148, 200, -1, -1}); });
+  f["time.punch.s151"] = value([] { return a3::time_map(151, {450, 450, 160, 150}); });
+  f["points.autograded"] = points_value([] { return rubric_of("a3").total; });
+  f["points.report"] = points_value([] { return rubric_of("a3").hand; });
+  f["points.bonus"] = points_value([] { return rubric_of("a3").bonus; });
+  f["points.fk"] = points_value([] { return rubric_of("a3").category.at("forward kinematics"); });
+  f["points.warp"] = points_value([] { return rubric_of("a3").category.at("time warping"); });
+  for (const char* id : {"A3.T1", "A3.T2", "A3.T3", "A3.T4"})
+    f[std::string("points.") + id] =
+        points_value([id = std::string(id)] { return rubric_of("a3").task.at(id); });
+  return f;
+}
+
 struct Tag {
   std::string file, fact, number;
   int line = 0;
@@ -624,9 +678,10 @@ std::vector<std::string> lines_of(const fs::path& p) {
 }
 
 // The assignments whose handouts this test checks, with their facts.
-const std::vector<std::string> kAssignments = {"a1", "a2"};
+const std::vector<std::string> kAssignments = {"a1", "a2", "a3"};
 
 std::map<std::string, Fact> facts(const std::string& id) {
+  if (id == "a3") return a3_facts();
   return id == "a1" ? a1_facts() : a2_facts();
 }
 

@@ -4,8 +4,9 @@
 #   - a heading "### Tolerance `NAME`" for every [tolerance.NAME] of the assignment's
 #     grader/cases/tolerances.toml, whose first paragraph starts "atol A, rtol R" with the file's
 #     numbers (so a changed tolerance fails here until the page says so);
-#   - a heading "### Contract §N" / "### Cloth contract §N" for every "contract §N" (with "physics "
-#     or "cloth " before it, or nothing) in the case files and the runner's case code;
+#   - a heading "### Name contract §N" for every "name contract §N" whose name is one of the
+#     manifest's `contracts` (cloth, kinematics), and "### Contract §N" for every other
+#     "contract §N" (the physics contract), in the case files and the runner's case code;
 #   - the handout's README links the page.
 # The report's links point at these headings' anchors (tolerance-NAME, contract-N,
 # cloth-contract-N: grader/src/reports/report.cpp, find_terms).
@@ -33,13 +34,18 @@ for n in $names; do
     fail=1
   fi
 done
+# The manifest's contracts (one line `contracts = ["cloth"]`); any other word before "contract §N"
+# is prose ("the contract §9"): the physics contract.
+contracts=" $(sed -n 's/^contracts[[:space:]]*=[[:space:]]*\[\(.*\)\][[:space:]]*$/\1/p' "$root/assignments/$id/assignment.toml" | tr -d '",') "
 while IFS= read -r term; do
-  case "$term" in
-    "cloth contract §"*) h="### Cloth contract §${term#cloth contract §}" ;;
-    *) h="### Contract §${term##*§}" ;;
-  esac
+  name="${term%%contract §*}"; name="${name% }"
+  if [ -n "$name" ] && [[ "$contracts" == *" $name "* ]]; then
+    h="### ${name^} contract §${term##*§}"
+  else
+    h="### Contract §${term##*§}"
+  fi
   grep -qxF "$h" "$page" || { echo "check_terms_page: $page: no \"$h\" heading (\"$term\" is in the grader's cases)"; fail=1; }
-done < <(grep -rhoE '(cloth |physics )?contract §[0-9]+' "$root/assignments/$id/grader/cases" "$root/assignments/$id/grader/runner" | sort -u)
+done < <(grep -rhoE '([a-z-]+ )?contract §[0-9]+' "$root/assignments/$id/grader/cases" "$root/assignments/$id/grader/runner" | sort -u)
 grep -q '(reading-your-report.md)' "$root/assignments/$id/handout/README.md" ||
   { echo "check_terms_page: assignments/$id/handout/README.md does not link reading-your-report.md"; fail=1; }
 [ "$fail" = 0 ] && echo "check_terms_page: $id: every tolerance and contract section is explained"
