@@ -29,12 +29,14 @@ std::string fmt(double v) {
   return buf;
 }
 
-// "element 13 (particle 4, y)" for arrays of 3-vectors.
-std::string element_name(std::size_t k, std::size_t n) {
+// Entry k of n: " (y)" of a 3-vector, " [particle 4, y]" of a 3×N array whose columns the
+// case calls `word` (its `element`, "particle" unless the case file says), else " [13]".
+std::string element_name(std::size_t k, std::size_t n, const std::string& word) {
   static const char* axis[] = {"x", "y", "z"};
   if (n == 1) return "";
   if (n == 3) return std::string(" (") + axis[k] + ")";
-  if (n % 3 == 0) return " [particle " + std::to_string(k / 3) + ", " + axis[k % 3] + "]";
+  if (n % 3 == 0 && !word.empty())
+    return " [" + word + " " + std::to_string(k / 3) + ", " + axis[k % 3] + "]";
   return " [" + std::to_string(k) + "]";
 }
 
@@ -57,7 +59,8 @@ std::string describe_syscall_purpose(const std::string& name) {
 
 // Judges one output; appends failures. Returns false on failure.
 bool judge(const std::string& name, const Json& mine, const Json& ref, const Rule& rule,
-           const std::map<std::string, Tolerance>& tols, std::vector<std::string>& failures) {
+           const std::string& word, const std::map<std::string, Tolerance>& tols,
+           std::vector<std::string>& failures) {
   const std::string note = ref.value("note", std::string());
   const std::string what = note.empty() ? name : name + " — " + note;
   if (rule.kind == Rule::Kind::Info) return true;
@@ -87,7 +90,7 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   if (rule.kind == Rule::Kind::Range) {
     for (std::size_t k = 0; k < a.size(); ++k)
       if (!(a[k] >= rule.lo && a[k] <= rule.hi)) {
-        failures.push_back(what + element_name(k, a.size()) + ": got " +
+        failures.push_back(what + element_name(k, a.size(), word) + ": got " +
                            (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity")) +
                            ", expected between " + fmt(rule.lo) + " and " + fmt(rule.hi));
         return false;
@@ -116,7 +119,7 @@ bool judge(const std::string& name, const Json& mine, const Json& ref, const Rul
   if (bad == 0) return true;
   const std::size_t k = std::isfinite(a[first]) ? worst : first;
   std::string msg =
-      what + element_name(k, a.size()) + ": expected " + fmt(b[k]) + ", got " +
+      what + element_name(k, a.size(), word) + ": expected " + fmt(b[k]) + ", got " +
       (std::isfinite(a[k]) ? fmt(a[k]) : std::string("NaN or infinity (not a number)"));
   if (std::isfinite(a[k]))
     msg += " (difference " + fmt(std::abs(a[k] - b[k])) + ", allowed " +
@@ -296,7 +299,7 @@ void judge_outputs(CaseResult& r, const CaseBook& book) {
   for (const auto& [name, refout] : r.reference.items()) {
     const Json mine = r.outputs.contains(name) ? r.outputs[name] : Json();
     ok = judge(name, mine.is_object() ? mine : Json(), refout, r.spec->rule_for(name),
-               book.tolerances, r.failures) &&
+               r.spec->element, book.tolerances, r.failures) &&
          ok;
   }
   if (!ok) say_blow_up_plainly(r);
@@ -621,8 +624,9 @@ void add_up(GradeReport& rep) {
 GradeReport grade_submission(const GradeConfig& config, const CaseBook& book,
                              const fs::path& submission, const fs::path& requested_work_dir,
                              const GradeOptions& options) {
-  // User mode: a private folder of the sandbox that no other submission's runs can read.
-  const Workspace workspace(options.isolation, requested_work_dir);
+  // User mode: a private folder of the sandbox that no other submission's runs can read. Absolute:
+  // the compiler, the linker and the runs start in other folders (`--out` may be relative).
+  const Workspace workspace(options.isolation, fs::absolute(requested_work_dir));
   const fs::path& work_dir = workspace.dir();
   GradeReport rep;
   rep.submission = submission.string();

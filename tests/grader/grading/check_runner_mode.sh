@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `jelly-grade grade DIR --runner RUNNER` (the self-check's prebuilt-runner mode) gives the same
-# report as the grader compiling DIR itself, and says there is no sandbox; --strict's exit status
+# report as the grader compiling DIR itself (with the default, relative --out), and says there is
+# no sandbox; --strict's exit status
 # is the pass/fail the `selfcheck` target reports.
 #
 #   check_runner_mode.sh JELLY_GRADE DIR RUNNER WORK zero|full
@@ -13,7 +14,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 fail() { echo "check_runner_mode: FAILED: $*"; exit 1; }
 rm -rf "$work"
 mkdir -p "$work"
-"$grade" grade "$dir" --visibility public --format terminal --out "$work/compiled" >"$work/compiled.txt" 2>&1 ||
+# The compile path as the handouts write it: no --out, so the default, relative grade-results/ of
+# the folder it runs in (the compiler and the linker run in other folders).
+(cd "$work" && "$grade" grade "$dir" --visibility public --format terminal) >"$work/compiled.txt" 2>&1 ||
   { cat "$work/compiled.txt"; fail "the compile path failed"; }
 "$grade" grade "$dir" --runner "$runner" --visibility public --format terminal --out "$work/runner" --strict \
   >"$work/runner.txt" 2>&1
