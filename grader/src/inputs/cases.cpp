@@ -236,6 +236,7 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
       c.timeout_s = t["timeout"].value_or(0.0);
       c.tolerance = t["tolerance"].value_or(std::string());
       c.generator = t["generator"].value_or(std::string());
+      c.element = t["element"].value_or(c.element);
       const std::string vis = t["visibility"].value_or(std::string("public"));
       const std::string ctx = where(f.string(), n, "case " + c.id);
       if (c.id.empty() || c.task.empty() || c.generator.empty())

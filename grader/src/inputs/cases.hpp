@@ -39,8 +39,10 @@ struct CaseSpec {
   std::string title;    ///< one line for reports
   double weight = 1.0;  ///< share of its task's points
   bool hidden = false;
-  double timeout_s = 0.0;        ///< 0: the command-line default
-  std::string generator;         ///< the runner's case generator (runner --list)
+  double timeout_s = 0.0;  ///< 0: the command-line default
+  std::string generator;   ///< the runner's case generator (runner --list)
+  /// What a column of a 3×N output is in messages ("[bone 4, y]"); "" numbers entries alone.
+  std::string element = "particle";
   Json params = Json::object();  ///< the generator's parameters: every input the case feeds the
                                  ///< student's code
   std::string tolerance;         ///< default rule for every output

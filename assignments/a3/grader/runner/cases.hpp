@@ -41,7 +41,8 @@ SkeletonInput skeleton_input(const Params& params, const Json& input);
 /// rotations, never as Euler triples.
 std::vector<skeleton::Mat3> posture_rotations(const std::vector<Vec3>& angles);
 /// Emits `prefix`_axis_x, _axis_y, _axis_z: every bone's rotated x, y and z axes (the rotations'
-/// columns), so that the report's "[particle i, x]" is bone i's. `what` says whose rotations.
+/// columns); the cases' `element = "bone"` names a column "[bone i, x]" in the report. `what` says
+/// whose rotations.
 void emit_rotations(Outputs& out, const std::string& prefix,
                     const std::vector<skeleton::Mat3>& rotations, const std::string& what);
 /// "root, lhipjoint, lfemur, …" (bones in file order) for notes.

@@ -56,10 +56,9 @@ void emit_frames(const std::string& prefix, const skeleton::BoneFrames& f, const
     start.col(static_cast<Eigen::Index>(i)) = f.start[i];
   for (std::size_t i = 0; i < f.end.size(); ++i) end.col(static_cast<Eigen::Index>(i)) = f.end[i];
   out.array(prefix + "_end", end,
-            "every bone's end e_i of " + what + " ([particle i, …] is bone i" +
-                (bones.empty() ? std::string(")") : "; bones " + bones + ")"));
-  out.array(prefix + "_start", start,
-            "every bone's start s_i of " + what + " ([particle i, …] is bone i)");
+            "every bone's end e_i of " + what +
+                (bones.empty() ? std::string() : " (bones " + bones + ")"));
+  out.array(prefix + "_start", start, "every bone's start s_i of " + what);
   emit_rotations(out, prefix, f.rotation, "its global rotation R_i in " + what);
 }
 

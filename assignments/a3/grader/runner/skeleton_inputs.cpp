@@ -244,7 +244,7 @@ void emit_rotations(Outputs& out, const std::string& prefix,
       column.col(static_cast<Eigen::Index>(i)) = rotations[i].col(c);
     out.array(prefix + "_axis_" + names[c], column,
               std::string("every bone's ") + names[c] + " axis turned by " + what + " (column " +
-                  std::to_string(c) + " of the rotation; [particle i, …] is bone i)");
+                  std::to_string(c) + " of the rotation)");
   }
 }
 
