@@ -9,7 +9,7 @@
 //       of punch_kick.amc per iteration (all 450 in turn), ns. impl: reference (A3's,
 //       solutions/a3/kinematics.cpp, portable sines), plain (the same tree walk with Eigen's
 //       AngleAxisd products: the C library's sin and cos)
-//   BM_ReadAmc/<impl>      data/mocap/punch_kick.amc read into a Motion (the skeleton read once), ms.
+//   BM_ReadAmc/<impl>      data/mocap/punch_kick.amc read into a Motion (skeleton read once), ms.
 //       impl: reference (skeleton::read_amc: tokens, checks, errors), plain (std::ifstream and
 //       operator>>, no checks)
 //   BM_Warp/<impl>         the 2022 scene's keyframe warp: punch_kick 450 → 450 frames, K_in 160 →
@@ -349,7 +349,8 @@ void read_amc(benchmark::State& state, Read read) {
 
 void BM_ReadAmc_reference(benchmark::State& s) {
   read_amc(s, [](const skeleton::Skeleton& sk) {
-    skeleton::MotionResult r = skeleton::read_amc(JELLY_SOURCE_DIR "/data/mocap/punch_kick.amc", sk);
+    skeleton::MotionResult r =
+        skeleton::read_amc(JELLY_SOURCE_DIR "/data/mocap/punch_kick.amc", sk);
     return r ? std::move(*r.motion) : skeleton::Motion{};
   });
 }
@@ -390,8 +391,8 @@ void plain_warped_posture(const skeleton::Skeleton& sk, const skeleton::Motion& 
       (1.0 - t) * in.frames[l].root_translation + t * in.frames[r].root_translation;
   for (std::size_t b = 0; b < sk.bones.size(); ++b) {
     if (sk.bones[b].channels.empty()) continue;
-    const Eigen::Quaterniond q = plain_quaternion(in.frames[l].angles[b])
-                                     .slerp(t, plain_quaternion(in.frames[r].angles[b]));
+    const Eigen::Quaterniond q =
+        plain_quaternion(in.frames[l].angles[b]).slerp(t, plain_quaternion(in.frames[r].angles[b]));
     const Vec3 zyx = q.toRotationMatrix().eulerAngles(2, 1, 0) / kRadiansPerDegree;
     out.angles[b] = Vec3(zyx.z(), zyx.y(), zyx.x());
   }

@@ -298,7 +298,8 @@ bool moderate(double a) { return a >= 0x1p-300 && a <= 0x1p300; }
 
 double sin(double x) {
   const double ax = std::fabs(x);
-  if (!(ax >= kSinFastMin && ax <= 0x1p20)) return detail::sin_accurate(x);  // 0, tiny, huge, ∞, NaN
+  // 0, tiny, huge, ∞, NaN: the accurate path
+  if (!(ax >= kSinFastMin && ax <= 0x1p20)) return detail::sin_accurate(x);
   const Reduced red = reduce_fast(x);
   double out = 0.0;
   return sin_shifted(red, split(red.r), 0, out) ? out : detail::sin_accurate(x);
