@@ -2,14 +2,16 @@
 // accurate path's bits for every argument: it is compared with portable::detail::*_accurate on a
 // few hundred thousand arguments drawn (with a fixed seed) across the ranges the course meets and
 // the ones where rounding is hardest: |x| up to 10⁶, angles in degrees converted to radians, tiny
-// and huge arguments, arguments within a few ulps of multiples of π/2, ratios y/x of every scale
-// for atan2 and near ±1 for asin and acos. Needs no task: part of the stub suite.
+// (down to 2⁻⁵²⁰, and motion capture's ≈ 10⁻¹³ degrees) and huge arguments, arguments within a few
+// ulps of multiples of π/2, ratios y/x of every scale for atan2 and near ±1 for asin and acos.
+// Needs no task: part of the stub suite.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "jelly/portable_math.hpp"
 
@@ -82,6 +84,28 @@ TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
   }
   for (double x : {0.0, -0.0, 0x1p-1074, -0x1p-1030, 0x1p-26, 0x1.fffffffffffffp-27, 0x1p28, 1e7,
                    1e300, kHalfPi, 2 * kHalfPi, 0.78, -0.78, 0x1.8fffffffffffp-1}) {
+    EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
+    EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
+    double s = 0.0, c = 0.0;
+    portable::sin_cos(x, s, c);
+    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
+    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+  }
+}
+
+// Tiny arguments, where the sine's fast path starts at 2⁻⁵⁰⁰ (motion capture's ≈ 10⁻¹³ degrees)
+// and its cubic term underflows. The last fixed one is 10⁻¹³ degrees in radians.
+TEST(PortableMathFast, TinyArgumentsGiveTheAccuratePathsBits) {
+  Draw d;
+  std::vector<double> args = {0x1p-500,
+                              -0x1p-500,
+                              0x1.fffffffffffffp-501,
+                              0x1.fffffffffffffp-500,
+                              0x1p-340,
+                              -1.7453292519943295e-15};
+  for (int i = 0; i < 20000; ++i)
+    args.push_back(i % 2 == 0 ? d.log_uniform(-520, -20) : d.sym(1e-12) * kRadiansPerDegree);
+  for (double x : args) {
     EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
     EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
     double s = 0.0, c = 0.0;
