@@ -278,6 +278,80 @@ TEST_F(SkeletonPlay, DurationAndEveryChooseTheFramesWritten) {
   EXPECT_EQ(s.rows[kBones][0], "10");
 }
 
+// ----- only what the scene calls for (contract §10): every slot's calls, counted -----
+
+struct SlotCalls {
+  int local_rotation = 0, forward_kinematics = 0, time_map = 0, warped_posture = 0, blend = 0;
+};
+SlotCalls g_calls;
+
+/// The test's table with every slot wrapped in a counter of its calls (g_calls).
+TaskTable counting_table() {
+  g_calls = SlotCalls{};
+  TaskTable t;
+  SkeletonTasks& k = skeleton_tasks(t);
+  k.local_rotation = [](const Vec3& d) {
+    ++g_calls.local_rotation;
+    return test_e(d);
+  };
+  k.forward_kinematics = [](const Skeleton& s, const Posture& p, BoneFrames& out) {
+    ++g_calls.forward_kinematics;
+    test_fk(s, p, out);
+  };
+  k.time_map = [](int i, const skeleton::TimeWarp& w) {
+    ++g_calls.time_map;
+    return test_time_map(i, w);
+  };
+  k.warped_posture = [](const Skeleton& s, const Motion& in, double time, Posture& out) {
+    ++g_calls.warped_posture;
+    test_warped_posture(s, in, time, out);
+  };
+  k.blend_motions = [](const Skeleton& s, const Motion& a, const Motion& b,
+                       const skeleton::Blend& blend, Motion& out) {
+    ++g_calls.blend;
+    test_blend(s, a, b, blend, out);
+  };
+  return t;
+}
+
+TEST_F(SkeletonPlay, PlaybackCallsForwardKinematicsOncePerFrameAndNoWarp) {
+  play(course_scene("hw2-fk-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.forward_kinematics, 148);  // walk.amc's frames
+  EXPECT_EQ(g_calls.time_map, 0);
+  EXPECT_EQ(g_calls.warped_posture, 0);
+  EXPECT_EQ(g_calls.blend, 0);
+  EXPECT_EQ(g_calls.local_rotation, 0);  // FK's own business, not the frame loop's
+}
+
+TEST_F(SkeletonPlay, AWarpCallsEachTaskOncePerOutputFrame) {
+  play(course_scene("hw2-warp-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.time_map, 450);
+  EXPECT_EQ(g_calls.warped_posture, 450);
+  EXPECT_EQ(g_calls.forward_kinematics, 450);  // one drawing of each output frame
+  EXPECT_EQ(g_calls.blend, 0);
+  play(course_scene("hw2-retime-2023.toml"), counting_table());
+  EXPECT_EQ(g_calls.time_map, 200);
+  EXPECT_EQ(g_calls.warped_posture, 200);
+  EXPECT_EQ(g_calls.forward_kinematics, 200);
+}
+
+TEST_F(SkeletonPlay, ABlendIsMadeOnceAndDrawnOncePerFrame) {
+  play(course_scene("hw2-blend-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.blend, 1);
+  EXPECT_EQ(g_calls.forward_kinematics, 274);  // a + |B| − b = 127 + 148 − 1
+  EXPECT_EQ(g_calls.time_map, 0);
+  EXPECT_EQ(g_calls.warped_posture, 0);
+}
+
+TEST_F(SkeletonPlay, AShortenedRunComputesOnlyTheFramesItPlays) {
+  SceneSpec scene = course_scene("hw2-warp-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "simulation.duration", "0.5").has_value());
+  kind().play(scene, counting_table(), {"", 1});  // no summary: the same work
+  EXPECT_EQ(g_calls.time_map, 61);  // frames i with i / 120 ≤ 0.5, not M = 450
+  EXPECT_EQ(g_calls.warped_posture, 61);
+  EXPECT_EQ(g_calls.forward_kinematics, 61);
+}
+
 // ----- what is refused -----
 
 std::string play_error(const SceneSpec& scene, const TaskTable& tasks, const std::string& path) {
