@@ -3,7 +3,7 @@
 // from the kinematics contract (§3–§5) with Eigen's angle-axis rotations and slerp: an independent
 // check of the kind's frame loop, its summary and the contract's §8 numbers. Also: each argument
 // the contract calls an error, once the motion is read; a slot not filled; a task that returns a
-// wrong answer.
+// wrong answer. And the skeleton's accuracy study (skeleton_study.cpp), on the same table.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -26,6 +26,7 @@
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/skeleton_tasks.hpp"
 #include "jelly/task_probe.hpp"
+#include "skeleton_study.hpp"
 #include "test_folder.hpp"
 
 namespace jelly {
@@ -347,9 +348,72 @@ TEST_F(SkeletonPlay, AShortenedRunComputesOnlyTheFramesItPlays) {
   SceneSpec scene = course_scene("hw2-warp-2022.toml");
   ASSERT_FALSE(set_parameter(scene, "simulation.duration", "0.5").has_value());
   kind().play(scene, counting_table(), {"", 1});  // no summary: the same work
-  EXPECT_EQ(g_calls.time_map, 61);  // frames i with i / 120 ≤ 0.5, not M = 450
+  EXPECT_EQ(g_calls.time_map, 61);                // frames i with i / 120 ≤ 0.5, not M = 450
   EXPECT_EQ(g_calls.warped_posture, 61);
   EXPECT_EQ(g_calls.forward_kinematics, 61);
+}
+
+// ----- the accuracy study: slerp against the Euler lerp (docs/skeleton-studies.md) -----
+
+TEST(SkeletonStudy, RotationAngleIsTheAngleBetweenTheRotations) {
+  using bodies::rotation_angle_degrees;
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(0, 0, 30)), 30.0, 1e-12);
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(10, 20, 30), Vec3(370, 20, 30)), 0.0, 1e-12);  // q, −q
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(1e-7, 0, 0)), 1e-7, 1e-15);
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(0, 0, 190)), 170.0, 1e-12);
+}
+
+TEST_F(SkeletonPlay, TheStudyComparesSlerpWithTheEulerLerpOnTheScenesWarp) {
+  const SceneSpec scene = course_scene("hw2-warp-2022.toml");
+  const bodies::SkeletonInputs in = bodies::read_skeleton_inputs(scene);
+  const skeleton::TimeWarp warp{450, 450, 160, 150};
+  const bodies::InterpolationStudy st =
+      bodies::study_interpolation(in, warp, skeleton_tasks(test_table()), 1);
+  ASSERT_EQ(st.bones.size(), 29u);  // lhipjoint and rhipjoint have no channels
+  ASSERT_EQ(st.frame_max_degrees.size(), 450u);
+  int whole = 0;
+  for (int i = 0; i < 450; ++i)
+    if (st.frame_s[i] == std::floor(st.frame_s[i])) {
+      ++whole;
+      EXPECT_LT(st.frame_max_degrees[i], 1e-9) << "an input frame itself, output frame " << i;
+    }
+  EXPECT_EQ(whole, 12);
+  EXPECT_GT(st.max_degrees, 1e-3) << "the shortcut is not slerp";
+  EXPECT_LT(st.max_degrees, 1.0) << "neighbouring frames at 120 fps";
+  EXPECT_GT(st.mean_degrees, 0.0);
+  EXPECT_LT(st.mean_degrees, st.max_degrees);
+  // The reported worst bone and frame give the reported angle, recomputed here.
+  Posture slerped = Posture::zero(kBones), lerped;
+  test_warped_posture(in.skeleton, in.motion, st.frame_s[st.worst_frame], slerped);
+  bodies::euler_lerp_posture(in.motion, st.frame_s[st.worst_frame], lerped);
+  EXPECT_EQ(
+      bodies::rotation_angle_degrees(slerped.angles[st.worst_bone], lerped.angles[st.worst_bone]),
+      st.max_degrees);
+  bodies::euler_lerp_posture(in.motion, 10.25, lerped);
+  EXPECT_EQ(lerped.angles[5],
+            0.75 * in.motion.frames[10].angles[5] + 0.25 * in.motion.frames[11].angles[5]);
+}
+
+TEST_F(SkeletonPlay, TheStudyWritesItsTablesAndRefusesAPlayback) {
+  const std::string prefix = (dir_ / "study").string();
+  const std::string report =
+      bodies::study_skeleton_scene(course_scene("hw2-retime-2023.toml"), test_table(), prefix, 1);
+  EXPECT_NE(report.find("148 -> 200 frames, 29 bones with channels"), std::string::npos) << report;
+  const auto lines = [](const std::string& path) {
+    std::ifstream in(path);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+  };
+  EXPECT_EQ(lines(prefix + "-bones.csv"), 1 + 29);
+  EXPECT_EQ(lines(prefix + "-frames.csv"), 1 + 200);
+  try {
+    bodies::study_skeleton_scene(course_scene("hw2-fk-2022.toml"), test_table(), prefix, 1);
+    ADD_FAILURE() << "a playback has no warp to study";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("body.mode = \"playback\""), std::string::npos)
+        << e.what();
+  }
 }
 
 // ----- what is refused -----
