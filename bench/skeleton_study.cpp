@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
     if (const auto error = set_assignment(scene, set)) return cmd.error(error->text());
   if (prefix.empty()) prefix = "study-" + scene.name;
   try {
-    std::fputs(bodies::study_skeleton_scene(scene, session::tasks_for(scene), prefix, repeats).c_str(),
-               stdout);
+    std::fputs(
+        bodies::study_skeleton_scene(scene, session::tasks_for(scene), prefix, repeats).c_str(),
+        stdout);
   } catch (const std::system_error& e) {
     std::fprintf(stderr, "skeleton_study: %s\n", e.what());
     return kExitInternal;

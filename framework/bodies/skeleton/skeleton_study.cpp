@@ -56,8 +56,8 @@ void measure_errors(const SkeletonInputs& in, const std::vector<double>& times,
   const skeleton::Skeleton& sk = in.skeleton;
   for (std::size_t b = 0; b < sk.bones.size(); ++b)
     if (!sk.bones[b].channels.empty())
-      out.bones.push_back({static_cast<int>(b), sk.bones[b].name,
-                           static_cast<int>(sk.bones[b].channels.size())});
+      out.bones.push_back(
+          {static_cast<int>(b), sk.bones[b].name, static_cast<int>(sk.bones[b].channels.size())});
   Posture slerped, lerped;
   double sum = 0.0;
   for (int i = 0; i < out.output_frames; ++i) {
@@ -184,10 +184,11 @@ void write_frames(const std::string& path, const InterpolationStudy& st) {
 skeleton::TimeWarp scene_warp(const SceneSpec& scene, const SkeletonInputs& in) {
   const SkeletonSceneSpec& k = skeleton_scene(scene);
   if (k.mode != SkeletonMode::Warp)
-    throw std::runtime_error("the skeleton's accuracy study compares slerp with Euler lerp on a "
-                             "warp: " + scene.name + " has body.mode = \"" +
-                             std::string(skeleton_mode_name(k.mode)) +
-                             "\" (give a scene with body.mode = \"warp\")");
+    throw std::runtime_error(
+        "the skeleton's accuracy study compares slerp with Euler lerp on a "
+        "warp: " +
+        scene.name + " has body.mode = \"" + std::string(skeleton_mode_name(k.mode)) +
+        "\" (give a scene with body.mode = \"warp\")");
   skeleton::TimeWarp warp;
   warp.input_frames = static_cast<int>(in.motion.frames.size());
   warp.output_frames = skeleton_output_frames(scene, in);
@@ -197,9 +198,9 @@ skeleton::TimeWarp scene_warp(const SceneSpec& scene, const SkeletonInputs& in) 
 }
 
 std::string report(const SceneSpec& scene, const SkeletonInputs& in, const InterpolationStudy& st) {
-  const BoneInterpolationError& worst = *std::max_element(
-      st.bones.begin(), st.bones.end(),
-      [](const auto& a, const auto& b) { return a.max_degrees < b.max_degrees; });
+  const BoneInterpolationError& worst =
+      *std::max_element(st.bones.begin(), st.bones.end(),
+                        [](const auto& a, const auto& b) { return a.max_degrees < b.max_degrees; });
   return text_printf(
       "%s: slerp against Euler lerp on a warp of %s, %d -> %d frames, %zu bones with channels\n"
       "  angle between them: max %.6g deg (bone %s, output frame %d, s = %.6g), mean %.6g deg\n"
@@ -216,8 +217,7 @@ std::string study_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
                                  const std::string& prefix, int repeats) {
   const SkeletonInputs in = read_skeleton_inputs(scene);
   const skeleton::TimeWarp warp = scene_warp(scene, in);
-  const InterpolationStudy st = study_interpolation(in, warp, skeleton_tasks(tasks),
-                                                    repeats);
+  const InterpolationStudy st = study_interpolation(in, warp, skeleton_tasks(tasks), repeats);
   const std::string bones = prefix + "-bones.csv", frames = prefix + "-frames.csv";
   write_bones(bones, st);
   write_frames(frames, st);
