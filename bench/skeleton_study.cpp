@@ -10,9 +10,10 @@
 #include <system_error>
 #include <vector>
 
-#include "jelly/cli_common/command_line.hpp"
+#include <CLI/CLI.hpp>
+
+#include "jelly/a3/task_table.hpp"
 #include "jelly/scene.hpp"
-#include "jelly/session/assignments.hpp"
 #include "skeleton_study.hpp"
 
 namespace {
@@ -34,35 +35,51 @@ options:
 exit codes: 0 done; 2 bad command line, scene, file or slot; 1 a file could not be written.
 )";
 
+/// A command-line, scene or file error: the message and exit code 2.
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "skeleton_study: %s\n(see skeleton_study --help)\n", message.c_str());
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace jelly;
-  using namespace jelly::cli;
-  Command cmd("skeleton_study", kHelp, "(see skeleton_study --help)\n");
+  CLI::App cmd("", "skeleton_study");
+  cmd.set_help_flag("-h,--help");
+  cmd.allow_windows_style_options(false);
   std::string scene_path, prefix;
   std::vector<std::string> sets;
   int repeats = 5;
   cmd.add_option("SCENE", scene_path)->required();
-  cmd.repeated("--set", sets, "KEY=VALUE");
-  cmd.add_option("--out", prefix)->type_name("PREFIX");
-  cmd.add_option("--repeats", repeats)->type_name("R")->check(CLI::Range(1, 1000));
-  if (const auto code = cmd.parse_args(argc, argv, 1)) return *code;
+  cmd.add_option("--set", sets)->allow_extra_args(false)->multi_option_policy(
+      CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--out", prefix);
+  cmd.add_option("--repeats", repeats)->check(CLI::Range(1, 1000));
+  try {
+    cmd.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    return usage_error(e.what());
+  }
   SceneResult loaded = load_scene(scene_path);
-  if (!loaded) return cmd.error(loaded.error->text());
+  if (!loaded) return usage_error(loaded.error->text());
   SceneSpec scene = *loaded.scene;
   for (const std::string& set : sets)
-    if (const auto error = set_assignment(scene, set)) return cmd.error(error->text());
+    if (const auto error = set_assignment(scene, set)) return usage_error(error->text());
   if (prefix.empty()) prefix = "study-" + scene.name;
   try {
-    std::fputs(
-        bodies::study_skeleton_scene(scene, session::tasks_for(scene), prefix, repeats).c_str(),
-        stdout);
+    // The assignment's task table as the build links it (JELLY_TASKS: the students' or the
+    // reference's), the table `jelly run` plays the scene with.
+    std::fputs(bodies::study_skeleton_scene(scene, a3::task_table(), prefix, repeats).c_str(),
+               stdout);
   } catch (const std::system_error& e) {
     std::fprintf(stderr, "skeleton_study: %s\n", e.what());
-    return kExitInternal;
+    return 1;
   } catch (const std::exception& e) {
-    return cmd.error(e.what());
+    return usage_error(e.what());
   }
-  return kExitOk;
+  return 0;
 }
