@@ -52,8 +52,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> sets;
   int repeats = 5;
   cmd.add_option("SCENE", scene_path)->required();
-  cmd.add_option("--set", sets)->allow_extra_args(false)->multi_option_policy(
-      CLI::MultiOptionPolicy::TakeAll);
+  cmd.add_option("--set", sets)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd.add_option("--out", prefix);
   cmd.add_option("--repeats", repeats)->check(CLI::Range(1, 1000));
   try {
