@@ -551,6 +551,39 @@ TEST_F(SkeletonPlay, ArgumentsTheContractCallsErrorsNameTheSceneKeyAndBound) {
   EXPECT_NE(e.find("data/mocap/missing.amc"), std::string::npos) << e;
 }
 
+TEST_F(SkeletonPlay, AMotionOfTwoFramesRetimesAndRefusesAKeyframe) {
+  // walk.amc's header and its first two frames (AMC frames 1 and 2).
+  const fs::path two = dir_ / "two_frames.amc";
+  {
+    std::ifstream in(kSource / "data" / "mocap" / "walk.amc");
+    std::ofstream out(two);
+    for (std::string line; std::getline(in, line) && line != "3";) out << line << "\n";
+  }
+  SceneSpec scene = course_scene("hw2-retime-2023.toml");
+  ASSERT_FALSE(set_parameter(scene, "body.amc", two.string()).has_value());
+  ASSERT_FALSE(set_parameter(scene, "body.frames", "9").has_value());
+  const Summary s = play(scene, counting_table());
+  ASSERT_EQ(s.rows.size(), 9u * kBones);
+  EXPECT_EQ(g_calls.warped_posture, 9);
+  const Skeleton sk = course_skeleton();
+  const Motion m = *skeleton::read_amc(two, sk).motion;
+  ASSERT_EQ(m.frames.size(), 2u);
+  expect_frame_is_input(s, 0, m, 0, sk);
+  expect_frame_is_input(s, 8, m, 1, sk);
+  // 0 < keyframe_in < N − 1 = 1 has no solution: a keyframe warp of two frames is an error.
+  skeleton_scene(scene).keyframe_in = 1;  // the pair at once (--set checks one key at a time)
+  skeleton_scene(scene).keyframe_out = 4;
+  try {
+    kind().check_frames(scene);
+    ADD_FAILURE() << "a keyframe on a motion of two frames";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("body.keyframe_in: must satisfy 0 < keyframe_in < N − 1 = 1"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(SkeletonPlay, ABrokenMotionFileGivesItsFirstErrorWithFileAndLine) {
   std::ifstream walk(kSource / "data" / "mocap" / "walk.amc");
   std::ofstream broken(dir_ / "broken.amc");
