@@ -3,7 +3,7 @@
 // from the kinematics contract (§3–§5) with Eigen's angle-axis rotations and slerp: an independent
 // check of the kind's frame loop, its summary and the contract's §8 numbers. Also: each argument
 // the contract calls an error, once the motion is read; a slot not filled; a task that returns a
-// wrong answer.
+// wrong answer. And the skeleton's accuracy study (skeleton_study.cpp), on the same table.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -26,6 +26,7 @@
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/skeleton_tasks.hpp"
 #include "jelly/task_probe.hpp"
+#include "skeleton_study.hpp"
 #include "test_folder.hpp"
 
 namespace jelly {
@@ -278,6 +279,143 @@ TEST_F(SkeletonPlay, DurationAndEveryChooseTheFramesWritten) {
   EXPECT_EQ(s.rows[kBones][0], "10");
 }
 
+// ----- only what the scene calls for (contract §10): every slot's calls, counted -----
+
+struct SlotCalls {
+  int local_rotation = 0, forward_kinematics = 0, time_map = 0, warped_posture = 0, blend = 0;
+};
+SlotCalls g_calls;
+
+/// The test's table with every slot wrapped in a counter of its calls (g_calls).
+TaskTable counting_table() {
+  g_calls = SlotCalls{};
+  TaskTable t;
+  SkeletonTasks& k = skeleton_tasks(t);
+  k.local_rotation = [](const Vec3& d) {
+    ++g_calls.local_rotation;
+    return test_e(d);
+  };
+  k.forward_kinematics = [](const Skeleton& s, const Posture& p, BoneFrames& out) {
+    ++g_calls.forward_kinematics;
+    test_fk(s, p, out);
+  };
+  k.time_map = [](int i, const skeleton::TimeWarp& w) {
+    ++g_calls.time_map;
+    return test_time_map(i, w);
+  };
+  k.warped_posture = [](const Skeleton& s, const Motion& in, double time, Posture& out) {
+    ++g_calls.warped_posture;
+    test_warped_posture(s, in, time, out);
+  };
+  k.blend_motions = [](const Skeleton& s, const Motion& a, const Motion& b,
+                       const skeleton::Blend& blend, Motion& out) {
+    ++g_calls.blend;
+    test_blend(s, a, b, blend, out);
+  };
+  return t;
+}
+
+TEST_F(SkeletonPlay, PlaybackCallsForwardKinematicsOncePerFrameAndNoWarp) {
+  play(course_scene("hw2-fk-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.forward_kinematics, 148);  // walk.amc's frames
+  EXPECT_EQ(g_calls.time_map, 0);
+  EXPECT_EQ(g_calls.warped_posture, 0);
+  EXPECT_EQ(g_calls.blend, 0);
+  EXPECT_EQ(g_calls.local_rotation, 0);  // FK's own business, not the frame loop's
+}
+
+TEST_F(SkeletonPlay, AWarpCallsEachTaskOncePerOutputFrame) {
+  play(course_scene("hw2-warp-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.time_map, 450);
+  EXPECT_EQ(g_calls.warped_posture, 450);
+  EXPECT_EQ(g_calls.forward_kinematics, 450);  // one drawing of each output frame
+  EXPECT_EQ(g_calls.blend, 0);
+  play(course_scene("hw2-retime-2023.toml"), counting_table());
+  EXPECT_EQ(g_calls.time_map, 200);
+  EXPECT_EQ(g_calls.warped_posture, 200);
+  EXPECT_EQ(g_calls.forward_kinematics, 200);
+}
+
+TEST_F(SkeletonPlay, ABlendIsMadeOnceAndDrawnOncePerFrame) {
+  play(course_scene("hw2-blend-2022.toml"), counting_table());
+  EXPECT_EQ(g_calls.blend, 1);
+  EXPECT_EQ(g_calls.forward_kinematics, 274);  // a + |B| − b = 127 + 148 − 1
+  EXPECT_EQ(g_calls.time_map, 0);
+  EXPECT_EQ(g_calls.warped_posture, 0);
+}
+
+TEST_F(SkeletonPlay, AShortenedRunComputesOnlyTheFramesItPlays) {
+  SceneSpec scene = course_scene("hw2-warp-2022.toml");
+  ASSERT_FALSE(set_parameter(scene, "simulation.duration", "0.5").has_value());
+  kind().play(scene, counting_table(), {"", 1});  // no summary: the same work
+  EXPECT_EQ(g_calls.time_map, 61);                // frames i with i / 120 ≤ 0.5, not M = 450
+  EXPECT_EQ(g_calls.warped_posture, 61);
+  EXPECT_EQ(g_calls.forward_kinematics, 61);
+}
+
+// ----- the accuracy study: slerp against the Euler lerp (docs/skeleton-studies.md) -----
+
+TEST(SkeletonStudy, RotationAngleIsTheAngleBetweenTheRotations) {
+  using bodies::rotation_angle_degrees;
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(0, 0, 30)), 30.0, 1e-12);
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(10, 20, 30), Vec3(370, 20, 30)), 0.0, 1e-12);  // q, −q
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(1e-7, 0, 0)), 1e-7, 1e-15);
+  EXPECT_NEAR(rotation_angle_degrees(Vec3(0, 0, 0), Vec3(0, 0, 190)), 170.0, 1e-12);
+}
+
+TEST_F(SkeletonPlay, TheStudyComparesSlerpWithTheEulerLerpOnTheScenesWarp) {
+  const SceneSpec scene = course_scene("hw2-warp-2022.toml");
+  const bodies::SkeletonInputs in = bodies::read_skeleton_inputs(scene);
+  const skeleton::TimeWarp warp{450, 450, 160, 150};
+  const bodies::InterpolationStudy st =
+      bodies::study_interpolation(in, warp, skeleton_tasks(test_table()), 1);
+  ASSERT_EQ(st.bones.size(), 29u);  // lhipjoint and rhipjoint have no channels
+  ASSERT_EQ(st.frame_max_degrees.size(), 450u);
+  int whole = 0;
+  for (int i = 0; i < 450; ++i)
+    if (st.frame_s[i] == std::floor(st.frame_s[i])) {
+      ++whole;
+      EXPECT_LT(st.frame_max_degrees[i], 1e-9) << "an input frame itself, output frame " << i;
+    }
+  EXPECT_EQ(whole, 12);
+  EXPECT_GT(st.max_degrees, 1e-3) << "the shortcut is not slerp";
+  EXPECT_LT(st.max_degrees, 1.0) << "neighbouring frames at 120 fps";
+  EXPECT_GT(st.mean_degrees, 0.0);
+  EXPECT_LT(st.mean_degrees, st.max_degrees);
+  // The reported worst bone and frame give the reported angle, recomputed here.
+  Posture slerped = Posture::zero(kBones), lerped;
+  test_warped_posture(in.skeleton, in.motion, st.frame_s[st.worst_frame], slerped);
+  bodies::euler_lerp_posture(in.motion, st.frame_s[st.worst_frame], lerped);
+  EXPECT_EQ(
+      bodies::rotation_angle_degrees(slerped.angles[st.worst_bone], lerped.angles[st.worst_bone]),
+      st.max_degrees);
+  bodies::euler_lerp_posture(in.motion, 10.25, lerped);
+  EXPECT_EQ(lerped.angles[5],
+            0.75 * in.motion.frames[10].angles[5] + 0.25 * in.motion.frames[11].angles[5]);
+}
+
+TEST_F(SkeletonPlay, TheStudyWritesItsTablesAndRefusesAPlayback) {
+  const std::string prefix = (dir_ / "study").string();
+  const std::string report =
+      bodies::study_skeleton_scene(course_scene("hw2-retime-2023.toml"), test_table(), prefix, 1);
+  EXPECT_NE(report.find("148 -> 200 frames, 29 bones with channels"), std::string::npos) << report;
+  const auto lines = [](const std::string& path) {
+    std::ifstream in(path);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+  };
+  EXPECT_EQ(lines(prefix + "-bones.csv"), 1 + 29);
+  EXPECT_EQ(lines(prefix + "-frames.csv"), 1 + 200);
+  try {
+    bodies::study_skeleton_scene(course_scene("hw2-fk-2022.toml"), test_table(), prefix, 1);
+    ADD_FAILURE() << "a playback has no warp to study";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("body.mode = \"playback\""), std::string::npos)
+        << e.what();
+  }
+}
+
 // ----- what is refused -----
 
 std::string play_error(const SceneSpec& scene, const TaskTable& tasks, const std::string& path) {
@@ -411,6 +549,39 @@ TEST_F(SkeletonPlay, ArgumentsTheContractCallsErrorsNameTheSceneKeyAndBound) {
       0u)
       << e;
   EXPECT_NE(e.find("data/mocap/missing.amc"), std::string::npos) << e;
+}
+
+TEST_F(SkeletonPlay, AMotionOfTwoFramesRetimesAndRefusesAKeyframe) {
+  // walk.amc's header and its first two frames (AMC frames 1 and 2).
+  const fs::path two = dir_ / "two_frames.amc";
+  {
+    std::ifstream in(kSource / "data" / "mocap" / "walk.amc");
+    std::ofstream out(two);
+    for (std::string line; std::getline(in, line) && line != "3";) out << line << "\n";
+  }
+  SceneSpec scene = course_scene("hw2-retime-2023.toml");
+  ASSERT_FALSE(set_parameter(scene, "body.amc", two.string()).has_value());
+  ASSERT_FALSE(set_parameter(scene, "body.frames", "9").has_value());
+  const Summary s = play(scene, counting_table());
+  ASSERT_EQ(s.rows.size(), 9u * kBones);
+  EXPECT_EQ(g_calls.warped_posture, 9);
+  const Skeleton sk = course_skeleton();
+  const Motion m = *skeleton::read_amc(two, sk).motion;
+  ASSERT_EQ(m.frames.size(), 2u);
+  expect_frame_is_input(s, 0, m, 0, sk);
+  expect_frame_is_input(s, 8, m, 1, sk);
+  // 0 < keyframe_in < N − 1 = 1 has no solution: a keyframe warp of two frames is an error.
+  skeleton_scene(scene).keyframe_in = 1;  // the pair at once (--set checks one key at a time)
+  skeleton_scene(scene).keyframe_out = 4;
+  try {
+    kind().check_frames(scene);
+    ADD_FAILURE() << "a keyframe on a motion of two frames";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("body.keyframe_in: must satisfy 0 < keyframe_in < N − 1 = 1"),
+        std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(SkeletonPlay, ABrokenMotionFileGivesItsFirstErrorWithFileAndLine) {
