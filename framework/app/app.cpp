@@ -30,13 +30,10 @@ std::vector<SimulationRun*> AppState::run_pointers() const {
 
 namespace {
 
-// Why this program cannot show `scene`, or "": a kind that plays frames has no viewer yet, and a
-// kind no linked assignment simulates has no tasks to run.
+// Why this program cannot show `scene`, or "": a kind no linked assignment simulates has no
+// tasks to run. (A kind that plays frames is shown too: its build makes a World whose steps play
+// them, and its view module draws it.)
 std::string why_not_shown(const SceneSpec& scene) {
-  const BodyKindModule& kind = body_kind_of(scene);
-  if (kind.plays_frames())
-    return "jelly-lab does not draw scenes of " + std::string(kind.body_phrase()) +
-           " yet; `jelly run SCENE --summary FILE` plays it and `jelly check SCENE` reads it";
   try {
     session::assignment_for(scene);
   } catch (const std::exception& e) {
