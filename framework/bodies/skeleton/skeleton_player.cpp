@@ -126,8 +126,8 @@ void SkeletonPlayer::compute_output() {
       Posture p = Posture::zero(bones);
       tasks_.warped_posture(skeleton(), input(), s, p);
       if (p.angles.size() != bones || !finite(p)) {
-        problem_ = frame_said("warped_posture", i) +
-                   "returned a posture of the wrong size or not finite";
+        problem_ =
+            frame_said("warped_posture", i) + "returned a posture of the wrong size or not finite";
         output_.frames.clear();
         return;
       }

@@ -17,9 +17,7 @@ using session::format_number;
 class SkeletonView final : public render::BodyView {
  public:
   std::string_view kind() const override { return "skeleton"; }
-  bool present(const World& world) const override {
-    return find_skeleton_player(world) != nullptr;
-  }
+  bool present(const World& world) const override { return find_skeleton_player(world) != nullptr; }
   std::unique_ptr<render::BodyDrawable> make_drawable(const World& world) const override {
     return std::make_unique<SkeletonDrawable>(world);
   }
@@ -59,11 +57,11 @@ std::string SkeletonView::caption_body(const SceneSpec& sc) const {
   };
   std::string what = file(k.amc);
   if (k.mode == SkeletonMode::Warp) {
-    what += " warped to " + (k.frames > 0 ? std::to_string(k.frames) : std::string("N")) +
-            " frames";
+    what +=
+        " warped to " + (k.frames > 0 ? std::to_string(k.frames) : std::string("N")) + " frames";
     if (k.keyframe_in >= 0)
-      what += ", keyframe " + std::to_string(k.keyframe_in) + " -> " +
-              std::to_string(k.keyframe_out);
+      what +=
+          ", keyframe " + std::to_string(k.keyframe_in) + " -> " + std::to_string(k.keyframe_out);
   } else if (k.mode == SkeletonMode::Blend) {
     what += " blended into " + file(k.amc_b) + " (a " + std::to_string(k.a) + ", b " +
             std::to_string(k.b) + ", window " + std::to_string(k.window) + ")";

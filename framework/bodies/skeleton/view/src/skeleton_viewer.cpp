@@ -50,7 +50,8 @@ void series(const SkeletonPlayer& p, int bone, Quantity q, std::vector<float>& o
   const int n = p.frame_count(), last = static_cast<int>(p.input().frames.size()) - 1;
   const auto value = [&](const skeleton::Posture& posture, bool input, int i) -> float {
     if (q != Quantity::Height)
-      return static_cast<float>(posture.angles[static_cast<std::size_t>(bone)][static_cast<int>(q)]);
+      return static_cast<float>(
+          posture.angles[static_cast<std::size_t>(bone)][static_cast<int>(q)]);
     const skeleton::BoneFrames* f = input ? p.input_frames(i) : p.output_frames(i);
     return f ? static_cast<float>(f->end[static_cast<std::size_t>(bone)].y()) : 0.0f;
   };
@@ -146,7 +147,8 @@ void SkeletonControls::warp_sliders(const ViewerContext& c, SkeletonPlayer& p) {
   ImGui::Checkbox("original too", &s.show_original);
   ImGui::SameLine();
   ImGui::Checkbox("side by side (else overlaid)", &s.side_by_side);
-  ImGui::TextColored(ImVec4(kOriginalBone.x(), kOriginalBone.y(), kOriginalBone.z(), 1), "original");
+  ImGui::TextColored(ImVec4(kOriginalBone.x(), kOriginalBone.y(), kOriginalBone.z(), 1),
+                     "original");
   ImGui::SameLine();
   ImGui::TextColored(ImVec4(kBone.x(), kBone.y(), kBone.z(), 1), "warped");
 }
@@ -206,7 +208,8 @@ void SkeletonControls::plot(SkeletonPlayer& p) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(at, ImVec2(at.x + size.x, at.y + size.y), IM_COL32(25, 28, 36, 255));
   const auto point = [&](std::size_t i, float v) {
-    const float x = at.x + size.x * static_cast<float>(i) / std::max<std::size_t>(1, shown_.size() - 1);
+    const float x =
+        at.x + size.x * static_cast<float>(i) / std::max<std::size_t>(1, shown_.size() - 1);
     return ImVec2(x, at.y + size.y * (1.0f - (v - lo) / (hi - lo)));
   };
   for (const auto& [v, c] : {std::pair{&original_, kOriginalBone}, std::pair{&shown_, kBone}}) {
@@ -267,8 +270,8 @@ int SkeletonControls::smoke_check(const ViewerContext& c) {
              std::to_string(w.keyframe_out);
   }
   p.set_playing(true);
-  std::printf("smoke: scene %-35s skeleton drawn, %d frames, +/- stepped%s\n",
-              c.scene_name.c_str(), p.frame_count(), warped.c_str());
+  std::printf("smoke: scene %-35s skeleton drawn, %d frames, +/- stepped%s\n", c.scene_name.c_str(),
+              p.frame_count(), warped.c_str());
   return failures;
 }
 

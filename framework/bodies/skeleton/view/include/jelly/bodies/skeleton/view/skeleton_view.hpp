@@ -90,7 +90,7 @@ class SkeletonDrawable : public render::BodyDrawable {
   std::unique_ptr<SkeletonFigure> shown_, original_;
   bool original_shown_ = false;
   std::string message_;
-  const render::Gl* gl_ = nullptr;     // from create_gpu
+  const render::Gl* gl_ = nullptr;    // from create_gpu
   std::vector<render::GpuMesh> gpu_;  // shown bones, joints, picked; original bones, joints
 };
 
