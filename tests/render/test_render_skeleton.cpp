@@ -50,6 +50,8 @@ TEST(SkeletonView, AMissingTaskIsAMessageNotACrash) {
   ASSERT_TRUE(run && run->ok()) << (run ? run->error() : "");
   SkeletonPlayer& p = player_of(*run);
   EXPECT_NE(p.problem().find("forward_kinematics"), std::string::npos) << p.problem();
+  EXPECT_NE(p.problem().find("time_map"), std::string::npos) << p.problem();
+  EXPECT_EQ(p.frame_count(), 0);
   EXPECT_EQ(p.output_frames(0), nullptr);
   Renderer renderer(nullptr);
   auto d = renderer.make_drawable(run->simulator()->world());

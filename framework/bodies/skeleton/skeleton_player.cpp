@@ -95,7 +95,8 @@ void SkeletonPlayer::compute_output() {
     output_ = input();
   } else if (mode_ == SkeletonMode::Blend) {
     if (!tasks_.blend_motions) {
-      problem_ = missing_slot("blend_motions", "the motion blend, kinematics contract §5");
+      problem_ += std::string(problem_.empty() ? "" : "; ") +
+                  missing_slot("blend_motions", "the motion blend, kinematics contract §5");
       return;
     }
     tasks_.blend_motions(skeleton(), input(), in_->files.motion_b, blend_, output_);
@@ -108,9 +109,11 @@ void SkeletonPlayer::compute_output() {
       }
   } else {
     if (!tasks_.time_map || !tasks_.warped_posture) {
-      problem_ = !tasks_.time_map
-                     ? missing_slot("time_map", "the time map s(i), kinematics contract §5")
-                     : missing_slot("warped_posture", "the warped posture, kinematics contract §5");
+      problem_ +=
+          std::string(problem_.empty() ? "" : "; ") +
+          (!tasks_.time_map
+               ? missing_slot("time_map", "the time map s(i), kinematics contract §5")
+               : missing_slot("warped_posture", "the warped posture, kinematics contract §5"));
       return;
     }
     const double last = warp_.input_frames - 1;
