@@ -11,7 +11,6 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app_loop.hpp"
-#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/exit_codes.hpp"
 #include "jelly/session/assignments.hpp"
 #include "jelly/session/overrides.hpp"
