@@ -249,7 +249,7 @@ int SkeletonControls::smoke_check(const ViewerContext& c) {
     ++failures;
   };
   if (!p.problem().empty()) fail("the skeleton is not drawn: " + p.problem());
-  if (p.frame_count() < 3) return failures + (p.problem().empty() ? 0 : 0);
+  if (p.frame_count() < 3) return failures;
   p.seek(1);
   p.step(+1);
   if (p.frame() != 2) fail("+ did not step to frame 2");
@@ -257,14 +257,16 @@ int SkeletonControls::smoke_check(const ViewerContext& c) {
   if (p.frame() != 1) fail("- did not step back to frame 1");
   std::string warped;
   if (p.mode() == SkeletonMode::Warp) {
+    // The sliders' re-warp takes effect: the new frame count and keyframe (what the tasks then
+    // compute is theirs to get right: a student's stubs pass here too).
     skeleton::TimeWarp w = p.warp();
+    w.output_frames = w.input_frames + 10;
     w.keyframe_in = w.input_frames / 2;
     w.keyframe_out = w.output_frames / 3;
     if (std::string e = p.set_warp(w); !e.empty()) fail("the warp sliders were refused: " + e);
-    const auto& in = p.input().frames[static_cast<std::size_t>(w.keyframe_in)];
-    const auto& out = p.output().frames[static_cast<std::size_t>(w.keyframe_out)];
-    if ((in.root_translation - out.root_translation).norm() > 1e-9)
-      fail("after the sliders the output's K_out is not the input's K_in");
+    if (p.warp().keyframe_out != w.keyframe_out ||
+        (p.problem().empty() && p.frame_count() != w.output_frames))
+      fail("the warp sliders did not re-warp to " + std::to_string(w.output_frames) + " frames");
     p.set_warp(p.scene_warp());
     warped = ", re-warped K_in " + std::to_string(w.keyframe_in) + " -> K_out " +
              std::to_string(w.keyframe_out);
