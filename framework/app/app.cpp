@@ -11,7 +11,6 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app_loop.hpp"
-#include "jelly/body_kind.hpp"
 #include "jelly/cli_common/exit_codes.hpp"
 #include "jelly/session/assignments.hpp"
 #include "jelly/session/overrides.hpp"
@@ -30,13 +29,10 @@ std::vector<SimulationRun*> AppState::run_pointers() const {
 
 namespace {
 
-// Why this program cannot show `scene`, or "": a kind that plays frames has no viewer yet, and a
-// kind no linked assignment simulates has no tasks to run.
+// Why this program cannot show `scene`, or "": a kind no linked assignment simulates has no
+// tasks to run. (A kind that plays frames is shown too: its build makes a World whose steps play
+// them, and its view module draws it.)
 std::string why_not_shown(const SceneSpec& scene) {
-  const BodyKindModule& kind = body_kind_of(scene);
-  if (kind.plays_frames())
-    return "jelly-lab does not draw scenes of " + std::string(kind.body_phrase()) +
-           " yet; `jelly run SCENE --summary FILE` plays it and `jelly check SCENE` reads it";
   try {
     session::assignment_for(scene);
   } catch (const std::exception& e) {

@@ -63,8 +63,8 @@ struct AppState {
   int scene_index = -1;
   std::string open_path;         ///< the "open a file" text field
   std::string scene_error;       ///< last load or --set error, shown in the panel
-  bool scene_not_shown = false;  ///< the last load was a scene this program cannot show (its
-                                 ///< kind plays frames, or no linked assignment simulates it)
+  bool scene_not_shown = false;  ///< the last load was a scene this program cannot show (no
+                                 ///< linked assignment simulates its kind)
   SceneSpec original;            ///< as loaded (the "reset to the scene's values" target)
   SceneSpec edited;              ///< with the panel's changes
   // simulation

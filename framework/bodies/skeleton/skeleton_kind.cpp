@@ -2,6 +2,7 @@
 // their checks. A skeleton scene is played frame by frame through the SkeletonTasks slots, not
 // simulated (skeleton_play.cpp). Registered by body.cmake.
 #include "jelly/body_kind.hpp"
+#include "jelly/skeleton_player.hpp"
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/world.hpp"
 #include "param_rows.hpp"
@@ -242,8 +243,12 @@ class SkeletonKind final : public BodyKindModule {
     return probe_skeleton_slot(slot, std::move(id), std::move(name), tasks);
   }
 
-  /// A skeleton builds no World: `jelly run` and `jelly check` play and read it (plays_frames).
-  void build(const SceneSpec&, World&) const override {}
+  /// `jelly run` and `jelly check` play and read a skeleton scene without a World (plays_frames);
+  /// the viewer and `jelly render` build one: a SkeletonPhysics whose steps play the motion
+  /// (jelly/skeleton_player.hpp), on a ground plane under its lowest bone end.
+  void build(const SceneSpec& scene, World& world) const override {
+    build_skeleton_world(scene, world);
+  }
 
   bool plays_frames() const override { return true; }
   std::string check_frames(const SceneSpec& scene) const override {

@@ -99,6 +99,17 @@ std::vector<Viewport> frame_viewports(int count, int width, int height, int left
   return frame_viewports(count, width, height, o);
 }
 
+namespace {
+/// What the run's body drawables say about what they could not draw (BodyDrawable::message).
+std::string body_message(const session::SimulationRun& run) {
+  std::string out;
+  if (const SceneDrawable* d = drawable_of(run))
+    for (const auto& body : d->bodies())
+      if (std::string m = body->message(); !m.empty()) out += (out.empty() ? "" : "\n") + m;
+  return out;
+}
+}  // namespace
+
 void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& runs,
                 const OrbitCamera& camera, const FrameOptions& o, int width, int height) {
   ensure_drawables(renderer, runs);
@@ -163,6 +174,8 @@ void draw_frame(Renderer& renderer, const std::vector<session::SimulationRun*>& 
       // Comparison mode: the label strip said it.
     } else if (!run.ok()) {
       put("cannot run: " + run.error(), {1.0f, 0.5f, 0.4f, 1.0f});
+    } else if (const std::string said = body_message(run); !said.empty()) {
+      put(said, {1.0f, 0.5f, 0.4f, 1.0f});
     } else if (const auto& r = run.simulator()->instability()) {
       char buf[256];
       std::snprintf(buf, sizeof buf,

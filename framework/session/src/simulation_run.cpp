@@ -27,6 +27,9 @@ void SimulationRun::reset() {
     o.integrator = setup_.integrator;
     o.dt = setup_.dt;
     auto world = build_world(setup_.scene, tasks_);
+    // A world with no particles (a kind whose steps play recorded frames) has nothing to
+    // integrate: the framework's integrator steps it, whatever the task table holds.
+    if (world->particle_count() == 0) o.integrator = IntegratorKind::SymplecticEuler;
     auto_step_.reset();
     if (setup_.scene.auto_dt) {
       // The same choice as `jelly run --auto-dt`: a 60 Hz frame, the setup's step as the cap.

@@ -45,6 +45,9 @@ class BodyDrawable {
   virtual void draw_markers(const PointPass&, const World&, const DrawOptions&) {}
   /// How many of the state's first particles are drawn as dots; −1: all of them.
   virtual long dot_count(const World&) const { return -1; }
+  /// Why the body is not (fully) drawn, printed over its view as a run that cannot start is
+  /// (e.g. a task that is not implemented); "" when all is well. Read after update().
+  virtual std::string message() const { return {}; }
 };
 
 /// What a kind's viewer controls act on: every run of the viewer (several in comparison mode;
