@@ -183,7 +183,7 @@ corner="%S/scenes/hard/corner-first.toml"
 # run must end with that status, 0 unless given: two runs that fail alike prove nothing). A1's are
 # the same as before A2 existed (its implicit Euler run blows up at t = 1.5 s by design: 3); A2's run the course's cloth scenes with every course integrator (explicit
 # Euler on cloth-2022 is chaotic at the collisions, decision 14: the same bits there are the
-# strictest test), the kinematic sphere's schedule of cloth-2024, and `jelly check`.
+# strictest test), the kinematic sphere's schedule of cloth-2024, and `jelly check`. A3's are below.
 runs_a1=(
   "course-summary|run $scene --summary @/course-summary.csv"
   "course-rk4-trajectory|run $scene --integrator rk4 --duration 2 --every 250 --out @/course-rk4.csv"
@@ -200,6 +200,16 @@ runs_a2=(
   "cloth-2024-midpoint-trajectory|run $c2024 --integrator midpoint --duration 1.2 --every 2000 --out @/cloth-2024-midpoint.csv"
   "cloth-2024-summary|run $c2024 --duration 2 --summary @/cloth-2024.csv"
   "cloth-2022-check|check $c2022"
+)
+# A3's: the course's skeleton scenes played through the tasks (forward kinematics of every frame,
+# the 2022 keyframe warp and blend, the 2023 retiming: every bone's start, end and warped
+# rotation of every frame), and `jelly check` reading the ASF and AMC.
+runs_a3=(
+  "hw2-fk-2022-summary|run %S/scenes/hw2-fk-2022.toml --summary @/hw2-fk-2022.csv"
+  "hw2-warp-2022-summary|run %S/scenes/hw2-warp-2022.toml --summary @/hw2-warp-2022.csv"
+  "hw2-blend-2022-summary|run %S/scenes/hw2-blend-2022.toml --summary @/hw2-blend-2022.csv"
+  "hw2-retime-2023-summary|run %S/scenes/hw2-retime-2023.toml --summary @/hw2-retime-2023.csv"
+  "hw2-warp-2022-check|check %S/scenes/hw2-warp-2022.toml"
 )
 runs=()
 for id in "${ids[@]}"; do
