@@ -24,7 +24,8 @@ std::string caption(const session::RunSetup& s, double time, bool with_integrato
   const BodyView* view = view_of(sc);
   std::string out = sc.name.empty() ? std::string("scene") : sc.name;
   // A kind that plays recorded frames integrates nothing: its integrator and step say nothing.
-  if (with_integrator && !body_kind_of(sc).plays_frames())
+  const BodyKindModule* kind = find_body_kind(sc.body_kind.name);
+  if (with_integrator && !(kind && kind->plays_frames()))
     out += "   " + std::string(display_name(s.integrator)) + "   h = " + session::step_text(s.dt);
   out += "   t = " + format_number("%.3f s", time);
   out += body_line(sc, view);
