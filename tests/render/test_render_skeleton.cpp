@@ -13,6 +13,7 @@
 
 #include "jelly/bodies/skeleton/view/skeleton_view.hpp"
 #include "jelly/render/backend.hpp"
+#include "jelly/render/captions.hpp"
 #include "jelly/render/frame.hpp"
 #include "jelly/render/image.hpp"
 #include "jelly/session/assignments.hpp"
@@ -62,6 +63,25 @@ TEST(SkeletonView, AMissingTaskIsAMessageNotACrash) {
   ASSERT_NE(skeleton, nullptr);
   EXPECT_TRUE(skeleton->shown().bones().indices.empty());
   EXPECT_NE(skeleton->message().find("not drawn"), std::string::npos) << skeleton->message();
+}
+
+/// The setup of the course scene `name`, as a run starts from it.
+RunSetup setup_of(const std::string& name) {
+  SceneResult scene = session::resolve_scene(name, session::default_scenes_dir());
+  EXPECT_TRUE(scene) << scene.error->text();
+  return scene ? RunSetup::from_scene(*scene.scene) : RunSetup{};
+}
+
+TEST(SkeletonView, TheCaptionNamesNoIntegratorForAPlayedMotion) {
+  const std::string played = caption(setup_of("hw2-fk-2022"), 0.5);
+  EXPECT_EQ(played.rfind("hw2-fk-2022   t = 0.500 s", 0), 0u) << played;
+  EXPECT_EQ(played.find("h = "), std::string::npos) << played;
+  // A simulated scene (one made in code: a release of this assignment alone has no other kind's
+  // scene file) still names its integrator and step.
+  RunSetup cube;
+  cube.scene.name = "made-in-code";
+  const std::string simulated = caption(cube, 0.5);
+  EXPECT_NE(simulated.find("   h = "), std::string::npos) << simulated;
 }
 
 #if JELLY_RENDER_WITH_SOLUTIONS

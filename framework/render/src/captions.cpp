@@ -1,5 +1,6 @@
 #include "jelly/render/captions.hpp"
 
+#include "jelly/body_kind.hpp"
 #include "jelly/render/body_view.hpp"
 #include "jelly/session/captions.hpp"
 
@@ -22,7 +23,9 @@ std::string caption(const session::RunSetup& s, double time, bool with_integrato
   const SceneSpec& sc = s.scene;
   const BodyView* view = view_of(sc);
   std::string out = sc.name.empty() ? std::string("scene") : sc.name;
-  if (with_integrator)
+  // A kind that plays recorded frames integrates nothing: its integrator and step say nothing.
+  const BodyKindModule* kind = find_body_kind(sc.body_kind.name);
+  if (with_integrator && !(kind && kind->plays_frames()))
     out += "   " + std::string(display_name(s.integrator)) + "   h = " + session::step_text(s.dt);
   out += "   t = " + format_number("%.3f s", time);
   out += body_line(sc, view);
