@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -154,8 +155,23 @@ std::string run(const std::string& args) {
   return out;
 }
 
+// Whether `line` is a bare number k/q with q ≤ 1000 (13.333333333333334 = 40/3): such a value is
+// not distinctive, since a report's scores are such fractions too (40 points × 1/3), and A3's hidden
+// time maps are full of them.
+bool simple_fraction(const std::string& line) {
+  char* end = nullptr;
+  const double v = std::strtod(line.c_str(), &end);
+  if (end == line.c_str() || *end != '\0' || !std::isfinite(v)) return false;
+  for (int q = 1; q <= 1000; ++q) {
+    const double k = v * q;
+    if (std::abs(k) < 1e9 && std::abs(k - std::round(k)) <= 1e-9 * std::max(1.0, std::abs(k)))
+      return true;
+  }
+  return false;
+}
+
 // Distinctive text of the hidden files of every assignment: their long lines (numbers to 16 digits,
-// notes) that no public reference file has.
+// notes) that no public reference file has, and no simple fraction.
 std::vector<std::string> hidden_needles() {
   std::set<std::string> pub;
   auto lines = [](const fs::path& f) {
@@ -183,7 +199,7 @@ std::vector<std::string> hidden_needles() {
             l.find("\"commit\"") == std::string::npos && l.find("\"flags\"") == std::string::npos &&
             l.find("\"compiler\"") == std::string::npos &&
             l.find("\"format_version\"") == std::string::npos &&
-            l.find("\"case_hash\"") == std::string::npos)
+            l.find("\"case_hash\"") == std::string::npos && !simple_fraction(l))
           needles.insert(l);
   return {needles.begin(), needles.end()};
 }
