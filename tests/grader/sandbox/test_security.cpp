@@ -156,8 +156,8 @@ std::string run(const std::string& args) {
 }
 
 // Whether `line` is a bare number k/q with q ≤ 1000 (13.333333333333334 = 40/3): such a value is
-// not distinctive, since a report's scores are such fractions too (40 points × 1/3), and A3's hidden
-// time maps are full of them.
+// not distinctive, since a report's scores are such fractions too (40 points × 1/3), and A3's
+// hidden time maps are full of them.
 bool simple_fraction(const std::string& line) {
   char* end = nullptr;
   const double v = std::strtod(line.c_str(), &end);
