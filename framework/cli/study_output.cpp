@@ -195,9 +195,9 @@ std::string accuracy_plot(const std::string& title, const std::vector<PlotBlock>
   const std::string body =
       accuracy_panels(title, blocks, cap, files.path(".dat").filename().string());
   std::ostringstream footer;
-  footer << "# Unstable runs (the §8 detector fired, or the state blew up) are crosses; errors "
-            "above "
-         << num(cap) << " m (and non-finite ones) are drawn at that cap (dashed line); errors below "
+  footer << "# Unstable runs (the §8 detector fired, or the state blew up) are crosses; "
+         << "errors above " << num(cap)
+         << " m (and non-finite ones) are drawn at that cap (dashed line); errors below "
          << num(kPlotFloor) << " m at that floor.\n";
   return plot_script(header.str(), files.path(".svg").filename().string(),
                      files.path(".png").filename().string(), body, 1500, 520) +
