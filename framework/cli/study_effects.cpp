@@ -91,92 +91,62 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-/// One run: steps the scene to the duration and measures as it goes (the measuring is not timed).
-EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOptions& o,
-                   EffectsSeries& series) {
-  EffectsRow row;
-  row.integrator = kind;
-  row.h = scene.dt;
-  Simulator::Options options(kind, scene.dt);
-  options.detect_instability = false;  // watched below (the same detector, every 10 steps)
-  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
-  const World& world = sim.world();
-  StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
-  row.energy_start = sim.energy().total();
-  monitor.start(sim.detector_energy());
-  row.particles = static_cast<long>(world.particle_count());
-  row.springs = static_cast<long>(world.spring_count());
+/// The particles a study measures (a kind may leave out bodies that follow it in the state), their
+/// masses, and the world's up (against gravity; +y without it).
+struct MeasuredBody {
+  const Eigen::VectorXd& mass;
+  Eigen::Index count;
+  double total_mass;
+  Vec3 up;
+};
+
+MeasuredBody measured_body(const World& world, const BodyKindModule& body_kind) {
   const Vec3 up = world.gravity() && world.gravity()->norm() > 0.0
                       ? Vec3(-world.gravity()->normalized())
                       : Vec3(0.0, 1.0, 0.0);
   const Eigen::VectorXd& mass = world.masses();
-  // The particles the body's kind measures (a kind may leave out bodies that follow it in the
-  // state).
-  const BodyKindModule& body_kind = body_kind_of(scene);
   const Eigen::Index body = body_kind.measured_particles(world);
   const double total_mass = mass.head(body).sum();
-  const auto touches = [&] {
-    const auto& c = world.counters();
-    return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
-           std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0}) + c.impulses;
-  };
-  struct Look {
-    Vec3 com_v;
-    double height, max_speed;
-    Vec3 com;
-  };
-  const auto look = [&](const State& s) {
-    Look l{Vec3::Zero(), 0.0, 0.0, Vec3::Zero()};
-    for (Eigen::Index i = 0; i < body; ++i) {
-      l.com += mass[i] * s.x.col(i);
-      l.com_v += mass[i] * s.v.col(i);
-      l.max_speed = std::max(l.max_speed, s.v.col(i).norm());
-    }
-    l.com /= total_mass;
-    l.height = up.dot(l.com);
-    l.com_v /= total_mass;
-    return l;
-  };
-  Look before = look(sim.state());
-  // What the body's kind measures on it (the cave-in, the sag, ...); NaN for what it does not.
-  const std::unique_ptr<BodyStudy> kind_study = body_kind.study(
-      world, sim.state(), StudyLook{before.com, before.height, up}, measure_names(o.measures));
-  const BodyStudyValues no_values;
-  const BodyStudyValues& kind_values = kind_study ? kind_study->values() : no_values;
+  return {mass, body, total_mass, up};
+}
 
-  const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
-  row.contact_time = row.impact_speed = row.turn_time = kNaN;
-  row.peak_speed = row.com_apex = row.bounce = kNaN;
-  double turn_height = kNaN, rest_since = 0.0, next_sample = 0.0;
-  const auto sample = [&](const Look& l) {
-    series.t.push_back(sim.time());
-    series.com_height.push_back(l.height);
-    series.com_speed.push_back(l.com_v.norm());
-    series.volume_ratio.push_back(kind_values.volume_ratio);
-    series.max_speed.push_back(l.max_speed);
-    series.energy.push_back(sim.energy().total());
-    next_sample += o.series_dt;
-  };
-  sample(before);
+/// What a state shows of the measured body: its centre of mass, the centre's velocity and height
+/// along up, and the fastest particle's speed.
+struct Look {
+  Vec3 com_v;
+  double height, max_speed;
+  Vec3 com;
+};
+
+Look look_at(const MeasuredBody& b, const State& s) {
+  Look l{Vec3::Zero(), 0.0, 0.0, Vec3::Zero()};
+  for (Eigen::Index i = 0; i < b.count; ++i) {
+    l.com += b.mass[i] * s.x.col(i);
+    l.com_v += b.mass[i] * s.v.col(i);
+    l.max_speed = std::max(l.max_speed, s.v.col(i).norm());
+  }
+  l.com /= b.total_mass;
+  l.height = b.up.dot(l.com);
+  l.com_v /= b.total_mass;
+  return l;
+}
+
+/// The collision responses, contact forces and impulses of the run so far.
+std::int64_t touches(const World& world) {
+  const auto& c = world.counters();
+  return std::accumulate(c.collisions.begin(), c.collisions.end(), std::int64_t{0}) +
+         std::accumulate(c.contacts.begin(), c.contacts.end(), std::int64_t{0}) + c.impulses;
+}
+
+/// The impact, the turn and the bounce of the centre of mass, followed step by step.
+struct BounceWatch {
   bool contact = false, turned = false;
-  double wall = 0.0;
-  for (long step = 1; step <= total; ++step) {
-    const double t_before = sim.time();
-    const auto t0 = std::chrono::steady_clock::now();
-    sim.step();
-    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const State& s = sim.state();
-    if (!s.x.allFinite() || !s.v.allFinite()) {
-      row.finite = false;
-      if (row.stable) {
-        row.stable = false;
-        row.reason = "a position or velocity is not finite";
-        row.detected_at = sim.time();
-      }
-      break;
-    }
-    const Look now = look(s);
-    if (!contact && touches() > 0) {
+  double turn_height = kNaN;
+
+  /// After a step that began at `t_before` and went from `before` to `now`.
+  void observe(const Simulator& sim, double t_before, const Look& before, const Look& now,
+               const Vec3& up, EffectsRow& row) {
+    if (!contact && touches(sim.world()) > 0) {
       contact = true;
       row.contact_time = t_before;
       row.impact_speed = before.com_v.norm();
@@ -192,30 +162,62 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
       row.peak_speed = std::max(row.peak_speed, now.com_v.norm());
       row.com_apex = std::max(row.com_apex, now.height);
     }
-    if (kind_study) kind_study->observe(s, StudyLook{now.com, now.height, up});
-    if (now.max_speed >= o.rest_speed)
-      rest_since = kNaN;
-    else if (std::isnan(rest_since))
-      rest_since = sim.time();
-    bool fired = false;
-    if (monitor.wants_sample(step))
-      if (auto reason = monitor.check(sim.detector_energy(), true)) {
-        row.stable = false;
-        row.reason = *reason;
-        row.detected_at = sim.time();
-        fired = true;
-      }
-    const bool last = fired || step == total;
-    if (sim.time() >= next_sample - 1e-9 * scene.dt || last) sample(now);
-    if (last) break;  // the detector fired: what follows would measure a broken run
-    before = now;
   }
-  if (turned) row.bounce = row.com_apex - turn_height;
+};
+
+/// The samples of the run over time, one every `every` seconds of simulated time.
+struct Sampler {
+  EffectsSeries& series;
+  double every;
+  double next = 0.0;
+
+  void take(const Simulator& sim, const Look& l, double volume_ratio) {
+    series.t.push_back(sim.time());
+    series.com_height.push_back(l.height);
+    series.com_speed.push_back(l.com_v.norm());
+    series.volume_ratio.push_back(volume_ratio);
+    series.max_speed.push_back(l.max_speed);
+    series.energy.push_back(sim.energy().total());
+    next += every;
+  }
+};
+
+/// Whether the state is no longer finite; the run is then unstable from now on.
+bool blew_up(const Simulator& sim, EffectsRow& row) {
+  const State& s = sim.state();
+  if (!s.x.allFinite() || !s.v.allFinite()) {
+    row.finite = false;
+    if (row.stable) {
+      row.stable = false;
+      row.reason = "a position or velocity is not finite";
+      row.detected_at = sim.time();
+    }
+    return true;
+  }
+  return false;
+}
+
+/// Whether the stability detector, which samples every few steps, fires after `step`.
+bool detector_fired(StabilityMonitor& monitor, const Simulator& sim, long step, EffectsRow& row) {
+  if (monitor.wants_sample(step))
+    if (auto reason = monitor.check(sim.detector_energy(), true)) {
+      row.stable = false;
+      row.reason = *reason;
+      row.detected_at = sim.time();
+      return true;
+    }
+  return false;
+}
+
+/// What is known at the end of the run: the bounce, the rest, the kind's measures, the energy and
+/// the cost.
+void finish_row(const Simulator& sim, const BounceWatch& bounce, double rest_since,
+                const BodyStudyValues& v, const EffectsOptions& o, double wall, EffectsRow& row) {
+  if (bounce.turned) row.bounce = row.com_apex - bounce.turn_height;
   row.sim_time = sim.time();
   row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9
                       ? rest_since
                       : kNaN;
-  const BodyStudyValues& v = kind_values;
   row.rest_volume = v.rest_volume;
   row.cave_in = v.cave_in;
   row.cave_in_final = v.cave_in_final;
@@ -229,6 +231,61 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   row.evaluations = sim.evaluations();
   if (const BackwardEulerSolver* be = sim.backward_euler())
     row.cg_iterations = be->total_iterations();
+}
+
+/// One run: steps the scene to the duration and measures as it goes (the measuring is not timed).
+EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOptions& o,
+                   EffectsSeries& series) {
+  EffectsRow row;
+  row.integrator = kind;
+  row.h = scene.dt;
+  Simulator::Options options(kind, scene.dt);
+  options.detect_instability = false;  // watched below (the same detector, every 10 steps)
+  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
+  const World& world = sim.world();
+  StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
+  row.energy_start = sim.energy().total();
+  monitor.start(sim.detector_energy());
+  row.particles = static_cast<long>(world.particle_count());
+  row.springs = static_cast<long>(world.spring_count());
+  const BodyKindModule& body_kind = body_kind_of(scene);
+  const MeasuredBody body = measured_body(world, body_kind);
+  Look before = look_at(body, sim.state());
+  // What the body's kind measures on it (the cave-in, the sag, ...); NaN for what it does not.
+  const std::unique_ptr<BodyStudy> kind_study = body_kind.study(
+      world, sim.state(), StudyLook{before.com, before.height, body.up}, measure_names(o.measures));
+  const BodyStudyValues no_values;
+  const BodyStudyValues& kind_values = kind_study ? kind_study->values() : no_values;
+
+  const long total = std::max(1L, static_cast<long>(std::ceil(o.duration / scene.dt - 1e-9)));
+  row.contact_time = row.impact_speed = row.turn_time = kNaN;
+  row.peak_speed = row.com_apex = row.bounce = kNaN;
+  BounceWatch bounce;
+  double rest_since = 0.0;
+  Sampler sampler{series, o.series_dt};
+  sampler.take(sim, before, kind_values.volume_ratio);
+  double wall = 0.0;
+  for (long step = 1; step <= total; ++step) {
+    const double t_before = sim.time();
+    const auto t0 = std::chrono::steady_clock::now();
+    sim.step();
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (blew_up(sim, row)) break;
+    const Look now = look_at(body, sim.state());
+    bounce.observe(sim, t_before, before, now, body.up, row);
+    if (kind_study) kind_study->observe(sim.state(), StudyLook{now.com, now.height, body.up});
+    if (now.max_speed >= o.rest_speed)
+      rest_since = kNaN;
+    else if (std::isnan(rest_since))
+      rest_since = sim.time();
+    const bool fired = detector_fired(monitor, sim, step, row);
+    const bool last = fired || step == total;
+    if (sim.time() >= sampler.next - 1e-9 * scene.dt || last)
+      sampler.take(sim, now, kind_values.volume_ratio);
+    if (last) break;  // the detector fired: what follows would measure a broken run
+    before = now;
+  }
+  finish_row(sim, bounce, rest_since, kind_values, o, wall, row);
   return row;
 }
 

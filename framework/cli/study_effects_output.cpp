@@ -41,30 +41,11 @@ std::string run_label(const EffectsResult& r, const EffectsRow& row) {
   return label;
 }
 
-/// Writes `draw`'s plot as SVG and (when gnuplot has pngcairo) PNG into one script.
-std::string plot_script(const std::string& header, const std::string& svg, const std::string& png,
-                        const std::string& body, int width, int height) {
-  std::ostringstream gp;
-  gp << header;
-  gp << "set terminal svg size " << width << "," << height
-     << " dynamic enhanced font 'sans,11' background '#ffffff'\nset output '" << svg << "'\n"
-     << body;
-  gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo size " << width
-     << "," << height << " enhanced font 'sans,10'\n  set output '" << png << "'\n";
-  std::istringstream lines(body);
-  for (std::string line; std::getline(lines, line);) gp << "  " << line << '\n';
-  gp << "}\nset output\n";
-  return gp.str();
-}
-
 /// gnuplot's multiplot line for `panels` panels: three columns from five panels on, else two.
 std::string multiplot_layout(int panels, const std::string& title) {
   const int columns = panels > 4 ? 3 : panels > 1 ? 2 : 1;
   const int rows = (panels + columns - 1) / columns;
-  char buf[512];
-  std::snprintf(buf, sizeof buf, "set multiplot layout %d,%d title \"%s\" noenhanced font ',12'\n",
-                rows, columns, title.c_str());
-  return buf;
+  return multiplot_line(rows, columns, title);
 }
 
 /// The plot's label of a body kind's measure: the first linked kind's that takes it, else its
@@ -384,33 +365,21 @@ std::string without_range_notes(const std::string& note) {
 
 std::vector<std::filesystem::path> write_effects(const EffectsResult& r, const std::string& prefix,
                                                  const std::string& title, std::string& note) {
-  namespace fs = std::filesystem;
-  const fs::path base(prefix);
-  if (base.has_parent_path()) fs::create_directories(base.parent_path());
-  const auto with = [&](const char* ext) { return fs::path(prefix + ext); };
-  std::vector<fs::path> written;
-  const auto write = [&](const fs::path& path, const std::string& text) {
-    write_file(path, text);
-    written.push_back(path);
-  };
-  const auto plot = [&](const char* gp, const char* svg, const char* png) {
-    if (!run_gnuplot(with(gp), with(svg), with(png), note)) return;
-    if (fs::exists(with(svg))) written.push_back(with(svg));
-    if (fs::exists(with(png))) written.push_back(with(png));
-  };
-  write(with(".csv"), effects_csv(r));
-  write(with(".md"), effects_markdown(r, title));
+  StudyFiles files(prefix);
+  const auto with = [&](const char* suffix) { return files.path(suffix); };
+  files.write(".csv", effects_csv(r));
+  files.write(".md", effects_markdown(r, title));
   const SweepLayout layout = sweep_layout(r);
-  write(with(".dat"), effects_sweep_dat(r, layout));
-  write(with(".gp"), effects_sweep_plot(r, layout, title, with(".gp"), with(".dat"), with(".svg"),
+  files.write(".dat", effects_sweep_dat(r, layout));
+  files.write(".gp", effects_sweep_plot(r, layout, title, with(".gp"), with(".dat"), with(".svg"),
                                         with(".png")));
-  plot(".gp", ".svg", ".png");
-  write(with("-time.dat"), effects_time_dat(r));
-  write(with("-time.gp"), effects_time_plot(r, title, with("-time.gp"), with("-time.dat"),
+  files.plot(".gp", ".svg", ".png", note);
+  files.write("-time.dat", effects_time_dat(r));
+  files.write("-time.gp", effects_time_plot(r, title, with("-time.gp"), with("-time.dat"),
                                             with("-time.svg"), with("-time.png")));
-  plot("-time.gp", "-time.svg", "-time.png");
+  files.plot("-time.gp", "-time.svg", "-time.png", note);
   note = without_range_notes(note);
-  return written;
+  return files.written();
 }
 
 }  // namespace jelly::cli::study

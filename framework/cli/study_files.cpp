@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace jelly::cli::study {
 
@@ -59,6 +61,48 @@ bool run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   }
   note += out;  // warnings
   return true;
+}
+
+StudyFiles::StudyFiles(std::string prefix) : prefix_(std::move(prefix)) {
+  const std::filesystem::path base(prefix_);
+  if (base.has_parent_path()) std::filesystem::create_directories(base.parent_path());
+}
+
+std::filesystem::path StudyFiles::path(const char* suffix) const {
+  return std::filesystem::path(prefix_ + suffix);
+}
+
+void StudyFiles::write(const char* suffix, const std::string& text) {
+  write_file(path(suffix), text);
+  written_.push_back(path(suffix));
+}
+
+void StudyFiles::plot(const char* gp, const char* svg, const char* png, std::string& note) {
+  if (!run_gnuplot(path(gp), path(svg), path(png), note)) return;
+  if (std::filesystem::exists(path(svg))) written_.push_back(path(svg));
+  if (std::filesystem::exists(path(png))) written_.push_back(path(png));
+}
+
+std::string plot_script(const std::string& header, const std::string& svg, const std::string& png,
+                        const std::string& body, int width, int height) {
+  std::ostringstream gp;
+  gp << header;
+  gp << "set terminal svg size " << width << "," << height
+     << " dynamic enhanced font 'sans,11' background '#ffffff'\nset output '" << svg << "'\n"
+     << body;
+  gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo size " << width
+     << "," << height << " enhanced font 'sans,10'\n  set output '" << png << "'\n";
+  std::istringstream lines(body);
+  for (std::string line; std::getline(lines, line);) gp << "  " << line << '\n';
+  gp << "}\nset output\n";
+  return gp.str();
+}
+
+std::string multiplot_line(int rows, int columns, const std::string& title) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "set multiplot layout %d,%d title \"%s\" noenhanced font ',12'\n",
+                rows, columns, title.c_str());
+  return buf;
 }
 
 std::string loadavg() {

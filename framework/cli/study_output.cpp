@@ -2,7 +2,7 @@
 // gnuplot (SVG, and PNG through pngcairo when the installed gnuplot has it).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -36,17 +36,8 @@ const char* colour(IntegratorKind k) {
   return "#000000";
 }
 
-}  // namespace
-
-std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std::string& prefix,
-                                                 const std::string& title, std::string& note) {
-  namespace fs = std::filesystem;
-  const fs::path base(prefix);
-  if (base.has_parent_path()) fs::create_directories(base.parent_path());
-  const auto with = [&](const char* ext) { return fs::path(prefix + ext); };
-  std::vector<fs::path> written;
-
-  // ----- CSV: one row per run -----
+/// The CSV: one row per run.
+std::string accuracy_csv(const SweepResult& r) {
   std::ostringstream csv;
   csv << "scene,integrator,h,stable,finite,detected_at,error_final,error_rms,wall_s,sim_s,"
          "wall_s_per_sim_s,force_evaluations,cg_iterations,order_final,order_rms,reason\n";
@@ -57,14 +48,22 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
         << num(row.wall) << ',' << num(row.sim_time) << ',' << num(row.wall_per_sim()) << ','
         << row.evaluations << ',' << row.cg_iterations << ',' << num(row.order_final) << ','
         << num(row.order_rms) << ",\"" << row.reason << "\"\n";
-  write_file(with(".csv"), csv.str());
-  written.push_back(with(".csv"));
+  return csv.str();
+}
 
-  // ----- Markdown -----
-  const SweepOptions& o = r.options;
+/// The smallest positive RMS error of a stable run (infinity when there is none).
+double smallest_stable_error(const SweepResult& r) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const RunRow& row : r.rows)
     if (row.stable && row.error_rms > 0.0) smallest = std::min(smallest, row.error_rms);
+  return smallest;
+}
+
+/// The Markdown text above the table: the scene, the reference run, the norms and the automatic
+/// steps.
+std::string accuracy_intro(const SweepResult& r, const std::string& title) {
+  const SweepOptions& o = r.options;
+  const double smallest = smallest_stable_error(r);
   std::ostringstream md;
   md << "### " << title << "\n\n";
   md << "Scene `" << r.scene_name << "`: " << r.particles << " particles, " << r.springs
@@ -92,6 +91,12 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
   for (std::size_t i = 0; i < r.auto_steps.size() && i < o.integrators.size(); ++i)
     md << (i ? "; " : " ") << to_string(o.integrators[i]) << " " << r.auto_steps[i];
   md << ".\n\n";
+  return md.str();
+}
+
+/// The Markdown table: one line per run.
+std::string accuracy_table(const SweepResult& r) {
+  std::ostringstream md;
   md << "| integrator | h [s] | stable | RMS error [m] | final error [m] | order (RMS) | "
         "wall s / sim s | force evals | CG iters |\n";
   md << "|---|---|---|---|---|---|---|---|---|\n";
@@ -106,21 +111,24 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
        << row.evaluations << " | " << (row.cg_iterations ? std::to_string(row.cg_iterations) : "")
        << " |\n";
   }
-  write_file(with(".md"), md.str());
-  written.push_back(with(".md"));
+  return md.str();
+}
 
-  // ----- plot data: per integrator, a block of stable runs then a block of unstable ones -----
-  const double cap = plot_cap(r);
+/// One block of the plot data: the stable or the unstable runs of one integrator.
+struct PlotBlock {
+  IntegratorKind kind;
+  bool stable;
+  int index;  ///< gnuplot's index of the block in the data file
+};
+
+/// The plot data: per integrator, a block of stable runs then a block of unstable ones (an empty
+/// block holds one line of NaNs); errors clipped to [kPlotFloor, cap]. `blocks` gets the blocks
+/// that hold runs.
+std::string accuracy_dat(const SweepResult& r, double cap, std::vector<PlotBlock>& blocks) {
   std::ostringstream dat;
   dat << "# h error_rms(plotted) wall_s_per_sim_s work(evaluations+cg) error_final(plotted)\n";
-  struct Block {
-    IntegratorKind kind;
-    bool stable;
-    int index;
-  };
-  std::vector<Block> blocks;
   int index = 0;
-  for (IntegratorKind kind : o.integrators)
+  for (IntegratorKind kind : r.options.integrators)
     for (bool stable : {true, false}) {
       std::ostringstream b;
       int n = 0;
@@ -139,70 +147,76 @@ std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std
       if (n > 0) blocks.push_back({kind, stable, index});
       ++index;
     }
-  write_file(with(".dat"), dat.str());
-  written.push_back(with(".dat"));
+  return dat.str();
+}
 
-  // ----- gnuplot script: three panels sharing the error axis (SciML's convention, x = error) ----
-  const std::string dat_name = with(".dat").filename().string();
-  std::ostringstream gp;
-  gp << "# Work-precision plot written by `jelly study accuracy`; run: gnuplot "
-     << with(".gp").filename().string() << " (in this folder)\n";
-  gp << "set datafile missing 'nan'\nset logscale xy\nset grid\nset key top right font ',9'\n"
-        "set format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'RMS position error [m]'\n"
-        "set pointsize 1.0\n";
-  std::string panels[3] = {"wall time per simulated second [s]",
-                           "force evaluations (+ CG mat-vec products)", "step h [s]"};
+/// The plot commands: three panels sharing the error axis (SciML's convention, x = error), each
+/// drawing every block of `dat_name` with a dashed line at the cap.
+std::string accuracy_panels(const std::string& title, const std::vector<PlotBlock>& blocks,
+                            double cap, const std::string& dat_name) {
+  const std::string panels[3] = {"wall time per simulated second [s]",
+                                 "force evaluations (+ CG mat-vec products)", "step h [s]"};
   const int ycol[3] = {3, 4, 1};
-  const auto draw = [&](std::ostream& g) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "set multiplot layout 1,3 title \"%s\" noenhanced font ',12'\n",
-                  title.c_str());
-    g << buf;
-    for (int p = 0; p < 3; ++p) {
-      g << "set ylabel '" << panels[p] << "'\n";
-      g << "set arrow 1 from " << num(cap) << ", graph 0 to " << num(cap)
-        << ", graph 1 nohead dashtype 2 lc rgb '#999999'\n";
-      g << "plot ";
-      bool first = true;
-      for (const Block& b : blocks) {
-        if (!first) g << ", \\\n     ";
-        first = false;
-        g << "'" << dat_name << "' index " << b.index << " using 2:" << ycol[p];
-        if (b.stable)
-          g << " with linespoints pt 7 ps 0.6 lw 1.5 lc rgb '" << colour(b.kind) << "' title '"
-            << to_string(b.kind) << "' noenhanced";
-        else
-          g << " with points pt 2 ps 1.6 lw 2 lc rgb '" << colour(b.kind) << "' title '"
-            << to_string(b.kind) << " unstable' noenhanced";
-      }
-      if (first) g << "1/0 notitle";
-      g << "\nunset arrow 1\n";
+  std::ostringstream g;
+  g << multiplot_line(1, 3, title);
+  for (int p = 0; p < 3; ++p) {
+    g << "set ylabel '" << panels[p] << "'\n";
+    g << "set arrow 1 from " << num(cap) << ", graph 0 to " << num(cap)
+      << ", graph 1 nohead dashtype 2 lc rgb '#999999'\n";
+    g << "plot ";
+    bool first = true;
+    for (const PlotBlock& b : blocks) {
+      if (!first) g << ", \\\n     ";
+      first = false;
+      g << "'" << dat_name << "' index " << b.index << " using 2:" << ycol[p];
+      if (b.stable)
+        g << " with linespoints pt 7 ps 0.6 lw 1.5 lc rgb '" << colour(b.kind) << "' title '"
+          << to_string(b.kind) << "' noenhanced";
+      else
+        g << " with points pt 2 ps 1.6 lw 2 lc rgb '" << colour(b.kind) << "' title '"
+          << to_string(b.kind) << " unstable' noenhanced";
     }
-    g << "unset multiplot\n";
-  };
-  const std::string svg = with(".svg").filename().string(), png = with(".png").filename().string();
-  gp << "set terminal svg size 1500,520 dynamic enhanced font 'sans,11' background '#ffffff'\n"
-     << "set output '" << svg << "'\n";
-  draw(gp);
-  gp << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-     << "  set terminal pngcairo size 1500,520 enhanced font 'sans,10'\n  set output '" << png
-     << "'\n";
-  std::ostringstream inner;
-  draw(inner);
-  std::istringstream lines(inner.str());
-  for (std::string line; std::getline(lines, line);) gp << "  " << line << '\n';
-  gp << "}\nset output\n";
-  gp << "# Unstable runs (the §8 detector fired, or the state blew up) are crosses; errors above "
-     << num(cap) << " m (and non-finite ones) are drawn at that cap (dashed line); errors below "
-     << num(kPlotFloor) << " m at that floor.\n";
-  write_file(with(".gp"), gp.str());
-  written.push_back(with(".gp"));
-
-  if (run_gnuplot(with(".gp"), with(".svg"), with(".png"), note)) {
-    if (fs::exists(with(".svg"))) written.push_back(with(".svg"));
-    if (fs::exists(with(".png"))) written.push_back(with(".png"));
+    if (first) g << "1/0 notitle";
+    g << "\nunset arrow 1\n";
   }
-  return written;
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+/// The gnuplot script of the work-precision plot (`files`: where the script, data and images go).
+std::string accuracy_plot(const std::string& title, const std::vector<PlotBlock>& blocks,
+                          double cap, const StudyFiles& files) {
+  std::ostringstream header;
+  header << "# Work-precision plot written by `jelly study accuracy`; run: gnuplot "
+         << files.path(".gp").filename().string() << " (in this folder)\n";
+  header << "set datafile missing 'nan'\nset logscale xy\nset grid\nset key top right font ',9'\n"
+            "set format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'RMS position error [m]'\n"
+            "set pointsize 1.0\n";
+  const std::string body =
+      accuracy_panels(title, blocks, cap, files.path(".dat").filename().string());
+  std::ostringstream footer;
+  footer << "# Unstable runs (the §8 detector fired, or the state blew up) are crosses; "
+         << "errors above " << num(cap)
+         << " m (and non-finite ones) are drawn at that cap (dashed line); errors below "
+         << num(kPlotFloor) << " m at that floor.\n";
+  return plot_script(header.str(), files.path(".svg").filename().string(),
+                     files.path(".png").filename().string(), body, 1500, 520) +
+         footer.str();
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> write_outputs(const SweepResult& r, const std::string& prefix,
+                                                 const std::string& title, std::string& note) {
+  StudyFiles files(prefix);
+  files.write(".csv", accuracy_csv(r));
+  files.write(".md", accuracy_intro(r, title) + accuracy_table(r));
+  const double cap = plot_cap(r);
+  std::vector<PlotBlock> blocks;
+  files.write(".dat", accuracy_dat(r, cap, blocks));
+  files.write(".gp", accuracy_plot(title, blocks, cap, files));
+  files.plot(".gp", ".svg", ".png", note);
+  return files.written();
 }
 
 }  // namespace jelly::cli::study
