@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "course_mocap.hpp"
 #include "jelly/a3/kinematics.hpp"
 #include "jelly/a3/time_warp.hpp"
 #include "jelly/skeleton/rotation.hpp"
@@ -25,19 +26,9 @@ using skeleton::quaternion_to_euler;
 using skeleton::same_rotation;
 using skeleton::Skeleton;
 
-const std::filesystem::path kMocap = std::filesystem::path(JELLY_SOURCE_DIR) / "data" / "mocap";
-
-Skeleton course_skeleton() {
-  const skeleton::SkeletonResult r = skeleton::read_asf(kMocap / "skeleton.asf", 0.2);
-  EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return *r.skeleton;
-}
-
-Motion course_motion(const Skeleton& s, const std::string& name) {
-  const skeleton::MotionResult r = skeleton::read_amc(kMocap / name, s);
-  EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return *r.motion;
-}
+using testing::course_motion;
+using testing::course_skeleton;
+using testing::kMocap;
 
 bool finite(const Posture& p) {
   for (const Vec3& a : p.angles)

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "course_mocap.hpp"
 #include "jelly/a3/blend.hpp"
 #include "jelly/a3/kinematics.hpp"
 #include "jelly/a3/time_warp.hpp"
@@ -24,19 +25,9 @@ using skeleton::Motion;
 using skeleton::Posture;
 using skeleton::Skeleton;
 
-const fs::path kMocap = fs::path(JELLY_SOURCE_DIR) / "data" / "mocap";
-
-Skeleton course_skeleton() {
-  const skeleton::SkeletonResult r = skeleton::read_asf(kMocap / "skeleton.asf", 0.2);
-  EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return *r.skeleton;
-}
-
-Motion course_motion(const Skeleton& s, const std::string& name) {
-  const skeleton::MotionResult r = skeleton::read_amc(kMocap / name, s);
-  EXPECT_TRUE(r) << (r.error ? r.error->text() : "");
-  return *r.motion;
-}
+using testing::course_motion;
+using testing::course_skeleton;
+using testing::kMocap;
 
 int bone(const Skeleton& s, const std::string& name) {
   const std::optional<int> i = s.find(name);
