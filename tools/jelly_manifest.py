@@ -7,11 +7,14 @@ to write the keys it needs as a .cmake file. The programs read the whole manifes
 
     jelly_manifest.py cmake MANIFEST OUT.cmake   write the keys CMake reads (JELLY_MANIFEST_*)
     jelly_manifest.py get MANIFEST KEY           print a top-level key: a string, or a list one item a line
+    jelly_manifest.py claims MANIFEST            print its `bodies` checked, one claim a line: KIND or
+                                                 KIND VARIANT (the entry "kind:variant")
 
 Every error names the file and the key, and what was expected (docs/new-assignment.md).
 """
 
 import hashlib
+import re
 import sys
 from pathlib import Path
 
@@ -31,6 +34,31 @@ CMAKE_KEYS = (
     ("task_modules", "list", False),
     ("default_scene", "string", False),
 )
+
+
+# A `bodies` entry: a body kind's name, or kind:variant (framework/manifest's BodyClaim).
+_NAME = r"[A-Za-z_-][A-Za-z0-9_-]*"
+_CLAIM = re.compile(rf"({_NAME})(?::({_NAME}))?")
+CLAIM_FORM = ("a body kind's name (a scene's [body] type: every scene of the kind) or kind:variant (only its "
+              "scenes of that variant, docs/new-assignment.md), names of letters, digits, '_' and '-'")
+
+
+class Claim:
+    """One entry of a manifest's `bodies`: every scene of a body kind ("cube"), or only its scenes
+    of one variant ("skeleton:ik"; the variant of a skeleton scene is its body.mode)."""
+
+    def __init__(self, kind, variant=""):
+        self.kind, self.variant = kind, variant
+
+    def claims(self, kind, variant):
+        """Whether it claims a scene of body kind `kind` whose variant is `variant`."""
+        return self.kind == kind and (not self.variant or self.variant == variant)
+
+    def __str__(self):
+        return f"{self.kind}:{self.variant}" if self.variant else self.kind
+
+    def __repr__(self):
+        return f"Claim({str(self)!r})"
 
 
 class ManifestError(Exception):
@@ -110,7 +138,29 @@ class Manifest:
 
     @property
     def bodies(self):
+        """The `bodies` entries as written."""
         return self.strings("bodies", required=False)
+
+    def claims(self):
+        """The `bodies` entries as Claims, checked as the programs check them: each a kind or
+        kind:variant, each scene claimed once."""
+        out = []
+        for text in self.bodies:
+            m = _CLAIM.fullmatch(text)
+            if not m or text[0].isdigit() or (m.group(2) or "x")[0].isdigit():
+                self._fail("bodies", f'{CLAIM_FORM}, not "{text}"')
+            claim = Claim(m.group(1), m.group(2) or "")
+            for before in out:
+                if before.kind == claim.kind and (not before.variant or not claim.variant
+                                                  or before.variant == claim.variant):
+                    self._fail("bodies", f'each scene claimed once, and "{before}" already claims the scenes '
+                                         f'"{text}" does')
+            out.append(claim)
+        return out
+
+    def claims_scene(self, kind, variant):
+        """Whether one of its `bodies` claims a scene of body kind `kind` and variant `variant`."""
+        return any(c.claims(kind, variant) for c in self.claims())
 
 
 def assignment_manifests(root):
@@ -141,6 +191,7 @@ def cmake_keys(manifest):
     JELLY_MANIFEST_SHA256, the manifest's hash without its "\r"s (CMake checks it against the file it
     reads; a Windows checkout may have CR LF line ends)."""
     digest = hashlib.sha256(manifest.path.read_bytes().replace(b"\r", b"")).hexdigest()
+    manifest.claims()  # `bodies` is checked here too: a bad entry stops the configure, naming it
     lines = [
         f"# Written by tools/jelly_manifest.py from {manifest.path.name}; do not edit.",
         f"set(JELLY_MANIFEST_SHA256 {digest})",
@@ -166,7 +217,7 @@ def write_cmake_keys(manifest_path, out_path):
 
 
 def _main(argv):
-    usage = "usage: jelly_manifest.py cmake MANIFEST OUT.cmake | get MANIFEST KEY"
+    usage = "usage: jelly_manifest.py cmake MANIFEST OUT.cmake | get MANIFEST KEY | claims MANIFEST"
     try:
         if len(argv) == 3 and argv[0] == "cmake":
             write_cmake_keys(argv[1], argv[2])
@@ -178,6 +229,10 @@ def _main(argv):
                 print("\n".join(manifest.strings(argv[2])))
             elif value is not None:
                 print(manifest.string(argv[2]))
+            return 0
+        if len(argv) == 2 and argv[0] == "claims":
+            for claim in Manifest(argv[1]).claims():
+                print(f"{claim.kind} {claim.variant}".rstrip())
             return 0
     except ManifestError as e:
         print(f"jelly_manifest: {e}", file=sys.stderr)

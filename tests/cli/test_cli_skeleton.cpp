@@ -88,13 +88,12 @@ TEST_F(CliSkeleton, RunRefusesOutBecauseASkeletonHasNoParticles) {
   EXPECT_FALSE(fs::exists(out()));
 }
 
-// Whether an assignment of this tree (every one is built into jelly) simulates the skeleton: its
-// manifest lists the body.
+// Whether an assignment of this tree (every one is built into jelly) simulates the skeleton's
+// warps: its manifest claims them ("skeleton" or "skeleton:warp").
 bool an_assignment_simulates_the_skeleton() {
   for (const jelly::AssignmentManifest& m :
        jelly::find_assignments(fs::path(JELLY_SOURCE_DIR) / "assignments"))
-    for (const std::string& body : m.bodies)
-      if (body == "skeleton") return true;
+    if (m.claims("skeleton", "warp")) return true;
   return false;
 }
 

@@ -110,6 +110,44 @@ TEST(Manifest, ContractsAreReadAndMustBeAnchorNames) {
       "digits and '-' (a handout anchor), not \"Drag law\"");
 }
 
+// `bodies`: each entry a body kind, or kind:variant for only that variant of the kind's scenes;
+// each scene claimed once.
+TEST(Manifest, BodiesAreKindsOrKindsWithAVariant) {
+  const std::string files = "files = [\"launch.cpp\", \"drag.cpp\"]";
+  const auto with = [&](const std::string& bodies) {
+    return replaced(files, files + "\nbodies = [" + bodies + "]");
+  };
+  EXPECT_TRUE(jelly::parse_manifest(kGood, "p1.toml").bodies.empty());
+  const jelly::AssignmentManifest m =
+      jelly::parse_manifest(with("\"point\", \"rope:braided\", \"rope:plain-2\""), "p1.toml");
+  ASSERT_EQ(m.bodies.size(), 3u);
+  EXPECT_EQ(m.bodies[0].kind, "point");
+  EXPECT_EQ(m.bodies[0].variant, "");
+  EXPECT_EQ(m.bodies[1].kind, "rope");
+  EXPECT_EQ(m.bodies[1].variant, "braided");
+  EXPECT_EQ(m.bodies[2].text(), "rope:plain-2");
+  EXPECT_TRUE(m.claims("point", "") && m.claims("point", "any"));
+  EXPECT_TRUE(m.claims("rope", "braided") && m.claims("rope", "plain-2"));
+  EXPECT_FALSE(m.claims("rope", "knotted") || m.claims("rope", "") || m.claims("disc", ""));
+
+  const std::string f = "assignments/p1/assignment.toml:5: bodies: expected ";
+  const std::string form =
+      "a body kind's name (a scene's [body] type: every scene of the kind) or kind:variant (only "
+      "its scenes of that variant, docs/new-assignment.md), names of letters, digits, '_' and '-'";
+  for (const char* bad : {"rope:", ":braided", "rope:braided:x", "rope braided", "rope:b/c"})
+    EXPECT_EQ(error_of(with(std::string("\"point\", \"") + bad + "\"")),
+              f + form + ", not \"" + bad + "\"")
+        << bad;
+  EXPECT_EQ(error_of(with("\"rope:plain\", \"rope\"")),
+            f + "each scene claimed once, and \"rope:plain\" already claims the scenes \"rope\" "
+                "does");
+  EXPECT_EQ(error_of(with("\"rope:plain\", \"rope:plain\"")),
+            f + "each scene claimed once, and \"rope:plain\" already claims the scenes "
+                "\"rope:plain\" does");
+  EXPECT_EQ(error_of(with("\"rope:plain\", \"rope:braided\", \"point\"")), "");
+  EXPECT_EQ(error_of(with("\"rope\", 3")).rfind(f + "a list of the body.type names", 0), 0u);
+}
+
 // `bonus = true` marks a task whose points come on top of autograded_total; absent, false.
 TEST(Manifest, ABonusTaskIsMarked) {
   const jelly::AssignmentManifest plain = jelly::parse_manifest(kGood, "p1.toml");

@@ -43,6 +43,18 @@ bad "not TOML" 'id = "x' 'not valid TOML: '
 bad "a file name CMake cannot take" 'id = "x"
 namespace = "x"
 files = ["a;b.cpp"]' "files: 'a;b.cpp' holds a character CMake cannot take"
+bad "a body claim that is not kind or kind:variant" 'id = "x"
+namespace = "x"
+files = ["a.cpp"]
+bodies = ["rope", "disc:"]' 'bodies: expected a body kind'"'"'s name (a scene'"'"'s [body] type: every scene of the kind) or kind:variant (only its scenes of that variant, docs/new-assignment.md), names of letters, digits, '"'"'_'"'"' and '"'"'-'"'"', not "disc:"'
+bad "a scene claimed twice (a kind and one of its variants)" 'id = "x"
+namespace = "x"
+files = ["a.cpp"]
+bodies = ["rope:plain", "rope"]' 'bodies: expected each scene claimed once, and "rope:plain" already claims the scenes "rope" does'
+
+# `claims`: the bodies, one claim a line, a variant after its kind.
+printf 'id = "x"\nnamespace = "x"\nfiles = ["a.cpp"]\nbodies = ["rope:plain", "disc", "rope:braided"]\n' >"$work/x/assignment.toml"
+check "claims prints each kind and its variant" '[ "$("$py" "$reader" claims "$work/x/assignment.toml" | tr "\n" "|")" = "rope plain|disc|rope braided|" ]'
 
 # The tree's own manifests: their keys as CMake gets them.
 for m in "$src"/assignments/*/assignment.toml; do

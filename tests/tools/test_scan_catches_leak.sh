@@ -41,22 +41,30 @@ if [ -d "$src/$asg/grader/cases" ]; then
   check "every public case kept ($pub_src)" '[ "$pub_src" = "$pub_rel" ]'
 fi
 
-# The scenes follow the assignments: a release ships exactly the scenes whose body kind ([body] type,
-# "cube" when absent) one of its assignments simulates (its manifest's `bodies`), so that an A1
-# release has no cloth scene and an A2 release no cube. check_scenes RELEASE ID...
+# The scenes follow the assignments: a release ships exactly the scenes one of its assignments claims
+# (its manifest's `bodies`: the scene's kind, its [body] type, "cube" when absent; or kind:variant,
+# the variant of a skeleton scene being its body.mode, "playback" when absent), so that an A1
+# release has no cloth scene and an A2 release no cube; and data/mocap/ only when one of them
+# claims skeleton scenes. check_scenes RELEASE ID...
 bodies_of() { manifest_key "$src/assignments/$1/assignment.toml" bodies; }
-kind_of() { awk '/^[ \t]*\[/ { body = ($0 ~ /^[ \t]*\[body\]/); next } body && /^[ \t]*type[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); k = v } END { print (k == "" ? "cube" : k) }' "$1"; }
+body_key() { awk -v key="$2" '/^[ \t]*\[/ { body = ($0 ~ /^[ \t]*\[body\]/); next } body && $0 ~ "^[ \t]*" key "[ \t]*=" { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); k = v } END { print k }' "$1"; }
+kind_of() { local k; k="$(body_key "$1" type)"; echo "${k:-cube}"; }
+variant_of() { local v; v="$(body_key "$1" mode)"; [ -z "$v" ] && [ "$(kind_of "$1")" = skeleton ] && v=playback; echo "$v"; }
 check_scenes() {
-  local r="$1" kinds="" i f rel_path want kept=0 left=0; shift
+  local r="$1" kinds="" i f rel_path want kept=0 left=0 k v; shift
   for i in "$@"; do kinds="$kinds $(bodies_of "$i" | tr '\n' ' ')"; done
   check "the manifests of $* name their bodies ($kinds)" '[ -n "${kinds// /}" ]'
   while IFS= read -r f; do
-    rel_path="${f#"$src"/}"
-    want=0; case " $kinds " in *" $(kind_of "$f") "*) want=1 ;; esac
-    if [ "$want" -eq 1 ]; then kept=$((kept + 1)); check "$rel_path ($(kind_of "$f")) is in the release of $*" '[ -f "$r/$rel_path" ]'
-    else left=$((left + 1)); check "$rel_path ($(kind_of "$f")) is not in the release of $*" '[ ! -e "$r/$rel_path" ]'; fi
+    rel_path="${f#"$src"/}"; k="$(kind_of "$f")"; v="$(variant_of "$f")"
+    want=0; case " $kinds " in *" $k "* | *" $k:$v "*) want=1 ;; esac
+    if [ "$want" -eq 1 ]; then kept=$((kept + 1)); check "$rel_path ($k $v) is in the release of $*" '[ -f "$r/$rel_path" ]'
+    else left=$((left + 1)); check "$rel_path ($k $v) is not in the release of $*" '[ ! -e "$r/$rel_path" ]'; fi
   done < <(cd "$src" && git ls-files -- 'scenes/*.toml' | sed "s|^|$src/|")
   check "the release of $* ships some scenes ($kept kept, $left left out)" '[ "$kept" -gt 0 ]'
+  case " $kinds " in
+    *" skeleton "* | *" skeleton:"*) check "the release of $* (skeleton scenes) has data/mocap/" '[ -f "$r/data/mocap/skeleton.asf" ]' ;;
+    *) check "the release of $* (no skeleton scene) has no data/mocap/" '[ ! -e "$r/data/mocap" ]' ;;
+  esac
 }
 check_scenes "$rel" "$id"
 # What a release says about scenes names only the ones it ships: its scenes/README.md, and the help of

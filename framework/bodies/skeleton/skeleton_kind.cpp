@@ -201,6 +201,12 @@ class SkeletonKind final : public BodyKindModule {
     return std::nullopt;
   }
 
+  /// A skeleton scene's variant is its mode ("playback", "warp", "blend"): A3's manifest claims
+  /// those, another assignment of the skeleton claims its own (docs/new-assignment.md).
+  std::string scene_variant(const SceneSpec& s) const override {
+    return std::string(skeleton_mode_name(spec(s).mode));
+  }
+
   std::optional<CrossError> check(const SceneSpec& s) const override {
     const SkeletonSceneSpec& k = spec(s);
     if (s.gravity) return CrossError{"gravity", no_table("gravity")};  // read before any check

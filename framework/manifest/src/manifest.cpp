@@ -152,7 +152,40 @@ void check_files(const std::string& source, const toml::node* n, const std::stri
   }
 }
 
+// `bodies`: each entry a body kind's name, or name:variant (names of letters, digits, '_' and
+// '-'), each scene claimed once: "kind" with "kind:variant" would claim that variant twice.
+std::vector<BodyClaim> read_bodies(const std::string& source, const toml::node* n,
+                                   const std::vector<std::string>& texts) {
+  const std::string what =
+      "a body kind's name (a scene's [body] type: every scene of the kind) or kind:variant (only "
+      "its scenes of that variant, docs/new-assignment.md), names of letters, digits, '_' and '-'";
+  std::vector<BodyClaim> out;
+  const auto* arr = n ? n->as_array() : nullptr;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const toml::node* at = arr && i < arr->size() ? arr->get(i) : n;
+    const std::string& t = texts[i];
+    const std::size_t colon = t.find(':');
+    BodyClaim c{t.substr(0, colon), colon == std::string::npos ? "" : t.substr(colon + 1)};
+    if (!is_name(c.kind, true) || (colon != std::string::npos && !is_name(c.variant, true)))
+      fail(source, at, "bodies", what + ", not \"" + t + "\"");
+    for (const BodyClaim& before : out)
+      if (before.kind == c.kind &&
+          (before.variant.empty() || c.variant.empty() || before.variant == c.variant))
+        fail(source, at, "bodies",
+             "each scene claimed once, and \"" + before.text() + "\" already claims the scenes \"" +
+                 t + "\" does");
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 }  // namespace
+
+bool AssignmentManifest::claims(std::string_view scene_kind, std::string_view scene_variant) const {
+  for (const BodyClaim& c : bodies)
+    if (c.claims(scene_kind, scene_variant)) return true;
+  return false;
+}
 
 std::string ManifestTask::functions_text() const {
   if (functions.empty()) return "your code";
@@ -209,8 +242,11 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
   m.task_modules =
       r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
-  m.bodies = r.strings("bodies", false,
-                       "a list of the body.type names of framework/bodies/ its tasks simulate");
+  m.bodies = read_bodies(
+      source, r.node("bodies"),
+      r.strings("bodies", false,
+                "a list of the body.type names of framework/bodies/ its tasks simulate (a name or "
+                "name:variant)"));
   m.default_scene = r.string("default_scene", false, "a scene name");
   m.contracts = r.strings("contracts", false,
                           "a list of contract names (the handout's anchors <name>-contract-N)");

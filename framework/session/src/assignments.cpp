@@ -1,5 +1,7 @@
 #include "jelly/session/assignments.hpp"
 
+#include "jelly/body_kind.hpp"
+
 #include <algorithm>
 #include <map>
 #include <mutex>
@@ -41,24 +43,39 @@ const AssignmentManifest& manifest_of(const LinkedAssignment& assignment) {
   return it->second;
 }
 
-const LinkedAssignment& assignment_for(const SceneSpec& scene) {
-  const std::string_view body = body_name(scene.body_kind);
-  const LinkedAssignment* found = nullptr;
-  std::string all;
-  for (const LinkedAssignment& a : linked_assignments()) {
-    const auto& bodies = manifest_of(a).bodies;
-    if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) continue;
-    all += (all.empty() ? "" : ", ") + std::string(a.id);
-    if (found)
-      throw std::runtime_error("the scene's " + std::string(body) +
-                               " body is simulated by several assignments (" + all +
-                               "); build one of them only (docs/new-assignment.md)");
-    found = &a;
+std::size_t claimant(const std::vector<const AssignmentManifest*>& manifests, std::string_view kind,
+                     std::string_view variant) {
+  const std::string body = std::string(kind) + " body" +
+                           (variant.empty() ? "" : " of variant \"" + std::string(variant) + "\"");
+  std::size_t found = manifests.size();
+  std::string all, ids;
+  for (std::size_t i = 0; i < manifests.size(); ++i) {
+    ids += (ids.empty() ? "" : ", ") + manifests[i]->id;
+    if (!manifests[i]->claims(kind, variant)) continue;
+    all += (all.empty() ? "" : ", ") + manifests[i]->id;
+    if (found < manifests.size())
+      throw std::runtime_error("the scene's " + body + " is simulated by several assignments (" +
+                               all + "); build one of them only (docs/new-assignment.md)");
+    found = i;
   }
-  if (!found)
-    throw std::runtime_error("no assignment in this program simulates a " + std::string(body) +
-                             " body (it has: " + linked_ids() + ")");
-  return *found;
+  if (found == manifests.size()) {
+    const std::string claim = variant.empty() ? ""
+                                              : " (a manifest's bodies = [\"" + std::string(kind) +
+                                                    ":" + std::string(variant) + "\"] or [\"" +
+                                                    std::string(kind) + "\"])";
+    throw std::runtime_error("no assignment in this program simulates a " + body + claim +
+                             " (it has: " + (ids.empty() ? "none" : ids) + ")");
+  }
+  return found;
+}
+
+const LinkedAssignment& assignment_for(const SceneSpec& scene) {
+  const BodyKindModule* kind = find_body_kind(scene.body_kind.name);
+  const std::string variant = kind ? kind->scene_variant(scene) : "";
+  const std::vector<LinkedAssignment>& linked = linked_assignments();
+  std::vector<const AssignmentManifest*> manifests;
+  for (const LinkedAssignment& a : linked) manifests.push_back(&manifest_of(a));
+  return linked[claimant(manifests, body_name(scene.body_kind), variant)];
 }
 
 TaskTable tasks_for(const SceneSpec& scene) { return assignment_for(scene).tasks(); }

@@ -104,6 +104,13 @@ class BodyKindModule {
   virtual std::string foreign_section(std::string_view section, std::string_view scene_body) const;
   /// Why a general table ([[terrain]]) is not allowed in a scene of this kind; nullopt: allowed.
   virtual std::optional<std::string> refuses_section(std::string_view section) const;
+  /// The variant of a scene of this kind: what a manifest's `bodies` entry "kind:variant" names to
+  /// claim only such scenes, when two assignments share the kind (jelly/manifest.hpp BodyClaim,
+  /// docs/new-assignment.md). "" (the default) for a kind without variants.
+  virtual std::string scene_variant(const SceneSpec& scene) const {
+    (void)scene;
+    return "";
+  }
 
   // ----- its springs -----
   /// The spring types its scenes may have, in the order a scene lists them.

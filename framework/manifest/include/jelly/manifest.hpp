@@ -22,6 +22,21 @@ class ManifestError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// One entry of a manifest's `bodies`: the scenes an assignment's tasks run. `"kind"` claims every
+/// scene whose body kind (`[body] type`) is kind; `"kind:variant"` only those of its scenes whose
+/// variant (BodyKindModule::scene_variant, jelly/body_kind.hpp) is variant, so that two
+/// assignments can share a kind, each running its own variants (docs/new-assignment.md).
+struct BodyClaim {
+  std::string kind;     ///< a body kind's name (`[body] type`)
+  std::string variant;  ///< "" for every scene of the kind
+  /// Whether it claims a scene of body kind `scene_kind` whose variant is `scene_variant`.
+  bool claims(std::string_view scene_kind, std::string_view scene_variant) const {
+    return kind == scene_kind && (variant.empty() || variant == scene_variant);
+  }
+  /// As the manifest writes it: "kind" or "kind:variant".
+  std::string text() const { return variant.empty() ? kind : kind + ":" + variant; }
+};
+
 /// One task of an assignment.
 struct ManifestTask {
   std::string id;                      ///< "HW.T1"
@@ -49,7 +64,7 @@ struct AssignmentManifest {
   std::vector<std::string> files;            ///< the files a student edits, in build order
   std::vector<std::string> reference_files;  ///< the reference's extra files
   std::vector<std::string> task_modules;     ///< shared tasks' modules (solutions/tasks/<module>/)
-  std::vector<std::string> bodies;           ///< the body kinds (body.type) of its scenes
+  std::vector<BodyClaim> bodies;             ///< the scenes it runs (`bodies`), in its order
   std::string default_scene;                 ///< a scene name ("course-2023"); may be empty
   std::string handout;                       ///< the handout's front page, relative
   std::vector<std::string> study_measures;   ///< what `jelly study effects` reports
@@ -66,6 +81,8 @@ struct AssignmentManifest {
   /// The folder the manifest was read from (empty for a manifest compiled into a program).
   std::filesystem::path dir;
 
+  /// Whether one of its `bodies` claims a scene of kind `scene_kind` and variant `scene_variant`.
+  bool claims(std::string_view scene_kind, std::string_view scene_variant) const;
   /// The task with this id, or nullptr.
   const ManifestTask* find_task(std::string_view task_id) const;
   /// The common prefix of the task IDs, e.g. "HW." (what the self-check and the release use to

@@ -2,11 +2,13 @@
 // (jelly/linked_assignments.hpp).
 //
 // A scene's body ([body] type, a registered body kind: jelly/body_kind.hpp) names what it
-// simulates; the assignment whose manifest lists that body in `bodies` runs it. Several
-// assignments can be linked into one program (the viewer, the CLI): each runs its own scenes with
-// its own tasks.
+// simulates; the assignment whose manifest claims it in `bodies` runs it: an entry "kind" claims
+// every scene of the kind, "kind:variant" only those whose variant (the kind's scene_variant) is
+// variant, so that two assignments can share a kind. Several assignments can be linked into one
+// program (the viewer, the CLI): each runs its own scenes with its own tasks.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,8 +30,15 @@ const LinkedAssignment& linked_assignment(std::string_view id);
 /// The manifest a linked assignment was built with (parsed once).
 const AssignmentManifest& manifest_of(const LinkedAssignment& assignment);
 
-/// The linked assignment that runs `scene`: the only one whose manifest lists the scene's body.
-/// Throws std::runtime_error when none or several do, naming them.
+/// The index in `manifests` of the only one that claims a scene of body kind `kind` and variant
+/// `variant` (AssignmentManifest::claims). Throws std::runtime_error when none does (naming the
+/// kind, the variant, the entries that would claim it and the manifests' ids) or several do
+/// (naming them).
+std::size_t claimant(const std::vector<const AssignmentManifest*>& manifests, std::string_view kind,
+                     std::string_view variant);
+
+/// The linked assignment that runs `scene`: the claimant among the linked assignments' manifests
+/// of its body kind and that kind's scene_variant(scene). Throws as claimant does.
 const LinkedAssignment& assignment_for(const SceneSpec& scene);
 
 /// The task table `scene` runs with (assignment_for(scene).tasks()).
