@@ -263,8 +263,8 @@ std::vector<float> bone_series(const SkeletonPlayer& player, int bone, BoneQuant
     const int k = original ? std::min(i, last) : i;
     const Motion& m = original ? player.input() : player.output();
     if (q != BoneQuantity::Height) {
-      out.push_back(static_cast<float>(
-          m.frames[static_cast<std::size_t>(k)].angles[b][static_cast<int>(q)]));
+      out.push_back(
+          static_cast<float>(m.frames[static_cast<std::size_t>(k)].angles[b][static_cast<int>(q)]));
       continue;
     }
     const BoneFrames* f = original ? player.input_frames(k) : player.output_frames(k);

@@ -169,8 +169,8 @@ void SkeletonControls::plot(SkeletonPlayer& p) {
   quantity_ = static_cast<BoneQuantity>(q);
   const int bone = view_settings().picked_bone;
   const skeleton::TimeWarp& w = p.warp();
-  const std::string original = std::to_string(bone) + "/" + std::to_string(q) + "/" +
-                               std::to_string(p.frame_count());
+  const std::string original =
+      std::to_string(bone) + "/" + std::to_string(q) + "/" + std::to_string(p.frame_count());
   const std::string shown =
       original + "/" + std::to_string(w.keyframe_in) + "/" + std::to_string(w.keyframe_out);
   if (original != original_key_) {
