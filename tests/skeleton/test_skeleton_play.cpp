@@ -23,6 +23,7 @@
 #include "jelly/scene.hpp"
 #include "jelly/skeleton/rotation.hpp"
 #include "jelly/skeleton/skeleton_files.hpp"
+#include "jelly/skeleton_player.hpp"
 #include "jelly/skeleton_scene.hpp"
 #include "jelly/skeleton_tasks.hpp"
 #include "jelly/task_probe.hpp"
@@ -351,6 +352,32 @@ TEST_F(SkeletonPlay, AShortenedRunComputesOnlyTheFramesItPlays) {
   EXPECT_EQ(g_calls.time_map, 61);                // frames i with i / 120 ≤ 0.5, not M = 450
   EXPECT_EQ(g_calls.warped_posture, 61);
   EXPECT_EQ(g_calls.forward_kinematics, 61);
+}
+
+TEST_F(SkeletonPlay, APlotSeriesReadsItsMotionAndASliderLeavesTheOriginalAlone) {
+  const TaskTable tasks = counting_table();
+  SkeletonPlayer p(course_scene("hw2-warp-2022.toml"), skeleton_tasks(tasks));
+  const int rhand = bone(p.skeleton(), "rhand"), n = p.frame_count();
+  ASSERT_EQ(n, 450);
+  const std::vector<float> original = bone_series(p, rhand, BoneQuantity::Rx, true);
+  const std::vector<float> warped = bone_series(p, rhand, BoneQuantity::Rx, false);
+  ASSERT_EQ(original.size(), 450u);
+  ASSERT_EQ(warped.size(), 450u);
+  for (int i : {0, 160, 300, 449}) {
+    EXPECT_EQ(original[i], static_cast<float>(p.input().frames[i].angles[rhand].x())) << i;
+    EXPECT_EQ(warped[i], static_cast<float>(p.output().frames[i].angles[rhand].x())) << i;
+  }
+  g_calls = {};
+  const std::vector<float> height = bone_series(p, rhand, BoneQuantity::Height, false);
+  EXPECT_EQ(g_calls.forward_kinematics, n);  // one forward kinematics a frame, nothing else
+  EXPECT_EQ(g_calls.warped_posture, 0);
+  EXPECT_EQ(height[300], static_cast<float>(p.output_frames(300)->end[rhand].y()));
+
+  skeleton::TimeWarp w = p.warp();
+  w.keyframe_in += 20;  // the slider moves: the warped series changes, the original's does not
+  ASSERT_EQ(p.set_warp(w), "");
+  EXPECT_EQ(bone_series(p, rhand, BoneQuantity::Rx, true), original);
+  EXPECT_NE(bone_series(p, rhand, BoneQuantity::Rx, false), warped);
 }
 
 // ----- the accuracy study: slerp against the Euler lerp (docs/skeleton-studies.md) -----

@@ -253,6 +253,26 @@ void build_skeleton_world(const SceneSpec& scene, World& world) {
   world.add_terrain(std::move(t));
 }
 
+std::vector<float> bone_series(const SkeletonPlayer& player, int bone, BoneQuantity q,
+                               bool original) {
+  const int n = player.frame_count(), last = static_cast<int>(player.input().frames.size()) - 1;
+  const std::size_t b = static_cast<std::size_t>(bone);
+  std::vector<float> out;
+  out.reserve(static_cast<std::size_t>(std::max(n, 0)));
+  for (int i = 0; i < n; ++i) {
+    const int k = original ? std::min(i, last) : i;
+    const Motion& m = original ? player.input() : player.output();
+    if (q != BoneQuantity::Height) {
+      out.push_back(
+          static_cast<float>(m.frames[static_cast<std::size_t>(k)].angles[b][static_cast<int>(q)]));
+      continue;
+    }
+    const BoneFrames* f = original ? player.input_frames(k) : player.output_frames(k);
+    out.push_back(f ? static_cast<float>(f->end[b].y()) : 0.0f);
+  }
+  return out;
+}
+
 SkeletonPlayer* find_skeleton_player(World& world) {
   auto* p = dynamic_cast<SkeletonPhysics*>(&world.physics());
   return p ? &p->player() : nullptr;

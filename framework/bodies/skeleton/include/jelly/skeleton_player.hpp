@@ -110,6 +110,17 @@ class SkeletonPlayer {
   mutable bool extent_done_ = false;
 };
 
+/// What a plot of one bone over the output frames shows: an angle of its AMC line (degrees) or
+/// the height of its end (scene units).
+enum class BoneQuantity { Rx, Ry, Rz, Height };
+
+/// Bone `bone`'s `q` at every output frame of `player`: of the output motion, or (`original`) of
+/// the input frame beside it (frame i, clamped to N − 1). Heights come from forward kinematics, 0
+/// where it gives none. The original's series does not change with the warp's keyframe (a
+/// viewer keeps it while a slider moves).
+std::vector<float> bone_series(const SkeletonPlayer& player, int bone, BoneQuantity q,
+                               bool original);
+
 /// A skeleton world's physics: no particles, no forces; each step advances its player.
 class SkeletonPhysics final : public BodyPhysics {
  public:

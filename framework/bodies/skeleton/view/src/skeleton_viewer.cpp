@@ -38,33 +38,12 @@ std::vector<SkeletonPlayer*> players(const ViewerContext& c) {
   return out;
 }
 
-/// What the plot shows of the picked bone.
-enum class Quantity { Rx, Ry, Rz, Height };
-
-/// The picked bone's `q` over the output frames: the original's (input frame i, clamped) and the
-/// shown motion's.
-void series(const SkeletonPlayer& p, int bone, Quantity q, std::vector<float>& original,
-            std::vector<float>& shown) {
-  original.clear();
-  shown.clear();
-  const int n = p.frame_count(), last = static_cast<int>(p.input().frames.size()) - 1;
-  const auto value = [&](const skeleton::Posture& posture, bool input, int i) -> float {
-    if (q != Quantity::Height)
-      return static_cast<float>(
-          posture.angles[static_cast<std::size_t>(bone)][static_cast<int>(q)]);
-    const skeleton::BoneFrames* f = input ? p.input_frames(i) : p.output_frames(i);
-    return f ? static_cast<float>(f->end[static_cast<std::size_t>(bone)].y()) : 0.0f;
-  };
-  for (int i = 0; i < n; ++i) {
-    const int k = std::min(i, last);
-    original.push_back(value(p.input().frames[static_cast<std::size_t>(k)], true, k));
-    shown.push_back(value(p.output().frames[static_cast<std::size_t>(i)], false, i));
-  }
-}
-
 class SkeletonControls final : public render::BodyControls {
  public:
-  void reset() override { plot_key_.clear(); }
+  void reset() override {
+    original_key_.clear();
+    shown_key_.clear();
+  }
   void handle_keys(const ViewerContext& c) override;
   void draw_panel(const ViewerContext& c) override;
   int smoke_check(const ViewerContext& c) override;
@@ -75,9 +54,11 @@ class SkeletonControls final : public render::BodyControls {
   void bone_picker(SkeletonPlayer& p);
   void plot(SkeletonPlayer& p);
 
-  Quantity quantity_ = Quantity::Rx;
+  BoneQuantity quantity_ = BoneQuantity::Rx;
   std::string warp_error_;
-  std::string plot_key_;  // what the cached series were made of
+  // What the cached series were made of: the original's does not change while a warp slider
+  // moves, so a moved slider computes only the warped one.
+  std::string original_key_, shown_key_;
   std::vector<float> original_, shown_;
 };
 
@@ -185,14 +166,20 @@ void SkeletonControls::plot(SkeletonPlayer& p) {
   static const char* names[] = {"rx", "ry", "rz", "end height"};
   int q = static_cast<int>(quantity_);
   ImGui::Combo("plot", &q, names, 4);
-  quantity_ = static_cast<Quantity>(q);
+  quantity_ = static_cast<BoneQuantity>(q);
+  const int bone = view_settings().picked_bone;
   const skeleton::TimeWarp& w = p.warp();
-  const std::string key = std::to_string(view_settings().picked_bone) + "/" + std::to_string(q) +
-                          "/" + std::to_string(w.output_frames) + "/" +
-                          std::to_string(w.keyframe_in) + "/" + std::to_string(w.keyframe_out);
-  if (key != plot_key_) {
-    series(p, view_settings().picked_bone, quantity_, original_, shown_);
-    plot_key_ = key;
+  const std::string original =
+      std::to_string(bone) + "/" + std::to_string(q) + "/" + std::to_string(p.frame_count());
+  const std::string shown =
+      original + "/" + std::to_string(w.keyframe_in) + "/" + std::to_string(w.keyframe_out);
+  if (original != original_key_) {
+    original_ = bone_series(p, bone, quantity_, true);
+    original_key_ = original;
+  }
+  if (shown != shown_key_) {
+    shown_ = bone_series(p, bone, quantity_, false);
+    shown_key_ = shown;
   }
   if (shown_.empty()) return;
   float lo = FLT_MAX, hi = -FLT_MAX;
