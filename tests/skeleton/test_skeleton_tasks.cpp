@@ -17,6 +17,12 @@ TEST(SkeletonTasks, EverySlotIsNullInATableThatFillsNone) {
   EXPECT_EQ(t.time_map, nullptr);
   EXPECT_EQ(t.warped_posture, nullptr);
   EXPECT_EQ(t.blend_motions, nullptr);
+  EXPECT_EQ(t.ik_chain, nullptr);
+  EXPECT_EQ(t.ik_jacobian, nullptr);
+  EXPECT_EQ(t.least_squares, nullptr);
+  EXPECT_EQ(t.ik_iterate, nullptr);
+  EXPECT_EQ(t.clamp_to_limits, nullptr);
+  EXPECT_EQ(t.ik_solve, nullptr);
   EXPECT_EQ(table.kinds.find<SkeletonTasks>(), nullptr) << "reading makes no part";
 }
 

@@ -1,11 +1,13 @@
-// The TaskTable slots of the skeleton (the kinematics contract §3–§5): the skeleton kind's part of
-// an assignment's task table (TaskTable::kinds). A3's student tasks fill them (A4 reuses forward
-// kinematics); the skeleton kind's `jelly run` calls them frame by frame (docs/skeleton-scenes.md).
+// The TaskTable slots of the skeleton (the kinematics contract §3–§6): the skeleton kind's part of
+// an assignment's task table (TaskTable::kinds). A3's student tasks fill the first five, A4's
+// forward kinematics (its T0, the student's A3 code) and the six inverse-kinematics slots; the
+// skeleton kind's `jelly run` calls them frame by frame (docs/skeleton-scenes.md).
 // Angles are degrees, lengths the skeleton's units times the scene's scale, y is up.
 #pragma once
 
 #include <vector>
 
+#include "jelly/skeleton/ik.hpp"
 #include "jelly/skeleton/skeleton.hpp"
 #include "jelly/task_table.hpp"
 
@@ -76,6 +78,48 @@ struct SkeletonTasks {
   void (*blend_motions)(const skeleton::Skeleton& skeleton, const skeleton::Motion& a_motion,
                         const skeleton::Motion& b_motion, const skeleton::Blend& blend,
                         skeleton::Motion& out) = nullptr;
+
+  // Inverse kinematics (A4, contract §6). Chains are bone indices, end bone first.
+
+  /// A4.T1, the chain (§6.1): if `start_bone` is `end_bone` or one of its ancestors, the bones
+  /// from the end bone up to the start bone, both included; otherwise from the end bone up to the
+  /// root, root included. End bone first.
+  std::vector<int> (*ik_chain)(const skeleton::Skeleton& skeleton, int start_bone,
+                               int end_bone) = nullptr;
+
+  /// A4.T2, the Jacobian (§6.2) at `frames` (forward kinematics of the posture): J resized to
+  /// 3 × 3m for the m bones of `chain`; p = frames.end[chain[0]]; for chain entry b (bone i) and
+  /// axis k, J[:, 3b + k] = R_i.col(k) × (p − s_i) if bone i has channel r_k (the root has all
+  /// three), else 0.
+  void (*ik_jacobian)(const skeleton::Skeleton& skeleton, const skeleton::BoneFrames& frames,
+                      const std::vector<int>& chain, skeleton::Matrix3X& J) = nullptr;
+
+  /// A4.T3, the minimum-norm least-squares solve (§6.3): x (resized to J.cols()) = V Σ⁺ Uᵀ e,
+  /// singular values σ ≤ max(3, n)·2⁻⁵²·σ_max counted as zero; J = 0 gives x = 0; finite for
+  /// every finite J and e.
+  void (*least_squares)(const skeleton::Matrix3X& J, const Vec3& e, skeleton::VectorX& x) = nullptr;
+
+  /// A4.T4, the iteration (§6.4) through `ops` (end_effector, jacobian, solve; clamp after each
+  /// update when settings.limits): at most settings.max_iterations updates
+  /// θ_i[k] += (step·x[3b + k])·180/π of the chain's channels, stopping when |target − p| < ε.
+  /// Changes only the chain's channels; returns the updates made and |target − p| after the last
+  /// forward kinematics (`stable` is left to ik_solve).
+  skeleton::IkResult (*ik_iterate)(const skeleton::Skeleton& skeleton,
+                                   const std::vector<int>& chain, const Vec3& target,
+                                   const skeleton::IkSettings& settings, const skeleton::IkOps& ops,
+                                   skeleton::Posture& posture) = nullptr;
+
+  /// A4.T5 (the bonus), §6.4's clamp: each channel of each bone of `chain` that has limits into
+  /// [lo, hi] (skeleton.bones[i].limits, in the `dof` line's order); bones without limits and the
+  /// root untouched.
+  void (*clamp_to_limits)(const skeleton::Skeleton& skeleton, const std::vector<int>& chain,
+                          skeleton::Posture& posture) = nullptr;
+
+  /// A4.T5 (the bonus), §6.5: r = ops.iterate(posture); r.stable = r.error < ε; if not stable and
+  /// settings.restore, the posture becomes the input posture again, bit for bit; r.error stays the
+  /// one measured before the restore (§11.14).
+  skeleton::IkResult (*ik_solve)(const skeleton::IkSettings& settings, const skeleton::IkOps& ops,
+                                 skeleton::Posture& posture) = nullptr;
 };
 
 /// The table's skeleton slots, made (all null) on first use.
