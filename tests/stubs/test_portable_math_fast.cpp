@@ -115,6 +115,54 @@ TEST(PortableMathFast, TinyArgumentsGiveTheAccuratePathsBits) {
   }
 }
 
+// Arguments where the sines' quick phase (plain doubles) branches or is closest to its bound:
+// near the table's points a = j/64 and midpoints (j + 1/2)/64 (|b| = 0 or 2⁻⁷, both for x itself
+// and for x − k·π/2), near multiples of π/2, and motion capture's angles (degrees with six
+// decimals, as in CMU's .amc files).
+double quick_phase_argument(Draw& d, int i) {
+  const double j = static_cast<double>(d.integer(50));
+  const double half = (i % 2 == 0) ? 0.0 : 0.5;
+  switch (i % 4) {
+    case 0: return d.ulps((j + half) / 64.0, 8);
+    case 1: {
+      const double k = static_cast<double>(d.integer(4000)) * kHalfPi;  // one draw per statement
+      return d.ulps(k + (j + half) / 64.0, 8);
+    }
+    case 2: return d.ulps(static_cast<double>(d.integer(600000)) * kHalfPi, 2000);
+    default: return static_cast<double>(d.integer(180000000)) / 1e6 * kRadiansPerDegree;
+  }
+}
+
+TEST(PortableMathFast, SinesQuickPhaseGivesTheAccuratePathsBits) {
+  Draw d;
+  for (int i = 0; i < 40000; ++i) {
+    const double x = quick_phase_argument(d, i);
+    EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
+    EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
+    double s = 0.0, c = 0.0;
+    portable::sin_cos(x, s, c);
+    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
+    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+  }
+}
+
+// The quick phase's rigorous bound against the double-double kernel's: on every argument the
+// quick value must be within its bound of the kernel's interval (a use ≤ 1), and the largest use
+// seen must come within 8× of the bound, so that a bound 8 times tighter would fail here.
+TEST(PortableMathFast, SinesQuickPhaseBoundHoldsAndIsNotSlack) {
+  Draw d;
+  double worst = 0.0;
+  for (int i = 0; i < 100000; ++i) {
+    const double x = (i % 2 == 0) ? trig_argument(d, i / 2) : quick_phase_argument(d, i / 2);
+    const double use = portable::detail::sin_cos_quick_bound_use(x);
+    ASSERT_LE(use, 1.0) << std::hexfloat << x;
+    if (use > worst) worst = use;
+  }
+  EXPECT_GT(worst, 0.125);
+  EXPECT_EQ(portable::detail::sin_cos_quick_bound_use(0x1p-501), 0.0);  // outside: no quick phase
+  EXPECT_EQ(portable::detail::sin_cos_quick_bound_use(0x1p21), 0.0);
+}
+
 TEST(PortableMathFast, Atan2GivesTheAccuratePathsBits) {
   Draw d;
   for (int i = 0; i < 80000; ++i) {

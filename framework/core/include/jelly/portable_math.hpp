@@ -19,8 +19,9 @@
 // and a short polynomial in plain double arithmetic with a rigorous error bound. When the bound
 // shows that every value within it rounds to the same double, that double is returned: it is then
 // the accurate path's result too. Otherwise (about one call in a few hundred) the accurate path
-// (detail::) computes it. Both give the same bits for every input (tests/stubs/
-// test_portable_math_fast.cpp compares them).
+// (detail::) computes it. sin, cos and sin_cos try a cheaper quick phase with a looser bound
+// before that fast path (the fast path then serves ≈ 1.6 % of calls). Both give the same bits for
+// every input (tests/stubs/ test_portable_math_fast.cpp compares them).
 namespace jelly::portable {
 
 // sin x and cos x for x in radians. Exact for x = 0; NaN for ±∞ and NaN. Intended for |x| up to
@@ -56,6 +57,12 @@ double cos_accurate(double x);
 double atan2_accurate(double y, double x);
 double asin_accurate(double x);
 double acos_accurate(double x);
+// For the test of sin, cos and sin_cos's quick phase (plain doubles, a bound of ≈ 2⁻⁶⁰ relative):
+// the largest, over sin r and cos r of x's reduced argument r, of (|quick − kernel| − the
+// kernel's bound) / the quick phase's bound, where the kernel is the fast path's double-double
+// approximation. A lower bound on the quick phase's error over its bound: ≤ 1 wherever that bound
+// holds. 0 where the quick phase does not apply (|x| < 2⁻⁵⁰⁰, |x| > 2²⁰, ∞, NaN).
+double sin_cos_quick_bound_use(double x);
 }  // namespace detail
 
 }  // namespace jelly::portable
