@@ -347,6 +347,7 @@ class SubmissionBuild {
       if (hits.empty()) {
         from = config_.assignments_dir() / name;
         r.used[name] = "stub";
+        from_stub_.insert(name);
         r.notes.push_back(name +
                           " was not found in the submission: graded as the unchanged stub "
                           "(its tasks score 0)");
@@ -578,12 +579,17 @@ class SubmissionBuild {
   void compile_unity() {
     static const std::regex leaks(R"(#\s*(define|undef|pragma)|using\s+namespace|__COUNTER__)");
     std::vector<std::string> names;
+    std::set<std::string> defined;
     std::string key = flags_key_ + "\ntogether";
     for (const std::string& name : files_) {
       const std::string text = read_file(src_ / name);
       std::error_code ec;
-      if (broken_.count(name) || fs::exists(cached_object(name, text), ec)) continue;
-      if (std::regex_search(text, leaks)) return;
+      if (broken_.count(name) || from_stub_.count(name) ||
+          fs::exists(cached_object(name, text), ec))
+        continue;  // a stub's object is made (or cached) as the stand-in anyway
+      if (text.size() > (64u << 10) || std::regex_search(text, leaks)) return;
+      for (const std::string& function : function_names(text))  // overloads across files
+        if (!defined.insert(function).second) return;
       names.push_back(name);
       key += "\n" + name + "\n" + fnv_hex(text);
     }
@@ -601,6 +607,18 @@ class SubmissionBuild {
     unity_.insert(names.begin(), names.end());
   }
 
+  // The names of the functions a C++ text defines, roughly (`NAME(...) {`; a few keywords too): two
+  // files compiled together that define functions of the same name, which could overload each
+  // other across the files, are compiled alone.
+  static std::set<std::string> function_names(const std::string& text) {
+    static const std::regex definition(R"(([A-Za-z_]\w*)\s*\([^;{}()]*(\([^;{}()]*\)[^;{}()]*)*\)[^;{}()]*\{)");
+    std::set<std::string> names;
+    for (std::sregex_iterator it(text.begin(), text.end(), definition), end; it != end; ++it)
+      names.insert((*it)[1]);
+    for (const char* keyword : {"if", "for", "while", "switch", "catch"}) names.erase(keyword);
+    return names;
+  }
+
   // Compiles `names` as one translation unit into `out`, with the precompiled header of the
   // first one's task header (-include: it is read once; the folder of .gch files may not be on
   // the include path, whose second #include of a header it has would need the header beside it).
@@ -609,6 +627,7 @@ class SubmissionBuild {
     std::string text;
     for (const std::string& name : names) text += "#include \"" + name + "\"\n";
     std::ofstream(src_ / kUnitySource, std::ios::binary) << text;
+    if (iso_.kind == IsolationKind::User) give_to_sandbox(iso_, src_, gid_);  // readable to it
     std::vector<std::string> argv;
     for (const std::string& b : base_)
       if (pch_dir_.empty() || b != "-I" + pch_dir_.string()) argv.push_back(b);
@@ -913,6 +932,7 @@ class SubmissionBuild {
   std::vector<std::string> base_;                // the compiler's command line, but its files
   std::vector<fs::path> allowed_;                // folders whose files a compiler message may quote
   std::vector<fs::path> include_views_;  // what the sandboxed compiler sees besides the sources
+  std::set<std::string> from_stub_;      // task files the submission does not have
   std::set<std::string> unity_;          // task files compiled together into kUnityObject
   bool unity_off_ = false;               // compile per file (the unity build failed a step)
   fs::path pch_dir_;                     // the precompiled headers' folder ("" when none)
