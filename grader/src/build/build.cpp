@@ -594,8 +594,7 @@ class SubmissionBuild {
       key += "\n" + name + "\n" + fnv_hex(text);
     }
     if (names.size() < 2) return;
-    const fs::path cached = config_.cache_dir() / (fnv_hex(key) + ".o"),
-                   out = obj_ / kUnityObject;
+    const fs::path cached = config_.cache_dir() / (fnv_hex(key) + ".o"), out = obj_ / kUnityObject;
     std::error_code ec;
     if (!fs::exists(cached, ec) ||
         !fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec)) {
@@ -611,7 +610,8 @@ class SubmissionBuild {
   // files compiled together that define functions of the same name, which could overload each
   // other across the files, are compiled alone.
   static std::set<std::string> function_names(const std::string& text) {
-    static const std::regex definition(R"(([A-Za-z_]\w*)\s*\([^;{}()]*(\([^;{}()]*\)[^;{}()]*)*\)[^;{}()]*\{)");
+    static const std::regex definition(
+        R"(([A-Za-z_]\w*)\s*\([^;{}()]*(\([^;{}()]*\)[^;{}()]*)*\)[^;{}()]*\{)");
     std::set<std::string> names;
     for (std::sregex_iterator it(text.begin(), text.end(), definition), end; it != end; ++it)
       names.insert((*it)[1]);
@@ -893,7 +893,8 @@ class SubmissionBuild {
     for (const std::string& o : config_.link_objects) argv.push_back(o);
     for (const std::string& l : config_.link_libraries) argv.push_back(l);
     for (const std::string& name : files_) {
-      const std::string object = (use_student.at(name) ? student_obj(name) : stub_obj(name)).string();
+      const std::string object =
+          (use_student.at(name) ? student_obj(name) : stub_obj(name)).string();
       if (std::find(argv.begin(), argv.end(), object) == argv.end()) argv.push_back(object);
     }
     for (const std::string& l : config_.link_libraries) argv.push_back(l);
