@@ -129,3 +129,66 @@ TEST(GraderBuildCache, EachSharedArtefactIsBuiltOnceWhenManyWorkersNeedItAtOnce)
   unsetenv("JELLY_GRADE_CACHE");
   fs::remove_all(root);
 }
+
+// A submission's changed files are compiled in one compiler run (their task header read once:
+// issue 31's budget); when that run fails or says anything, each file is compiled alone as before,
+// so that an error is its own file's and costs only its own tasks. Counted like the test above.
+TEST(GraderBuildCache, ChangedFilesAreCompiledTogetherAndAloneWhenThatFails) {
+  const fs::path root =
+      fs::temp_directory_path() / ("jelly-build-together-" + std::to_string(getpid()));
+  fs::remove_all(root);
+  const fs::path log = root / "compiler-runs.log", wrapper = root / "cc";
+  write(wrapper, "#!/bin/sh\nprintf '%s\\n' \"$*\" >>'" + log.string() +
+                     "'\nexec " JELLY_TEST_CXX " \"$@\"\n");
+  fs::permissions(wrapper, fs::perms::owner_all);
+  setenv("JELLY_GRADE_CACHE", (root / "cache").c_str(), 1);
+  const g::GradeConfig config = made_up_assignment(root, wrapper);
+  const auto submit = [&](const std::string& name, const std::string& a, const std::string& b) {
+    write(root / name / "a.cpp", "#include \"t/a.hpp\"\n" + a + "int main() {}\n");
+    write(root / name / "b.cpp", "#include \"t/b.hpp\"\n" + b);
+    return g::build_submission(config, root / name, root / ("work-" + name), 2, g::Isolation{});
+  };
+  const std::string helper = "namespace { int helper(int x) { return 2 * x; } }\n";
+  const std::string a = helper + "int task_a(int x) { return helper(x); }\n";
+  // Both files changed: one run for both, with the precompiled task header; no object of its own.
+  g::BuildResult r = submit("clean", a, "int task_b(int x) { return x + 1; }\n");
+  EXPECT_TRUE(r.ok && r.failed_files.empty() && !r.runner.empty()) << r.errors << r.link_errors;
+  EXPECT_EQ(runs_with(log, "-c jelly-grade-together.cpp"), 1);
+  EXPECT_EQ(runs_with(log, "-include"), 1) << "the precompiled header read once";
+  const auto compiled_alone = [&](const std::string& work, const std::string& file) {
+    return runs_with(log, "-o " + (root / work / "obj" / (file + ".o")).string());
+  };
+  EXPECT_EQ(compiled_alone("work-clean", "a.cpp") + compiled_alone("work-clean", "b.cpp"), 0);
+  // The same files again: the object of both from the cache, no compile.
+  const int before = runs_with(log, "-c ");
+  r = submit("clean", a, "int task_b(int x) { return x + 1; }\n");
+  EXPECT_TRUE(r.ok && r.failed_files.empty());
+  EXPECT_EQ(runs_with(log, "-c "), before);
+  // Two files with the same file-local helper do not compile together: each alone, both usable.
+  r = submit("clash", a, helper + "int task_b(int x) { return helper(x) + 1; }\n");
+  EXPECT_TRUE(r.ok && r.failed_files.empty() && !r.runner.empty()) << r.errors;
+  EXPECT_EQ(compiled_alone("work-clash", "a.cpp"), 1);
+  EXPECT_EQ(compiled_alone("work-clash", "b.cpp"), 1);
+  // Together they compile but do not link: undone, each file compiled and linked alone, and only
+  // the one that calls a function defined nowhere loses its tasks, with its own message.
+  r = submit("link", "int missing(int x);\nint task_a(int x) { return missing(x); }\n",
+             "int task_b(int x) { return x - 1; }\n");
+  EXPECT_EQ(runs_with(log, "-c jelly-grade-together.cpp"), 2);
+  EXPECT_EQ(compiled_alone("work-link", "a.cpp"), 1);
+  EXPECT_EQ(compiled_alone("work-link", "b.cpp"), 1);
+  ASSERT_EQ(r.failed_files.count("a.cpp"), 1u) << r.errors;
+  EXPECT_EQ(r.failed_what.at("a.cpp"), "did not link");
+  EXPECT_EQ(r.failed_files.count("b.cpp"), 0u) << r.errors;
+  EXPECT_EQ(r.runners.count("b.cpp"), 1u);
+  EXPECT_EQ(r.errors.find("together"), std::string::npos) << r.errors;
+  // A broken file costs only its own tasks, and its messages are its own.
+  r = submit("broken", a + "// changed\n", "int task_b(int x) { return x +; }\n");
+  EXPECT_TRUE(r.ok);
+  EXPECT_EQ(r.failed_files.count("a.cpp"), 0u) << r.errors;
+  ASSERT_EQ(r.failed_files.count("b.cpp"), 1u);
+  EXPECT_NE(r.failed_files.at("b.cpp").find("b.cpp:2"), std::string::npos) << r.errors;
+  EXPECT_EQ(r.failed_files.at("b.cpp").find("together"), std::string::npos) << r.errors;
+  EXPECT_EQ(r.runners.count("a.cpp"), 1u);
+  unsetenv("JELLY_GRADE_CACHE");
+  fs::remove_all(root);
+}
