@@ -347,7 +347,6 @@ class SubmissionBuild {
       if (hits.empty()) {
         from = config_.assignments_dir() / name;
         r.used[name] = "stub";
-        from_stub_.insert(name);
         r.notes.push_back(name +
                           " was not found in the submission: graded as the unchanged stub "
                           "(its tasks score 0)");
@@ -379,11 +378,10 @@ class SubmissionBuild {
   // 2. Compile (cached by content and flags), `jobs` at once: the submission's files and the
   //    stubs. Throws when a stub does not compile (a grader error).
   void compile_all(int jobs) {
-    if (flags_key_.empty()) choose_flags();
-    if (!unity_off_) compile_unity();
+    choose_flags();
     std::vector<CompileJob> compiles;  // started in this order
     for (const std::string& name : files_) {
-      if (!broken_.count(name) && !unity_.count(name)) compiles.push_back({name, false});
+      if (!broken_.count(name)) compiles.push_back({name, false});
       compiles.push_back({name, true});
     }
     std::mutex mutex;
@@ -415,27 +413,6 @@ class SubmissionBuild {
     }
   }
 
-  // After steps 2-4 with files compiled together: when one of them was refused or did not link,
-  // or the files did not link together, everything the together object decided is undone and
-  // those files are compiled, checked and linked one by one (true: steps 2-4 again), so that a
-  // file's messages and its lost tasks are its own, as without it.
-  bool undo_together(BuildResult& r) {
-    if (unity_.empty()) return false;
-    bool failed = r.runner.empty();
-    for (const std::string& name : unity_) failed = failed || broken_.count(name);
-    if (!failed) return false;
-    for (const std::string& name : unity_) {  // the other files' outcomes do not depend on them
-      broken_.erase(name);
-      messages_.erase(name);
-    }
-    r.runner.clear();
-    r.runners.clear();
-    r.link_errors.clear();
-    unity_.clear();
-    unity_off_ = true;
-    return true;
-  }
-
   // 3. The symbols each compiled file defines: only its task functions and its own helpers, never
   //    one of the grader's (nm, in the sandbox: the objects are the submission's).
   void check_symbols(BuildResult& r) {
@@ -452,9 +429,7 @@ class SubmissionBuild {
     }
     std::vector<std::string> argv = {nm, "-p", "-P", "-A", "-g", "--defined-only"};
     for (const std::string& name : files_) {
-      const std::string student = student_obj(name).filename().string();
-      if (!broken_.count(name) && std::find(argv.begin(), argv.end(), student) == argv.end())
-        argv.push_back(student);
+      if (!broken_.count(name)) argv.push_back(student_obj(name).filename().string());
       argv.push_back(stub_obj(name).filename().string());
     }
     SandboxView view;
@@ -471,13 +446,10 @@ class SubmissionBuild {
       if (defined.count(stub_obj(name).filename().string()))
         for (const DefinedSymbol& s : defined.at(stub_obj(name).filename().string()))
           if (!s.weak()) own[name].insert(s.name), task_of_symbol[s.name] = name;
-    for (const std::string& name : unity_)  // one object: each file may define all their tasks
-      own[kUnity].insert(own[name].begin(), own[name].end());
     const FrameworkSymbols& fw = framework_symbols(config_, nm);
     for (const std::string& name : files_) {
       if (broken_.count(name)) continue;
       const std::string file = student_obj(name).filename().string();
-      const std::set<std::string>& mine = own[unity_.count(name) ? kUnity : name];
       if (c.exit_code != 0 || !defined.count(file)) {
         broken_[name] = "could not be checked";
         messages_[name] = name + ": error: the grader could not list the symbols of " + name +
@@ -485,12 +457,12 @@ class SubmissionBuild {
         continue;
       }
       std::map<std::string, std::string> others = task_of_symbol;
-      for (const std::string& symbol : mine) others.erase(symbol);
+      for (const std::string& mine : own[name]) others.erase(mine);
       std::string why;
       std::vector<std::string> demangled;  // nm -C, in the same (symbol table) order
       const std::vector<DefinedSymbol>& syms = defined.at(file);
       for (std::size_t k = 0; k < syms.size(); ++k) {
-        const std::string reason = refused_symbol(name, syms[k], mine, others, fw);
+        const std::string reason = refused_symbol(name, syms[k], own[name], others, fw);
         if (reason.empty()) continue;
         if (demangled.empty()) {
           const ChildResult d = run_isolated(
@@ -569,94 +541,6 @@ class SubmissionBuild {
     bool stub;
   };
 
-  // Issue 31's budget: two or more of the submission's files that are not in the object cache
-  // are compiled as one translation unit (kUnitySource #includes them), in one compiler process
-  // that reads the task header's precompiled header once instead of once per file. Only when
-  // nothing in them can change the meaning of the files after them (no macros, using-directives
-  // or pragmas) and only when it compiles without a single message; otherwise (a name two files
-  // both define, an error, a warning) the files are compiled one by one as before, so that every
-  // message is its own file's. Cached by content like the objects of single files.
-  void compile_unity() {
-    static const std::regex leaks(R"(#\s*(define|undef|pragma)|using\s+namespace|__COUNTER__)");
-    std::vector<std::string> names;
-    std::set<std::string> defined;
-    std::string key = flags_key_ + "\ntogether";
-    for (const std::string& name : files_) {
-      const std::string text = read_file(src_ / name);
-      std::error_code ec;
-      if (broken_.count(name) || from_stub_.count(name) ||
-          fs::exists(cached_object(name, text), ec))
-        continue;  // a stub's object is made (or cached) as the stand-in anyway
-      if (text.size() > (64u << 10) || std::regex_search(text, leaks)) return;
-      for (const std::string& function : function_names(text))  // overloads across files
-        if (!defined.insert(function).second) return;
-      names.push_back(name);
-      key += "\n" + name + "\n" + fnv_hex(text);
-    }
-    if (names.size() < 2) return;
-    const fs::path cached = config_.cache_dir() / (fnv_hex(key) + ".o"), out = obj_ / kUnityObject;
-    std::error_code ec;
-    if (!fs::exists(cached, ec) ||
-        !fs::copy_file(cached, out, fs::copy_options::overwrite_existing, ec)) {
-      if (!compile_together(names, out)) return;
-      const fs::path tmp = cached.string() + ".tmp" + std::to_string(getpid()) + kUnityObject;
-      fs::copy_file(out, tmp, fs::copy_options::overwrite_existing, ec);
-      if (!ec) fs::rename(tmp, cached, ec);
-    }
-    unity_.insert(names.begin(), names.end());
-  }
-
-  // The names of the functions a C++ text defines, roughly (`NAME(...) {`; a few keywords too): two
-  // files compiled together that define functions of the same name, which could overload each
-  // other across the files, are compiled alone.
-  static std::set<std::string> function_names(const std::string& text) {
-    static const std::regex definition(
-        R"(([A-Za-z_]\w*)\s*\([^;{}()]*(\([^;{}()]*\)[^;{}()]*)*\)[^;{}()]*\{)");
-    std::set<std::string> names;
-    for (std::sregex_iterator it(text.begin(), text.end(), definition), end; it != end; ++it)
-      names.insert((*it)[1]);
-    for (const char* keyword : {"if", "for", "while", "switch", "catch"}) names.erase(keyword);
-    return names;
-  }
-
-  // Compiles `names` as one translation unit into `out`, with the precompiled header of the
-  // first one's task header (-include: it is read once; the folder of .gch files may not be on
-  // the include path, whose second #include of a header it has would need the header beside it).
-  // True when it compiled without any message.
-  bool compile_together(const std::vector<std::string>& names, const fs::path& out) {
-    std::string text;
-    for (const std::string& name : names) text += "#include \"" + name + "\"\n";
-    std::ofstream(src_ / kUnitySource, std::ios::binary) << text;
-    if (iso_.kind == IsolationKind::User) give_to_sandbox(iso_, src_, gid_);  // readable to it
-    std::vector<std::string> argv;
-    for (const std::string& b : base_)
-      if (pch_dir_.empty() || b != "-I" + pch_dir_.string()) argv.push_back(b);
-    std::string header;
-    try {
-      header = first_include(read_file(config_.assignments_dir() / names.front()));
-    } catch (const std::exception&) {
-    }
-    std::error_code ec;
-    if (!pch_dir_.empty() && !header.empty() &&
-        fs::is_regular_file(pch_dir_ / (header + ".gch"), ec))
-      argv.insert(argv.begin() + 1, {"-include", (pch_dir_ / header).string()});
-    argv.insert(argv.end(), {"-c", kUnitySource, "-o", out.string()});
-    SandboxView view;
-    view.writable = {work_dir_};
-    view.read_only = include_views_;
-    view.cwd = src_;
-    view.gid = gid_;
-    const ChildResult c = run_isolated(iso_, argv, view, tool_limits());
-    fs::remove(src_ / kUnitySource, ec);
-    return c.exit_code == 0 && c.signal == 0 && !c.timed_out && c.started && c.err.empty() &&
-           c.out.empty();
-  }
-
-  // Where the object of a file with this text is cached.
-  fs::path cached_object(const std::string& name, const std::string& text) const {
-    return config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + name + "\n" + text) + ".o");
-  }
-
   // One compile of compile_all: from the cache when the same text was compiled with the same
   // flags, else in the sandbox; a stub's failure goes to `stub_failed`, a submission file's to
   // broken_ and messages_ (under `mutex`).
@@ -664,7 +548,8 @@ class SubmissionBuild {
                std::map<std::string, std::string>& stub_failed) {
     const fs::path dir = job.stub ? stubs_ : src_;
     const std::string text = read_file(dir / job.name);
-    const fs::path cached = cached_object(job.name, text);
+    const fs::path cached =
+        config_.cache_dir() / (fnv_hex(flags_key_ + "\n" + job.name + "\n" + text) + ".o");
     const fs::path out = job.stub ? stub_obj(job.name) : student_obj(job.name);
     std::error_code ec;
     const auto reuse = [&] {
@@ -803,7 +688,6 @@ class SubmissionBuild {
     if (!any) return;
     base_.insert(base_.begin() + 1, "-I" + dir.string());
     include_views_.push_back(dir);
-    pch_dir_ = dir;
     flags_key_ += "\nprecompiled " + dir.filename().string();
   }
 
@@ -860,9 +744,7 @@ class SubmissionBuild {
     return "";
   }
 
-  fs::path student_obj(const std::string& name) const {
-    return unity_.count(name) ? obj_ / kUnityObject : obj_ / (name + ".o");
-  }
+  fs::path student_obj(const std::string& name) const { return obj_ / (name + ".o"); }
   fs::path stub_obj(const std::string& name) const { return obj_ / ("stub-" + name + ".o"); }
 
   // Paths as the student knows them: relative to their submission, framework paths relative
@@ -892,11 +774,8 @@ class SubmissionBuild {
     std::vector<std::string> argv = {config_.compiler};
     for (const std::string& o : config_.link_objects) argv.push_back(o);
     for (const std::string& l : config_.link_libraries) argv.push_back(l);
-    for (const std::string& name : files_) {
-      const std::string object =
-          (use_student.at(name) ? student_obj(name) : stub_obj(name)).string();
-      if (std::find(argv.begin(), argv.end(), object) == argv.end()) argv.push_back(object);
-    }
+    for (const std::string& name : files_)
+      argv.push_back((use_student.at(name) ? student_obj(name) : stub_obj(name)).string());
     for (const std::string& l : config_.link_libraries) argv.push_back(l);
     for (const std::string& f : config_.link_flags) argv.push_back(f);
     argv.insert(argv.end(), {"-o", runner.string()});
@@ -933,13 +812,6 @@ class SubmissionBuild {
   std::vector<std::string> base_;                // the compiler's command line, but its files
   std::vector<fs::path> allowed_;                // folders whose files a compiler message may quote
   std::vector<fs::path> include_views_;  // what the sandboxed compiler sees besides the sources
-  std::set<std::string> from_stub_;      // task files the submission does not have
-  std::set<std::string> unity_;          // task files compiled together into kUnityObject
-  bool unity_off_ = false;               // compile per file (the unity build failed a step)
-  fs::path pch_dir_;                     // the precompiled headers' folder ("" when none)
-  static constexpr const char* kUnity = "the files compiled together";
-  static constexpr const char* kUnityObject = "together.o";
-  static constexpr const char* kUnitySource = "jelly-grade-together.cpp";
 };
 
 }  // namespace
@@ -955,11 +827,6 @@ BuildResult build_submission(const GradeConfig& config, const fs::path& submissi
   build.compile_all(jobs);
   build.check_symbols(r);
   build.link_runners(r);
-  if (build.undo_together(r)) {  // the files compiled together: again, one by one
-    build.compile_all(jobs);
-    build.check_symbols(r);
-    build.link_runners(r);
-  }
   build.collect_messages(r);
   seal_for_sandbox(iso, work_dir, gid);  // no test may change the runner or leave files for another
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
