@@ -68,6 +68,17 @@ double trig_argument(Draw& d, int i) {
     ASSERT_EQ(bits(f_), bits(a_)) << std::hexfloat << what << ": " << f_ << " vs " << a_; \
   } while (0)
 
+// sin, cos and both halves of sin_cos at x: the accurate path's bits (a fatal failure at the
+// first that differs; callers wrap it in ASSERT_NO_FATAL_FAILURE to stop there too).
+void expect_sines_are_the_accurate_paths(double x) {
+  EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
+  EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
+  double s = 0.0, c = 0.0;
+  portable::sin_cos(x, s, c);
+  EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
+  EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+}
+
 TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
   Draw d;
   for (int i = 0; i < 80000; ++i) {
@@ -84,12 +95,7 @@ TEST(PortableMathFast, SinCosAndSinCosGiveTheAccuratePathsBits) {
   }
   for (double x : {0.0, -0.0, 0x1p-1074, -0x1p-1030, 0x1p-26, 0x1.fffffffffffffp-27, 0x1p28, 1e7,
                    1e300, kHalfPi, 2 * kHalfPi, 0.78, -0.78, 0x1.8fffffffffffp-1}) {
-    EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
-    EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
-    double s = 0.0, c = 0.0;
-    portable::sin_cos(x, s, c);
-    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
-    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+    ASSERT_NO_FATAL_FAILURE(expect_sines_are_the_accurate_paths(x));
   }
 }
 
@@ -106,12 +112,7 @@ TEST(PortableMathFast, TinyArgumentsGiveTheAccuratePathsBits) {
   for (int i = 0; i < 20000; ++i)
     args.push_back(i % 2 == 0 ? d.log_uniform(-520, -20) : d.sym(1e-12) * kRadiansPerDegree);
   for (double x : args) {
-    EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
-    EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
-    double s = 0.0, c = 0.0;
-    portable::sin_cos(x, s, c);
-    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
-    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+    ASSERT_NO_FATAL_FAILURE(expect_sines_are_the_accurate_paths(x));
   }
 }
 
@@ -137,12 +138,7 @@ TEST(PortableMathFast, SinesQuickPhaseGivesTheAccuratePathsBits) {
   Draw d;
   for (int i = 0; i < 40000; ++i) {
     const double x = quick_phase_argument(d, i);
-    EXPECT_SAME_BITS(portable::sin(x), portable::detail::sin_accurate(x), "sin " << x);
-    EXPECT_SAME_BITS(portable::cos(x), portable::detail::cos_accurate(x), "cos " << x);
-    double s = 0.0, c = 0.0;
-    portable::sin_cos(x, s, c);
-    EXPECT_SAME_BITS(s, portable::detail::sin_accurate(x), "sin_cos (sin) " << x);
-    EXPECT_SAME_BITS(c, portable::detail::cos_accurate(x), "sin_cos (cos) " << x);
+    ASSERT_NO_FATAL_FAILURE(expect_sines_are_the_accurate_paths(x));
   }
 }
 
