@@ -257,11 +257,11 @@ std::vector<float> bone_series(const SkeletonPlayer& player, int bone, BoneQuant
                                bool original) {
   const int n = player.frame_count(), last = static_cast<int>(player.input().frames.size()) - 1;
   const std::size_t b = static_cast<std::size_t>(bone);
+  const Motion& m = original ? player.input() : player.output();
   std::vector<float> out;
   out.reserve(static_cast<std::size_t>(std::max(n, 0)));
   for (int i = 0; i < n; ++i) {
     const int k = original ? std::min(i, last) : i;
-    const Motion& m = original ? player.input() : player.output();
     if (q != BoneQuantity::Height) {
       out.push_back(
           static_cast<float>(m.frames[static_cast<std::size_t>(k)].angles[b][static_cast<int>(q)]));
