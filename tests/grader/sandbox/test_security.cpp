@@ -1372,6 +1372,28 @@ std::vector<std::string> batch_args(const Clone& c, const std::string& isolation
           isolation};
 }
 
+// An honest student's results beside a busy neighbour: every test passed, none took longer than
+// its limit, full marks (and the bonus), and the lanes had their CPU share.
+void expect_full_marks_in_time(const fs::path& results) {
+  SCOPED_TRACE(results.string());
+  ASSERT_TRUE(fs::exists(results));
+  const Json j = Json::parse(read_text(results));
+  const std::string description = j["extra_data"]["isolation_description"];
+  EXPECT_EQ(description.find("no CPU share per lane"), std::string::npos) << description;
+  double max = 0;
+  for (const Json& t : j["tests"]) {
+    if (t.contains("max_score")) max += t["max_score"].get<double>();
+    const std::string o = t.value("output", std::string());
+    EXPECT_EQ(o.find("took longer than"), std::string::npos) << t["name"] << ": " << o;
+    EXPECT_NE(t.value("status", std::string()), "failed") << t["name"] << ": " << o;
+  }
+  const double bonus = j.contains("extra_data") && j["extra_data"].contains("bonus_max")
+                           ? j["extra_data"]["bonus_max"].get<double>()
+                           : 0.0;
+  EXPECT_GT(max, 0.0);
+  EXPECT_NEAR(j["score"].get<double>(), max + bonus, 1e-3) << j.dump(1).substr(0, 4000);
+}
+
 bool sandbox_available(const std::string& isolation, std::string& why) {
   if (isolation == "bwrap") return bwrap_usable(why);
   why = "the user-drop mode needs root (it makes its sandbox users with useradd)";
@@ -1411,29 +1433,38 @@ TEST_P(GraderSecurityLanes, SigkilledBatchLeavesNoProcess) {
   fs::remove_all(c.root.parent_path(), ec);
 }
 
-// A neighbour whose every test keeps 48 busy processes for 9 s (under the cap of 64) beside an
-// honest submission in a --jobs 2 batch: each lane has one core's quota (read from its cgroup while
-// the batch runs), and the honest student gets full marks with no test timed out. The batch is
-// killed once the honest student is graded (the neighbour's 9 s tests would take minutes).
+// A neighbour whose every test keeps 48 busy processes for 9 s (under the cap of 64) beside honest
+// submissions in a --jobs 2 batch: each lane has one core's quota (read from its cgroup while the
+// batch runs), and every honest student gets full marks with no test timed out. There are three
+// of them, graded one after the other in the second lane, so that the neighbour's processes run
+// while one of them is still being graded (a single one can be done before the neighbour's build
+// is). The batch is killed once they are graded (the neighbour's 9 s tests would take minutes).
 TEST_P(GraderSecurityLanes, BusyNeighbourDoesNotStarveTheNextStudent) {
   const std::string isolation = GetParam();
   std::string why;
   if (!sandbox_available(isolation, why)) GTEST_SKIP() << why;
   const Clone c = make_clone("hog-" + isolation);
   busy_submission(c, c.root / "in" / "a_hog", busy_code("jelly-hog", 48, false, 9));
-  fs::create_directories(c.root / "in" / "b_honest");
-  copy_files(in_clone(c, T->solutions), c.root / "in" / "b_honest");
-  const fs::path log = c.root / "console.txt", honest = c.root / "out" / "students" / "b_honest";
+  const std::vector<std::string> honest = {"b_honest", "c_honest", "d_honest"};
+  for (const std::string& name : honest) {
+    fs::create_directories(c.root / "in" / name);
+    copy_files(in_clone(c, T->solutions), c.root / "in" / name);
+  }
+  const auto results = [&](const std::string& name) {
+    return c.root / "out" / "students" / name / "results.json";
+  };
+  const fs::path log = c.root / "console.txt";
   const pid_t pid = start_grade(batch_args(c, isolation), log);
   ASSERT_GT(pid, 0);
-  std::set<std::string> quotas;  // the lanes' CPU quotas seen while the batch runs
-  bool hog_seen = false;
+  std::set<std::string> quotas;    // the lanes' CPU quotas seen while the batch runs
+  bool hog_beside_honest = false;  // the neighbour's processes seen before the last was graded
   const bool graded = wait_for(
-      // Ten times what the honest student takes on a busy 2-core machine, and more than all its
+      // Ten times what the honest students take on a busy 2-core machine, and more than all their
       // tests' time limits together would be if the neighbour starved them.
-      300, [&] { return fs::exists(honest / "results.json"); },
+      600, [&] { return fs::exists(results(honest.back())); },
       [&] {
-        hog_seen = hog_seen || !processes_called("jelly-hog").empty();
+        hog_beside_honest = hog_beside_honest || (!processes_called("jelly-hog").empty() &&
+                                                  !fs::exists(results(honest.back())));
         for (const fs::path& g : grader_cgroups(pid))
           for (const char* f : {"cpu.cfs_quota_us", "cpu.max"}) {
             std::error_code ec;
@@ -1447,26 +1478,13 @@ TEST_P(GraderSecurityLanes, BusyNeighbourDoesNotStarveTheNextStudent) {
   kill(pid, SIGKILL);
   waitpid(pid, nullptr, 0);
   SCOPED_TRACE("console: " + log.string());
-  ASSERT_TRUE(graded) << "the honest student was not graded beside the busy neighbour:\n"
+  ASSERT_TRUE(graded) << "the honest students were not graded beside the busy neighbour:\n"
                       << read_text(log);
-  EXPECT_TRUE(hog_seen) << "the neighbour's busy processes never ran";
-  const Json j = Json::parse(read_text(honest / "results.json"));
-  const std::string description = j["extra_data"]["isolation_description"];
-  EXPECT_EQ(description.find("no CPU share per lane"), std::string::npos) << description;
+  EXPECT_TRUE(hog_beside_honest)
+      << "the neighbour's busy processes never ran while an honest student was graded";
   EXPECT_TRUE(quotas.count("100000") || quotas.count("100000 100000"))
       << "no lane had one core's quota; seen: " << ::testing::PrintToString(quotas);
-  double max = 0;
-  for (const Json& t : j["tests"]) {
-    if (t.contains("max_score")) max += t["max_score"].get<double>();
-    const std::string o = t.value("output", std::string());
-    EXPECT_EQ(o.find("took longer than"), std::string::npos) << t["name"] << ": " << o;
-    EXPECT_NE(t.value("status", std::string()), "failed") << t["name"] << ": " << o;
-  }
-  const double bonus = j.contains("extra_data") && j["extra_data"].contains("bonus_max")
-                           ? j["extra_data"]["bonus_max"].get<double>()
-                           : 0.0;
-  EXPECT_GT(max, 0.0);
-  EXPECT_NEAR(j["score"].get<double>(), max + bonus, 1e-3) << j.dump(1).substr(0, 4000);
+  for (const std::string& name : honest) expect_full_marks_in_time(results(name));
   expect_nothing_left(pid, c, "jelly-hog");
   std::error_code ec;
   fs::remove_all(c.root.parent_path(), ec);
