@@ -19,11 +19,12 @@
 # calls every module's add_<module>_slots, for the stubs and a submission it does nothing, so no
 # student-facing file names the reference.
 # The grader (grader/CMakeLists.txt) and the linked-assignment registry (jelly_finish_assignments)
-# read the global property JELLY_ASSIGNMENTS and the per-assignment properties set here.
+# read the global property JELLY_ASSIGNMENTS and the per-assignment properties set here. A draft
+# (`draft = true`) is in JELLY_DRAFT_ASSIGNMENTS instead: built, never graded, linked or released.
 # The reference and student code never go into one binary.
 #
 # CMake takes only the manifest's top-level keys id, namespace, files, reference_files,
-# task_modules and default_scene, from tools/jelly_manifest.py; the programs read the whole
+# task_modules, default_scene and draft, from tools/jelly_manifest.py; the programs read the whole
 # manifest (framework/manifest).
 
 set(JELLY_ASSIGNMENTS_ROOT ${PROJECT_SOURCE_DIR}/assignments)
@@ -123,7 +124,8 @@ function(jelly_add_assignment dir)
     message(FATAL_ERROR "${manifest}: id: expected the folder's name \"${folder_name}\", not \"${id}\"")
   endif()
   get_property(known GLOBAL PROPERTY JELLY_ASSIGNMENTS)
-  if(id IN_LIST known)
+  get_property(known_drafts GLOBAL PROPERTY JELLY_DRAFT_ASSIGNMENTS)
+  if(id IN_LIST known OR id IN_LIST known_drafts)
     message(FATAL_ERROR "${manifest}: id: \"${id}\" is already an assignment")
   endif()
   foreach(f IN LISTS files)
@@ -209,7 +211,16 @@ function(jelly_add_assignment dir)
   file(RELATIVE_PATH chosen_rel ${PROJECT_SOURCE_DIR} ${chosen})
   message(STATUS "Jelly Lab: assignment ${id}, student tasks from ${chosen_rel}")
 
-  set_property(GLOBAL APPEND PROPERTY JELLY_ASSIGNMENTS ${id})
+  if(JELLY_MANIFEST_DRAFT)
+    # A draft (`draft = true`, docs/new-assignment.md "A draft"): its task libraries are built and
+    # its own tests link them, but the grader, the programs' registry, the platform checks and the
+    # student release leave it out (they read JELLY_ASSIGNMENTS).
+    set_property(GLOBAL APPEND PROPERTY JELLY_DRAFT_ASSIGNMENTS ${id})
+    message(STATUS "Jelly Lab: assignment ${id} is a draft: built and its own tests run; not "
+                   "graded, linked into the programs or released")
+  else()
+    set_property(GLOBAL APPEND PROPERTY JELLY_ASSIGNMENTS ${id})
+  endif()
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_DIR ${dir})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_NAMESPACE ${ns})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_FILES "${files}")

@@ -6,7 +6,8 @@ to write the keys it needs as a .cmake file. The programs read the whole manifes
 (framework/manifest). Python 3.11+ (tomllib), standard library only.
 
     jelly_manifest.py cmake MANIFEST OUT.cmake   write the keys CMake reads (JELLY_MANIFEST_*)
-    jelly_manifest.py get MANIFEST KEY           print a top-level key: a string, or a list one item a line
+    jelly_manifest.py get MANIFEST KEY           print a top-level key: a string, true or false, or a
+                                                 list one item a line
     jelly_manifest.py claims MANIFEST            print its `bodies` checked, one claim a line: KIND or
                                                  KIND VARIANT (the entry "kind:variant")
 
@@ -25,7 +26,8 @@ except ModuleNotFoundError:  # Python < 3.11
 
 MANIFEST_NAME = "assignment.toml"
 
-# The keys CMake reads: (key, kind, required). kind "string" or "list" (of strings).
+# The keys CMake reads: (key, kind, required). kind "string", "list" (of strings) or "bool"
+# (written as ON or OFF).
 CMAKE_KEYS = (
     ("id", "string", True),
     ("namespace", "string", True),
@@ -33,6 +35,7 @@ CMAKE_KEYS = (
     ("reference_files", "list", False),
     ("task_modules", "list", False),
     ("default_scene", "string", False),
+    ("draft", "bool", False),
 )
 
 
@@ -112,6 +115,19 @@ class Manifest:
             self._fail(key, f'a list of strings (`{key} = ["...", ...]`)')
         return list(value)
 
+    def boolean(self, key):
+        """A top-level true/false key; False when it is absent."""
+        value = self.data.get(key, False)
+        if not isinstance(value, bool):
+            self._fail(key, f"true or false (`{key} = true`), not {value!r}")
+        return value
+
+    @property
+    def draft(self):
+        """An assignment in preparation (`draft = true`): built and its own tests run, but not
+        graded, linked into the programs or released (docs/new-assignment.md, "A draft")."""
+        return self.boolean("draft")
+
     def tasks(self):
         """The [[task]] tables, in the manifest's (handout) order."""
         tasks = self.data.get("task", [])
@@ -164,8 +180,8 @@ class Manifest:
 
 
 def assignment_manifests(root):
-    """{id: Manifest} for every assignments/<id>/assignment.toml of the tree at root, sorted by id;
-    each manifest's id must be its folder's name."""
+    """{id: Manifest} for every assignments/<id>/assignment.toml of the tree at root, sorted by id,
+    drafts included (Manifest.draft); each manifest's id must be its folder's name."""
     found = {}
     for path in sorted(Path(root, "assignments").glob(f"*/{MANIFEST_NAME}")):
         manifest = Manifest(path)
@@ -198,6 +214,9 @@ def cmake_keys(manifest):
     ]
     for key, kind, required in CMAKE_KEYS:
         var = "JELLY_MANIFEST_" + key.upper()
+        if kind == "bool":
+            lines.append(f"set({var} {'ON' if manifest.boolean(key) else 'OFF'})")
+            continue
         if kind == "string":
             values = [manifest.string(key, required)]
         else:
@@ -225,7 +244,9 @@ def _main(argv):
         if len(argv) == 3 and argv[0] == "get":
             manifest = Manifest(argv[1])
             value = manifest.data.get(argv[2])
-            if isinstance(value, list):
+            if isinstance(value, bool):
+                print("true" if value else "false")
+            elif isinstance(value, list):
                 print("\n".join(manifest.strings(argv[2])))
             elif value is not None:
                 print(manifest.string(argv[2]))

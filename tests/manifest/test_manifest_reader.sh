@@ -28,6 +28,12 @@ check "an absent optional key is empty" 'grep -qxF "set(JELLY_MANIFEST_DEFAULT_S
 check "the manifest hash is recorded" '[ "$(sed -n "s/^set(JELLY_MANIFEST_SHA256 \(.*\))$/\1/p" "$work/x.cmake")" = "$(tr -d "\r" <"$work/x/assignment.toml" | sha256sum | cut -d" " -f1)" ]'
 check "get prints a list one item a line" '[ "$("$py" "$reader" get "$work/x/assignment.toml" files | tr "\n" " ")" = "a.cpp b.cpp " ]'
 
+check "an absent draft is OFF" 'grep -qxF "set(JELLY_MANIFEST_DRAFT OFF)" "$work/x.cmake"'
+printf 'draft = true\n' | cat - "$work/x/assignment.toml" >"$work/draft.toml"
+"$py" "$reader" cmake "$work/draft.toml" "$work/draft.cmake"
+check "draft = true is ON" 'grep -qxF "set(JELLY_MANIFEST_DRAFT ON)" "$work/draft.cmake"'
+check "get prints a boolean as true or false" '[ "$("$py" "$reader" get "$work/draft.toml" draft)" = true ]'
+
 bad() {  # bad WHAT TEXT EXPECTED
   printf '%s\n' "$2" >"$work/x/assignment.toml"
   "$py" "$reader" cmake "$work/x/assignment.toml" "$work/bad.cmake" >"$work/out.txt" 2>&1
@@ -51,6 +57,11 @@ bad "a scene claimed twice (a kind and one of its variants)" 'id = "x"
 namespace = "x"
 files = ["a.cpp"]
 bodies = ["rope:plain", "rope"]' 'bodies: expected each scene claimed once, and "rope:plain" already claims the scenes "rope" does'
+
+bad "draft not a boolean" 'id = "x"
+namespace = "x"
+files = ["a.cpp"]
+draft = "yes"' "draft: expected true or false (\`draft = true\`), not 'yes'"
 
 # `claims`: the bodies, one claim a line, a variant after its kind.
 printf 'id = "x"\nnamespace = "x"\nfiles = ["a.cpp"]\nbodies = ["rope:plain", "disc", "rope:braided"]\n' >"$work/x/assignment.toml"

@@ -52,7 +52,12 @@ timer() { local t0=$1; echo $(( $(date +%s) - t0 ))s; }
 # The assignments (assignments/ID/assignment.toml) and their runners: per assignment the student
 # runner, the stub runner (tests/platform/CMakeLists.txt) and, where solutions/ID/ is, the reference's.
 ids=()
-for m in "$src"/assignments/*/assignment.toml; do [ -f "$m" ] && ids+=("$(basename "$(dirname "$m")")"); done
+for m in "$src"/assignments/*/assignment.toml; do
+  [ -f "$m" ] || continue
+  # A draft (draft = true) is built but has no runner, no scene of its own and no release.
+  [ "$(python3 "$src/tools/jelly_manifest.py" get "$m" draft)" = true ] && continue
+  ids+=("$(basename "$(dirname "$m")")")
+done
 [ "${#ids[@]}" -gt 0 ] || die "no assignment in $src/assignments (a folder with an assignment.toml)"
 if [ -n "${JELLY_PLATFORM_ASSIGNMENTS:-}" ]; then
   all_ids=("${ids[@]}"); ids=()

@@ -9,7 +9,9 @@
 # the projectile reference data, grades the reference (full marks), the stubs (0) and the mutants
 # (each caught in its own task), builds selfcheck-projectile, grades A1's reference (80/80 beside
 # the new assignment), makes a student release of projectile alone (when the release tool has
-# --assignments) and checks that not one tracked file of the tree changed.
+# --assignments) and checks that not one tracked file of the tree changed. Last, the same
+# assignment made a draft (`draft = true`): its task libraries still build, but the grader, the
+# self-check's config and the release refuse it, each saying it is a draft; then the line goes again.
 # The CMAKE_ARGs (the calling build's compiler, JELLY_WERROR, JELLY_DEPS, ...) go to the configure
 # step: with the same flags and ccache (CCACHE_BASEDIR set to the copy) the framework's objects come
 # from the cache.
@@ -202,6 +204,31 @@ if "$tree/tools/make-student-release" --help 2>&1 | grep -q -- --assignments; th
 else
   step "SKIPPED the release step: tools/make-student-release has no --assignments yet"
 fi
+
+step "$id as a draft (draft = true): built, but not graded, self-checked or released"
+manifest=$tree/assignments/$id/assignment.toml
+cp "$manifest" "$work/manifest.toml"
+{ printf 'draft = true\n'; cat "$work/manifest.toml"; } >"$manifest"
+cmake "$tree/build" >"$work/draft-configure.log" 2>&1 || fail "configure with the draft ($work/draft-configure.log)"
+grep -q "assignment $id is a draft" "$work/draft-configure.log" ||
+  fail "CMake did not say that $id is a draft ($work/draft-configure.log)"
+config=$tree/build/grader/grade-config.json
+python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); sys.exit(sys.argv[2] in c["assignments"] or c["drafts"] != [sys.argv[2]])' \
+  "$config" "$id" || fail "grade-config.json lists $id among the assignments, or not alone in drafts"
+cmake --build "$tree/build" --target "jelly_${id}_tasks_solutions" "jelly_${id}_tasks_assignments" \
+  >"$work/draft-build.log" 2>&1 || fail "the draft's task libraries did not build ($work/draft-build.log)"
+status=0
+"$grade" grade "$tree/solutions/$id" --assignment "$id" --out "$work/draft-grade" >"$work/draft-grade.log" 2>&1 ||
+  status=$?
+[[ $status == 2 ]] && grep -q -- "--assignment $id: $id is a draft in this build" "$work/draft-grade.log" ||
+  fail "grading the draft: status $status, expected 2 and 'is a draft' ($work/draft-grade.log)"
+status=0
+"$tree/tools/make-student-release" "$work/draft-release" --assignments "$id" --no-verify \
+  >"$work/draft-release.log" 2>&1 || status=$?
+[[ $status == 2 ]] && grep -q -- "--assignments: $id is a draft" "$work/draft-release.log" ||
+  fail "releasing the draft: status $status, expected 2 and 'is a draft' ($work/draft-release.log)"
+cp "$work/manifest.toml" "$manifest"  # plugin.body runs the assignment's scene with this build
+cmake "$tree/build" >"$work/undraft-configure.log" 2>&1 || fail "configure without the draft line"
 
 step "PASSED: $id built, graded ($ref_score/$ref_max reference, $stub_score stubs), mutants caught, self-checked; A1 $a1_score/$a1_max"
 echo "plugin: wall time $((SECONDS - start)) s"

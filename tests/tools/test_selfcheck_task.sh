@@ -14,6 +14,7 @@ rm -rf "$work"; mkdir -p "$work/tree/tools"
 cp "$src/tools/selfcheck" "$src/tools/jelly_manifest.py" "$work/tree/tools/"
 ids=()
 for m in "$src"/assignments/*/assignment.toml; do
+  [ "$(python3 "$src/tools/jelly_manifest.py" get "$m" draft)" = true ] && continue  # not graded
   id="$(basename "$(dirname "$m")")"; ids+=("$id")
   mkdir -p "$work/tree/assignments/$id"; cp "$m" "$work/tree/assignments/$id/"
 done
@@ -32,6 +33,20 @@ run --task ZZ9.T1
 check "an id no assignment has: status 2, named" '[ "$(cat "$work/rc")" -eq 2 ] && grep -q -- "--task ZZ9.T1: no assignment here" "$work/out.txt" || { cat "$work/out.txt"; false; }'
 run
 check "no --task and no --assignment outside a folder: status 2, says --assignment" '[ "$(cat "$work/rc")" -eq 2 ] && grep -q -- "--assignment" "$work/out.txt"'
+
+# A draft (draft = true): never chosen, and named as a draft when asked for.
+mkdir -p "$work/tree/assignments/zdraft"
+sed -e '0,/^id = .*/s//id = "zdraft"/' -e 's/^namespace = .*/namespace = "zdraft"/' \
+  "$src/assignments/${ids[0]}/assignment.toml" >"$work/tree/assignments/zdraft/assignment.toml"
+printf 'draft = true\n' | cat - "$work/tree/assignments/zdraft/assignment.toml" >"$work/draft.toml"
+mv "$work/draft.toml" "$work/tree/assignments/zdraft/assignment.toml"
+run --assignment zdraft
+check "--assignment of a draft: status 2, says it is a draft" '[ "$(cat "$work/rc")" -eq 2 ] && grep -q -- "--assignment zdraft: .*says draft = true: a draft is built but not graded" "$work/out.txt" || { cat "$work/out.txt"; false; }'
+check "the draft is not among the assignments it lists" '! grep -q "assignments here: .*zdraft" "$work/out.txt"'
+# The draft's manifest is a copy of the first assignment's: its tasks would make --task ambiguous.
+first_task="$(awk '/^[ \t]*\[\[task\]\]/ { t = 1 } t && /^[ \t]*id[ \t]*=/ { v = $0; sub(/^[^=]*=[ \t]*"/, "", v); sub(/".*/, "", v); print v; exit }' "$src/assignments/${ids[0]}/assignment.toml")"
+run --task "$first_task"
+check "--task of a task the draft shares still picks ${ids[0]}" 'grep -q "assignments/${ids[0]}/assignment.toml lists it" "$work/out.txt" || { cat "$work/out.txt"; false; }'
 
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "selfcheck --task: OK"

@@ -114,6 +114,7 @@ GradeConfig load_config(const std::string& path) {
   c.source_dir = j.at("source_dir").get<std::string>();
   c.binary_dir = j.at("binary_dir").get<std::string>();
   c.jelly_cli = j.value("jelly_cli", "");
+  if (j.contains("drafts")) c.drafts = strings("drafts");
   if (const char* env = std::getenv("JELLY_GRADE_JELLY")) c.jelly_cli = env;
   c.config_path = p;
   if (!j.contains("assignments") || !j["assignments"].is_object() || j["assignments"].empty())
@@ -134,6 +135,11 @@ void select_assignment(GradeConfig& config, const std::string& id, const fs::pat
   if (!id.empty()) {
     for (const AssignmentConfig& a : config.assignments)
       if (a.id == id) chosen = &a;
+    if (!chosen && std::find(config.drafts.begin(), config.drafts.end(), id) != config.drafts.end())
+      throw std::runtime_error("--assignment " + id + ": " + id +
+                               " is a draft in this build (its assignment.toml says draft = true): "
+                               "it is built but not graded until that line is gone (it has: " +
+                               known + ")");
     if (!chosen)
       throw std::runtime_error("--assignment " + id +
                                ": no such assignment in this build (it has: " + known + ")");

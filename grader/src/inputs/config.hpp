@@ -45,6 +45,9 @@ struct GradeConfig {
   fs::path config_path;
   /// Every assignment of the build, sorted by id.
   std::vector<AssignmentConfig> assignments;
+  /// The build's drafts (`draft = true` in their manifests): built, never graded. Named only so
+  /// that --assignment of one says why it cannot be graded.
+  std::vector<std::string> drafts;
   /// The one the command works on (select_assignment); nullptr before.
   const AssignmentConfig* selected = nullptr;
 

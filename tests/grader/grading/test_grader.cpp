@@ -1646,6 +1646,27 @@ TEST(GraderAssignment, UnknownIdNamesTheKnownOnesAndExitsTwo) {
       << two.out;
 }
 
+// A draft (draft = true in its manifest: built, never graded) is not in "assignments"; the build
+// names it in "drafts" so that --assignment of it says why, not only that it is unknown. This
+// build's own config lists its drafts (none, or the tree's).
+TEST(GraderAssignment, ADraftIsNamedAsOneAndNotGraded) {
+  const Json built = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  ASSERT_TRUE(built.contains("drafts") && built["drafts"].is_array())
+      << built.dump(1).substr(0, 400);
+  const fs::path cfg = config_with("draft", [](Json& c) { c["drafts"] = Json::array({"zz"}); });
+  const fs::path out = kWork / "out" / "draft";
+  const Cmd r = run("grade " + submission("draft").string() + " --assignment zz --config " +
+                    cfg.string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(
+      r.out.find("--assignment zz: zz is a draft in this build (its assignment.toml says "
+                 "draft = true): it is built but not graded until that line is gone (it has: " +
+                 build_ids() + ")"),
+      std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+}
+
 // With two assignments and no --assignment, a submission's files choose: A1's five files (in a
 // nested folder, beside a README) are graded as a1, with full marks; files of neither are an
 // error that says how to choose.
