@@ -73,60 +73,80 @@ std::wstring environment_with(const std::wstring& assignment) {
   return block;
 }
 
-// Reads a pipe to its end, keeping the first `keep` bytes; counts all of them in `total` (shared
-// by the streams) and terminates the job once it passes `kill_after`.
-struct Reader {
-  HANDLE pipe = nullptr;
-  std::string* text = nullptr;
-  std::size_t* bytes = nullptr;
-  std::size_t keep = 0;  // 0: keep everything (the result channel)
+// A handle closed by close() or when its owner goes; nullptr when there is none.
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(HANDLE h) : h_(h) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle(Handle&& other) noexcept : h_(other.release()) {}
+  Handle& operator=(Handle&& other) noexcept {
+    if (this != &other) {
+      close();
+      h_ = other.release();
+    }
+    return *this;
+  }
+  ~Handle() { close(); }
+  HANDLE get() const { return h_; }
+  HANDLE* put() { return &h_; }  ///< for a call that creates the handle (this one is empty)
+  HANDLE release() {
+    HANDLE h = h_;
+    h_ = nullptr;
+    return h;
+  }
+  void close() {
+    if (h_) CloseHandle(h_);
+    h_ = nullptr;
+  }
+
+ private:
+  HANDLE h_ = nullptr;
 };
 
-}  // namespace
+// The child's standard streams and result channel: its ends (inherited) and ours.
+struct ChildPipes {
+  Handle out_read, out_write, err_read, err_write, res_read, res_write;
+  Handle child_in, in_write;  // its stdin (NUL, or a pipe for Limits::stdin_data) and our end
 
-ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
-                      const std::filesystem::path& cwd) {
-  ChildResult r;
-  // A crashing child must not open Windows' "program has stopped working" dialog (the error mode
-  // is inherited); the job's DIE_ON_UNHANDLED_EXCEPTION below does the same for its children.
-  SetErrorMode(GetErrorMode() | SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX);
-  if (argv.empty()) {
-    r.start_error = "no program to run";
-    return r;
+  // false, with `error`, when a pipe cannot be made.
+  bool open(const Limits& limits, std::string& error);
+  // Our copies of the child's ends: closed, so the pipes end when the child (and its children) do.
+  void close_child_ends() {
+    out_write.close();
+    err_write.close();
+    res_write.close();
+    child_in.close();
   }
+};
+
+bool ChildPipes::open(const Limits& limits, std::string& error) {
   SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
-  HANDLE out_read = nullptr, out_write = nullptr, err_read = nullptr, err_write = nullptr;
-  HANDLE res_read = nullptr, res_write = nullptr;
-  auto close = [](HANDLE& h) {
-    if (h) CloseHandle(h);
-    h = nullptr;
-  };
-  if (!CreatePipe(&out_read, &out_write, &inherit, 0) ||
-      !CreatePipe(&err_read, &err_write, &inherit, 0) ||
-      (limits.result_pipe && !CreatePipe(&res_read, &res_write, &inherit, 0))) {
-    r.start_error = last_error_text("CreatePipe");
-    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write})
-      close(*h);
-    return r;
+  if (!CreatePipe(out_read.put(), out_write.put(), &inherit, 0) ||
+      !CreatePipe(err_read.put(), err_write.put(), &inherit, 0) ||
+      (limits.result_pipe && !CreatePipe(res_read.put(), res_write.put(), &inherit, 0))) {
+    error = last_error_text("CreatePipe");
+    return false;
   }
   // Only the child's ends are inherited.
-  for (HANDLE h : {out_read, err_read, res_read})
+  for (HANDLE h : {out_read.get(), err_read.get(), res_read.get()})
     if (h) SetHandleInformation(h, HANDLE_FLAG_INHERIT, 0);
-  HANDLE child_in = nullptr, in_write = nullptr;
   if (limits.stdin_data.empty()) {
-    child_in = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit,
-                           OPEN_EXISTING, 0, nullptr);
-  } else if (!CreatePipe(&child_in, &in_write, &inherit, 0)) {
-    r.start_error = last_error_text("CreatePipe");
-    for (HANDLE* h : {&out_read, &out_write, &err_read, &err_write, &res_read, &res_write})
-      close(*h);
-    return r;
+    *child_in.put() = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE,
+                                  &inherit, OPEN_EXISTING, 0, nullptr);
+  } else if (!CreatePipe(child_in.put(), in_write.put(), &inherit, 0)) {
+    error = last_error_text("CreatePipe");
+    return false;
   } else {
-    SetHandleInformation(in_write, HANDLE_FLAG_INHERIT, 0);
+    SetHandleInformation(in_write.get(), HANDLE_FLAG_INHERIT, 0);
   }
+  return true;
+}
 
-  // A job: the child and anything it starts die together; memory is capped.
-  HANDLE job = CreateJobObjectW(nullptr, nullptr);
+// A job: the child and anything it starts die together; memory is capped.
+Handle make_job(const Limits& limits) {
+  Handle job(CreateJobObjectW(nullptr, nullptr));
   JOBOBJECT_EXTENDED_LIMIT_INFORMATION info{};
   info.BasicLimitInformation.LimitFlags =
       JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE | JOB_OBJECT_LIMIT_DIE_ON_UNHANDLED_EXCEPTION;
@@ -134,122 +154,188 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     info.BasicLimitInformation.LimitFlags |= JOB_OBJECT_LIMIT_JOB_MEMORY;
     info.JobMemoryLimit = limits.memory_bytes;
   }
-  if (job) SetInformationJobObject(job, JobObjectExtendedLimitInformation, &info, sizeof info);
+  if (job.get())
+    SetInformationJobObject(job.get(), JobObjectExtendedLimitInformation, &info, sizeof info);
+  return job;
+}
 
+// Exactly these handles reach the child (PROC_THREAD_ATTRIBUTE_HANDLE_LIST): its stdin, stdout,
+// stderr and, when there is one, its result channel. get() is nullptr when the list could not be
+// made.
+class InheritedHandles {
+ public:
+  explicit InheritedHandles(const ChildPipes& p)
+      : handles_{p.child_in.get(), p.out_write.get(), p.err_write.get(), p.res_write.get()} {
+    const DWORD handle_count = p.res_write.get() ? 4 : 3;
+    SIZE_T attr_size = 0;
+    InitializeProcThreadAttributeList(nullptr, 1, 0, &attr_size);
+    buffer_.assign(attr_size, '\0');
+    attrs_ = reinterpret_cast<LPPROC_THREAD_ATTRIBUTE_LIST>(buffer_.data());
+    have_list_ = InitializeProcThreadAttributeList(attrs_, 1, 0, &attr_size) &&
+                 UpdateProcThreadAttribute(attrs_, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST, handles_,
+                                           handle_count * sizeof(HANDLE), nullptr, nullptr);
+  }
+  InheritedHandles(const InheritedHandles&) = delete;
+  InheritedHandles& operator=(const InheritedHandles&) = delete;
+  ~InheritedHandles() {
+    if (have_list_) DeleteProcThreadAttributeList(attrs_);
+  }
+  LPPROC_THREAD_ATTRIBUTE_LIST get() const { return have_list_ ? attrs_ : nullptr; }
+
+ private:
+  HANDLE handles_[4];
+  std::string buffer_;
+  LPPROC_THREAD_ATTRIBUTE_LIST attrs_ = nullptr;
+  bool have_list_ = false;
+};
+
+// The program started suspended (it runs once it is in the job), with its streams and exactly
+// the handles of `pipes` it needs; `start` is when. False (GetLastError) when it cannot start.
+bool start_suspended(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
+                     const ChildPipes& pipes, PROCESS_INFORMATION& pi,
+                     std::chrono::steady_clock::time_point& start) {
   std::wstring command_line;
   for (const std::string& a : argv) append_quoted(command_line, widen(a));
-  std::wstring env = environment_with(L"JELLY_RESULT_HANDLE=" +
-                                      std::to_wstring(reinterpret_cast<std::uintptr_t>(res_write)));
+  std::wstring env =
+      environment_with(L"JELLY_RESULT_HANDLE=" +
+                       std::to_wstring(reinterpret_cast<std::uintptr_t>(pipes.res_write.get())));
   const std::wstring dir = cwd.empty() ? std::wstring() : cwd.wstring();
-
-  // Exactly these handles reach the child.
-  HANDLE handles[4] = {child_in, out_write, err_write, res_write};
-  const DWORD handle_count = res_write ? 4 : 3;
-  SIZE_T attr_size = 0;
-  InitializeProcThreadAttributeList(nullptr, 1, 0, &attr_size);
-  std::string attr_buffer(attr_size, '\0');
-  auto attrs = reinterpret_cast<LPPROC_THREAD_ATTRIBUTE_LIST>(attr_buffer.data());
-  const bool have_list =
-      InitializeProcThreadAttributeList(attrs, 1, 0, &attr_size) &&
-      UpdateProcThreadAttribute(attrs, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST, handles,
-                                handle_count * sizeof(HANDLE), nullptr, nullptr);
+  const InheritedHandles handles(pipes);
   STARTUPINFOEXW si{};
   si.StartupInfo.cb = sizeof si;
   si.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
-  si.StartupInfo.hStdInput = child_in;
-  si.StartupInfo.hStdOutput = out_write;
-  si.StartupInfo.hStdError = err_write;
-  si.lpAttributeList = have_list ? attrs : nullptr;
-  PROCESS_INFORMATION pi{};
-  const auto start = std::chrono::steady_clock::now();
-  const BOOL created =
-      CreateProcessW(nullptr, command_line.data(), nullptr, nullptr, TRUE,
-                     CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT | CREATE_NO_WINDOW |
-                         (have_list ? EXTENDED_STARTUPINFO_PRESENT : 0),
-                     env.data(), dir.empty() ? nullptr : dir.c_str(), &si.StartupInfo, &pi);
-  if (have_list) DeleteProcThreadAttributeList(attrs);
-  // Our copies of the child's ends: closed, so the pipes end when the child (and its children) do.
-  close(out_write);
-  close(err_write);
-  close(res_write);
-  close(child_in);
-  if (!created) {
-    r.start_error = "cannot start " + argv[0] + ": " + last_error_text("CreateProcess");
-    for (HANDLE* h : {&out_read, &err_read, &res_read, &job, &in_write}) close(*h);
-    return r;
-  }
+  si.StartupInfo.hStdInput = pipes.child_in.get();
+  si.StartupInfo.hStdOutput = pipes.out_write.get();
+  si.StartupInfo.hStdError = pipes.err_write.get();
+  si.lpAttributeList = handles.get();
+  start = std::chrono::steady_clock::now();
+  return CreateProcessW(nullptr, command_line.data(), nullptr, nullptr, TRUE,
+                        CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT | CREATE_NO_WINDOW |
+                            (handles.get() ? EXTENDED_STARTUPINFO_PRESENT : 0),
+                        env.data(), dir.empty() ? nullptr : dir.c_str(), &si.StartupInfo, &pi);
+}
+
+// The started child put in its job, then let run; its process handle.
+Handle resume_in_job(const PROCESS_INFORMATION& pi, HANDLE job) {
   if (job) AssignProcessToJobObject(job, pi.hProcess);
   ResumeThread(pi.hThread);
   CloseHandle(pi.hThread);
-  r.started = true;
+  return Handle(pi.hProcess);
+}
 
-  std::mutex mutex;
-  std::size_t total = 0;
-  bool flood = false;
-  auto read_all = [&](Reader rd) {
-    char buf[4096];
-    DWORD n = 0;
-    while (ReadFile(rd.pipe, buf, sizeof buf, &n, nullptr) && n > 0) {
-      std::lock_guard<std::mutex> lock(mutex);
-      *rd.bytes += n;
-      if (rd.keep == 0) {
-        rd.text->append(buf, n);
-        continue;
-      }
-      if (rd.text->size() < rd.keep)
-        rd.text->append(buf, std::min<std::size_t>(n, rd.keep - rd.text->size()));
-      total += n;
-      if (limits.kill_output > 0 && total > limits.kill_output && !flood) {
-        flood = true;
-        if (job)
-          TerminateJobObject(job, 1);
-        else
-          TerminateProcess(pi.hProcess, 1);
-      }
+// Ends the child and everything in its job (the child alone when there is no job).
+void end_child(HANDLE job, HANDLE process) {
+  if (job)
+    TerminateJobObject(job, 1);
+  else
+    TerminateProcess(process, 1);
+}
+
+// One pipe a thread reads (ChildStreams::read_all).
+struct Reader {
+  HANDLE pipe = nullptr;
+  std::string* text = nullptr;
+  std::size_t* bytes = nullptr;
+  std::size_t keep = 0;  // 0: keep everything (the result channel)
+};
+
+// The child's streams while it runs, each on a thread of its own: its input written, its output
+// and result read.
+class ChildStreams {
+ public:
+  ChildStreams(const Limits& limits, HANDLE job, HANDLE process)
+      : limits_(limits), job_(job), process_(process) {}
+  /// Starts the threads; the stdin pipe's write end is theirs from now on.
+  void start(ChildPipes& pipes, ChildResult& r);
+  /// Once the child has ended and its job is ended: waits for each stream's end.
+  void join();
+  bool flood() const { return flood_; }
+
+ private:
+  void write_input(HANDLE in_write);
+  void read_all(Reader rd);
+
+  const Limits& limits_;
+  HANDLE job_, process_;
+  std::mutex mutex_;
+  std::size_t total_ = 0;
+  bool flood_ = false;
+  std::size_t result_bytes_ = 0;
+  std::thread in_, out_, err_, res_;
+};
+
+void ChildStreams::start(ChildPipes& pipes, ChildResult& r) {
+  if (pipes.in_write.get())
+    in_ = std::thread(&ChildStreams::write_input, this, pipes.in_write.release());
+  out_ = std::thread(&ChildStreams::read_all, this,
+                     Reader{pipes.out_read.get(), &r.out, &r.out_bytes, limits_.keep_output});
+  err_ = std::thread(&ChildStreams::read_all, this,
+                     Reader{pipes.err_read.get(), &r.err, &r.err_bytes, limits_.keep_output});
+  if (pipes.res_read.get())
+    res_ = std::thread(&ChildStreams::read_all, this,
+                       Reader{pipes.res_read.get(), &r.result, &result_bytes_, 0});
+}
+
+// The input, written while the child runs (a pipe holds only a few KiB); the write fails and
+// the thread ends when the child exits without reading it all.
+void ChildStreams::write_input(HANDLE in_write) {
+  const char* p = limits_.stdin_data.data();
+  std::size_t left = limits_.stdin_data.size();
+  DWORD n = 0;
+  while (left > 0 &&
+         WriteFile(in_write, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 16)), &n,
+                   nullptr) &&
+         n > 0)
+    p += n, left -= n;
+  CloseHandle(in_write);
+}
+
+// Reads a pipe to its end, keeping the first `keep` bytes; counts all of them in `total` (shared
+// by the streams) and terminates the job once it passes `kill_after`.
+void ChildStreams::read_all(Reader rd) {
+  char buf[4096];
+  DWORD n = 0;
+  while (ReadFile(rd.pipe, buf, sizeof buf, &n, nullptr) && n > 0) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    *rd.bytes += n;
+    if (rd.keep == 0) {
+      rd.text->append(buf, n);
+      continue;
     }
-  };
-  // The input, written while the child runs (a pipe holds only a few KiB); the write fails and
-  // the thread ends when the child exits without reading it all.
-  std::thread t_in;
-  if (in_write)
-    t_in = std::thread([&limits, in_write]() {
-      const char* p = limits.stdin_data.data();
-      std::size_t left = limits.stdin_data.size();
-      DWORD n = 0;
-      while (left > 0 &&
-             WriteFile(in_write, p, static_cast<DWORD>(std::min<std::size_t>(left, 1 << 16)), &n,
-                       nullptr) &&
-             n > 0)
-        p += n, left -= n;
-      CloseHandle(in_write);
-    });
-  std::size_t result_bytes = 0;
-  std::thread t_out(read_all, Reader{out_read, &r.out, &r.out_bytes, limits.keep_output});
-  std::thread t_err(read_all, Reader{err_read, &r.err, &r.err_bytes, limits.keep_output});
-  std::thread t_res;
-  if (res_read) t_res = std::thread(read_all, Reader{res_read, &r.result, &result_bytes, 0});
+    if (rd.text->size() < rd.keep)
+      rd.text->append(buf, std::min<std::size_t>(n, rd.keep - rd.text->size()));
+    total_ += n;
+    if (limits_.kill_output > 0 && total_ > limits_.kill_output && !flood_) {
+      flood_ = true;
+      end_child(job_, process_);
+    }
+  }
+}
 
+void ChildStreams::join() {
+  out_.join();
+  err_.join();
+  if (res_.joinable()) res_.join();
+  if (in_.joinable()) in_.join();
+}
+
+// Waits for the child until the timeout, when it is ended; then whatever it started is ended too.
+void wait_for_child(const Limits& limits, HANDLE job, HANDLE process, ChildResult& r) {
   const double timeout_ms = limits.timeout_s > 0 ? limits.timeout_s * 1000.0 : double(INFINITE);
-  if (WaitForSingleObject(pi.hProcess, static_cast<DWORD>(std::min(timeout_ms, 4.0e9))) ==
+  if (WaitForSingleObject(process, static_cast<DWORD>(std::min(timeout_ms, 4.0e9))) ==
       WAIT_TIMEOUT) {
     r.timed_out = true;
-    if (job)
-      TerminateJobObject(job, 1);
-    else
-      TerminateProcess(pi.hProcess, 1);
-    WaitForSingleObject(pi.hProcess, INFINITE);
+    end_child(job, process);
+    WaitForSingleObject(process, INFINITE);
   }
   // Anything the child started is ended with it, so the pipes reach their end.
   if (job) TerminateJobObject(job, 1);
-  t_out.join();
-  t_err.join();
-  if (t_res.joinable()) t_res.join();
-  if (t_in.joinable()) t_in.join();
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.output_flood = flood;
+}
 
+// The child's exit code, or the signal it stands for; neither when it was killed.
+void set_exit_status(HANDLE process, ChildResult& r) {
   DWORD code = 0;
-  GetExitCodeProcess(pi.hProcess, &code);
+  GetExitCodeProcess(process, &code);
   // An unhandled exception ends a Windows process with its NTSTATUS code: report it as the
   // signal a POSIX system would have sent, so the grader's messages are the same.
   switch (code) {
@@ -271,8 +357,43 @@ ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits
     default: r.exit_code = static_cast<int>(code);
   }
   if (r.timed_out || r.output_flood) r.exit_code = -1, r.signal = 0;
-  for (HANDLE* h : {&out_read, &err_read, &res_read, &job}) close(*h);
-  CloseHandle(pi.hProcess);
+}
+
+}  // namespace
+
+ChildResult run_child(const std::vector<std::string>& argv, const Limits& limits,
+                      const std::filesystem::path& cwd) {
+  ChildResult r;
+  // A crashing child must not open Windows' "program has stopped working" dialog (the error mode
+  // is inherited); the job's DIE_ON_UNHANDLED_EXCEPTION (make_job) does the same for its children.
+  SetErrorMode(GetErrorMode() | SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX);
+  if (argv.empty()) {
+    r.start_error = "no program to run";
+    return r;
+  }
+  ChildPipes pipes;
+  if (!pipes.open(limits, r.start_error)) return r;
+  Handle job = make_job(limits);
+  PROCESS_INFORMATION pi{};
+  std::chrono::steady_clock::time_point start;
+  const bool created = start_suspended(argv, cwd, pipes, pi, start);
+  pipes.close_child_ends();
+  if (!created) {
+    r.start_error = "cannot start " + argv[0] + ": " + last_error_text("CreateProcess");
+    return r;
+  }
+  Handle process = resume_in_job(pi, job.get());
+  r.started = true;
+
+  ChildStreams streams(limits, job.get(), process.get());
+  streams.start(pipes, r);
+  wait_for_child(limits, job.get(), process.get(), r);
+  streams.join();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.output_flood = streams.flood();
+  set_exit_status(process.get(), r);
+  for (Handle* h : {&pipes.out_read, &pipes.err_read, &pipes.res_read, &job}) h->close();
+  process.close();
   return r;
 }
 
