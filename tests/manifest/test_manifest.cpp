@@ -161,6 +161,18 @@ TEST(Manifest, ABonusTaskIsMarked) {
   EXPECT_EQ(error_of(replaced("points = 6", "points = 6\nbonus = false")), "");
 }
 
+// `draft = true` marks an assignment in preparation (built, never graded); absent it is false,
+// and anything but a boolean is an error naming the key.
+TEST(Manifest, ADraftIsMarked) {
+  EXPECT_FALSE(jelly::parse_manifest(kGood, "p1.toml").draft);
+  EXPECT_TRUE(
+      jelly::parse_manifest(replaced("title = ", "draft = true\ntitle = "), "p1.toml").draft);
+  EXPECT_NE(error_of(replaced("title = ", "draft = \"yes\"\ntitle = "))
+                .find("draft: expected true or false"),
+            std::string::npos)
+      << error_of(replaced("title = ", "draft = \"yes\"\ntitle = "));
+}
+
 // Every assignment of the tree reads, from its folder, and its tasks' points and files agree.
 TEST(Manifest, EveryShippedManifestReads) {
   const std::vector<jelly::AssignmentManifest> all =

@@ -227,7 +227,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
   AssignmentManifest m;
   Reader r(root, source, "");
   r.only_keys({"id", "namespace", "title", "files", "reference_files", "task_modules", "bodies",
-               "default_scene", "handout", "contracts", "studies", "grading", "task"});
+               "default_scene", "handout", "contracts", "studies", "grading", "task", "draft"});
+  m.draft = r.boolean("draft", "true or false (true: an assignment in preparation, never graded)");
   m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
   if (!is_name(m.id, true))
     fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");

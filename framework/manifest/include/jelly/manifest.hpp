@@ -66,9 +66,12 @@ struct AssignmentManifest {
   std::vector<std::string> task_modules;     ///< shared tasks' modules (solutions/tasks/<module>/)
   std::vector<BodyClaim> bodies;             ///< the scenes it runs (`bodies`), in its order
   std::string default_scene;                 ///< a scene name ("course-2023"); may be empty
-  std::string handout;                       ///< the handout's front page, relative
-  std::vector<std::string> study_measures;   ///< what `jelly study effects` reports
-  double autograded_total = 0.0;             ///< the points the score is scaled to
+  /// `draft = true`: an assignment in preparation, built but never graded, linked or released
+  /// (docs/new-assignment.md, "A draft"). CMake reads it from tools/jelly_manifest.py.
+  bool draft = false;
+  std::string handout;                      ///< the handout's front page, relative
+  std::vector<std::string> study_measures;  ///< what `jelly study effects` reports
+  double autograded_total = 0.0;            ///< the points the score is scaled to
   /// The points graded by hand, apart from the autograder (A1's report): `grading.
   /// hand_graded_points`, 0 when absent. The assignment is worth autograded_total + this (bonus
   /// on top); scores.csv gives it as `hand_graded_max`, the handout quotes it.
@@ -97,8 +100,8 @@ AssignmentManifest parse_manifest(std::string_view text, const std::string& sour
 AssignmentManifest read_manifest(const std::filesystem::path& file);
 
 /// Every assignment under `assignments_root` (each subfolder with an assignment.toml), sorted by
-/// id. Throws ManifestError on the first bad manifest, or when two share a namespace (ids are
-/// folder names, so unique).
+/// id, drafts included (AssignmentManifest::draft). Throws ManifestError on the first bad manifest,
+/// or when two share a namespace (ids are folder names, so unique).
 std::vector<AssignmentManifest> find_assignments(const std::filesystem::path& assignments_root);
 
 /// The one assignment whose `files` are exactly `present` (file names, any order); nullptr if none
