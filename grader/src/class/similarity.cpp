@@ -495,6 +495,192 @@ int report(const GradeConfig& config, const std::vector<SimilarityInput>& inputs
   return static_cast<int>(ranking.flagged.size());
 }
 
+// The squeezed lines the class was given for one task file: the stub's and the handout code's.
+std::set<std::string> given_lines(const std::string& stub_text,
+                                  const std::vector<std::string>& handout) {
+  std::set<std::string> stub_lines;
+  for (const std::string& l : split_lines(stub_text))
+    if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
+  for (const std::string& block : handout)
+    for (const std::string& l : split_lines(block))
+      if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
+  return stub_lines;
+}
+
+// Marks the copy's lines that are given (`stub_lines`) and returns the text sim_c++ reads: the
+// copy with its given lines blanked.
+std::string text_for_sim(TaskCopy& c, const std::set<std::string>& stub_lines) {
+  c.stub.assign(c.lines.size(), 0);
+  std::string for_sim;
+  for (std::size_t n = 0; n < c.lines.size(); ++n) {
+    const std::string s = squeeze(c.lines[n]);
+    c.stub[n] = !s.empty() && stub_lines.count(s);
+    // Controls (NUL among them) become blanks: sim_c++ and this file keep the same lines.
+    if (!c.stub[n])
+      for (const char ch : c.lines[n])
+        for_sim += static_cast<unsigned char>(ch) < 0x20 && ch != '\t' ? ' ' : ch;
+    for_sim += '\n';
+  }
+  return for_sim;
+}
+
+// Anything but stub lines?
+bool has_own_code(const TaskCopy& c) {
+  bool own = false;
+  for (std::size_t n = 0; n < c.lines.size(); ++n) own = own || (c.code[n] && !c.stub[n]);
+  return own;
+}
+
+// Why sim_c++ did not end well, for the error message.
+std::string sim_failure(const ChildResult& r, const SimilarityOptions& options) {
+  return !r.started    ? "did not start: " + r.start_error
+         : r.timed_out ? "took longer than " + percent(options.timeout_s) + " s"
+         : r.signal    ? "was ended by " + describe_signal(r.signal)
+                       : "failed with exit status " + std::to_string(r.exit_code);
+}
+
+// One sim_c++ run per task file over the whole class, in `work`: every submission's copy of every
+// task file, its stub lines blanked in the copy sim_c++ reads, and the runs two copies share.
+class ClassComparison {
+ public:
+  ClassComparison(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
+                  const fs::path& sim, const fs::path& work, const SimilarityOptions& options)
+      : config_(config),
+        inputs_(inputs),
+        options_(options),
+        sim_(sim),
+        work_(work),
+        tasks_(config.task_files()),
+        copies_(inputs.size(), std::vector<TaskCopy>(tasks_.size())),
+        handout_(handout_code(config)) {}
+
+  void compare_all() {
+    for (std::size_t t = 0; t < tasks_.size(); ++t) compare_task(t);
+  }
+
+  int write_report(const fs::path& out) const {
+    return report(config_, inputs_, copies_, runs_, notes_for(inputs_, tasks_, copies_),
+                  handout_.size(), out, options_);
+  }
+
+ private:
+  void compare_task(std::size_t t) {
+    const std::string stub_text = read_file(config_.assignments_dir() / tasks_[t]);
+    if (stub_text.empty())
+      throw std::runtime_error("similarity: cannot read the stub " +
+                               (config_.assignments_dir() / tasks_[t]).string());
+    const std::set<std::string> stub_lines = given_lines(stub_text, handout_);
+    const fs::path dir = work_ / std::to_string(t);
+    write_given_files(dir, stub_text);
+    std::size_t present = 0;
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+      present += prepare_copy(i, t, stub_lines, dir) ? 1 : 0;
+    if (present < 2) return;
+    run_sim(t, dir);
+    read_runs(t, dir);
+  }
+
+  // The given code, as sim_c++'s old files.
+  void write_given_files(const fs::path& dir, const std::string& stub_text) const {
+    fs::create_directories(dir);
+    write_file_atomically(dir / "stub.cpp", stub_text);
+    for (std::size_t h = 0; h < handout_.size(); ++h)
+      write_file_atomically(dir / ("handout" + std::to_string(h) + ".cpp"), handout_[h]);
+  }
+
+  // Reads submission i's copy of task file t and, when it holds code of its own, writes the text
+  // sim_c++ reads as dir/<i>.cpp. True when it is compared.
+  bool prepare_copy(std::size_t i, std::size_t t, const std::set<std::string>& stub_lines,
+                    const fs::path& dir) {
+    TaskCopy& c = copies_[i][t];
+    const fs::path file = find_task_file(inputs_[i].folder, tasks_[t]);
+    if (file.empty()) {
+      c.why = "not found";
+      return false;
+    }
+    // Lexically: fs::relative would follow a symbolic link and show where it points.
+    const fs::path rel = file.lexically_relative(inputs_[i].folder);
+    c.shown = (rel.empty() ? file.filename() : rel).generic_string();
+    const std::string text = read_task_file(file, c.why);
+    if (!c.why.empty()) return false;
+    c.lines = split_lines(text);
+    c.code = code_lines(c.lines);
+    const std::string for_sim = text_for_sim(c, stub_lines);
+    if (!has_own_code(c)) {
+      c.why = "holds only given lines (the stub's, the handout's code)";
+      return false;
+    }
+    c.present = true;
+    std::ofstream(dir / (std::to_string(i) + ".cpp"), std::ios::binary) << for_sim;
+    return true;
+  }
+
+  std::vector<std::string> sim_argv(std::size_t t) const {
+    std::vector<std::string> argv = {
+        sim_.string(), "-e",     "-n", "-s", "-T", "-r" + std::to_string(options_.min_run),
+        "-o",          "sim.out"};
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+      if (copies_[i][t].present) argv.push_back(std::to_string(i) + ".cpp");
+    argv.push_back("/");  // the given code are "old" files: runs against them mark it
+    argv.push_back("stub.cpp");
+    for (std::size_t h = 0; h < handout_.size(); ++h)
+      argv.push_back("handout" + std::to_string(h) + ".cpp");
+    return argv;
+  }
+
+  void run_sim(std::size_t t, const fs::path& dir) const {
+    Limits lim = trusted_tool_limits(options_.timeout_s);
+    lim.memory_bytes = 4ULL << 30;
+    const ChildResult r = run_child(sim_argv(t), lim, dir);
+    if (!r.started || r.timed_out || r.signal != 0 || r.exit_code != 0)
+      throw std::runtime_error("similarity: sim_c++ on the class's " + tasks_[t] + " " +
+                               sim_failure(r, options_) +
+                               (r.err.empty() ? "" : ": " + safe_excerpt(r.err, 400)));
+  }
+
+  // The submission a sim_c++ file name ("<i>.cpp") stands for, when it is one that was compared.
+  bool copy_index(const std::string& name, std::size_t t, std::size_t& i) const {
+    if (name.size() < 5 || name.compare(name.size() - 4, 4, ".cpp") != 0) return false;
+    const std::string digits = name.substr(0, name.size() - 4);
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    i = std::stoul(digits);
+    return i < inputs_.size() && copies_[i][t].present;
+  }
+
+  // Runs against the stub or the handout mark given code the student moved or reformatted; the
+  // others are the shared regions.
+  void read_runs(std::size_t t, const fs::path& dir) {
+    std::istringstream simout(read_file(dir / "sim.out"));
+    std::string line;
+    while (std::getline(simout, line)) {
+      SimLine s;
+      if (!parse_sim_line(line, s)) continue;
+      std::size_t a = 0, b = 0;
+      const bool left = copy_index(s.left, t, a), right = copy_index(s.right, t, b);
+      if (left && (s.right == "stub.cpp" || s.right.rfind("handout", 0) == 0)) {
+        for (long n = s.l1; n <= s.l2 && n <= static_cast<long>(copies_[a][t].stub.size()); ++n)
+          copies_[a][t].stub[static_cast<std::size_t>(n - 1)] = 1;
+      } else if (left && right && a != b) {
+        Run run{a, b, t, s.l1, s.l2, s.r1, s.r2, s.tokens};
+        if (a > b) run = Run{b, a, t, s.r1, s.r2, s.l1, s.l2, s.tokens};
+        runs_.push_back(run);
+      }
+    }
+  }
+
+  const GradeConfig& config_;
+  const std::vector<SimilarityInput>& inputs_;
+  const SimilarityOptions& options_;
+  const fs::path sim_;
+  const fs::path work_;
+  const std::vector<std::string>& tasks_;
+  std::vector<std::vector<TaskCopy>> copies_;
+  std::vector<Run> runs_;
+  const std::vector<std::string> handout_;
+};
+
 }  // namespace
 
 fs::path similarity_tool() {
@@ -510,7 +696,6 @@ fs::path similarity_tool() {
 int write_similarity(const GradeConfig& config, const std::vector<SimilarityInput>& inputs,
                      const fs::path& out, const SimilarityOptions& options) {
   const fs::path sim = similarity_tool();
-  const std::vector<std::string>& tasks = config.task_files();
   fs::create_directories(out);
   const fs::path work = out / "similarity-work";
   struct RemoveWork {
@@ -521,114 +706,9 @@ int write_similarity(const GradeConfig& config, const std::vector<SimilarityInpu
     }
   } remove_work{work};
   fs::remove_all(work);
-
-  // Every submission's copy of every task file, its stub lines blanked in the copy sim_c++ reads.
-  std::vector<std::vector<TaskCopy>> copies(inputs.size(), std::vector<TaskCopy>(tasks.size()));
-  std::vector<Run> runs;
-  const std::vector<std::string> handout = handout_code(config);
-  for (std::size_t t = 0; t < tasks.size(); ++t) {
-    const std::string stub_text = read_file(config.assignments_dir() / tasks[t]);
-    if (stub_text.empty())
-      throw std::runtime_error("similarity: cannot read the stub " +
-                               (config.assignments_dir() / tasks[t]).string());
-    std::set<std::string> stub_lines;
-    for (const std::string& l : split_lines(stub_text))
-      if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
-    for (const std::string& block : handout)
-      for (const std::string& l : split_lines(block))
-        if (const std::string s = squeeze(l); !s.empty()) stub_lines.insert(s);
-    const fs::path dir = work / std::to_string(t);
-    fs::create_directories(dir);
-    write_file_atomically(dir / "stub.cpp", stub_text);
-    for (std::size_t h = 0; h < handout.size(); ++h)
-      write_file_atomically(dir / ("handout" + std::to_string(h) + ".cpp"), handout[h]);
-    std::vector<std::string> argv = {sim.string(), "-e",     "-n",
-                                     "-s",         "-T",     "-r" + std::to_string(options.min_run),
-                                     "-o",         "sim.out"};
-    std::size_t present = 0;
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-      TaskCopy& c = copies[i][t];
-      const fs::path file = find_task_file(inputs[i].folder, tasks[t]);
-      if (file.empty()) {
-        c.why = "not found";
-        continue;
-      }
-      // Lexically: fs::relative would follow a symbolic link and show where it points.
-      const fs::path rel = file.lexically_relative(inputs[i].folder);
-      c.shown = (rel.empty() ? file.filename() : rel).generic_string();
-      const std::string text = read_task_file(file, c.why);
-      if (!c.why.empty()) continue;
-      c.lines = split_lines(text);
-      c.code = code_lines(c.lines);
-      c.stub.assign(c.lines.size(), 0);
-      std::string for_sim;
-      for (std::size_t n = 0; n < c.lines.size(); ++n) {
-        const std::string s = squeeze(c.lines[n]);
-        c.stub[n] = !s.empty() && stub_lines.count(s);
-        // Controls (NUL among them) become blanks: sim_c++ and this file keep the same lines.
-        if (!c.stub[n])
-          for (const char ch : c.lines[n])
-            for_sim += static_cast<unsigned char>(ch) < 0x20 && ch != '\t' ? ' ' : ch;
-        for_sim += '\n';
-      }
-      bool own = false;  // anything but stub lines?
-      for (std::size_t n = 0; n < c.lines.size(); ++n) own = own || (c.code[n] && !c.stub[n]);
-      if (!own) {
-        c.why = "holds only given lines (the stub's, the handout's code)";
-        continue;
-      }
-      c.present = true;
-      ++present;
-      std::ofstream(dir / (std::to_string(i) + ".cpp"), std::ios::binary) << for_sim;
-    }
-    if (present < 2) continue;
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-      if (copies[i][t].present) argv.push_back(std::to_string(i) + ".cpp");
-    argv.push_back("/");  // the given code are "old" files: runs against them mark it
-    argv.push_back("stub.cpp");
-    for (std::size_t h = 0; h < handout.size(); ++h)
-      argv.push_back("handout" + std::to_string(h) + ".cpp");
-    Limits lim = trusted_tool_limits(options.timeout_s);
-    lim.memory_bytes = 4ULL << 30;
-    const ChildResult r = run_child(argv, lim, dir);
-    if (!r.started || r.timed_out || r.signal != 0 || r.exit_code != 0)
-      throw std::runtime_error(
-          "similarity: sim_c++ on the class's " + tasks[t] + " " +
-          (!r.started    ? "did not start: " + r.start_error
-           : r.timed_out ? "took longer than " + percent(options.timeout_s) + " s"
-           : r.signal    ? "was ended by " + describe_signal(r.signal)
-                         : "failed with exit status " + std::to_string(r.exit_code)) +
-          (r.err.empty() ? "" : ": " + safe_excerpt(r.err, 400)));
-    // Runs against the stub or the handout mark given code the student moved or reformatted; the
-    // others are the shared regions.
-    std::istringstream simout(read_file(dir / "sim.out"));
-    std::string line;
-    const auto index = [&](const std::string& name, std::size_t& i) {
-      if (name.size() < 5 || name.compare(name.size() - 4, 4, ".cpp") != 0) return false;
-      const std::string digits = name.substr(0, name.size() - 4);
-      if (digits.empty() || digits.size() > 9 ||
-          digits.find_first_not_of("0123456789") != std::string::npos)
-        return false;
-      i = std::stoul(digits);
-      return i < inputs.size() && copies[i][t].present;
-    };
-    while (std::getline(simout, line)) {
-      SimLine s;
-      if (!parse_sim_line(line, s)) continue;
-      std::size_t a = 0, b = 0;
-      const bool left = index(s.left, a), right = index(s.right, b);
-      if (left && (s.right == "stub.cpp" || s.right.rfind("handout", 0) == 0)) {
-        for (long n = s.l1; n <= s.l2 && n <= static_cast<long>(copies[a][t].stub.size()); ++n)
-          copies[a][t].stub[static_cast<std::size_t>(n - 1)] = 1;
-      } else if (left && right && a != b) {
-        Run run{a, b, t, s.l1, s.l2, s.r1, s.r2, s.tokens};
-        if (a > b) run = Run{b, a, t, s.r1, s.r2, s.l1, s.l2, s.tokens};
-        runs.push_back(run);
-      }
-    }
-  }
-  return report(config, inputs, copies, runs, notes_for(inputs, tasks, copies), handout.size(), out,
-                options);
+  ClassComparison comparison(config, inputs, sim, work, options);
+  comparison.compare_all();
+  return comparison.write_report(out);
 }
 
 }  // namespace jelly::grade

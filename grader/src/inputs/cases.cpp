@@ -163,10 +163,11 @@ AssignmentManifest read_rubric(const std::string& path, double hand_graded_point
   return m;
 }
 
-CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path) {
-  CaseBook book;
-  // Rubric: the assignment's manifest ([grading] and the [[task]] points), or with --rubric
-  // another manifest-shaped file (a term's own points; docs/instructor-guide.md).
+namespace {
+
+// Rubric: the assignment's manifest ([grading] and the [[task]] points), or with --rubric
+// another manifest-shaped file (a term's own points; docs/instructor-guide.md).
+AssignmentManifest rubric_manifest(const GradeConfig& config, const std::string& rubric_path) {
   const std::string rpath = rubric_path.empty() ? config.rubric_path().string() : rubric_path;
   AssignmentManifest rubric;
   try {
@@ -176,10 +177,15 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
   } catch (const ManifestError& e) {
     throw std::runtime_error(e.what());
   }
-  book.rubric.autograded_total = rubric.autograded_total;
-  book.rubric.hand_graded_points = rubric.hand_graded_points;
-  book.rubric.hidden_visibility = rubric.hidden_visibility;
-  for (const ManifestTask& t : rubric.tasks) {
+  return rubric;
+}
+
+Rubric rubric_of(const AssignmentManifest& manifest) {
+  Rubric rubric;
+  rubric.autograded_total = manifest.autograded_total;
+  rubric.hand_graded_points = manifest.hand_graded_points;
+  rubric.hidden_visibility = manifest.hidden_visibility;
+  for (const ManifestTask& t : manifest.tasks) {
     TaskSpec s;
     s.id = t.id;
     s.title = t.title;
@@ -188,89 +194,125 @@ CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_pat
     s.file = t.file;
     s.points = t.points;
     s.bonus = t.bonus;
-    book.rubric.tasks.push_back(s);
+    rubric.tasks.push_back(s);
   }
-  // Tolerances, then cases.
+  return rubric;
+}
+
+// The cases folder's .toml files, sorted.
+std::vector<fs::path> case_files(const GradeConfig& config) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(config.cases_dir()))
     if (e.path().extension() == ".toml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  for (const fs::path& f : files) {
-    toml::table tbl;
-    try {
-      tbl = toml::parse_file(f.string());
-    } catch (const toml::parse_error& e) {
-      throw std::runtime_error(f.string() + ":" + std::to_string(e.source().begin.line) + ": " +
-                               std::string(e.description()));
-    }
-    if (const toml::table* tols = tbl["tolerance"].as_table()) {
-      for (const auto& [key, node] : *tols) {
-        const toml::table* t = node.as_table();
-        Tolerance tol;
-        tol.name = std::string(key.str());
-        const auto atol = t ? (*t)["atol"].value<double>() : std::nullopt;
-        const auto rtol = t ? (*t)["rtol"].value<double>() : std::nullopt;
-        tol.why = t ? (*t)["why"].value_or(std::string()) : std::string();
-        if (!atol || !rtol || tol.why.empty())
-          throw std::runtime_error(where(f.string(), node, "tolerance." + tol.name) +
-                                   ": needs atol, rtol and a one-line why");
-        tol.atol = *atol;
-        tol.rtol = *rtol;
-        book.tolerances[tol.name] = tol;
-      }
+  return files;
+}
+
+// One [tolerance.NAME] table of file f.
+Tolerance parse_tolerance(const fs::path& f, const toml::key& key, const toml::node& node) {
+  const toml::table* t = node.as_table();
+  Tolerance tol;
+  tol.name = std::string(key.str());
+  const auto atol = t ? (*t)["atol"].value<double>() : std::nullopt;
+  const auto rtol = t ? (*t)["rtol"].value<double>() : std::nullopt;
+  tol.why = t ? (*t)["why"].value_or(std::string()) : std::string();
+  if (!atol || !rtol || tol.why.empty())
+    throw std::runtime_error(where(f.string(), node, "tolerance." + tol.name) +
+                             ": needs atol, rtol and a one-line why");
+  tol.atol = *atol;
+  tol.rtol = *rtol;
+  return tol;
+}
+
+// The tolerances file f declares, into `tolerances`; a file that is not TOML is an error here.
+void read_tolerances(const fs::path& f, std::map<std::string, Tolerance>& tolerances) {
+  toml::table tbl;
+  try {
+    tbl = toml::parse_file(f.string());
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(f.string() + ":" + std::to_string(e.source().begin.line) + ": " +
+                             std::string(e.description()));
+  }
+  if (const toml::table* tols = tbl["tolerance"].as_table()) {
+    for (const auto& [key, node] : *tols) {
+      const Tolerance tol = parse_tolerance(f, key, node);
+      tolerances[tol.name] = tol;
     }
   }
-  for (const fs::path& f : files) {
-    toml::table tbl = toml::parse_file(f.string());
-    const toml::array* cases = tbl["case"].as_array();
-    if (!cases) continue;
-    for (const toml::node& n : *cases) {
-      const toml::table& t = *n.as_table();
-      CaseSpec c;
-      c.source = f.filename().string();
-      c.line = static_cast<int>(n.source().begin.line);
-      c.id = t["id"].value_or(std::string());
-      c.task = t["task"].value_or(std::string());
-      c.title = t["title"].value_or(std::string());
-      c.weight = t["weight"].value_or(1.0);
-      c.timeout_s = t["timeout"].value_or(0.0);
-      c.tolerance = t["tolerance"].value_or(std::string());
-      c.generator = t["generator"].value_or(std::string());
-      c.element = t["element"].value_or(c.element);
-      const std::string vis = t["visibility"].value_or(std::string("public"));
-      const std::string ctx = where(f.string(), n, "case " + c.id);
-      if (c.id.empty() || c.task.empty() || c.generator.empty())
-        throw std::runtime_error(ctx +
-                                 ": needs id, task and generator (a name from `runner --list`)");
-      if (const toml::node* params = t.get("params")) {
-        if (!params->is_table())
-          throw std::runtime_error(ctx +
-                                   ": params must be a table (params = { ... } or [case.params])");
-        try {
-          c.params = to_json(*params);
-        } catch (const std::exception& e) {
-          throw std::runtime_error(ctx + ".params: " + e.what());
-        }
-      }
-      if (vis != "public" && vis != "hidden")
-        throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" +
-                                 vis + "\"");
-      c.hidden = vis == "hidden";
-      if (!book.rubric.find(c.task))
-        throw std::runtime_error(ctx + ": task " + c.task + " is not in the rubric");
-      if (!book.tolerances.count(c.tolerance))
-        throw std::runtime_error(ctx + ": unknown tolerance \"" + c.tolerance + "\"");
-      if (const toml::table* checks = t["checks"].as_table())
-        for (const auto& [pattern, rule] : *checks)
-          c.rules.emplace_back(
-              std::string(pattern.str()),
-              parse_rule(rule.value_or(std::string()),
-                         ctx + ".checks." + std::string(pattern.str()), book.tolerances));
-      for (const CaseSpec& other : book.cases)
-        if (other.id == c.id) throw std::runtime_error(ctx + ": duplicate case id");
-      book.cases.push_back(c);
-    }
+}
+
+// The fields of one [[case]] of file f, as written.
+CaseSpec case_fields(const fs::path& f, const toml::node& n) {
+  const toml::table& t = *n.as_table();
+  CaseSpec c;
+  c.source = f.filename().string();
+  c.line = static_cast<int>(n.source().begin.line);
+  c.id = t["id"].value_or(std::string());
+  c.task = t["task"].value_or(std::string());
+  c.title = t["title"].value_or(std::string());
+  c.weight = t["weight"].value_or(1.0);
+  c.timeout_s = t["timeout"].value_or(0.0);
+  c.tolerance = t["tolerance"].value_or(std::string());
+  c.generator = t["generator"].value_or(std::string());
+  c.element = t["element"].value_or(c.element);
+  return c;
+}
+
+Json case_params(const toml::node& params, const std::string& ctx) {
+  if (!params.is_table())
+    throw std::runtime_error(ctx + ": params must be a table (params = { ... } or [case.params])");
+  try {
+    return to_json(params);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(ctx + ".params: " + e.what());
   }
+}
+
+// One [[case]] of file f, checked against the rubric, the tolerances and the cases before it.
+CaseSpec parse_case(const fs::path& f, const toml::node& n, const CaseBook& book) {
+  const toml::table& t = *n.as_table();
+  CaseSpec c = case_fields(f, n);
+  const std::string vis = t["visibility"].value_or(std::string("public"));
+  const std::string ctx = where(f.string(), n, "case " + c.id);
+  if (c.id.empty() || c.task.empty() || c.generator.empty())
+    throw std::runtime_error(ctx + ": needs id, task and generator (a name from `runner --list`)");
+  if (const toml::node* params = t.get("params")) c.params = case_params(*params, ctx);
+  if (vis != "public" && vis != "hidden")
+    throw std::runtime_error(ctx + ": visibility must be \"public\" or \"hidden\", got \"" + vis +
+                             "\"");
+  c.hidden = vis == "hidden";
+  if (!book.rubric.find(c.task))
+    throw std::runtime_error(ctx + ": task " + c.task + " is not in the rubric");
+  if (!book.tolerances.count(c.tolerance))
+    throw std::runtime_error(ctx + ": unknown tolerance \"" + c.tolerance + "\"");
+  if (const toml::table* checks = t["checks"].as_table())
+    for (const auto& [pattern, rule] : *checks)
+      c.rules.emplace_back(
+          std::string(pattern.str()),
+          parse_rule(rule.value_or(std::string()), ctx + ".checks." + std::string(pattern.str()),
+                     book.tolerances));
+  for (const CaseSpec& other : book.cases)
+    if (other.id == c.id) throw std::runtime_error(ctx + ": duplicate case id");
+  return c;
+}
+
+// The cases file f declares, into the book.
+void read_cases(const fs::path& f, CaseBook& book) {
+  toml::table tbl = toml::parse_file(f.string());
+  const toml::array* cases = tbl["case"].as_array();
+  if (!cases) return;
+  for (const toml::node& n : *cases) book.cases.push_back(parse_case(f, n, book));
+}
+
+}  // namespace
+
+CaseBook load_case_book(const GradeConfig& config, const std::string& rubric_path) {
+  CaseBook book;
+  book.rubric = rubric_of(rubric_manifest(config, rubric_path));
+  // Tolerances, then cases.
+  const std::vector<fs::path> files = case_files(config);
+  for (const fs::path& f : files) read_tolerances(f, book.tolerances);
+  for (const fs::path& f : files) read_cases(f, book);
   return book;
 }
 

@@ -250,6 +250,105 @@ bool is_lms_download(const std::vector<Entry>& entries) {
   return false;
 }
 
+/// One student of an LMS download: the entries named as theirs.
+struct LmsStudent {
+  LmsEntry who;
+  std::vector<const Entry*> entries;
+  std::set<std::string> names;
+  std::string problem;
+};
+
+/// An entry named as a download's: why the class is read as one.
+std::string lms_witness(const std::vector<Entry>& entries) {
+  std::string witness;
+  for (const Entry& e : entries)
+    if (witness.empty() && lms_entry(e.key, is_folder(e.path))) witness = e.key;
+  return witness;
+}
+
+/// The row, not graded, of an entry named as no student's.
+Submission stray_lms_entry(const Entry& e, bool folder, const std::string& witness) {
+  Submission s;
+  s.id = e.key;
+  s.source = e.key;
+  s.dir = e.path;
+  s.problem = "'" + e.key + "' is " + (folder ? "a folder" : "a file") +
+              " of a Canvas or Moodle download not named as these name a student's entry "
+              "(Canvas: <name>_<user id>_<file id>_<file>; Moodle: <Full "
+              "Name>_<participant id>_assignsubmission_file): it belongs to no student "
+              "(the class is read as such a download because '" +
+              witness + "' is named as one)";
+  return s;
+}
+
+/// Gives entry e, named as `who`'s, to its student.
+void add_lms_entry(LmsStudent& st, const LmsEntry& who, const Entry& e, const fs::path& root,
+                   const std::map<std::string, std::vector<std::string>>& refused_in) {
+  std::error_code ec;
+  if (st.entries.empty()) st.who = who;
+  st.who.late = st.who.late || who.late;
+  st.entries.push_back(&e);
+  st.names.insert(who.name);
+  if (const auto r = refused_in.find(e.key); r != refused_in.end() && st.problem.empty())
+    st.problem = r->second.front();
+  // A folder that is a symlink out of the class, or a file that is one: never followed.
+  if (fs::symlink_status(e.path, ec).type() == fs::file_type::symlink &&
+      !link_stays_inside(e.path, root) && st.problem.empty())
+    st.problem = "'" + e.key + "' is a symlink to " + fs::read_symlink(e.path, ec).string() +
+                 ", outside the class's folder: not followed";
+}
+
+/// What the download says of the student: their entries, their names, a late mark.
+std::vector<std::string> lms_notes(const LmsStudent& st) {
+  std::vector<std::string> notes;
+  std::string listed;
+  for (const Entry* e : st.entries) listed += (listed.empty() ? "" : ", ") + e->key;
+  notes.push_back(st.who.system + " download: " + listed + " (the id is " +
+                  (st.who.system == "Canvas" ? "Canvas's user id, the gradebook export's ID"
+                                             : "Moodle's participant id, the grading "
+                                               "worksheet's Identifier") +
+                  ")");
+  if (st.names.size() > 1) {
+    std::string all;
+    for (const std::string& n : st.names) all += (all.empty() ? "" : ", ") + n;
+    notes.push_back("the files of " + st.who.id + " give several names: " + all);
+  }
+  if (st.who.late) notes.push_back("Canvas marked the submission late (LATE in its names)");
+  return notes;
+}
+
+/// Copies the student's entries into s.dir (created), under the names the download gave them,
+/// until one cannot be read.
+void copy_lms_entries(const LmsStudent& st, Submission& s) {
+  std::error_code ec;
+  fs::create_directories(s.dir, ec);
+  for (const Entry* e : st.entries) {
+    if (!s.problem.empty()) break;
+    const bool folder = is_folder(e->path);
+    if (!folder && lower(e->path.extension().string()) == ".zip")
+      s.notes.push_back(e->key +
+                        " is a zip the student handed in: it is not unpacked, so no "
+                        "file inside it is graded");
+    fs::copy(e->path, s.dir / e->key, fs::copy_options::recursive | fs::copy_options::copy_symlinks,
+             ec);
+    if (ec) s.problem = "'" + e->key + "' cannot be read: " + ec.message();
+  }
+}
+
+/// The student's row, their entries gathered in `dir`.
+Submission lms_submission(const LmsStudent& st, const fs::path& dir) {
+  Submission s;
+  s.id = st.who.id;
+  s.name = st.who.name;
+  s.source = st.entries.front()->key;
+  s.dir = dir;
+  s.notes = lms_notes(st);
+  s.problem = st.problem;
+  copy_lms_entries(st, s);
+  if (s.problem.empty()) s.problem = folder_problem(s.dir, s.dir, s.notes);
+  return s;
+}
+
 /// The students of an LMS download, one per (system, id), each given a folder under `gather`
 /// (emptied first) holding copies of their entries under the names the download gave them (the
 /// build takes Canvas's and Moodle's file names for the task files they stand for, the latest
@@ -260,83 +359,19 @@ std::vector<Submission> lms_submissions(
     const std::map<std::string, std::vector<std::string>>& refused_in) {
   std::error_code ec;
   fs::remove_all(gather, ec);
-  struct Student {
-    LmsEntry who;
-    std::vector<const Entry*> entries;
-    std::set<std::string> names;
-    std::string problem;
-  };
-  std::map<std::pair<std::string, std::string>, Student> students;
+  std::map<std::pair<std::string, std::string>, LmsStudent> students;
   std::vector<Submission> subs;
-  std::string witness;  // an entry named as a download's: why the class is read as one
-  for (const Entry& e : entries)
-    if (witness.empty() && lms_entry(e.key, is_folder(e.path))) witness = e.key;
+  const std::string witness = lms_witness(entries);
   for (const Entry& e : entries) {
     const bool folder = is_folder(e.path);
-    const std::optional<LmsEntry> who = lms_entry(e.key, folder);
-    if (!who) {
-      Submission s;
-      s.id = e.key;
-      s.source = e.key;
-      s.dir = e.path;
-      s.problem = "'" + e.key + "' is " + (folder ? "a folder" : "a file") +
-                  " of a Canvas or Moodle download not named as these name a student's entry "
-                  "(Canvas: <name>_<user id>_<file id>_<file>; Moodle: <Full "
-                  "Name>_<participant id>_assignsubmission_file): it belongs to no student "
-                  "(the class is read as such a download because '" +
-                  witness + "' is named as one)";
-      subs.push_back(s);
-      continue;
-    }
-    Student& st = students[{who->system, who->id}];
-    if (st.entries.empty()) st.who = *who;
-    st.who.late = st.who.late || who->late;
-    st.entries.push_back(&e);
-    st.names.insert(who->name);
-    if (const auto r = refused_in.find(e.key); r != refused_in.end() && st.problem.empty())
-      st.problem = r->second.front();
-    // A folder that is a symlink out of the class, or a file that is one: never followed.
-    if (fs::symlink_status(e.path, ec).type() == fs::file_type::symlink &&
-        !link_stays_inside(e.path, root) && st.problem.empty())
-      st.problem = "'" + e.key + "' is a symlink to " + fs::read_symlink(e.path, ec).string() +
-                   ", outside the class's folder: not followed";
+    if (const std::optional<LmsEntry> who = lms_entry(e.key, folder))
+      add_lms_entry(students[{who->system, who->id}], *who, e, root, refused_in);
+    else
+      subs.push_back(stray_lms_entry(e, folder, witness));
   }
   std::size_t k = 0;
-  for (auto& [key, st] : students) {
-    Submission s;
-    s.id = st.who.id;
-    s.name = st.who.name;
-    s.source = st.entries.front()->key;
-    s.dir = gather / std::to_string(++k);
-    std::string listed;
-    for (const Entry* e : st.entries) listed += (listed.empty() ? "" : ", ") + e->key;
-    s.notes.push_back(st.who.system + " download: " + listed + " (the id is " +
-                      (st.who.system == "Canvas" ? "Canvas's user id, the gradebook export's ID"
-                                                 : "Moodle's participant id, the grading "
-                                                   "worksheet's Identifier") +
-                      ")");
-    if (st.names.size() > 1) {
-      std::string all;
-      for (const std::string& n : st.names) all += (all.empty() ? "" : ", ") + n;
-      s.notes.push_back("the files of " + st.who.id + " give several names: " + all);
-    }
-    if (st.who.late) s.notes.push_back("Canvas marked the submission late (LATE in its names)");
-    s.problem = st.problem;
-    fs::create_directories(s.dir, ec);
-    for (const Entry* e : st.entries) {
-      if (!s.problem.empty()) break;
-      const bool folder = is_folder(e->path);
-      if (!folder && lower(e->path.extension().string()) == ".zip")
-        s.notes.push_back(e->key +
-                          " is a zip the student handed in: it is not unpacked, so no "
-                          "file inside it is graded");
-      fs::copy(e->path, s.dir / e->key,
-               fs::copy_options::recursive | fs::copy_options::copy_symlinks, ec);
-      if (ec) s.problem = "'" + e->key + "' cannot be read: " + ec.message();
-    }
-    if (s.problem.empty()) s.problem = folder_problem(s.dir, s.dir, s.notes);
-    subs.push_back(s);
-  }
+  for (const auto& [key, st] : students)
+    subs.push_back(lms_submission(st, gather / std::to_string(++k)));
   return subs;
 }
 

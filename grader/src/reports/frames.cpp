@@ -116,6 +116,153 @@ Json reference_frames(const GradeConfig& config, const CaseSpec& spec, const fs:
   return kept;
 }
 
+// Whether the case records frames (an output with rule "frames").
+bool records_frames(const CaseSpec& spec) {
+  for (const auto& [name, rule] : spec.rules)
+    if (rule.kind == Rule::Kind::Frames) return true;
+  return false;
+}
+
+// The scene case: the last case that records frames; its frames are drawn in the assignment's
+// default scene (the manifest's default_scene). Null when there is none.
+const CaseResult* course_case(const GradeReport& report) {
+  const CaseResult* course = nullptr;
+  for (const CaseResult& c : report.cases)
+    if (records_frames(*c.spec) && c.status != "skipped") course = &c;
+  return course;
+}
+
+// Why the course case's frames cannot be drawn at all; "" when they can.
+std::string frames_unavailable(const GradeConfig& config, const CaseResult& course) {
+  if (!course.spec->params.contains("frame_times"))
+    return "the course scene case records no frames (no frame_times in " +
+           (config.cases_dir() / course.spec->source).string() + ")";
+  if (config.assignment().manifest.default_scene.empty())
+    return "the assignment's manifest (" + config.rubric_path().string() +
+           ") names no default_scene to draw the frames in";
+  if (config.jelly_cli.empty())
+    return "this grader was built without the renderer (configure with -DJELLY_BUILD_VIEWER=ON, "
+           "or set JELLY_GRADE_JELLY to a jelly program with `render --replay`)";
+  std::error_code ec;
+  if (!fs::exists(config.jelly_cli, ec))
+    return config.jelly_cli.string() + " is missing (build the `jelly` target)";
+  return "";
+}
+
+long index_of(const std::vector<double>& times, double t) {
+  for (std::size_t k = 0; k < times.size(); ++k)
+    if (std::abs(times[k] - t) < 1e-9) return static_cast<long>(k);
+  return -1;
+}
+
+// The page's path of side's PNG number k.
+std::string png(const char* side, long k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05ld.png", k);
+  return (fs::path("frames") / side / name).generic_string();
+}
+
+// Recorded times are the first step at or after each asked time: match within 10 ms.
+double recorded(const std::vector<double>& times, double asked_t) {
+  for (double t : times)
+    if (t >= asked_t - 1e-9 && t < asked_t + 0.01) return t;
+  return NAN;
+}
+
+// Draws the course case's frames, the student's and the reference's, into out_dir/frames and lists
+// them in `result` as rows at the asked times. Throws what the files it writes throw.
+class FramesDrawing {
+ public:
+  FramesDrawing(const GradeConfig& config, const CaseResult& course, const fs::path& out_dir,
+                const fs::path& work, CourseFrames& result)
+      : config_(config),
+        course_(course),
+        scene_(config.assignment().manifest.default_scene),
+        out_dir_(out_dir),
+        work_(work),
+        dir_(work / "frames"),
+        result_(result) {}
+
+  void draw() {
+    std::error_code ec;
+    fs::remove_all(out_dir_ / "frames", ec);
+    fs::create_directories(dir_);
+    if (!draw_yours()) return;
+    note_missing_frames();
+    if (!draw_reference()) return;
+    add_rows();
+    if (result_.rows.empty() && result_.unavailable.empty())
+      result_.unavailable = "neither run recorded a frame";
+  }
+
+ private:
+  // The student's frames (recorded in the sandbox; drawn here).
+  bool draw_yours() {
+    your_times_ = write_replay_csv(course_.outputs, dir_ / "yours.csv", dropped_);
+    return your_times_.empty() || draw_side("yours");
+  }
+
+  void note_missing_frames() {
+    for (double t : dropped_)
+      result_.notes.push_back("your frame at t = " + fmt_time(t) +
+                              " s has NaN or infinity: not drawn");
+    asked_ = course_.spec->params["frame_times"].get<std::vector<double>>();
+    if (your_times_.empty() && dropped_.empty())
+      result_.notes.push_back(
+          course_.outputs.is_null()
+              ? "your run of the course scene produced no frames (it did not finish)"
+              : "your run of the course scene recorded no frames (it stopped before t = " +
+                    fmt_time(asked_.empty() ? 0.0 : asked_.front()) + " s)");
+  }
+
+  // The reference's.
+  bool draw_reference() {
+    std::string why;
+    const Json ref = reference_frames(config_, *course_.spec, work_, why);
+    std::vector<double> ref_dropped;
+    if (!ref.is_null() &&
+        !(ref_times_ = write_replay_csv(ref, dir_ / "reference.csv", ref_dropped)).empty())
+      return draw_side("reference");
+    result_.notes.push_back("reference frames not available: " +
+                            (why.empty() ? std::string("none recorded") : why));
+    return true;
+  }
+
+  // Renders dir/<side>.csv into out_dir/frames/<side>; false, the reason in the result, when that
+  // fails.
+  bool draw_side(const std::string& side) {
+    const std::string err =
+        render(config_.jelly_cli, scene_, dir_ / (side + ".csv"), out_dir_ / "frames" / side, side);
+    if (!err.empty()) result_.unavailable = err;
+    return err.empty();
+  }
+
+  // Rows: every requested time that either side reached; PNGs are numbered in file order.
+  void add_rows() {
+    for (double a : asked_) {
+      FrameRow row;
+      const double ty = recorded(your_times_, a), tr = recorded(ref_times_, a);
+      if (std::isnan(ty) && std::isnan(tr)) continue;
+      row.time = std::isnan(tr) ? ty : tr;
+      if (!std::isnan(ty)) row.yours = png("yours", index_of(your_times_, ty));
+      if (!std::isnan(tr)) row.reference = png("reference", index_of(ref_times_, tr));
+      const bool was_dropped = !std::isnan(recorded(dropped_, a));
+      if (std::isnan(ty) && !your_times_.empty() && !was_dropped)
+        result_.notes.push_back("your run stopped before t = " + fmt_time(a) + " s");
+      result_.rows.push_back(row);
+    }
+  }
+
+  const GradeConfig& config_;
+  const CaseResult& course_;
+  const std::string& scene_;
+  const fs::path& out_dir_;
+  const fs::path& work_;
+  const fs::path dir_;
+  CourseFrames& result_;
+  std::vector<double> your_times_, dropped_, ref_times_, asked_;
+};
+
 }  // namespace
 
 std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path,
@@ -151,116 +298,13 @@ std::vector<double> write_replay_csv(const Json& outputs, const fs::path& path,
 CourseFrames render_course_frames(const GradeConfig& config, const GradeReport& report,
                                   const fs::path& out_dir, const fs::path& work) {
   CourseFrames result;
-  // The scene case: the last case that records frames (an output with rule "frames"); its frames
-  // are drawn in the assignment's default scene (the manifest's default_scene).
-  const auto records = [](const CaseSpec& spec) {
-    for (const auto& [name, rule] : spec.rules)
-      if (rule.kind == Rule::Kind::Frames) return true;
-    return false;
-  };
-  const CaseResult* course = nullptr;
-  for (const CaseResult& c : report.cases)
-    if (records(*c.spec) && c.status != "skipped") course = &c;
+  const CaseResult* course = course_case(report);
   if (!course || !report.compiled) return result;
   result.shown = true;
-  if (!course->spec->params.contains("frame_times")) {
-    result.unavailable = "the course scene case records no frames (no frame_times in " +
-                         (config.cases_dir() / course->spec->source).string() + ")";
-    return result;
-  }
-  const std::string scene = config.assignment().manifest.default_scene;
-  if (scene.empty()) {
-    result.unavailable = "the assignment's manifest (" + config.rubric_path().string() +
-                         ") names no default_scene to draw the frames in";
-    return result;
-  }
-  if (config.jelly_cli.empty()) {
-    result.unavailable =
-        "this grader was built without the renderer (configure with -DJELLY_BUILD_VIEWER=ON, "
-        "or set JELLY_GRADE_JELLY to a jelly program with `render --replay`)";
-    return result;
-  }
-  std::error_code ec;
-  if (!fs::exists(config.jelly_cli, ec)) {
-    result.unavailable = config.jelly_cli.string() + " is missing (build the `jelly` target)";
-    return result;
-  }
+  result.unavailable = frames_unavailable(config, *course);
+  if (!result.unavailable.empty()) return result;
   try {
-    const fs::path dir = work / "frames";
-    fs::remove_all(out_dir / "frames", ec);
-    fs::create_directories(dir);
-    // The student's frames (recorded in the sandbox; drawn here).
-    std::vector<double> dropped;
-    const std::vector<double> your_times =
-        write_replay_csv(course->outputs, dir / "yours.csv", dropped);
-    const bool yours = !your_times.empty();
-    std::vector<double> ref_times;
-    if (yours) {
-      if (const std::string err = render(config.jelly_cli, scene, dir / "yours.csv",
-                                         out_dir / "frames" / "yours", "yours");
-          !err.empty()) {
-        result.unavailable = err;
-        return result;
-      }
-    }
-    for (double t : dropped)
-      result.notes.push_back("your frame at t = " + fmt_time(t) +
-                             " s has NaN or infinity: not drawn");
-    const std::vector<double> asked =
-        course->spec->params["frame_times"].get<std::vector<double>>();
-    if (!yours && dropped.empty())
-      result.notes.push_back(
-          course->outputs.is_null()
-              ? "your run of the course scene produced no frames (it did not finish)"
-              : "your run of the course scene recorded no frames (it stopped before t = " +
-                    fmt_time(asked.empty() ? 0.0 : asked.front()) + " s)");
-    // The reference's.
-    std::string why;
-    const Json ref = reference_frames(config, *course->spec, work, why);
-    std::vector<double> ref_dropped;
-    if (!ref.is_null() &&
-        !(ref_times = write_replay_csv(ref, dir / "reference.csv", ref_dropped)).empty()) {
-      if (const std::string err = render(config.jelly_cli, scene, dir / "reference.csv",
-                                         out_dir / "frames" / "reference", "reference");
-          !err.empty()) {
-        result.unavailable = err;
-        return result;
-      }
-    } else {
-      result.notes.push_back("reference frames not available: " +
-                             (why.empty() ? std::string("none recorded") : why));
-    }
-    // Rows: every requested time that either side reached; PNGs are numbered in file order.
-    const auto index_of = [](const std::vector<double>& times, double t) -> long {
-      for (std::size_t k = 0; k < times.size(); ++k)
-        if (std::abs(times[k] - t) < 1e-9) return static_cast<long>(k);
-      return -1;
-    };
-    char name[32];
-    const auto png = [&](const char* side, long k) {
-      std::snprintf(name, sizeof name, "frame_%05ld.png", k);
-      return (fs::path("frames") / side / name).generic_string();
-    };
-    // Recorded times are the first step at or after each asked time: match within 10 ms.
-    const auto recorded = [](const std::vector<double>& times, double asked_t) -> double {
-      for (double t : times)
-        if (t >= asked_t - 1e-9 && t < asked_t + 0.01) return t;
-      return NAN;
-    };
-    for (double a : asked) {
-      FrameRow row;
-      const double ty = recorded(your_times, a), tr = recorded(ref_times, a);
-      if (std::isnan(ty) && std::isnan(tr)) continue;
-      row.time = std::isnan(tr) ? ty : tr;
-      if (!std::isnan(ty)) row.yours = png("yours", index_of(your_times, ty));
-      if (!std::isnan(tr)) row.reference = png("reference", index_of(ref_times, tr));
-      const bool was_dropped = !std::isnan(recorded(dropped, a));
-      if (std::isnan(ty) && yours && !was_dropped)
-        result.notes.push_back("your run stopped before t = " + fmt_time(a) + " s");
-      result.rows.push_back(row);
-    }
-    if (result.rows.empty() && result.unavailable.empty())
-      result.unavailable = "neither run recorded a frame";
+    FramesDrawing(config, *course, out_dir, work, result).draw();
   } catch (const std::exception& e) {
     result.unavailable = std::string("the frames could not be made: ") + e.what();
     result.rows.clear();

@@ -550,26 +550,31 @@ std::string com_plot_svg(const GradeReport& r) {
   return "";
 }
 
-std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
-                            const std::string& terms_link) {
-  std::ostringstream o;
+namespace {
+
+// report.md's title, sandbox and the grader's notes.
+void markdown_header(std::ostream& o, const GradeReport& r) {
   o << "# Jelly Lab grading report\n\nSubmission: " << markdown_inline(r.submission) << " — **"
     << total_text(r) << "** (" << r.visibility << " tests)\n\nSandbox: `" << r.isolation << "` — "
     << markdown_inline(r.isolation_description) << "\n\n";
   for (const std::string& n : r.notes) o << "> " << markdown_inline(n) << "\n\n";
-  if (!r.compiled) {
-    for (const FileFailure& f : r.failed_files)
-      o << "## " << markdown_inline(f.file + " " + f.what) << "\n\n"
-        << markdown_inline(file_failure_headline(r, f)) << ".\n\n"
-        << markdown_code_block(f.message) << "\n";
-    if (r.build.ok && r.build.runner.empty())
-      o << "## Your files do not link together\n\n"
-        << markdown_code_block(r.build.link_errors) << "\n";
-    if (r.failed_files.empty() && !r.build.ok)
-      o << "## Your code did not compile\n\n" << markdown_code_block(r.build.errors) << "\n";
-  }
-  const TermsPage page{terms_link.empty() ? r.terms_page : terms_link, r.contracts};
-  // The summary: one row per task, its points and verdict, linked to its section below.
+}
+
+// Why the submission did not build: each file that failed, else the link or the compile errors.
+void markdown_build_failures(std::ostream& o, const GradeReport& r) {
+  for (const FileFailure& f : r.failed_files)
+    o << "## " << markdown_inline(f.file + " " + f.what) << "\n\n"
+      << markdown_inline(file_failure_headline(r, f)) << ".\n\n"
+      << markdown_code_block(f.message) << "\n";
+  if (r.build.ok && r.build.runner.empty())
+    o << "## Your files do not link together\n\n"
+      << markdown_code_block(r.build.link_errors) << "\n";
+  if (r.failed_files.empty() && !r.build.ok)
+    o << "## Your code did not compile\n\n" << markdown_code_block(r.build.errors) << "\n";
+}
+
+// The summary: one row per task, its points and verdict, linked to its section below.
+void markdown_summary(std::ostream& o, const GradeReport& r, const TermsPage& page) {
   o << "| Task | Points | Result | Tests passed |\n|---|---|---|---|\n";
   for (const TaskResult& t : r.tasks) {
     const TaskCount n = count(t);
@@ -583,81 +588,107 @@ std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
          "your report]("
       << page.path << ").\n";
   o << "\n";
-  // The course scene's plot and frames, in the section of the task whose test records them.
-  const auto course_scene = [&]() {
-    if (!com_plot_svg(r).empty())
-      o << "### Course scene\n\n![centre-of-mass height, yours against the "
-           "reference](com-height.svg)\n\n";
-    if (frames && frames->shown) {
-      o << "### Frames: yours beside the reference\n\n";
-      if (!frames->unavailable.empty()) {
-        o << "Frames not available: " << markdown_inline(frames->unavailable) << "\n\n";
-      } else {
-        o << "| t [s] | yours | reference |\n|---|---|---|\n";
-        for (const FrameRow& row : frames->rows)
-          o << "| " << pts(row.time) << " | "
-            << (row.yours.empty() ? std::string("—")
-                                  : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
-            << " | "
-            << (row.reference.empty()
-                    ? std::string("—")
-                    : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
-            << " |\n";
-        o << "\n";
-      }
-      for (const std::string& n : frames->notes) o << "- " << markdown_inline(n) << "\n";
-      if (!frames->notes.empty()) o << "\n";
-    }
-  };
+}
+
+// The frames table (or why there is none) and the notes on the frames.
+void markdown_frames(std::ostream& o, const CourseFrames& frames) {
+  o << "### Frames: yours beside the reference\n\n";
+  if (!frames.unavailable.empty()) {
+    o << "Frames not available: " << markdown_inline(frames.unavailable) << "\n\n";
+  } else {
+    o << "| t [s] | yours | reference |\n|---|---|---|\n";
+    for (const FrameRow& row : frames.rows)
+      o << "| " << pts(row.time) << " | "
+        << (row.yours.empty() ? std::string("—")
+                              : "![yours at t = " + pts(row.time) + " s](" + row.yours + ")")
+        << " | "
+        << (row.reference.empty()
+                ? std::string("—")
+                : "![reference at t = " + pts(row.time) + " s](" + row.reference + ")")
+        << " |\n";
+    o << "\n";
+  }
+  for (const std::string& n : frames.notes) o << "- " << markdown_inline(n) << "\n";
+  if (!frames.notes.empty()) o << "\n";
+}
+
+// The course scene's plot and frames, in the section of the task whose test records them.
+void markdown_course_scene(std::ostream& o, const GradeReport& r, const CourseFrames* frames) {
+  if (!com_plot_svg(r).empty())
+    o << "### Course scene\n\n![centre-of-mass height, yours against the "
+         "reference](com-height.svg)\n\n";
+  if (frames && frames->shown) markdown_frames(o, *frames);
+}
+
+std::string markdown_failed_test(const CaseResult& c, const TermsPage& page) {
+  std::string f =
+      "✗ **" + markdown_inline(c.spec->title) + "** \\[" + markdown_inline(c.spec->id) + "\\]\n\n";
+  for (const std::string& m : c.failures) {
+    if (m.find('\n') == std::string::npos)
+      f += "- " + markdown_with_links(m, page) + "\n";
+    else
+      f += "\n" + markdown_code_block(m) + "\n";
+  }
+  if (!c.hints.empty()) f += "- **Hint:** " + markdown_inline(hint_text(c)) + "\n";
+  return f + "\n";
+}
+
+// A task's section: the first failed test expanded, the other failed ones and the passed ones
+// folded.
+void markdown_task(std::ostream& o, const TaskResult& t, const TaskCount& n,
+                   const TermsPage& page) {
+  o << "<a id=\"" << task_anchor(t) << "\"></a>\n\n## " << markdown_inline(t.spec->id) << " "
+    << markdown_inline(t.spec->title) << " — " << task_points(t) << ", "
+    << (n.passed == n.run ? "passed" : "failed") << " (" << n.passed << "/" << n.run
+    << " tests)\n\n";
+  const std::vector<const CaseResult*> cases = ordered_cases(t);
+  std::size_t failed = 0;
+  for (const CaseResult* c : cases) failed += c->status == "failed";
+  if (failed) o << markdown_failed_test(*cases[0], page);
+  if (failed > 1) {
+    o << "<details><summary>" << failed - 1 << " more failed test" << (failed > 2 ? "s" : "")
+      << "</summary>\n\n";
+    for (std::size_t i = 1; i < failed; ++i) o << markdown_failed_test(*cases[i], page);
+    o << "</details>\n\n";
+  }
+  if (n.passed) {
+    o << "<details><summary>" << n.passed << " passed test" << (n.passed > 1 ? "s" : "")
+      << "</summary>\n\n";
+    for (std::size_t i = failed; i < cases.size(); ++i)
+      o << "- ✓ " << markdown_inline(cases[i]->spec->title) << " \\["
+        << markdown_inline(cases[i]->spec->id) << "\\]\n";
+    o << "\n</details>\n\n";
+  }
+}
+
+// What the first failing tests printed.
+void markdown_printed(std::ostream& o, const GradeReport& r) {
+  const std::vector<const CaseResult*> printed = printed_cases(r, 5);
+  if (printed.empty()) return;
+  o << "## What your code printed\n\n";
+  for (const CaseResult* c : printed)
+    o << "### " << c->spec->id << " (" << c->status << ")\n\n"
+      << markdown_code_block(cut_utf8(c->printed, 1500)) << "\n";
+}
+
+}  // namespace
+
+std::string markdown_report(const GradeReport& r, const CourseFrames* frames,
+                            const std::string& terms_link) {
+  std::ostringstream o;
+  markdown_header(o, r);
+  if (!r.compiled) markdown_build_failures(o, r);
+  const TermsPage page{terms_link.empty() ? r.terms_page : terms_link, r.contracts};
+  markdown_summary(o, r, page);
   const TaskResult* scene_task = course_scene_task(r);
-  // Per task: the first failed test expanded, the other failed ones and the passed ones folded.
   for (const TaskResult& t : r.tasks) {
     const TaskCount n = count(t);
     if (!n.run) continue;
-    o << "<a id=\"" << task_anchor(t) << "\"></a>\n\n## " << markdown_inline(t.spec->id) << " "
-      << markdown_inline(t.spec->title) << " — " << task_points(t) << ", "
-      << (n.passed == n.run ? "passed" : "failed") << " (" << n.passed << "/" << n.run
-      << " tests)\n\n";
-    const std::vector<const CaseResult*> cases = ordered_cases(t);
-    const auto failed_test = [&](const CaseResult& c) {
-      std::string f = "✗ **" + markdown_inline(c.spec->title) + "** \\[" +
-                      markdown_inline(c.spec->id) + "\\]\n\n";
-      for (const std::string& m : c.failures) {
-        if (m.find('\n') == std::string::npos)
-          f += "- " + markdown_with_links(m, page) + "\n";
-        else
-          f += "\n" + markdown_code_block(m) + "\n";
-      }
-      if (!c.hints.empty()) f += "- **Hint:** " + markdown_inline(hint_text(c)) + "\n";
-      return f + "\n";
-    };
-    std::size_t failed = 0;
-    for (const CaseResult* c : cases) failed += c->status == "failed";
-    if (failed) o << failed_test(*cases[0]);
-    if (failed > 1) {
-      o << "<details><summary>" << failed - 1 << " more failed test" << (failed > 2 ? "s" : "")
-        << "</summary>\n\n";
-      for (std::size_t i = 1; i < failed; ++i) o << failed_test(*cases[i]);
-      o << "</details>\n\n";
-    }
-    if (n.passed) {
-      o << "<details><summary>" << n.passed << " passed test" << (n.passed > 1 ? "s" : "")
-        << "</summary>\n\n";
-      for (std::size_t i = failed; i < cases.size(); ++i)
-        o << "- ✓ " << markdown_inline(cases[i]->spec->title) << " \\["
-          << markdown_inline(cases[i]->spec->id) << "\\]\n";
-      o << "\n</details>\n\n";
-    }
-    if (&t == scene_task) course_scene();
+    markdown_task(o, t, n, page);
+    if (&t == scene_task) markdown_course_scene(o, r, frames);
   }
-  const std::vector<const CaseResult*> printed = printed_cases(r, 5);
-  if (!printed.empty()) {
-    o << "## What your code printed\n\n";
-    for (const CaseResult* c : printed)
-      o << "### " << c->spec->id << " (" << c->status << ")\n\n"
-        << markdown_code_block(cut_utf8(c->printed, 1500)) << "\n";
-  }
-  if (!scene_task) course_scene();
+  markdown_printed(o, r);
+  if (!scene_task) markdown_course_scene(o, r, frames);
   return o.str();
 }
 
