@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -110,93 +111,149 @@ int play_command(const SceneSpec& scene, const BodyKindModule& kind,
   return kExitOk;
 }
 
-}  // namespace
-
-int run_command(int argc, char** argv) {
-  Command cmd("jelly run", run_help(), "(see jelly run --help)\n");
+/// `jelly run`'s command line.
+struct RunArgs {
   std::string scene_path, out_path, summary_path;
   SceneOverrides overrides;
   long every = 0, threads = 0;  // 0: not given
   bool quiet = false, no_detector = false, auto_dt = false;
-  cmd.add_option("SCENE", scene_path)->required();
-  add_scene_overrides(cmd, overrides);
-  cmd.add_option("--every", every)->type_name("K")->check(whole_number(1));
-  cmd.add_option("--threads", threads)->type_name("N")->check(whole_number(1, 256));
-  cmd.add_option("--out", out_path)->type_name("FILE.csv");
-  cmd.add_option("--summary", summary_path)->type_name("FILE.csv");
-  cmd.add_flag("--quiet", quiet);
-  cmd.add_flag("--no-detector", no_detector);
-  cmd.add_flag("--auto-dt", auto_dt);
-  if (const auto code = cmd.parse_args(argc, argv, 2)) return *code;
-  const std::optional<SceneSpec> scene = load_with_overrides(scene_path, overrides);
-  if (!scene) return kExitUsage;
-  if (const BodyKindModule& kind = body_kind_of(*scene); kind.plays_frames())
-    return play_command(*scene, kind, {summary_path, every > 0 ? every : 1}, out_path, quiet);
-  if (!quiet) print_missing_tasks_note(*scene);
+};
 
-  std::unique_ptr<Simulator> sim;
-  std::optional<AutoStep> auto_step;
+/// Reads argv (argv[1] = "run") into `a`. nullopt: go on; else the exit code to return.
+std::optional<int> parse_run_args(int argc, char** argv, RunArgs& a) {
+  Command cmd("jelly run", run_help(), "(see jelly run --help)\n");
+  cmd.add_option("SCENE", a.scene_path)->required();
+  add_scene_overrides(cmd, a.overrides);
+  cmd.add_option("--every", a.every)->type_name("K")->check(whole_number(1));
+  cmd.add_option("--threads", a.threads)->type_name("N")->check(whole_number(1, 256));
+  cmd.add_option("--out", a.out_path)->type_name("FILE.csv");
+  cmd.add_option("--summary", a.summary_path)->type_name("FILE.csv");
+  cmd.add_flag("--quiet", a.quiet);
+  cmd.add_flag("--no-detector", a.no_detector);
+  cmd.add_flag("--auto-dt", a.auto_dt);
+  return cmd.parse_args(argc, argv, 2);
+}
+
+/// The scene's simulator, with the step --auto-dt (or the scene's auto_dt) chose in `auto_step`;
+/// null after saying why.
+std::unique_ptr<Simulator> make_simulator(const SceneSpec& scene, const RunArgs& a,
+                                          std::optional<AutoStep>& auto_step) {
   try {
-    Simulator::Options options(scene->integrator, scene->dt);
-    options.detect_instability = !no_detector;
-    std::unique_ptr<World> world = build_world(*scene, session::tasks_for(*scene));
-    if (threads > 0) world->set_force_threads(static_cast<int>(threads));
-    if (auto_dt || scene->auto_dt) {
+    Simulator::Options options(scene.integrator, scene.dt);
+    options.detect_instability = !a.no_detector;
+    std::unique_ptr<World> world = build_world(scene, session::tasks_for(scene));
+    if (a.threads > 0) world->set_force_threads(static_cast<int>(a.threads));
+    if (a.auto_dt || scene.auto_dt) {
       // One frame = 1/60 s, the default recording interval; the scene's dt is the largest step.
-      auto_step = choose_step(*world, world->state(), scene->integrator, 1.0 / 60.0, scene->dt);
+      auto_step = choose_step(*world, world->state(), scene.integrator, 1.0 / 60.0, scene.dt);
       options.dt = auto_step->chosen_h;
       std::printf("%s\n", auto_step->message().c_str());  // stdout, even with --quiet: what ran
     }
-    sim = std::make_unique<Simulator>(std::move(world), options);
+    return std::make_unique<Simulator>(std::move(world), options);
   } catch (const std::exception& e) {
     // A student's spring builder that produced a bad spring ends up here, with its name.
     std::fprintf(stderr, "jelly run: %s\n", e.what());
-    return kExitUsage;
+    return nullptr;
   }
-  const double h = sim->options().dt;
-  const long k = every > 0   ? every
-                 : auto_step ? auto_step->substeps_per_frame
-                             : std::max(1L, std::lround(1.0 / (60.0 * h)));
+}
 
-  const BodyKindModule& body = body_kind_of(*scene);  // what its summary and report hold
-  // Outputs are opened only now, after every input was validated: bad input writes nothing.
-  std::unique_ptr<CsvWriter> out, summary;
-  try {
-    if (!out_path.empty()) out = std::make_unique<CsvWriter>(out_path, kTrajectoryHeader);
-    if (!summary_path.empty())
-      summary = std::make_unique<CsvWriter>(summary_path, body.summary_header(sim->world()));
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "jelly run: %s\n", e.what());
-    return kExitInternal;
+/// Every how many steps a frame is recorded: --every, else the auto step's substeps per frame,
+/// else the steps of step size h in 1/60 s (at least 1).
+long record_interval(long every, const std::optional<AutoStep>& auto_step, double h) {
+  return every > 0   ? every
+         : auto_step ? auto_step->substeps_per_frame
+                     : std::max(1L, std::lround(1.0 / (60.0 * h)));
+}
+
+/// The CSV files a run writes (--out, --summary) and the frames it records in them: the state
+/// after every k-th step.
+class Recording {
+ public:
+  Recording(const BodyKindModule& body, long k) : body_(body), k_(k) {}
+
+  /// Opens the files asked for; false after saying why.
+  bool open(const RunArgs& a, const World& world) {
+    try {
+      if (!a.out_path.empty()) out_ = std::make_unique<CsvWriter>(a.out_path, kTrajectoryHeader);
+      if (!a.summary_path.empty())
+        summary_ = std::make_unique<CsvWriter>(a.summary_path, body_.summary_header(world));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "jelly run: %s\n", e.what());
+      return false;
+    }
+    return true;
   }
 
-  long frame = 0;
-  auto record = [&](const Simulator& s) {
-    if (s.steps() % k != 0) return;
-    if (out) out->write_particles(frame, s.time(), s.state());
-    if (summary) body.write_summary(*summary, s.world(), s.state(), s.time());
-    ++frame;
-  };
-  record(*sim);
+  void record(const Simulator& s) {
+    if (s.steps() % k_ != 0) return;
+    if (out_) out_->write_particles(frame_, s.time(), s.state());
+    if (summary_) body_.write_summary(*summary_, s.world(), s.state(), s.time());
+    ++frame_;
+  }
+
+  void flush() {
+    if (out_) out_->flush();
+    if (summary_) summary_->flush();
+  }
+
+  bool writes() const { return out_ || summary_; }
+  long frames() const { return frame_; }
+
+  void print_written(const RunArgs& a) const {
+    if (out_) std::printf("  wrote %ld frames to %s\n", frame_, a.out_path.c_str());
+    if (summary_) std::printf("  wrote %ld summary rows to %s\n", frame_, a.summary_path.c_str());
+  }
+
+ private:
+  const BodyKindModule& body_;
+  long k_;
+  std::unique_ptr<CsvWriter> out_, summary_;
+  long frame_ = 0;
+};
+
+/// Runs the simulation to the scene's end, recording as it goes, and says how it ended.
+int simulate(const RunArgs& a, const SceneSpec& scene, Simulator& sim, const BodyKindModule& body,
+             Recording& rec) {
+  rec.record(sim);
   const auto t0 = std::chrono::steady_clock::now();
-  const StepResult result = sim->run_until(scene->duration, record);
+  const StepResult result =
+      sim.run_until(scene.duration, [&rec](const Simulator& s) { rec.record(s); });
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (out) out->flush();
-  if (summary) summary->flush();
-
+  rec.flush();
   if (result == StepResult::Unstable) {
-    std::fprintf(stderr, "jelly run: %s\n", sim->instability()->message().c_str());
-    if (out || summary)
+    std::fprintf(stderr, "jelly run: %s\n", sim.instability()->message().c_str());
+    if (rec.writes())
       std::fprintf(stderr, "jelly run: kept the %ld frames written before the detector fired.\n",
-                   frame);
+                   rec.frames());
     return kExitUnstable;
   }
-  if (!quiet) std::printf("%s", body.end_report(*scene, *sim, wall).c_str());
-  if (!quiet) {
-    if (out) std::printf("  wrote %ld frames to %s\n", frame, out_path.c_str());
-    if (summary) std::printf("  wrote %ld summary rows to %s\n", frame, summary_path.c_str());
+  if (!a.quiet) {
+    std::printf("%s", body.end_report(scene, sim, wall).c_str());
+    rec.print_written(a);
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int run_command(int argc, char** argv) {
+  RunArgs a;
+  if (const auto code = parse_run_args(argc, argv, a)) return *code;
+  const std::optional<SceneSpec> scene = load_with_overrides(a.scene_path, a.overrides);
+  if (!scene) return kExitUsage;
+  if (const BodyKindModule& kind = body_kind_of(*scene); kind.plays_frames())
+    return play_command(*scene, kind, {a.summary_path, a.every > 0 ? a.every : 1}, a.out_path,
+                        a.quiet);
+  if (!a.quiet) print_missing_tasks_note(*scene);
+  std::optional<AutoStep> auto_step;
+  const std::unique_ptr<Simulator> sim = make_simulator(*scene, a, auto_step);
+  if (!sim) return kExitUsage;
+  const long k = record_interval(a.every, auto_step, sim->options().dt);
+  const BodyKindModule& body = body_kind_of(*scene);  // what its summary and report hold
+  // Outputs are opened only now, after every input was validated: bad input writes nothing.
+  Recording rec(body, k);
+  if (!rec.open(a, sim->world())) return kExitInternal;
+  return simulate(a, *scene, *sim, body, rec);
 }
 
 void add_scene_overrides(Command& command, SceneOverrides& into, bool run_options) {

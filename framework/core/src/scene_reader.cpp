@@ -91,6 +91,18 @@ std::optional<Vec3> vec3_of(const toml::node& n) {
   return v;
 }
 
+std::optional<IndexPair> index_pair_of(const toml::node& n) {
+  const toml::array* pair = n.as_array();
+  if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() || !pair->get(1)->is_integer())
+    return std::nullopt;
+  return IndexPair{pair->get(0)->as_integer()->get(), pair->get(1)->as_integer()->get()};
+}
+
+std::optional<std::string> string_of(const toml::node& n) {
+  if (const auto* s = n.as_string()) return std::string(s->get());
+  return std::nullopt;
+}
+
 /// The whole reading of one scene text; collects every key's error and reports the first.
 class Loader {
  public:
@@ -171,127 +183,126 @@ class Loader {
   /// Converts a TOML node by the declaration's kind; reports and returns nullopt when it does not
   /// fit.
   std::optional<Value> convert(const Decl& d, const std::string& key, const toml::node& n) {
-    const auto wrong = [&](const toml::node& at, const std::string& prefix = "") {
-      error(key, pos_of(at), prefix + "must be " + toml_expected(d) + ", got " + describe(at));
-      return std::nullopt;
-    };
     switch (d.kind) {
       case ValueKind::Real:
         if (auto x = number_of(n)) return Value{*x};
-        return wrong(n);
+        return wrong(d, key, n);
       case ValueKind::Integer:
         if (auto x = n.as_integer()) return Value{static_cast<long long>(x->get())};
-        return wrong(n);
+        return wrong(d, key, n);
       case ValueKind::Bool:
         if (auto x = n.as_boolean()) return Value{x->get()};
-        return wrong(n);
+        return wrong(d, key, n);
       case ValueKind::Vector3:
         if (auto v = vec3_of(n)) return Value{*v};
-        return wrong(n);
+        return wrong(d, key, n);
       case ValueKind::Choice:
       case ValueKind::Text:
         if (auto x = n.as_string()) return Value{std::string(x->get())};
-        return wrong(n);
-      case ValueKind::Vec3List: {
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<Vec3> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          auto v = vec3_of(*a->get(i));
-          if (!v) return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
-          out.push_back(*v);
-        }
-        return Value{std::move(out)};
-      }
+        return wrong(d, key, n);
+      case ValueKind::Vec3List: return convert_list(d, key, n, &vec3_of);
       case ValueKind::IndexPairList:
-      case ValueKind::GridList: {  // both read as [[a, b], ...] of integers
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<IndexPair> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          const toml::array* pair = a->get(i)->as_array();
-          if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() ||
-              !pair->get(1)->is_integer())
-            return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
-          out.push_back({pair->get(0)->as_integer()->get(), pair->get(1)->as_integer()->get()});
-        }
-        return Value{std::move(out)};
-      }
-      case ValueKind::NameList: {
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<std::string> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          const auto* name = a->get(i)->as_string();
-          if (!name) return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
-          out.emplace_back(name->get());
-        }
-        return Value{std::move(out)};
-      }
-      case ValueKind::Schedule: {
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<ScheduleEntry> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          const toml::node& item = *a->get(i);
-          const std::string at = "entry " + std::to_string(i) + ": ";
-          const toml::table* e = item.as_table();
-          if (!e) return wrong(item, at);
-          for (auto&& [k, v] : *e) {
-            if (k.str() != "time" && k.str() != "velocity") {
-              const std::string near = closest(k.str(), {"time", "velocity"});
-              error(key, pos_of_key(k, v),
-                    at + "unknown key " + in_quotes(k.str()) +
-                        (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
-                        "; expected time and velocity");
-              return std::nullopt;
-            }
-          }
-          const toml::node* time = e->get("time");
-          const toml::node* velocity = e->get("velocity");
-          if (!time || !velocity) {
-            error(key, pos_of(item),
-                  at + "needs both time (s) and velocity [x, y, z] (m/s); " +
-                      (time ? "velocity" : "time") + " is missing");
-            return std::nullopt;
-          }
-          const auto t = number_of(*time);
-          if (!t) {
-            error(key, pos_of(*time), at + "time must be a number (s), got " + describe(*time));
-            return std::nullopt;
-          }
-          const auto u = vec3_of(*velocity);
-          if (!u) {
-            error(key, pos_of(*velocity),
-                  at + "velocity must be an array of 3 numbers [x, y, z], got " +
-                      describe(*velocity));
-            return std::nullopt;
-          }
-          if (!out.empty() && !(*t > out.back().time)) {
-            error(key, pos_of(*time),
-                  "times must increase strictly" +
-                      (d.cites.empty() ? std::string() : " (" + std::string(d.cites) + ")") +
-                      ": entry " + std::to_string(i) + " has time " + format_double(*t) +
-                      " s after " + format_double(out.back().time) + " s");
-            return std::nullopt;
-          }
-          out.push_back(ScheduleEntry{*t, *u});
-        }
-        return Value{std::move(out)};
-      }
-      case ValueKind::RealList: {
-        const toml::array* a = n.as_array();
-        if (!a) return wrong(n);
-        std::vector<double> out;
-        for (std::size_t i = 0; i < a->size(); ++i) {
-          auto x = number_of(*a->get(i));
-          if (!x) return wrong(*a->get(i), "element " + std::to_string(i) + ": ");
-          out.push_back(*x);
-        }
-        return Value{std::move(out)};
+      case ValueKind::GridList:  // both read as [[a, b], ...] of integers
+        return convert_list(d, key, n, &index_pair_of);
+      case ValueKind::NameList: return convert_list(d, key, n, &string_of);
+      case ValueKind::Schedule: return convert_schedule(d, key, n);
+      case ValueKind::RealList: return convert_list(d, key, n, &number_of);
+    }
+    return wrong(d, key, n);
+  }
+
+  /// Reports that `at` (the value, or one of its elements after `prefix`) does not fit d's kind.
+  std::nullopt_t wrong(const Decl& d, const std::string& key, const toml::node& at,
+                       const std::string& prefix = "") {
+    error(key, pos_of(at), prefix + "must be " + toml_expected(d) + ", got " + describe(at));
+    return std::nullopt;
+  }
+
+  /// An array whose every element `element` converts; the first that does not is reported.
+  template <typename T>
+  std::optional<Value> convert_list(const Decl& d, const std::string& key, const toml::node& n,
+                                    std::optional<T> (*element)(const toml::node&)) {
+    const toml::array* a = n.as_array();
+    if (!a) return wrong(d, key, n);
+    std::vector<T> out;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      std::optional<T> v = element(*a->get(i));
+      if (!v) return wrong(d, key, *a->get(i), "element " + std::to_string(i) + ": ");
+      out.push_back(std::move(*v));
+    }
+    return Value{std::move(out)};
+  }
+
+  /// An array of { time = t, velocity = [x, y, z] } tables, times increasing.
+  std::optional<Value> convert_schedule(const Decl& d, const std::string& key,
+                                        const toml::node& n) {
+    const toml::array* a = n.as_array();
+    if (!a) return wrong(d, key, n);
+    std::vector<ScheduleEntry> out;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::optional<ScheduleEntry> entry = schedule_entry(d, key, *a->get(i), i, out);
+      if (!entry) return std::nullopt;
+      out.push_back(*entry);
+    }
+    return Value{std::move(out)};
+  }
+
+  /// Entry i of a schedule, whose time comes after the entries `before` it.
+  std::optional<ScheduleEntry> schedule_entry(const Decl& d, const std::string& key,
+                                              const toml::node& item, std::size_t i,
+                                              const std::vector<ScheduleEntry>& before) {
+    const std::string at = "entry " + std::to_string(i) + ": ";
+    const toml::table* e = item.as_table();
+    if (!e) return wrong(d, key, item, at);
+    if (!only_time_and_velocity(key, *e, at)) return std::nullopt;
+    const toml::node* time = e->get("time");
+    const toml::node* velocity = e->get("velocity");
+    if (!time || !velocity) {
+      error(key, pos_of(item),
+            at + "needs both time (s) and velocity [x, y, z] (m/s); " +
+                (time ? "velocity" : "time") + " is missing");
+      return std::nullopt;
+    }
+    const auto t = number_of(*time);
+    if (!t) {
+      error(key, pos_of(*time), at + "time must be a number (s), got " + describe(*time));
+      return std::nullopt;
+    }
+    const auto u = vec3_of(*velocity);
+    if (!u) {
+      error(key, pos_of(*velocity),
+            at + "velocity must be an array of 3 numbers [x, y, z], got " + describe(*velocity));
+      return std::nullopt;
+    }
+    if (!before.empty() && !(*t > before.back().time))
+      return not_after(d, key, *time, i, *t, before.back().time);
+    return ScheduleEntry{*t, *u};
+  }
+
+  /// Reports a schedule entry's first key that is neither time nor velocity.
+  bool only_time_and_velocity(const std::string& key, const toml::table& e, const std::string& at) {
+    for (auto&& [k, v] : e) {
+      if (k.str() != "time" && k.str() != "velocity") {
+        const std::string near = closest(k.str(), {"time", "velocity"});
+        error(key, pos_of_key(k, v),
+              at + "unknown key " + in_quotes(k.str()) +
+                  (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
+                  "; expected time and velocity");
+        return false;
       }
     }
-    return wrong(n);
+    return true;
+  }
+
+  /// Reports entry i's time t, which is not after the time of the entry before it.
+  std::nullopt_t not_after(const Decl& d, const std::string& key, const toml::node& time,
+                           std::size_t i, double t, double previous) {
+    error(key, pos_of(time),
+          "times must increase strictly" +
+              (d.cites.empty() ? std::string() : " (" + std::string(d.cites) + ")") + ": entry " +
+              std::to_string(i) + " has time " + format_double(t) + " s after " +
+              format_double(previous) + " s");
+    return std::nullopt;
   }
 
   /// Converts, validates and applies one key. Returns whether it was applied.

@@ -179,6 +179,208 @@ std::vector<BodyClaim> read_bodies(const std::string& source, const toml::node* 
   return out;
 }
 
+/// The manifest's TOML, or the error that says where it is not TOML.
+toml::table parse_toml(std::string_view text, const std::string& source) {
+  if (const auto at = toml_non_ascii_outside_strings(text))
+    throw ManifestError(source + ":" + std::to_string(at->line) + ":" + std::to_string(at->column) +
+                        ": " + std::string(kTomlNonAsciiMessage));
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw ManifestError(source + ":" + std::to_string(e.source().begin.line) +
+                        ": not valid TOML: " + std::string(e.description()));
+  }
+}
+
+/// The reading of one manifest's table, a step per group of keys. The steps run in the order the
+/// keys are checked, so the error thrown is the first one met in that order.
+class ManifestReader {
+ public:
+  ManifestReader(const toml::table& root, const std::string& source)
+      : source_(source), r_(root, source, "") {}
+
+  AssignmentManifest read() {
+    r_.only_keys({"id", "namespace", "title", "files", "reference_files", "task_modules", "bodies",
+                  "default_scene", "handout", "contracts", "studies", "grading", "task", "draft"});
+    m_.draft =
+        r_.boolean("draft", "true or false (true: an assignment in preparation, never graded)");
+    read_identity();
+    read_files();
+    read_scenes();
+    read_handout();
+    read_studies();
+    read_grading();
+    read_tasks();
+    check_regular_points();
+    r_.no_unknown_keys();
+    return std::move(m_);
+  }
+
+ private:
+  /// id, namespace and title.
+  void read_identity() {
+    m_.id = r_.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
+    if (!is_name(m_.id, true))
+      fail(source_, r_.node("id"), "id",
+           "letters, digits, '-' and '_' only, not \"" + m_.id + "\"");
+    m_.ns = r_.string("namespace", true, "the C++ namespace of the tasks (jelly::<namespace>)");
+    if (!is_name(m_.ns, false))
+      fail(source_, r_.node("namespace"), "namespace", "a C++ identifier, not \"" + m_.ns + "\"");
+    m_.title = r_.string("title", true, "a one-line title");
+  }
+
+  /// files, reference_files and task_modules.
+  void read_files() {
+    m_.files = r_.strings("files", true, "a non-empty list of the files a student edits");
+    if (m_.files.empty()) fail(source_, r_.node("files"), "files", "at least one file");
+    check_files(source_, r_.node("files"), "files", m_.files);
+    m_.reference_files = r_.strings("reference_files", false, "a list of file names");
+    check_files(source_, r_.node("reference_files"), "reference_files", m_.reference_files);
+    m_.task_modules =
+        r_.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
+  }
+
+  /// bodies (the scenes it claims) and default_scene.
+  void read_scenes() {
+    m_.bodies = read_bodies(
+        source_, r_.node("bodies"),
+        r_.strings(
+            "bodies", false,
+            "a list of the body.type names of framework/bodies/ its tasks simulate (a name or "
+            "name:variant)"));
+    m_.default_scene = r_.string("default_scene", false, "a scene name");
+  }
+
+  /// contracts (the handout's anchors) and handout.
+  void read_handout() {
+    m_.contracts = r_.strings("contracts", false,
+                              "a list of contract names (the handout's anchors <name>-contract-N)");
+    for (const std::string& c : m_.contracts)
+      if (c.empty() || c.size() > 32 ||
+          c.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+        fail(source_, r_.node("contracts"), "contracts",
+             "names of lower-case letters, digits and '-' (a handout anchor), not \"" + c + "\"");
+    m_.handout = r_.string("handout", false, "a file in the assignment's folder");
+    if (!m_.handout.empty() && !is_relative_path(m_.handout))
+      fail(source_, r_.node("handout"), "handout", "a path inside the assignment's folder");
+  }
+
+  /// The optional [studies] table.
+  void read_studies() {
+    const toml::node* n = r_.node("studies");
+    if (!n) return;
+    const auto* t = n->as_table();
+    if (!t) fail(source_, n, "studies", "a table");
+    Reader s(*t, source_, "studies.");
+    s.only_keys({"measures"});
+    m_.study_measures = s.strings("measures", false, "a list of measure names");
+    s.no_unknown_keys();
+  }
+
+  /// The [grading] table, which every manifest has.
+  void read_grading() {
+    const toml::node* n = r_.node("grading");
+    if (!n)
+      fail(source_, nullptr, "grading",
+           "a [grading] table with autograded_total (the key is missing)");
+    const auto* t = n->as_table();
+    if (!t) fail(source_, n, "grading", "a table");
+    Reader g(*t, source_, "grading.");
+    g.only_keys({"autograded_total", "hand_graded_points", "hidden_visibility"});
+    m_.autograded_total = g.number("autograded_total", true, 0.0, "a number of points ≥ 0");
+    m_.hand_graded_points =
+        g.number("hand_graded_points", false, 0.0, "a number of points ≥ 0 graded by hand");
+    const std::string vis = g.string("hidden_visibility", false,
+                                     "\"hidden\", \"after_due_date\" or \"after_published\"");
+    if (!vis.empty()) {
+      if (vis != "hidden" && vis != "after_due_date" && vis != "after_published")
+        fail(source_, g.node("hidden_visibility"), "grading.hidden_visibility",
+             "\"hidden\", \"after_due_date\" or \"after_published\", not \"" + vis + "\"");
+      m_.hidden_visibility = vis;
+    }
+    g.no_unknown_keys();
+  }
+
+  /// The [[task]] tables, at least one.
+  void read_tasks() {
+    tasks_ = r_.node("task");
+    const auto* arr = tasks_ ? tasks_->as_array() : nullptr;
+    if (!arr || arr->empty())
+      fail(source_, tasks_, "task", "one [[task]] table per task (none found)");
+    for (std::size_t i = 0; i < arr->size(); ++i) m_.tasks.push_back(read_task(*arr->get(i), i));
+  }
+
+  /// The i-th (from 0) [[task]] table.
+  ManifestTask read_task(const toml::node& e, std::size_t i) {
+    const auto* t = e.as_table();
+    const std::string prefix = "task[" + std::to_string(i + 1) + "].";
+    if (!t) fail(source_, &e, "task[" + std::to_string(i + 1) + "]", "a table");
+    Reader tr(*t, source_, prefix);
+    tr.only_keys({"id", "title", "short", "category", "file", "functions", "points", "handout",
+                  "probe", "bonus"});
+    ManifestTask task;
+    read_task_names(tr, prefix, task);
+    task.functions = tr.strings("functions", false, "a list of function names");
+    task.points = tr.number("points", true, 0.0, "a number of points ≥ 0");
+    task.handout = tr.string("handout", false, "a file in the assignment's folder");
+    if (!task.handout.empty() && !is_relative_path(task.handout))
+      fail(source_, tr.node("handout"), prefix + "handout",
+           "a path inside the assignment's folder");
+    task.probe = tr.string("probe", false, "the name of a TaskTable slot");
+    read_task_bonus(tr, prefix, task);
+    tr.no_unknown_keys();
+    return task;
+  }
+
+  /// A task's id (unique), title, short name, category and file (one of `files`).
+  void read_task_names(Reader& tr, const std::string& prefix, ManifestTask& task) {
+    task.id = tr.string("id", true, "a task id such as \"HW.T1\"");
+    if (!ids_.insert(task.id).second)
+      fail(source_, tr.node("id"), prefix + "id",
+           "a unique id (\"" + task.id + "\" is used twice)");
+    task.title = tr.string("title", true, "a one-line title");
+    task.short_name = tr.string("short", false, "a short name for the viewer's hint");
+    if (task.short_name.empty()) task.short_name = task.title;
+    task.category = tr.string("category", false, "a category name");
+    task.file = tr.string("file", false, "one of `files`");
+    if (!task.file.empty() &&
+        std::find(m_.files.begin(), m_.files.end(), task.file) == m_.files.end())
+      fail(source_, tr.node("file"), prefix + "file",
+           "one of the assignment's `files`, not \"" + task.file + "\"");
+  }
+
+  /// A task's bonus flag; a bonus task has points and functions of its own.
+  void read_task_bonus(Reader& tr, const std::string& prefix, ManifestTask& task) {
+    task.bonus = tr.boolean("bonus",
+                            "true or false (true: its points come on top of "
+                            "grading.autograded_total)");
+    if (task.bonus && !(task.points > 0.0))
+      fail(source_, tr.node("points"), prefix + "points",
+           "a number of points > 0 for a bonus task (bonus = true)");
+    if (task.bonus && task.functions.empty())
+      fail(source_, tr.node("bonus"), prefix + "bonus",
+           "false for a task with no function of its own (a bonus task is graded on its "
+           "functions)");
+  }
+
+  /// Autograded points need a task that is not a bonus to scale to.
+  void check_regular_points() const {
+    double regular = 0.0;
+    for (const ManifestTask& t : m_.tasks)
+      if (!t.bonus) regular += t.points;
+    if (m_.autograded_total > 0.0 && !(regular > 0.0))
+      fail(source_, tasks_, "task",
+           "at least one task that is not a bonus with points > 0 (the bonus points come on top of "
+           "grading.autograded_total, which the other tasks' points are scaled to)");
+  }
+
+  const std::string& source_;
+  Reader r_;
+  AssignmentManifest m_;
+  const toml::node* tasks_ = nullptr;  // the [[task]] array, where its errors point
+  std::set<std::string> ids_;          // the task ids read so far
+};
+
 }  // namespace
 
 bool AssignmentManifest::claims(std::string_view scene_kind, std::string_view scene_variant) const {
@@ -214,134 +416,8 @@ std::string AssignmentManifest::task_prefix() const {
 }
 
 AssignmentManifest parse_manifest(std::string_view text, const std::string& source) {
-  toml::table root;
-  if (const auto at = toml_non_ascii_outside_strings(text))
-    throw ManifestError(source + ":" + std::to_string(at->line) + ":" + std::to_string(at->column) +
-                        ": " + std::string(kTomlNonAsciiMessage));
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw ManifestError(source + ":" + std::to_string(e.source().begin.line) +
-                        ": not valid TOML: " + std::string(e.description()));
-  }
-  AssignmentManifest m;
-  Reader r(root, source, "");
-  r.only_keys({"id", "namespace", "title", "files", "reference_files", "task_modules", "bodies",
-               "default_scene", "handout", "contracts", "studies", "grading", "task", "draft"});
-  m.draft = r.boolean("draft", "true or false (true: an assignment in preparation, never graded)");
-  m.id = r.string("id", true, "the assignment's id, a lower-case name such as \"hw1\"");
-  if (!is_name(m.id, true))
-    fail(source, r.node("id"), "id", "letters, digits, '-' and '_' only, not \"" + m.id + "\"");
-  m.ns = r.string("namespace", true, "the C++ namespace of the tasks (jelly::<namespace>)");
-  if (!is_name(m.ns, false))
-    fail(source, r.node("namespace"), "namespace", "a C++ identifier, not \"" + m.ns + "\"");
-  m.title = r.string("title", true, "a one-line title");
-  m.files = r.strings("files", true, "a non-empty list of the files a student edits");
-  if (m.files.empty()) fail(source, r.node("files"), "files", "at least one file");
-  check_files(source, r.node("files"), "files", m.files);
-  m.reference_files = r.strings("reference_files", false, "a list of file names");
-  check_files(source, r.node("reference_files"), "reference_files", m.reference_files);
-  m.task_modules =
-      r.strings("task_modules", false, "a list of task module names (solutions/tasks/)");
-  m.bodies = read_bodies(
-      source, r.node("bodies"),
-      r.strings("bodies", false,
-                "a list of the body.type names of framework/bodies/ its tasks simulate (a name or "
-                "name:variant)"));
-  m.default_scene = r.string("default_scene", false, "a scene name");
-  m.contracts = r.strings("contracts", false,
-                          "a list of contract names (the handout's anchors <name>-contract-N)");
-  for (const std::string& c : m.contracts)
-    if (c.empty() || c.size() > 32 ||
-        c.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
-      fail(source, r.node("contracts"), "contracts",
-           "names of lower-case letters, digits and '-' (a handout anchor), not \"" + c + "\"");
-  m.handout = r.string("handout", false, "a file in the assignment's folder");
-  if (!m.handout.empty() && !is_relative_path(m.handout))
-    fail(source, r.node("handout"), "handout", "a path inside the assignment's folder");
-
-  if (const toml::node* n = r.node("studies")) {
-    const auto* t = n->as_table();
-    if (!t) fail(source, n, "studies", "a table");
-    Reader s(*t, source, "studies.");
-    s.only_keys({"measures"});
-    m.study_measures = s.strings("measures", false, "a list of measure names");
-    s.no_unknown_keys();
-  }
-  if (const toml::node* n = r.node("grading")) {
-    const auto* t = n->as_table();
-    if (!t) fail(source, n, "grading", "a table");
-    Reader g(*t, source, "grading.");
-    g.only_keys({"autograded_total", "hand_graded_points", "hidden_visibility"});
-    m.autograded_total = g.number("autograded_total", true, 0.0, "a number of points ≥ 0");
-    m.hand_graded_points =
-        g.number("hand_graded_points", false, 0.0, "a number of points ≥ 0 graded by hand");
-    const std::string vis = g.string("hidden_visibility", false,
-                                     "\"hidden\", \"after_due_date\" or \"after_published\"");
-    if (!vis.empty()) {
-      if (vis != "hidden" && vis != "after_due_date" && vis != "after_published")
-        fail(source, g.node("hidden_visibility"), "grading.hidden_visibility",
-             "\"hidden\", \"after_due_date\" or \"after_published\", not \"" + vis + "\"");
-      m.hidden_visibility = vis;
-    }
-    g.no_unknown_keys();
-  } else {
-    fail(source, nullptr, "grading",
-         "a [grading] table with autograded_total (the key is missing)");
-  }
-
-  const toml::node* tasks = r.node("task");
-  const auto* arr = tasks ? tasks->as_array() : nullptr;
-  if (!arr || arr->empty()) fail(source, tasks, "task", "one [[task]] table per task (none found)");
-  std::set<std::string> ids;
-  for (std::size_t i = 0; i < arr->size(); ++i) {
-    const toml::node& e = *arr->get(i);
-    const auto* t = e.as_table();
-    const std::string prefix = "task[" + std::to_string(i + 1) + "].";
-    if (!t) fail(source, &e, "task[" + std::to_string(i + 1) + "]", "a table");
-    Reader tr(*t, source, prefix);
-    tr.only_keys({"id", "title", "short", "category", "file", "functions", "points", "handout",
-                  "probe", "bonus"});
-    ManifestTask task;
-    task.id = tr.string("id", true, "a task id such as \"HW.T1\"");
-    if (!ids.insert(task.id).second)
-      fail(source, tr.node("id"), prefix + "id", "a unique id (\"" + task.id + "\" is used twice)");
-    task.title = tr.string("title", true, "a one-line title");
-    task.short_name = tr.string("short", false, "a short name for the viewer's hint");
-    if (task.short_name.empty()) task.short_name = task.title;
-    task.category = tr.string("category", false, "a category name");
-    task.file = tr.string("file", false, "one of `files`");
-    if (!task.file.empty() && std::find(m.files.begin(), m.files.end(), task.file) == m.files.end())
-      fail(source, tr.node("file"), prefix + "file",
-           "one of the assignment's `files`, not \"" + task.file + "\"");
-    task.functions = tr.strings("functions", false, "a list of function names");
-    task.points = tr.number("points", true, 0.0, "a number of points ≥ 0");
-    task.handout = tr.string("handout", false, "a file in the assignment's folder");
-    if (!task.handout.empty() && !is_relative_path(task.handout))
-      fail(source, tr.node("handout"), prefix + "handout", "a path inside the assignment's folder");
-    task.probe = tr.string("probe", false, "the name of a TaskTable slot");
-    task.bonus = tr.boolean("bonus",
-                            "true or false (true: its points come on top of "
-                            "grading.autograded_total)");
-    if (task.bonus && !(task.points > 0.0))
-      fail(source, tr.node("points"), prefix + "points",
-           "a number of points > 0 for a bonus task (bonus = true)");
-    if (task.bonus && task.functions.empty())
-      fail(source, tr.node("bonus"), prefix + "bonus",
-           "false for a task with no function of its own (a bonus task is graded on its "
-           "functions)");
-    tr.no_unknown_keys();
-    m.tasks.push_back(std::move(task));
-  }
-  double regular = 0.0;
-  for (const ManifestTask& t : m.tasks)
-    if (!t.bonus) regular += t.points;
-  if (m.autograded_total > 0.0 && !(regular > 0.0))
-    fail(source, tasks, "task",
-         "at least one task that is not a bonus with points > 0 (the bonus points come on top of "
-         "grading.autograded_total, which the other tasks' points are scaled to)");
-  r.no_unknown_keys();
-  return m;
+  const toml::table root = parse_toml(text, source);
+  return ManifestReader(root, source).read();
 }
 
 AssignmentManifest read_manifest(const std::filesystem::path& file) {

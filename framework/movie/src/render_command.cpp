@@ -265,43 +265,38 @@ int render_replay(const Args& a, const SceneSpec& scene, Backend& be, Renderer& 
   return 0;
 }
 
-}  // namespace
-
-int render_command(int argc, char** argv) {
-  Args a;
-  if (const auto code = parse(argc, argv, a)) return *code;
+/// The scene SCENE names, with the --set assignments applied; nullopt after saying why.
+std::optional<SceneSpec> load_scene(const Args& a) {
   SceneResult loaded = resolve_scene(a.scene, default_scenes_dir());
   if (!loaded) {
     std::cerr << "jelly render: " << loaded.error->text() << "\n";
-    return 2;
+    return std::nullopt;
   }
   SceneSpec scene = *loaded.scene;
   for (const std::string& kv : a.sets) {
     if (auto err = set_assignment(scene, kv)) {
       std::cerr << "jelly render: " << err->text() << "\n";
-      return 2;
+      return std::nullopt;
     }
   }
-  // The backend and renderer outlive the runs (whose draw proxies hold GL objects).
+  return scene;
+}
+
+BackendOptions backend_options(const Args& a) {
   BackendOptions bo;
   bo.name = a.backend;
   bo.width = a.width;
   bo.height = a.height;
-  BackendResult backend = create_backend(bo);
-  if (!backend.backend) {
-    std::cerr << "jelly render: " << backend.error << "\n";
-    return 1;
-  }
-  Backend& be = *backend.backend;
-  Renderer renderer(be.gl(), a.samples);
-  if (!a.replay.empty()) return render_replay(a, scene, be, renderer);
+  return bo;
+}
 
-  RunSetup base = RunSetup::from_scene(scene);
-  if (a.dt > 0.0) base.dt = a.dt;
+/// One run per integrator to draw (--compare's, else --integrator or the scene's) into `runs`.
+/// nullopt: go on; else the exit code to return, after saying why.
+std::optional<int> make_runs(const Args& a, const RunSetup& base,
+                             std::vector<std::unique_ptr<SimulationRun>>& runs) {
   std::vector<std::string> names = a.compare;
   if (names.empty())
     names.push_back(a.integrator.empty() ? std::string(to_string(base.integrator)) : a.integrator);
-  std::vector<std::unique_ptr<SimulationRun>> runs;
   for (const std::string& name : names) {
     const auto kind = integrator_from_string(name);
     if (!kind) {
@@ -318,9 +313,12 @@ int render_command(int argc, char** argv) {
       return 1;
     }
   }
-  std::vector<SimulationRun*> run_ptrs;
-  for (auto& r : runs) run_ptrs.push_back(r.get());
+  return std::nullopt;
+}
 
+/// What every frame shows besides the bodies: the options asked for, and a hint naming the tasks
+/// the scene's assignment does not implement yet.
+FrameOptions frame_options(const Args& a, const RunSetup& base) {
   FrameOptions fo;
   fo.caption = a.caption;
   fo.draw.particles = a.particles;
@@ -332,76 +330,139 @@ int render_command(int argc, char** argv) {
     for (const auto& id : missing) hint += " " + id;
     fo.hints.push_back(hint);
   }
+  return fo;
+}
 
+/// The runs drawn side by side, with one camera and one set of frame options.
+struct RunFrames {
+  Backend& be;
+  Renderer& renderer;
+  std::vector<SimulationRun*> runs;
+  FrameOptions fo;
   OrbitCamera camera;
-  ensure_drawables(renderer, run_ptrs);
-  const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, fo);
-  camera.frame(drawable_of(*runs.front())->bounds(), vps.front().aspect());
-  if (!a.camera.empty() && !apply_camera(a.camera, camera)) return 2;
 
-  if (a.benchmark > 0) {
-    // Frames per second of drawing and reading back the first state (no stepping).
-    // Wall time and process CPU time (all of llvmpipe's threads) per frame; on a shared machine
-    // the CPU time is the steadier figure.
-    std::vector<double> ms, cpu_ms;
-    for (int i = 0; i < a.benchmark + 3; ++i) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const std::clock_t c0 = std::clock();
-      draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
-      const Image img = be.read_pixels();
-      be.present();
-      const double dt =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      if (i >= 3) {  // the first frames compile shaders and warm caches
-        ms.push_back(dt);
-        cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-      }
+  void draw() { draw_frame(renderer, runs, camera, fo, be.width(), be.height()); }
+};
+
+/// --benchmark: frames per second of drawing and reading back the first state (no stepping).
+/// Wall time and process CPU time (all of llvmpipe's threads) per frame; on a shared machine the
+/// CPU time is the steadier figure.
+int benchmark(const Args& a, RunFrames& view) {
+  std::vector<double> ms, cpu_ms;
+  for (int i = 0; i < a.benchmark + 3; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t c0 = std::clock();
+    view.draw();
+    const Image img = view.be.read_pixels();
+    view.be.present();
+    const double dt =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (i >= 3) {  // the first frames compile shaders and warm caches
+      ms.push_back(dt);
+      cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
     }
-    std::sort(ms.begin(), ms.end());
-    std::sort(cpu_ms.begin(), cpu_ms.end());
-    const double median = ms[ms.size() / 2];
-    std::printf(
-        "backend %s, %dx%d, %d samples, %s\nframes %d: median %.2f ms/frame = %.1f fps (min %.2f, "
-        "max %.2f ms); "
-        "median CPU %.2f ms/frame\n",
-        std::string(be.name()).c_str(), be.width(), be.height(), renderer.samples(),
-        be.gl() ? be.gl()->describe().c_str() : "no GL", a.benchmark, median, 1000.0 / median,
-        ms.front(), ms.back(), cpu_ms[cpu_ms.size() / 2]);
-    return 0;
   }
+  std::sort(ms.begin(), ms.end());
+  std::sort(cpu_ms.begin(), cpu_ms.end());
+  const double median = ms[ms.size() / 2];
+  const Backend& be = view.be;
+  std::printf(
+      "backend %s, %dx%d, %d samples, %s\nframes %d: median %.2f ms/frame = %.1f fps (min %.2f, "
+      "max %.2f ms); "
+      "median CPU %.2f ms/frame\n",
+      std::string(be.name()).c_str(), be.width(), be.height(), view.renderer.samples(),
+      be.gl() ? be.gl()->describe().c_str() : "no GL", a.benchmark, median, 1000.0 / median,
+      ms.front(), ms.back(), cpu_ms[cpu_ms.size() / 2]);
+  return 0;
+}
 
-  const double duration = a.duration >= 0.0 ? a.duration : scene.duration;
-  const int frames = static_cast<int>(std::floor(duration * a.fps + 1e-9)) + 1;
-  if (!make_folder(a.frames)) return 1;
-  int status = 0;
+/// Steps the runs to each frame's time and saves the frame; false, after saying why, when a frame
+/// cannot be written.
+bool save_frames(const Args& a, int frames, RunFrames& view) {
   for (int k = 0; k < frames; ++k) {
     const double t = k / a.fps;
-    for (SimulationRun* r : run_ptrs) r->advance_to(t);
-    draw_frame(renderer, run_ptrs, camera, fo, be.width(), be.height());
-    if (!save_frame(be, a.frames, static_cast<std::size_t>(k))) return 1;
+    for (SimulationRun* r : view.runs) r->advance_to(t);
+    view.draw();
+    if (!save_frame(view.be, a.frames, static_cast<std::size_t>(k))) return false;
   }
-  for (SimulationRun* r : run_ptrs)
+  return true;
+}
+
+/// Says which runs the stability detector stopped; 1 if any, else 0.
+int report_instability(const std::vector<SimulationRun*>& runs) {
+  int status = 0;
+  for (SimulationRun* r : runs)
     if (const auto& inst = r->simulator()->instability()) {
       std::cerr << inst->message() << "\n";
       status = 1;
     }
-  std::cout << "wrote " << frames << " frames to " << a.frames.string() << "\n";
-  if (a.video) {
-    const fs::path mp4 = a.frames / "video.mp4";
-    const Mp4Result video = encode_mp4(a.frames, a.fps, mp4);
-    switch (video.status) {
-      case Mp4Result::Status::Written: std::cout << "wrote " << mp4.string() << "\n"; break;
-      case Mp4Result::Status::Failed:
-        std::cerr << "jelly render: ffmpeg failed (" << video.detail << "); the PNG frames are in "
-                  << a.frames.string() << "\n";
-        break;
-      case Mp4Result::Status::NoFfmpeg:
-        std::cout << "(no ffmpeg on PATH: PNG frames only; for video.mp4, " << kFfmpegInstallHint
-                  << ")\n";
-        break;
-    }
-  }
   return status;
+}
+
+/// DIR/video.mp4 from the frames, when ffmpeg is there; says what became of it.
+void write_video(const Args& a) {
+  const fs::path mp4 = a.frames / "video.mp4";
+  const Mp4Result video = encode_mp4(a.frames, a.fps, mp4);
+  switch (video.status) {
+    case Mp4Result::Status::Written: std::cout << "wrote " << mp4.string() << "\n"; break;
+    case Mp4Result::Status::Failed:
+      std::cerr << "jelly render: ffmpeg failed (" << video.detail << "); the PNG frames are in "
+                << a.frames.string() << "\n";
+      break;
+    case Mp4Result::Status::NoFfmpeg:
+      std::cout << "(no ffmpeg on PATH: PNG frames only; for video.mp4, " << kFfmpegInstallHint
+                << ")\n";
+      break;
+  }
+}
+
+/// The frames of the runs from t = 0 to the duration, then the video.
+int render_movie(const Args& a, const SceneSpec& scene, RunFrames& view) {
+  const double duration = a.duration >= 0.0 ? a.duration : scene.duration;
+  const int frames = static_cast<int>(std::floor(duration * a.fps + 1e-9)) + 1;
+  if (!make_folder(a.frames)) return 1;
+  if (!save_frames(a, frames, view)) return 1;
+  const int status = report_instability(view.runs);
+  std::cout << "wrote " << frames << " frames to " << a.frames.string() << "\n";
+  if (a.video) write_video(a);
+  return status;
+}
+
+/// The scene simulated with each integrator asked for, drawn side by side: its frames and video,
+/// or with --benchmark the drawing speed.
+int render_runs(const Args& a, const SceneSpec& scene, Backend& be, Renderer& renderer) {
+  RunSetup base = RunSetup::from_scene(scene);
+  if (a.dt > 0.0) base.dt = a.dt;
+  std::vector<std::unique_ptr<SimulationRun>> runs;
+  if (const auto code = make_runs(a, base, runs)) return *code;
+  std::vector<SimulationRun*> run_ptrs;
+  for (auto& r : runs) run_ptrs.push_back(r.get());
+  RunFrames view{be, renderer, run_ptrs, frame_options(a, base), OrbitCamera()};
+  ensure_drawables(renderer, run_ptrs);
+  const auto vps = frame_viewports(static_cast<int>(runs.size()), a.width, a.height, view.fo);
+  view.camera.frame(drawable_of(*runs.front())->bounds(), vps.front().aspect());
+  if (!a.camera.empty() && !apply_camera(a.camera, view.camera)) return 2;
+  if (a.benchmark > 0) return benchmark(a, view);
+  return render_movie(a, scene, view);
+}
+
+}  // namespace
+
+int render_command(int argc, char** argv) {
+  Args a;
+  if (const auto code = parse(argc, argv, a)) return *code;
+  const std::optional<SceneSpec> scene = load_scene(a);
+  if (!scene) return 2;
+  // The backend and renderer outlive the runs (whose draw proxies hold GL objects).
+  BackendResult backend = create_backend(backend_options(a));
+  if (!backend.backend) {
+    std::cerr << "jelly render: " << backend.error << "\n";
+    return 1;
+  }
+  Backend& be = *backend.backend;
+  Renderer renderer(be.gl(), a.samples);
+  if (!a.replay.empty()) return render_replay(a, *scene, be, renderer);
+  return render_runs(a, *scene, be, renderer);
 }
 
 }  // namespace jelly::movie
