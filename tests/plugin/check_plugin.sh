@@ -213,8 +213,8 @@ cmake "$tree/build" >"$work/draft-configure.log" 2>&1 || fail "configure with th
 grep -q "assignment $id is a draft" "$work/draft-configure.log" ||
   fail "CMake did not say that $id is a draft ($work/draft-configure.log)"
 config=$tree/build/grader/grade-config.json
-python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); sys.exit(sys.argv[2] in c["assignments"] or c["drafts"] != [sys.argv[2]])' \
-  "$config" "$id" || fail "grade-config.json lists $id among the assignments, or not alone in drafts"
+python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); sys.exit(sys.argv[2] in c["assignments"] or sys.argv[2] not in c["drafts"])' \
+  "$config" "$id" || fail "grade-config.json lists $id among the assignments, or not among the drafts"
 cmake --build "$tree/build" --target "jelly_${id}_tasks_solutions" "jelly_${id}_tasks_assignments" \
   >"$work/draft-build.log" 2>&1 || fail "the draft's task libraries did not build ($work/draft-build.log)"
 status=0
