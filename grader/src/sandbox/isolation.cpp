@@ -436,11 +436,18 @@ struct Lane {
   }
   bool count_leftovers = true;
 
-  // Whether a process (a zombie on its way out, in bwrap) is still in one of the lane's cgroups.
+  // Whether anything of a run is still in one of the lane's cgroups: a process, or a zombie that
+  // init has not reaped yet (bwrap's own init after every run, a killed run's orphans). A zombie
+  // is no longer in cgroup.procs, but it counts against pids.max until it is reaped, which a
+  // container's init does only every second or so, later on a busy machine.
   bool holds_processes() const {
     for (const fs::path& d : dirs())
       if (!procs_of(d).empty()) return true;
-    return false;
+    const fs::path p = pids_dir();
+    if (p.empty()) return false;
+    std::istringstream current(read_small(p / "pids.current"));
+    long long charged = 0;
+    return current >> charged && charged > 0;
   }
 };
 
@@ -680,6 +687,12 @@ class SandboxPool {
         busy_[i] = true;
         return lanes_[i].get();
       }
+    // A retired lane whose remains are gone by now (still busy_: nobody else takes it).
+    for (std::size_t i = 0; i < lanes_.size(); ++i)
+      if (retired_[i] && !lanes_[i]->holds_processes()) {
+        retired_[i] = false;
+        return lanes_[i].get();
+      }
     auto lane = std::make_unique<Lane>();
     lane->index = static_cast<int>(lanes_.size());
     if (kind_ == IsolationKind::User) {
@@ -696,16 +709,22 @@ class SandboxPool {
     lane->count_leftovers = kind_ != IsolationKind::Bwrap;
     lanes_.push_back(std::move(lane));
     busy_.push_back(true);
+    retired_.push_back(false);
     return lanes_.back().get();
   }
   void release(Lane* l) {
     std::lock_guard<std::mutex> lock(mutex_);
     // bwrap: end_all does not wait for the sandbox's init, which leaves its pid namespace after the
-    // run (and stays a zombie where the container's init does not reap). A lane whose cgroups still
-    // hold a process is retired, not reused: its processes would count against the next run's
-    // caps (a fork bomb's remains made every later compile "start more than 64 processes").
-    if (!l->count_leftovers && l->holds_processes()) return;
-    busy_[static_cast<std::size_t>(l->index)] = false;
+    // run and is a zombie until the container's init reaps it; a killed run's orphans are zombies
+    // too. A lane whose cgroups still hold a process or a zombie is retired until they are gone:
+    // they would count against the next run's caps (a fork bomb's remains, or the zombies of a
+    // busy machine, made honest compiles "start more than 64 processes" and nm fail).
+    const auto i = static_cast<std::size_t>(l->index);
+    if (l->holds_processes()) {
+      retired_[i] = true;
+      return;
+    }
+    busy_[i] = false;
   }
 
   // A group for one submission: the primary group of a sandbox user, no other submission's.
@@ -794,6 +813,7 @@ class SandboxPool {
   std::mutex mutex_;
   std::vector<std::unique_ptr<Lane>> lanes_;
   std::vector<bool> busy_;
+  std::vector<bool> retired_;  // busy until what its last run left is gone (release)
   std::vector<int> groups_;
   std::vector<bool> group_busy_;
   std::atomic<unsigned> counter_{0};
