@@ -183,6 +183,17 @@ std::string limit_hit(const std::string& what, const ChildResult& c, const std::
   return "";
 }
 
+// Why a tool's run in the sandbox gave no usable answer, in a few words for a message.
+std::string tool_failure(const ChildResult& c) {
+  if (!c.started) return "it could not start: " + c.start_error;
+  if (c.process_cap) return "the sandbox refused it a process";
+  if (c.timed_out) return "it took longer than its time limit";
+  if (c.signal != 0) return "ended by " + describe_signal(c.signal);
+  std::string first = c.err.substr(0, c.err.find('\n'));
+  if (first.size() > 200) first = first.substr(0, 200) + "...";
+  return "exit status " + std::to_string(c.exit_code) + (first.empty() ? "" : ": " + first);
+}
+
 }  // namespace
 
 std::string filter_diagnostics(const std::string& messages, const fs::path& cwd,
@@ -440,6 +451,7 @@ class SubmissionBuild {
     lim.keep_output = 16 << 20;
     const ChildResult c = run_isolated(iso_, argv, view, lim);
     const auto defined = parse_nm(c.out);
+    const std::string nm_failure = c.exit_code != 0 ? " (nm failed: " + tool_failure(c) + ")" : "";
     std::map<std::string, std::set<std::string>> own;
     std::map<std::string, std::string> task_of_symbol;
     for (const std::string& name : files_)
@@ -453,7 +465,8 @@ class SubmissionBuild {
       if (c.exit_code != 0 || !defined.count(file)) {
         broken_[name] = "could not be checked";
         messages_[name] = name + ": error: the grader could not list the symbols of " + name +
-                          " (nm failed); its tasks were not run\n";
+                          (nm_failure.empty() ? " (nm did not list them)" : nm_failure) +
+                          "; its tasks were not run\n";
         continue;
       }
       std::map<std::string, std::string> others = task_of_symbol;
