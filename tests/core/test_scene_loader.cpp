@@ -11,6 +11,7 @@
 #include "jelly/a1/task_table.hpp"
 #include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/task_table.hpp"
 #include "scene_compare.hpp"
@@ -159,14 +160,14 @@ TEST(SceneLoader, FreeFallAndTwoParticleSpring) {
   EXPECT_EQ(tp.body_kind, BodyKind{"particles"});
   EXPECT_FALSE(tp.gravity);
   EXPECT_TRUE(tp.terrains.empty());
-  ASSERT_EQ(tp.particles.positions.cols(), 2);
-  EXPECT_EQ(Vec3(tp.particles.positions.col(0)), Vec3(-0.55, 0.0, 0.0));
-  EXPECT_EQ(Vec3(tp.particles.positions.col(1)), Vec3(0.55, 0.0, 0.0));
-  EXPECT_EQ(tp.particles.mass, 1.0);
-  ASSERT_EQ(tp.particles.springs.size(), 1u);
-  EXPECT_EQ(tp.particles.springs[0].a, 0);
-  EXPECT_EQ(tp.particles.springs[0].b, 1);
-  EXPECT_EQ(tp.particles.springs[0].rest_length, 1.0);
+  ASSERT_EQ(particles_scene(tp).positions.cols(), 2);
+  EXPECT_EQ(Vec3(particles_scene(tp).positions.col(0)), Vec3(-0.55, 0.0, 0.0));
+  EXPECT_EQ(Vec3(particles_scene(tp).positions.col(1)), Vec3(0.55, 0.0, 0.0));
+  EXPECT_EQ(particles_scene(tp).mass, 1.0);
+  ASSERT_EQ(particles_scene(tp).springs.size(), 1u);
+  EXPECT_EQ(particles_scene(tp).springs[0].a, 0);
+  EXPECT_EQ(particles_scene(tp).springs[0].b, 1);
+  EXPECT_EQ(particles_scene(tp).springs[0].rest_length, 1.0);
   EXPECT_TRUE(tp.structural.enabled);
   EXPECT_EQ(tp.structural.ks, 10.0);
   EXPECT_EQ(tp.structural.kd, 0.0);
@@ -373,7 +374,7 @@ ks = 5
 )",
                                     "particles");
   ASSERT_TRUE(r) << r.error->text();
-  const ParticleBodySpec& p = r.scene->particles;
+  const ParticleBodySpec& p = particles_scene(*r.scene);
   EXPECT_EQ(p.mass, 2.0);
   EXPECT_EQ(p.velocities, Vec3Array::Zero(3, 3));
   ASSERT_EQ(p.springs.size(), 2u);

@@ -15,6 +15,7 @@
 #include "jelly/cloth_scene.hpp"
 #include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/skeleton_scene.hpp"
 
@@ -74,10 +75,10 @@ void check_valid(const jelly::SceneSpec& s) {
   } else if (s.body_kind == jelly::kSkeletonKind) {
     check_valid_skeleton(s);
   } else {
-    const auto n = s.particles.positions.cols();
-    if (n < 1 || s.particles.velocities.cols() != n || !(s.particles.mass > 0.0))
+    const auto n = particles_scene(s).positions.cols();
+    if (n < 1 || particles_scene(s).velocities.cols() != n || !(particles_scene(s).mass > 0.0))
       fail("accepted bad particles", "");
-    for (const jelly::Spring& sp : s.particles.springs)
+    for (const jelly::Spring& sp : particles_scene(s).springs)
       if (sp.a < 0 || sp.b < 0 || sp.a >= n || sp.b >= n || sp.a == sp.b || !(sp.rest_length > 0.0))
         fail("accepted a bad spring", std::to_string(sp.a) + "," + std::to_string(sp.b));
   }

@@ -9,6 +9,7 @@
 
 #include "jelly/a1/task_table.hpp"
 #include "jelly/cube_scene.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/terrain_geometry.hpp"
 
 namespace jelly::hard {
@@ -95,7 +96,8 @@ Outcome run_case(const SceneSpec& scene, IntegratorKind kind, double h, double h
   double spacing =
       scene.body_kind == kCubeKind ? cube_spec(scene).edge / (cube_spec(scene).n - 1) : 1.0;
   if (scene.body_kind == BodyKind{"particles"})
-    for (const Spring& sp : scene.particles.springs) spacing = std::min(spacing, sp.rest_length);
+    for (const Spring& sp : particles_scene(scene).springs)
+      spacing = std::min(spacing, sp.rest_length);
   o.depth_bound = eps + 2.0 * h * o.v_peak + spacing;
   return o;
 }

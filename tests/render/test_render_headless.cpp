@@ -16,6 +16,7 @@
 #include "jelly/render/backend.hpp"
 #include "jelly/render/captions.hpp"
 #include "jelly/render/frame.hpp"
+#include "jelly/scene.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
 
@@ -220,6 +221,16 @@ TEST(RenderCommand, WritesNumberedFramesWithTheParametersPrinted) {
   for (const char* f : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   EXPECT_FALSE(fs::exists(dir / "frame_00003.png"));
+}
+
+// A kind without a view module (the particles) gives its caption line itself: the particles'
+// count and mass, as the caption said when the renderer read them from the scene.
+TEST(Captions, AKindWithoutAViewGivesItsOwnLine) {
+  const SceneResult r =
+      load_scene(fs::path(JELLY_SOURCE_DIR) / "scenes" / "two-particle-spring.toml");
+  ASSERT_TRUE(r) << r.error->text();
+  const std::string text = caption(session::RunSetup::from_scene(*r.scene), 0.0);
+  EXPECT_NE(text.find("\nparticles: 2, m = 1 kg\n"), std::string::npos) << text;
 }
 
 TEST(RenderCommand, UsageErrorsReturnTwo) {

@@ -11,6 +11,7 @@
 
 #include "jelly/cube_scene.hpp"
 #include "jelly/params.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/scene.hpp"
 #include "scene_compare.hpp"
 
@@ -270,18 +271,19 @@ TEST(SceneParams, ChangingATerrainTypeKeepsTheSurface) {
 TEST(SceneParams, ParticleListsThroughText) {
   SceneSpec tp = scene("two-particle-spring.toml");
   EXPECT_EQ(set_parameter(tp, "body.positions", "0,0,0; 2,0,0"), std::nullopt);
-  EXPECT_EQ(tp.particles.springs[0].rest_length, 1.0) << "rest lengths are kept";
+  EXPECT_EQ(particles_scene(tp).springs[0].rest_length, 1.0) << "rest lengths are kept";
   EXPECT_EQ(set_parameter(tp, "body.springs", "1,0"), std::nullopt);
-  EXPECT_EQ(tp.particles.springs[0].a, 1);
-  EXPECT_EQ(tp.particles.springs[0].rest_length, 2.0) << "new springs rest at the current distance";
+  EXPECT_EQ(particles_scene(tp).springs[0].a, 1);
+  EXPECT_EQ(particles_scene(tp).springs[0].rest_length, 2.0)
+      << "new springs rest at the current distance";
   EXPECT_EQ(set_parameter(tp, "body.rest_lengths", "1.5"), std::nullopt);
-  EXPECT_EQ(tp.particles.springs[0].rest_length, 1.5);
+  EXPECT_EQ(particles_scene(tp).springs[0].rest_length, 1.5);
   EXPECT_TRUE(set_parameter(tp, "body.rest_lengths", "1,2"));
   EXPECT_TRUE(set_parameter(tp, "body.springs", "0,5"));
   EXPECT_TRUE(set_parameter(tp, "body.springs", "0,4294967297"));
   EXPECT_TRUE(set_parameter(tp, "body.velocities", "0,0,0"));
   EXPECT_EQ(set_parameter(tp, "body.velocities", "0,1,0; 0,-1,0"), std::nullopt);
-  EXPECT_EQ(tp.particles.velocities(1, 1), -1.0);
+  EXPECT_EQ(particles_scene(tp).velocities(1, 1), -1.0);
   // Fewer particles: the springs would point past the end.
   const auto e = set_parameter(tp, "body.positions", "0,0,0");
   ASSERT_TRUE(e);

@@ -7,6 +7,7 @@
 
 #include "jelly/cloth_scene.hpp"
 #include "jelly/cube_scene.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/skeleton_scene.hpp"
 
@@ -93,8 +94,8 @@ inline std::string scene_difference(const SceneSpec& a, const SceneSpec& b) {
       }
     }
   } else {
-    const ParticleBodySpec& p = a.particles;
-    const ParticleBodySpec& q = b.particles;
+    const ParticleBodySpec& p = particles_scene(a);
+    const ParticleBodySpec& q = particles_scene(b);
     JELLY_CMP(p.mass, q.mass, "particles.mass", num);
     JELLY_CMP(p.positions.cols(), q.positions.cols(), "particles.positions count", i);
     if (p.positions != q.positions) return "particles.positions differ";

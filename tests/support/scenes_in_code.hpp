@@ -7,6 +7,7 @@
 #include <string>
 
 #include "jelly/a1/task_table.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/scene.hpp"
 #include "jelly/simulator.hpp"
 #include "jelly/test_systems.hpp"
@@ -36,12 +37,12 @@ inline SceneSpec two_particle_spring(IntegratorKind kind, double h) {
   SceneSpec s;
   s.integrator = kind;
   s.dt = h;
-  s.body_kind = BodyKind{"particles"};
+  s.body_kind = kParticlesKind;
   const State init = TwoParticleSpring::initial_state(0.1);
-  s.particles.positions = init.x;
-  s.particles.velocities = init.v;
-  s.particles.mass = 1.0;
-  s.particles.springs.push_back({0, 1, 1.0});
+  particles_scene(s).positions = init.x;
+  particles_scene(s).velocities = init.v;
+  particles_scene(s).mass = 1.0;
+  particles_scene(s).springs.push_back({0, 1, 1.0});
   s.structural = {true, TwoParticleSpring::kStiffness, 0.0};
   return s;  // no gravity, no terrain
 }

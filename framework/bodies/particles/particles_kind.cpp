@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "jelly/body_kind.hpp"
+#include "jelly/particles_scene.hpp"
 #include "jelly/world.hpp"
 #include "param_rows.hpp"
 
@@ -28,16 +29,16 @@ std::string spring_index_message(std::size_t i, long long a, long long b, Eigen:
 std::optional<std::string> check_rest_length_count(const Decl&, const SceneSpec& s, const Ctx&,
                                                    const Value& v) {
   const std::size_t given = std::get<std::vector<double>>(v).size();
-  if (given != s.particles.springs.size())
-    return "must give one rest length per spring (" + std::to_string(s.particles.springs.size()) +
-           "), got " + std::to_string(given);
+  if (given != particles_scene(s).springs.size())
+    return "must give one rest length per spring (" +
+           std::to_string(particles_scene(s).springs.size()) + "), got " + std::to_string(given);
   return std::nullopt;
 }
 
 std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s, const Ctx&,
                                                 const Value& v) {
   // Checked here, before the indices are narrowed to int by the setter.
-  const Eigen::Index n = s.particles.positions.cols();
+  const Eigen::Index n = particles_scene(s).positions.cols();
   const auto& pairs = std::get<std::vector<IndexPair>>(v);
   for (std::size_t i = 0; i < pairs.size(); ++i)
     if (pairs[i][0] >= n || pairs[i][1] >= n)
@@ -48,8 +49,8 @@ std::optional<std::string> check_spring_indices(const Decl&, const SceneSpec& s,
 std::optional<std::string> check_velocity_count(const Decl&, const SceneSpec& s, const Ctx&,
                                                 const Value& v) {
   const auto given = static_cast<Eigen::Index>(std::get<std::vector<Vec3>>(v).size());
-  if (given != s.particles.positions.cols())
-    return velocity_count_message(s.particles.positions.cols(), given);
+  if (given != particles_scene(s).positions.cols())
+    return velocity_count_message(particles_scene(s).positions.cols(), given);
   return std::nullopt;
 }
 
@@ -66,28 +67,31 @@ class ParticlesKind final : public BodyKindModule {
             make(
                 "body.mass", Scope::Body, ValueKind::Real, "kg", Default::Yes, kPositive,
                 "Mass of every particle",
-                [](const SceneSpec& s, const Ctx&) -> Value { return s.particles.mass; },
-                [](SceneSpec& s, const Ctx&, const Value& v) { s.particles.mass = real(v); }),
+                [](const SceneSpec& s, const Ctx&) -> Value { return particles_scene(s).mass; },
+                [](SceneSpec& s, const Ctx&, const Value& v) {
+                  particles_scene(s).mass = real(v);
+                }),
             make(
                 "body.positions", Scope::Body, ValueKind::Vec3List, "m", Default::None, kAny,
                 "Initial positions, at least one; text form \"x,y,z; x,y,z\"",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return columns(s.particles.positions);
+                  return columns(particles_scene(s).positions);
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.particles.positions = matrix(std::get<std::vector<Vec3>>(v));
+                  particles_scene(s).positions = matrix(std::get<std::vector<Vec3>>(v));
                   // A different count makes the old velocities meaningless: start at rest.
-                  if (s.particles.velocities.cols() != s.particles.positions.cols())
-                    s.particles.velocities = Vec3Array::Zero(3, s.particles.positions.cols());
+                  if (particles_scene(s).velocities.cols() != particles_scene(s).positions.cols())
+                    particles_scene(s).velocities =
+                        Vec3Array::Zero(3, particles_scene(s).positions.cols());
                 }),
             checked(make(
                         "body.velocities", Scope::Body, ValueKind::Vec3List, "m/s", Default::None,
                         kAny, "Initial velocities, one per position (optional: zero)",
                         [](const SceneSpec& s, const Ctx&) -> Value {
-                          return columns(s.particles.velocities);
+                          return columns(particles_scene(s).velocities);
                         },
                         [](SceneSpec& s, const Ctx&, const Value& v) {
-                          s.particles.velocities = matrix(std::get<std::vector<Vec3>>(v));
+                          particles_scene(s).velocities = matrix(std::get<std::vector<Vec3>>(v));
                         }),
                     check_velocity_count),
             checked(
@@ -96,15 +100,16 @@ class ParticlesKind final : public BodyKindModule {
                     "Springs as pairs of particle indices (0-based, a ≠ b); text form \"a,b; a,b\"",
                     [](const SceneSpec& s, const Ctx&) -> Value {
                       std::vector<IndexPair> out;
-                      for (const Spring& sp : s.particles.springs) out.push_back({sp.a, sp.b});
+                      for (const Spring& sp : particles_scene(s).springs)
+                        out.push_back({sp.a, sp.b});
                       return out;
                     },
                     [](SceneSpec& s, const Ctx&, const Value& v) {
                       // A spring that is unchanged (same pair at the same place in the list) keeps
                       // its rest length; a new one rests at the distance between the current
                       // positions.
-                      const Vec3Array& x = s.particles.positions;
-                      const std::vector<Spring>& old = s.particles.springs;
+                      const Vec3Array& x = particles_scene(s).positions;
+                      const std::vector<Spring>& old = particles_scene(s).springs;
                       std::vector<Spring> springs;
                       for (const IndexPair& p : std::get<std::vector<IndexPair>>(v)) {
                         Spring sp{static_cast<int>(p[0]), static_cast<int>(p[1]),
@@ -116,7 +121,7 @@ class ParticlesKind final : public BodyKindModule {
                           sp.rest_length = (x.col(sp.a) - x.col(sp.b)).norm();
                         springs.push_back(sp);
                       }
-                      s.particles.springs = std::move(springs);
+                      particles_scene(s).springs = std::move(springs);
                     }),
                 check_spring_indices),
             checked(
@@ -126,30 +131,32 @@ class ParticlesKind final : public BodyKindModule {
                     "Rest length of each spring, one per spring (optional: the initial distance)",
                     [](const SceneSpec& s, const Ctx&) -> Value {
                       std::vector<double> out;
-                      for (const Spring& sp : s.particles.springs) out.push_back(sp.rest_length);
+                      for (const Spring& sp : particles_scene(s).springs)
+                        out.push_back(sp.rest_length);
                       return out;
                     },
                     [](SceneSpec& s, const Ctx&, const Value& v) {
                       const auto& r = std::get<std::vector<double>>(v);
-                      for (std::size_t i = 0; i < r.size() && i < s.particles.springs.size(); ++i)
-                        s.particles.springs[i].rest_length = r[i];
+                      for (std::size_t i = 0; i < r.size() && i < particles_scene(s).springs.size();
+                           ++i)
+                        particles_scene(s).springs[i].rest_length = r[i];
                     }),
                 check_rest_length_count),
             make(
                 "body.spring_type", Scope::Body, ValueKind::Choice, "", Default::Yes, kAny,
                 "Whose coefficients the springs use; that [springs.<type>] table must be present",
                 [](const SceneSpec& s, const Ctx&) -> Value {
-                  return std::string(to_string(s.particles.spring_type));
+                  return std::string(to_string(particles_scene(s).spring_type));
                 },
                 [](SceneSpec& s, const Ctx&, const Value& v) {
-                  s.particles.spring_type = *spring_type_from_string(text(v));
+                  particles_scene(s).spring_type = *spring_type_from_string(text(v));
                 },
                 {"structural", "shear", "shear_body", "bending"}),
         });
   }
 
   std::optional<CrossError> check(const SceneSpec& s) const override {
-    const ParticleBodySpec& p = s.particles;
+    const ParticleBodySpec& p = particles_scene(s);
     const Eigen::Index n = p.positions.cols();
     if (n < 1)
       return CrossError{"body.positions", "a particles body needs at least one position, got none"};
@@ -175,10 +182,17 @@ class ParticlesKind final : public BodyKindModule {
     return std::nullopt;
   }
 
+  /// "particles: N, m = M kg" (the %.3g of a rendered caption).
+  std::string caption_body(const SceneSpec& scene) const override {
+    const ParticleBodySpec& p = particles_scene(scene);
+    return "\nparticles: " + std::to_string(p.positions.cols()) +
+           text_printf(", m = %.3g kg", p.mass) + "\n";
+  }
+
   std::string_view stability_reason() const override { return "since contact stiffens the cube"; }
 
   void build(const SceneSpec& scene, World& world) const override {
-    const ParticleBodySpec& p = scene.particles;
+    const ParticleBodySpec& p = particles_scene(scene);
     Vec3Array velocities = p.velocities.cols() == p.positions.cols()
                                ? p.velocities
                                : Vec3Array::Zero(3, p.positions.cols());

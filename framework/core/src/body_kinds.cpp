@@ -97,6 +97,10 @@ std::string BodyKindModule::play(const SceneSpec&, const TaskTable&,
   throw std::logic_error("the body kind " + std::string(name()) + " plays no frames");
 }
 
+std::string BodyKindModule::caption_body(const SceneSpec&) const {
+  return "\n" + std::string(body_phrase()) + "\n";
+}
+
 std::string_view BodyKindModule::stability_reason() const { return "since the body stiffens"; }
 
 std::string_view BodyKindModule::run_help(std::string_view) const { return ""; }

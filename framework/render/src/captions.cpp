@@ -10,11 +10,11 @@ namespace {
 
 using session::format_number;
 
-/// The body's line: its kind's, or the particles' count and mass when its kind has no view.
+/// The body's line: its view's, or its kind's when it has no view.
 std::string body_line(const SceneSpec& sc, const BodyView* view) {
   if (view) return view->caption_body(sc);
-  return "\nparticles: " + std::to_string(sc.particles.positions.cols()) +
-         ", m = " + format_number("%.3g kg", sc.particles.mass) + "\n";
+  const BodyKindModule* kind = find_body_kind(sc.body_kind.name);
+  return kind ? kind->caption_body(sc) : "\n";
 }
 
 }  // namespace

@@ -150,6 +150,9 @@ class BodyKindModule {
   /// `jelly check`'s line after the particles and springs: gravity and what else the world holds.
   /// By default the terrains.
   virtual std::string check_report(const SceneSpec& scene, const World& world) const;
+  /// The body's line of a rendered frame's caption for a kind that has no view module (a kind with
+  /// one gets it from its BodyView), from "\n" to "\n". By default "\n" + body_phrase() + "\n".
+  virtual std::string caption_body(const SceneSpec& scene) const;
   /// Why `jelly check` recommends half the stable step ("contact stiffens the body").
   virtual std::string_view stability_reason() const;
   /// What `jelly run --help` adds for this kind to the text of `option` ("--summary": its own

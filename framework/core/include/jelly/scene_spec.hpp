@@ -24,15 +24,6 @@ struct SpringSettings {
   double kd = 60.0;    ///< [N·s/m]
 };
 
-/// A body given particle by particle (the two-particle spring, particle clouds).
-struct ParticleBodySpec {
-  Vec3Array positions;          ///< 3×N [m]
-  Vec3Array velocities;         ///< 3×N [m/s] (zero when the scene gives none)
-  double mass = 1.0;            ///< every particle [kg]
-  std::vector<Spring> springs;  ///< explicit springs (rest length given or from positions)
-  SpringType spring_type = SpringType::Structural;  ///< whose coefficients they use
-};
-
 /// A scene's kind of body: its `body.type` name, the name a body module registers
 /// (jelly/body_kind.hpp, framework/bodies/<kind>/). Compared by name, so a kind the framework has
 /// never heard of is one more module, not an edit here. Each kind's header names its own.
@@ -59,7 +50,6 @@ struct SceneSpec {
   std::optional<Vec3> gravity;  ///< gravity.acceleration; nullopt: no gravity term at all
 
   BodyKind body_kind = default_body_kind();
-  ParticleBodySpec particles;  ///< when body.type = "particles"
   /// What the scene says of its body that only the body's module knows (its size, its obstacles):
   /// each kind reads and writes its own structs here through its header's accessors
   /// (framework/bodies/<kind>/include/).
