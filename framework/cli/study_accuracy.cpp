@@ -44,97 +44,142 @@ struct RunOutput {
   long first_collision_step = -1;
 };
 
+Simulator::Options watched_options(IntegratorKind kind, double h) {
+  Simulator::Options options(kind, h);
+  options.detect_instability = false;  // watched below, so that the run is not stopped
+  return options;
+}
+
+/// One run of run_once: the simulator, the §8 detector watching it, and what the run measures.
+class AccuracyRun {
+ public:
+  AccuracyRun(const SceneSpec& scene, IntegratorKind kind, double h, const SweepOptions& o,
+              const std::vector<Vec3Array>* reference, bool keep)
+      : reference_(reference),
+        keep_(keep),
+        total_(steps_per(o.duration, h, "the duration")),
+        per_sample_(steps_per(o.sample_dt, h, "the sample interval")),
+        sim_(build_world(scene, session::tasks_for(scene)), watched_options(kind, h)),
+        monitor_(sim_.detector_config()) {  // the detector's own settings for the world
+    out_.row.integrator = kind;
+    out_.row.h = h;
+    monitor_.start(sim_.detector_energy());
+    evaluations0_ = sim_.evaluations();
+    if (keep_) out_.samples.push_back(sim_.state().x);
+  }
+
+  RunOutput run() {
+    const int block = std::max(1, monitor_.config().sample_every);
+    while (step_ < total_) {
+      run_block(std::min(total_, (step_ / block + 1) * block));
+      if (!watch()) break;
+      if (step_ % per_sample_ == 0) sample();
+    }
+    finish();
+    return std::move(out_);
+  }
+
+ private:
+  /// Terrain responses, or the impulses of a body kind's own physics, so far.
+  long collisions() {
+    const auto& c = sim_.world().counters();
+    return std::accumulate(c.collisions.begin(), c.collisions.end(), 0L) +
+           static_cast<long>(c.impulses);
+  }
+
+  /// Times a block of steps up to `stop` between watch points (or up to a sample inside it); the
+  /// watching and the error are not timed.
+  void run_block(long stop) {
+    const auto t0 = std::chrono::steady_clock::now();
+    while (step_ < stop) {
+      sim_.step();
+      ++step_;
+      if (out_.first_collision_step < 0 && collisions() > 0) out_.first_collision_step = step_;
+      if (step_ % per_sample_ == 0 && step_ < stop) break;  // a sample inside the block
+    }
+    wall_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  /// At a watch point, a sample or the end: false when the state is not finite (the run stops).
+  bool watch() {
+    RunRow& row = out_.row;
+    const State& s = sim_.state();
+    if (!(monitor_.wants_sample(step_) || step_ % per_sample_ == 0 || step_ == total_)) return true;
+    const bool finite = s.x.allFinite() && s.v.allFinite();
+    if (!finite) {
+      row.finite = false;
+      if (row.stable) {
+        row.stable = false;
+        row.reason = "a position or velocity is not finite";
+        row.detected_at = sim_.time();
+      }
+      return false;
+    }
+    if (row.stable && monitor_.wants_sample(step_)) {
+      if (auto reason = monitor_.check(sim_.detector_energy(), true)) {
+        row.stable = false;
+        row.reason = *reason;
+        row.detected_at = sim_.time();
+      }
+    }
+    return true;
+  }
+
+  /// At a sample time: keeps the positions, and measures the error against the reference's.
+  void sample() {
+    const State& s = sim_.state();
+    const long j = step_ / per_sample_;
+    if (keep_) out_.samples.push_back(s.x);
+    if (!reference_) return;
+    const Vec3Array& xr = (*reference_)[static_cast<std::size_t>(j)];
+    const Eigen::Index n = s.x.cols();
+    double sq = 0.0, worst = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double d2 = (s.x.col(i) - xr.col(i)).squaredNorm();
+      sq += d2;
+      worst = std::max(worst, d2);
+    }
+    sum_sq_ += sq / static_cast<double>(n);
+    ++count_;
+    if (step_ == total_) out_.row.error_final = std::sqrt(worst);
+  }
+
+  /// The row's totals: time, cost and the errors.
+  void finish() {
+    RunRow& row = out_.row;
+    row.sim_time = sim_.time();
+    row.wall = wall_;
+    row.evaluations = sim_.evaluations() - evaluations0_;
+    if (const BackwardEulerSolver* be = sim_.backward_euler())
+      row.cg_iterations = be->total_iterations();
+    if (!reference_) {
+      row.error_rms = row.error_final = kNaN;
+    } else if (!row.finite) {
+      row.error_rms = row.error_final = kInf;
+    } else {
+      row.error_rms = count_ > 0 ? std::sqrt(sum_sq_ / static_cast<double>(count_)) : 0.0;
+    }
+  }
+
+  const std::vector<Vec3Array>* reference_;
+  bool keep_;
+  long total_, per_sample_;
+  Simulator sim_;
+  StabilityMonitor monitor_;
+  long evaluations0_ = 0;
+  RunOutput out_;
+  double sum_sq_ = 0.0;
+  long count_ = 0;
+  double wall_ = 0.0;  // [s] the timed steps
+  long step_ = 0;
+};
+
 /// Runs one integrator at one step over [0, T]. With `reference`, measures the error at every
 /// sample time; with `keep`, stores the samples. The §8 detector is watched (not obeyed): a run
 /// it flags keeps going so that its error is still measured, and stops only when not finite.
 RunOutput run_once(const SceneSpec& scene, IntegratorKind kind, double h, const SweepOptions& o,
                    const std::vector<Vec3Array>* reference, bool keep) {
-  RunOutput out;
-  RunRow& row = out.row;
-  row.integrator = kind;
-  row.h = h;
-  const long total = steps_per(o.duration, h, "the duration");
-  const long per_sample = steps_per(o.sample_dt, h, "the sample interval");
-  Simulator::Options options(kind, h);
-  options.detect_instability = false;  // watched below, so that the run is not stopped
-  Simulator sim(build_world(scene, session::tasks_for(scene)), options);
-  StabilityMonitor monitor(sim.detector_config());  // the detector's own settings for the world
-  monitor.start(sim.detector_energy());
-  const long evaluations0 = sim.evaluations();
-  auto collisions = [&] {  // terrain responses, or the impulses of a body kind's own physics
-    const auto& c = sim.world().counters();
-    return std::accumulate(c.collisions.begin(), c.collisions.end(), 0L) +
-           static_cast<long>(c.impulses);
-  };
-  if (keep) out.samples.push_back(sim.state().x);
-
-  double sum_sq = 0.0;
-  long count = 0;
-  double wall = 0.0;
-  const int block = std::max(1, monitor.config().sample_every);
-  long step = 0;
-  while (step < total) {
-    // Time a block of steps between watch points; the watching and the error are not timed.
-    const long stop = std::min(total, (step / block + 1) * block);
-    const auto t0 = std::chrono::steady_clock::now();
-    while (step < stop) {
-      sim.step();
-      ++step;
-      if (out.first_collision_step < 0 && collisions() > 0) out.first_collision_step = step;
-      if (step % per_sample == 0 && step < stop) break;  // a sample inside the block
-    }
-    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const State& s = sim.state();
-    if (monitor.wants_sample(step) || step % per_sample == 0 || step == total) {
-      const bool finite = s.x.allFinite() && s.v.allFinite();
-      if (!finite) {
-        row.finite = false;
-        if (row.stable) {
-          row.stable = false;
-          row.reason = "a position or velocity is not finite";
-          row.detected_at = sim.time();
-        }
-        break;
-      }
-      if (row.stable && monitor.wants_sample(step)) {
-        if (auto reason = monitor.check(sim.detector_energy(), true)) {
-          row.stable = false;
-          row.reason = *reason;
-          row.detected_at = sim.time();
-        }
-      }
-    }
-    if (step % per_sample == 0) {
-      const long j = step / per_sample;
-      if (keep) out.samples.push_back(s.x);
-      if (reference) {
-        const Vec3Array& xr = (*reference)[static_cast<std::size_t>(j)];
-        const Eigen::Index n = s.x.cols();
-        double sq = 0.0, worst = 0.0;
-        for (Eigen::Index i = 0; i < n; ++i) {
-          const double d2 = (s.x.col(i) - xr.col(i)).squaredNorm();
-          sq += d2;
-          worst = std::max(worst, d2);
-        }
-        sum_sq += sq / static_cast<double>(n);
-        ++count;
-        if (step == total) row.error_final = std::sqrt(worst);
-      }
-    }
-  }
-  row.sim_time = sim.time();
-  row.wall = wall;
-  row.evaluations = sim.evaluations() - evaluations0;
-  if (const BackwardEulerSolver* be = sim.backward_euler())
-    row.cg_iterations = be->total_iterations();
-  if (!reference) {
-    row.error_rms = row.error_final = kNaN;
-  } else if (!row.finite) {
-    row.error_rms = row.error_final = kInf;
-  } else {
-    row.error_rms = count > 0 ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0;
-  }
-  return out;
+  return AccuracyRun(scene, kind, h, o, reference, keep).run();
 }
 
 double order(double e_coarse, double e_fine, double h_coarse, double h_fine) {
