@@ -188,43 +188,45 @@ double order(double e_coarse, double e_fine, double h_coarse, double h_fine) {
   return std::log(e_coarse / e_fine) / std::log(h_coarse / h_fine);
 }
 
-}  // namespace
-
-SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress) {
+void check_options(const SweepOptions& o) {
   if (o.steps.empty()) throw std::invalid_argument("no step sizes to sweep");
   if (!(o.duration > 0.0) || !(o.sample_dt > 0.0) || o.reference_factor < 1 || o.repeats < 1)
     throw std::invalid_argument(
         "duration, sample interval, reference factor and repeats must be > 0");
-  SweepResult r;
-  r.options = o;
-  std::sort(r.options.steps.begin(), r.options.steps.end(), std::greater<>());
-  r.scene_name = scene.name;
-  r.load_before = loadavg();
-  {
-    const auto world = build_world(scene, session::tasks_for(scene));
-    r.particles = static_cast<long>(world->particle_count());
-    r.springs = world->spring_count();
-    r.terrains = world->terrains().size();
-    // Where the automatic step size would run each integrator, for comparison with the sweep.
-    const StabilityEstimate e = estimate_stability(*world, world->state());
-    for (IntegratorKind kind : o.integrators) {
-      const AutoStep a = choose_step(e, kind, 1.0 / 60.0, scene.dt);
-      char buf[128];
-      std::snprintf(buf, sizeof buf, "%.4g s (%d substeps per 1/60 s frame%s)", a.chosen_h,
-                    a.substeps_per_frame, a.stable_step_exists ? "" : "; no step is stable");
-      r.auto_steps.push_back(buf);
-      if (progress)
-        std::fprintf(progress, "auto step for %s: %s\n", std::string(to_string(kind)).c_str(), buf);
-    }
+}
+
+/// The scene's size, and where the automatic step size would run each integrator, for
+/// comparison with the sweep.
+void describe_scene(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress,
+                    SweepResult& r) {
+  const auto world = build_world(scene, session::tasks_for(scene));
+  r.particles = static_cast<long>(world->particle_count());
+  r.springs = world->spring_count();
+  r.terrains = world->terrains().size();
+  const StabilityEstimate e = estimate_stability(*world, world->state());
+  for (IntegratorKind kind : o.integrators) {
+    const AutoStep a = choose_step(e, kind, 1.0 / 60.0, scene.dt);
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%.4g s (%d substeps per 1/60 s frame%s)", a.chosen_h,
+                  a.substeps_per_frame, a.stable_step_exists ? "" : "; no step is stable");
+    r.auto_steps.push_back(buf);
+    if (progress)
+      std::fprintf(progress, "auto step for %s: %s\n", std::string(to_string(kind)).c_str(), buf);
   }
-  // Every step must divide the sample interval and the duration: check all before running.
+}
+
+/// Every step must divide the sample interval and the duration: checked all before running.
+void check_steps(const SweepOptions& o, const std::vector<double>& steps) {
   steps_per(o.duration, o.sample_dt, "the duration (in samples)");
-  for (double h : r.options.steps) {
+  for (double h : steps) {
     steps_per(o.sample_dt, h, "the sample interval");
     steps_per(o.duration, h, "the duration");
   }
+}
 
-  // The reference: RK4 at h_ref = h_min / factor, checked against RK4 at h_ref / 2.
+/// The reference: RK4 at h_ref = h_min / factor, checked against RK4 at h_ref / 2.
+RunOutput run_reference(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress,
+                        SweepResult& r) {
   r.reference.h = r.options.steps.back() / o.reference_factor;
   if (progress)
     std::fprintf(progress, "reference: rk4, h = %g s ...\n", r.reference.h), std::fflush(progress);
@@ -246,30 +248,50 @@ SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* 
     r.reference.check_rms = half.row.error_rms;
     r.reference.check_final = half.row.error_final;
   }
+  return ref;
+}
 
-  for (IntegratorKind kind : o.integrators) {
-    for (std::size_t i = 0; i < r.options.steps.size(); ++i) {
-      const double h = r.options.steps[i];
-      RunRow row = run_once(scene, kind, h, o, &ref.samples, false).row;
-      for (int rep = 1; rep < o.repeats; ++rep)
-        row.wall = std::min(row.wall, run_once(scene, kind, h, o, nullptr, false).row.wall);
-      row.order_rms = row.order_final = kNaN;
-      // An order compares like with like: both runs stable, or both flagged (explicit Euler on
-      // an undamped spring still converges over a finite horizon); never across a blow-up.
-      if (i > 0 && r.rows.back().stable == row.stable) {
-        const RunRow& prev = r.rows.back();
-        row.order_rms = order(prev.error_rms, row.error_rms, prev.h, h);
-        row.order_final = order(prev.error_final, row.error_final, prev.h, h);
-      }
-      if (progress) {
-        std::fprintf(progress, "  %-16s h = %-10g %s  rms error %-10.3g wall %.3g s\n",
-                     std::string(to_string(kind)).c_str(), h, row.stable ? "stable  " : "UNSTABLE",
-                     row.error_rms, row.wall);
-        std::fflush(progress);
-      }
-      r.rows.push_back(row);
+/// One integrator at every step size (coarse to fine), each row's orders against the one before.
+void sweep_integrator(const SceneSpec& scene, const SweepOptions& o, IntegratorKind kind,
+                      const std::vector<Vec3Array>& reference, std::FILE* progress,
+                      SweepResult& r) {
+  for (std::size_t i = 0; i < r.options.steps.size(); ++i) {
+    const double h = r.options.steps[i];
+    RunRow row = run_once(scene, kind, h, o, &reference, false).row;
+    for (int rep = 1; rep < o.repeats; ++rep)
+      row.wall = std::min(row.wall, run_once(scene, kind, h, o, nullptr, false).row.wall);
+    row.order_rms = row.order_final = kNaN;
+    // An order compares like with like: both runs stable, or both flagged (explicit Euler on
+    // an undamped spring still converges over a finite horizon); never across a blow-up.
+    if (i > 0 && r.rows.back().stable == row.stable) {
+      const RunRow& prev = r.rows.back();
+      row.order_rms = order(prev.error_rms, row.error_rms, prev.h, h);
+      row.order_final = order(prev.error_final, row.error_final, prev.h, h);
     }
+    if (progress) {
+      std::fprintf(progress, "  %-16s h = %-10g %s  rms error %-10.3g wall %.3g s\n",
+                   std::string(to_string(kind)).c_str(), h, row.stable ? "stable  " : "UNSTABLE",
+                   row.error_rms, row.wall);
+      std::fflush(progress);
+    }
+    r.rows.push_back(row);
   }
+}
+
+}  // namespace
+
+SweepResult run_sweep(const SceneSpec& scene, const SweepOptions& o, std::FILE* progress) {
+  check_options(o);
+  SweepResult r;
+  r.options = o;
+  std::sort(r.options.steps.begin(), r.options.steps.end(), std::greater<>());
+  r.scene_name = scene.name;
+  r.load_before = loadavg();
+  describe_scene(scene, o, progress, r);
+  check_steps(o, r.options.steps);
+  const RunOutput ref = run_reference(scene, o, progress, r);
+  for (IntegratorKind kind : o.integrators)
+    sweep_integrator(scene, o, kind, ref.samples, progress, r);
   r.load_after = loadavg();
   return r;
 }
