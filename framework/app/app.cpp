@@ -106,88 +106,137 @@ std::vector<const BodyView*> shown_views(const AppState& s) {
   return views_in(s.runs.front()->simulator()->world());
 }
 
-int run_app(const AppOptions& opt) {
-  // ---- set-up ----
+namespace {
+
+BackendOptions window_options(const AppOptions& opt) {
   BackendOptions bo;
   bo.name = opt.backend;
   bo.width = opt.width;
   bo.height = opt.height;
   bo.title = "Jelly Lab";
   bo.vsync = opt.benchmark == 0 && !opt.smoke_test;
-  BackendResult created = create_backend(bo);
+  return bo;
+}
+
+/// The created backend's window, or null after a message saying why there is none.
+WindowBackend* window_of(const BackendResult& created) {
   if (!created.backend) {
     std::cerr << "jelly-lab: " << created.error
               << "\n(no display? use `jelly-lab --headless SCENE --frames DIR`)\n";
-    return cli::kExitFailure;
+    return nullptr;
   }
   auto* window = dynamic_cast<WindowBackend*>(created.backend.get());
   if (!window) {
     std::cerr
         << "jelly-lab: no window could be opened (" << created.backend->name()
         << " backend); use `jelly-lab --headless SCENE --frames DIR` to render without a display\n";
-    return cli::kExitFailure;
   }
+  return window;
+}
+
+/// The window's frames until it closes: input, stepping, drawing, recording and the frame rate.
+class FrameLoop {
+ public:
+  FrameLoop(const AppOptions& opt, WindowBackend& window, Renderer& renderer, AppState& s,
+            SmokeScript& script)
+      : opt_(opt), window_(window), renderer_(renderer), s_(s), script_(script) {}
+
+  /// The exit code.
+  int run() {
+    while (window_.poll()) frame();
+    finish();
+    return exit_code_;
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+
+  void close() { glfwSetWindowShouldClose(window_.window(), GLFW_TRUE); }
+
+  /// The wall time since the last frame [s], and the smoothed frame rate.
+  double tick() {
+    const auto now = clock::now();
+    const double wall_dt = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    if (frame_number_++ > 0 && wall_dt > 1e-4)
+      fps_ = frame_number_ == 2 ? 1.0 / wall_dt : 0.9 * fps_ + 0.1 / wall_dt;
+    return wall_dt;
+  }
+
+  void frame() {
+    const double wall_dt = tick();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+
+    // ---- input (outside ImGui's windows) ----
+    if (input_.handle(s_)) close();
+
+    // ---- stepping ----
+    if (s_.reset_requested) {
+      rebuild_runs(s_);
+      s_.reset_requested = false;
+    }
+    const int w = window_.width(), h = window_.height();
+    if (advance_runs(s_, opt_, script_, wall_dt, frame_number_)) close();
+    apply_single_step(s_);
+    draw(w, h);
+  }
+
+  /// Drawing, recording, screenshots.
+  void draw(int w, int h) {
+    prepare_view(s_, renderer_, w, h);
+    draw_panels(s_, fps_);
+    ImGui::Render();
+    bench_.start();
+    draw_frame(renderer_, s_.run_pointers(), s_.camera, s_.frame, w, h);
+    record_frame(s_, window_);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (s_.screenshot_requested && !save_screenshot(s_, opt_.screenshot, window_))
+      exit_code_ = cli::kExitFailure;
+    window_.present();
+    if (opt_.benchmark > 0) {
+      bench_.stop();
+      if (static_cast<int>(bench_.count()) >= opt_.benchmark + 3) close();
+    }
+  }
+
+  /// After the last frame: the recording closed, the benchmark and the smoke test's failures.
+  void finish() {
+    if (s_.recording) finish_recording(s_);
+    if (opt_.benchmark > 0) bench_.report(window_, renderer_);
+    if (opt_.smoke_test && script_.failures() > 0) {
+      std::printf("smoke: %d failure(s)\n", script_.failures());
+      exit_code_ = cli::kExitFailure;
+    }
+  }
+
+  const AppOptions& opt_;
+  WindowBackend& window_;
+  Renderer& renderer_;
+  AppState& s_;
+  SmokeScript& script_;
+  clock::time_point last_ = clock::now();
+  double fps_ = 60.0;
+  FrameTimes bench_;
+  ViewInput input_;
+  int exit_code_ = cli::kExitOk;
+  int frame_number_ = 0;
+};
+
+}  // namespace
+
+int run_app(const AppOptions& opt) {
+  const BackendResult created = create_backend(window_options(opt));
+  WindowBackend* window = window_of(created);
+  if (!window) return cli::kExitFailure;
   Renderer renderer(window->gl(), opt.samples);
   init_imgui(*window);
   AppState s;
   if (const int code = init_state(s, opt); code != cli::kExitOk) return code;
   SmokeScript script;
   if (opt.smoke_test) script.begin(s);
-
-  using clock = std::chrono::steady_clock;
-  auto last = clock::now();
-  double fps = 60.0;
-  FrameTimes bench;
-  ViewInput input;
-  int exit_code = cli::kExitOk;
-  int frame_number = 0;
-  const auto close = [&] { glfwSetWindowShouldClose(window->window(), GLFW_TRUE); };
-
-  while (window->poll()) {
-    const auto now = clock::now();
-    const double wall_dt = std::chrono::duration<double>(now - last).count();
-    last = now;
-    if (frame_number++ > 0 && wall_dt > 1e-4)
-      fps = frame_number == 2 ? 1.0 / wall_dt : 0.9 * fps + 0.1 / wall_dt;
-
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-
-    // ---- input (outside ImGui's windows) ----
-    if (input.handle(s)) close();
-
-    // ---- stepping ----
-    if (s.reset_requested) {
-      rebuild_runs(s);
-      s.reset_requested = false;
-    }
-    const int w = window->width(), h = window->height();
-    if (advance_runs(s, opt, script, wall_dt, frame_number)) close();
-    apply_single_step(s);
-
-    // ---- drawing, recording, screenshots ----
-    prepare_view(s, renderer, w, h);
-    draw_panels(s, fps);
-    ImGui::Render();
-    bench.start();
-    draw_frame(renderer, s.run_pointers(), s.camera, s.frame, w, h);
-    record_frame(s, *window);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (s.screenshot_requested && !save_screenshot(s, opt.screenshot, *window))
-      exit_code = cli::kExitFailure;
-    window->present();
-    if (opt.benchmark > 0) {
-      bench.stop();
-      if (static_cast<int>(bench.count()) >= opt.benchmark + 3) close();
-    }
-  }
-  if (s.recording) finish_recording(s);
-  if (opt.benchmark > 0) bench.report(*window, renderer);
-  if (opt.smoke_test && script.failures() > 0) {
-    std::printf("smoke: %d failure(s)\n", script.failures());
-    exit_code = cli::kExitFailure;
-  }
+  const int exit_code = FrameLoop(opt, *window, renderer, s, script).run();
   shutdown_imgui();
   s.runs.clear();  // drawables hold GL objects: free them while the context exists
   return exit_code;

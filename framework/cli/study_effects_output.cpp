@@ -1,6 +1,7 @@
 // Outputs of `jelly study effects`: CSV, a Markdown table, a plot of every measure against the
 // swept value and a plot of each run over time, both drawn by gnuplot (study_files.hpp).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -215,88 +216,119 @@ std::string effects_sweep_dat(const EffectsResult& r, const SweepLayout& l) {
   return dat.str();
 }
 
-/// The gnuplot script of the measures against the swept value (`gp`: its file, `dat`: the data's).
-std::string effects_sweep_plot(const EffectsResult& r, const SweepLayout& l,
-                               const std::string& title, const std::filesystem::path& gp,
-                               const std::filesystem::path& dat, const std::filesystem::path& svg,
-                               const std::filesystem::path& png) {
-  const EffectsOptions& o = r.options;
-  const Measures& m = o.measures;
-  const std::vector<double>& xs = l.xs;
-  const bool numeric = l.numeric, logx = l.logx;
-  const std::size_t per_block = l.per_block, blocks = l.blocks;
-  const std::string dat_name = dat.filename().string();
-  const std::string xlabel = o.key.empty() ? "integrator" : o.key;
-  // The panels of the measures the scene's assignment reports, then the cost.
-  constexpr int kPanels = 9;
-  const std::string panels[kPanels][2] = {{"3", "peak centre-of-mass speed after the impact [m/s]"},
-                                          {"4", "bounce height of the centre of mass [m]"},
-                                          {"5", plot_label("cave_in")},
-                                          {"10", plot_label("sag")},
-                                          {"11", plot_label("swing")},
-                                          {"12", plot_label("sink")},
-                                          {"6", "at rest from [s] (none: never)"},
-                                          {"7", "energy dissipated [% of the start]"},
-                                          {"8", "wall time per simulated second [s]"}};
-  const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
-                               m.sink,   m.rest,   m.energy,  true};
-  std::ostringstream body;
-  body << multiplot_layout(static_cast<int>(std::count(shown, shown + kPanels, true)), title);
-  // Which measure has any finite value (gnuplot refuses a panel without one).
-  const auto measure = [](const EffectsRow& row, int p) {
-    const double v[kPanels] = {row.peak_speed, row.bounce,       row.cave_in,
-                               row.sag,        row.swing,        100.0 * row.sink,
-                               row.rest_time,  row.dissipated(), row.wall_per_sim()};
-    return v[p];
-  };
-  bool cross_titled = false;
-  for (int p = 0; p < kPanels; ++p) {
-    if (!shown[p]) continue;
-    body << "set ylabel '" << panels[p][1] << "' font ',9'\n";
-    body << (p == kPanels - 1 ? "set logscale y\n" : "unset logscale y\n");
-    const bool any = std::any_of(r.rows.begin(), r.rows.end(), [&](const EffectsRow& row) {
-      return std::isfinite(measure(row, p));
+/// The sweep plot's panels: the measures the scene's assignment reports, then the cost. Each is
+/// its data column in effects_sweep_dat's file and its y label.
+constexpr int kPanels = 9;
+using PanelTable = std::array<std::array<std::string, 2>, kPanels>;
+PanelTable sweep_panels() {
+  return {{{"3", "peak centre-of-mass speed after the impact [m/s]"},
+           {"4", "bounce height of the centre of mass [m]"},
+           {"5", plot_label("cave_in")},
+           {"10", plot_label("sag")},
+           {"11", plot_label("swing")},
+           {"12", plot_label("sink")},
+           {"6", "at rest from [s] (none: never)"},
+           {"7", "energy dissipated [% of the start]"},
+           {"8", "wall time per simulated second [s]"}}};
+}
+
+/// Panel p's measure of a row (to find a panel without any finite value: gnuplot refuses it).
+double panel_measure(const EffectsRow& row, int p) {
+  const double v[kPanels] = {row.peak_speed, row.bounce,       row.cave_in,
+                             row.sag,        row.swing,        100.0 * row.sink,
+                             row.rest_time,  row.dissipated(), row.wall_per_sim()};
+  return v[p];
+}
+
+/// One sweep plot's panels written into `body` (the gnuplot commands).
+class SweepPanels {
+ public:
+  SweepPanels(const EffectsResult& r, const SweepLayout& l, const std::filesystem::path& dat,
+              std::ostringstream& body)
+      : r_(r), l_(l), dat_name_(dat.filename().string()), body_(body) {}
+
+  void write(int p, const std::array<std::string, 2>& panel) {
+    body_ << "set ylabel '" << panel[1] << "' font ',9'\n";
+    body_ << (p == kPanels - 1 ? "set logscale y\n" : "unset logscale y\n");
+    const bool any = std::any_of(r_.rows.begin(), r_.rows.end(), [&](const EffectsRow& row) {
+      return std::isfinite(panel_measure(row, p));
     });
     if (!any) {
-      body << "set yrange [0:1]\nset label 1 'no run has this measure' at graph 0.5, graph 0.5 "
-              "center\n"
-           << "plot 1/0 notitle\nunset label 1\nset yrange [*:*]\n";
-      continue;
+      body_ << "set yrange [0:1]\nset label 1 'no run has this measure' at graph 0.5, graph 0.5 "
+               "center\n"
+            << "plot 1/0 notitle\nunset label 1\nset yrange [*:*]\n";
+      return;
     }
-    body << "plot ";
-    for (std::size_t b = 0; b < blocks; ++b) {
-      const std::string name =
-          o.key.empty() ? "runs" : std::string(to_string(r.rows[b * per_block].integrator));
-      const char* colour = kColours[b % (sizeof kColours / sizeof *kColours)];
-      body << (b ? ", \\\n     " : "") << "'" << dat_name << "' index " << b
-           << " using 1:" << panels[p][0] << (numeric ? "" : ":xtic(9)")
-           << " with linespoints pt 7 ps 0.7 lw 1.5 lc rgb '" << colour << "' title '" << name
-           << "' noenhanced";
-      const bool unstable = std::any_of(r.rows.begin() + static_cast<long>(b * per_block),
-                                        r.rows.begin() + static_cast<long>((b + 1) * per_block),
-                                        [](const EffectsRow& row) { return !row.stable; });
-      if (unstable) {
-        body << ", \\\n     '" << dat_name << "' index " << b << " using 1:($2 == 0 ? $"
-             << panels[p][0] << " : 1/0) with points pt 2 ps 1.8 lw 2 lc rgb '" << colour
-             << "' title '" << (cross_titled ? "" : "detector fired") << "'";
-        cross_titled = true;
-      }
-    }
-    cross_titled = false;
-    body << "\n";
+    body_ << "plot ";
+    bool cross_titled = false;
+    for (std::size_t b = 0; b < l_.blocks; ++b) plot_block(panel[0], b, cross_titled);
+    body_ << "\n";
   }
-  body << "unset multiplot\n";
+
+ private:
+  /// Block b's curve of the data column, and crosses where the detector fired (titled once).
+  void plot_block(const std::string& column, std::size_t b, bool& cross_titled) {
+    const EffectsOptions& o = r_.options;
+    const std::size_t per_block = l_.per_block;
+    const std::string name =
+        o.key.empty() ? "runs" : std::string(to_string(r_.rows[b * per_block].integrator));
+    const char* colour = kColours[b % (sizeof kColours / sizeof *kColours)];
+    body_ << (b ? ", \\\n     " : "") << "'" << dat_name_ << "' index " << b
+          << " using 1:" << column << (l_.numeric ? "" : ":xtic(9)")
+          << " with linespoints pt 7 ps 0.7 lw 1.5 lc rgb '" << colour << "' title '" << name
+          << "' noenhanced";
+    const bool unstable = std::any_of(r_.rows.begin() + static_cast<long>(b * per_block),
+                                      r_.rows.begin() + static_cast<long>((b + 1) * per_block),
+                                      [](const EffectsRow& row) { return !row.stable; });
+    if (unstable) {
+      body_ << ", \\\n     '" << dat_name_ << "' index " << b << " using 1:($2 == 0 ? $" << column
+            << " : 1/0) with points pt 2 ps 1.8 lw 2 lc rgb '" << colour << "' title '"
+            << (cross_titled ? "" : "detector fired") << "'";
+      cross_titled = true;
+    }
+  }
+
+  const EffectsResult& r_;
+  const SweepLayout& l_;
+  const std::string dat_name_;
+  std::ostringstream& body_;
+};
+
+/// The sweep plot's settings: axes, ranges, grid.
+std::string sweep_plot_header(const EffectsResult& r, const SweepLayout& l,
+                              const std::filesystem::path& gp) {
+  const std::vector<double>& xs = l.xs;
+  const bool numeric = l.numeric;
+  const std::string xlabel = r.options.key.empty() ? "integrator" : r.options.key;
   std::ostringstream header;
   header << "# Written by `jelly study effects`; run: gnuplot " << gp.filename().string()
          << " (in this folder). Crosses: the stability detector fired in that run.\n"
          << "set datafile missing 'nan'\nset grid\nset key top left font ',9'\nset xlabel '"
          << xlabel << "' noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
          << "set xrange [" << (numeric ? num(*std::min_element(xs.begin(), xs.end())) : "0.5")
-         << ":" << (numeric ? num(*std::max_element(xs.begin(), xs.end())) : num(per_block + 0.5))
+         << ":" << (numeric ? num(*std::max_element(xs.begin(), xs.end())) : num(l.per_block + 0.5))
          << "]\n"
-         << (logx ? "set logscale x\n" : "") << "set pointsize 1.0\n";
-  return plot_script(header.str(), svg.filename().string(), png.filename().string(), body.str(),
-                     1500, 800);
+         << (l.logx ? "set logscale x\n" : "") << "set pointsize 1.0\n";
+  return header.str();
+}
+
+/// The gnuplot script of the measures against the swept value (`gp`: its file, `dat`: the data's).
+std::string effects_sweep_plot(const EffectsResult& r, const SweepLayout& l,
+                               const std::string& title, const std::filesystem::path& gp,
+                               const std::filesystem::path& dat, const std::filesystem::path& svg,
+                               const std::filesystem::path& png) {
+  const Measures& m = r.options.measures;
+  const PanelTable panels = sweep_panels();
+  const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
+                               m.sink,   m.rest,   m.energy,  true};
+  std::ostringstream body;
+  body << multiplot_layout(static_cast<int>(std::count(shown, shown + kPanels, true)), title);
+  SweepPanels writer(r, l, dat, body);
+  for (int p = 0; p < kPanels; ++p)
+    if (shown[p]) writer.write(p, panels[static_cast<std::size_t>(p)]);
+  body << "unset multiplot\n";
+  return plot_script(sweep_plot_header(r, l, gp), svg.filename().string(), png.filename().string(),
+                     body.str(), 1500, 800);
 }
 
 /// Each run over time (gnuplot's data file).

@@ -87,66 +87,122 @@ int usage() {
   return 2;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  jelly::grade::Registry registry;
-  jelly::grade::register_assignment_cases(registry);
-
+/// The command line's choices.
+struct Options {
   std::string request_path;
   int result_fd = 1;
   bool prepare = false, sandbox = true, list = false;
+};
+
+/// Reads argv into `o`; false on an argument the runner does not know.
+bool parse_args(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--list")
-      list = true;
+      o.list = true;
     else if (a == "--request" && i + 1 < argc)
-      request_path = argv[++i];
+      o.request_path = argv[++i];
     else if (a == "--result-fd" && i + 1 < argc)
-      result_fd = std::atoi(argv[++i]);
+      o.result_fd = std::atoi(argv[++i]);
     else if (a == "--prepare")
-      prepare = true;
+      o.prepare = true;
     else if (a == "--no-sandbox")
-      sandbox = false;
+      o.sandbox = false;
     else
-      return usage();
+      return false;
   }
-  if (list) {
-    for (const auto& g : registry.generators())
-      std::printf("%s\t%s\n", g.name.c_str(), g.description.c_str());
-    return 0;
+  return true;
+}
+
+int list_generators(const jelly::grade::Registry& registry) {
+  for (const auto& g : registry.generators())
+    std::printf("%s\t%s\n", g.name.c_str(), g.description.c_str());
+  return 0;
+}
+
+/// stdin becomes /dev/null (NUL), so student code cannot read the request.
+void detach_stdin() {
+#ifdef _WIN32
+  if (!std::freopen("NUL", "rb", stdin)) std::fclose(stdin);
+#else
+  const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (null_fd >= 0) {
+    dup2(null_fd, 0);
+    close(null_fd);
   }
-  if (request_path.empty()) return usage();
+#endif
+}
+
+/// Reads the request from `path` ("-": stdin), then detaches stdin; false after a message.
+bool read_request(const std::string& path, Json& request) {
 #ifdef _WIN32
   // The request is JSON bytes: no CR/LF translation, no end at a ^Z.
   _setmode(_fileno(stdin), _O_BINARY);
 #endif
-  Json request;
-  {
-    std::ifstream file;
-    if (request_path != "-") file.open(request_path);
-    std::istream& in = request_path == "-" ? std::cin : file;
-    if (!in) {
-      std::fprintf(stderr, "runner: cannot read request %s\n", request_path.c_str());
-      return 2;
-    }
-    try {
-      request = Json::parse(in);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", request_path.c_str(),
-                   e.what());
-      return 2;
-    }
-#ifdef _WIN32
-    if (!std::freopen("NUL", "rb", stdin)) std::fclose(stdin);
-#else
-    const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
-    if (null_fd >= 0) {
-      dup2(null_fd, 0);
-      close(null_fd);
-    }
-#endif
+  std::ifstream file;
+  if (path != "-") file.open(path);
+  std::istream& in = path == "-" ? std::cin : file;
+  if (!in) {
+    std::fprintf(stderr, "runner: cannot read request %s\n", path.c_str());
+    return false;
   }
+  try {
+    request = Json::parse(in);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "runner: request %s is not valid JSON: %s\n", path.c_str(), e.what());
+    return false;
+  }
+  detach_stdin();
+  return true;
+}
+
+/// --prepare: the case's input, or why it could not be built.
+Json prepare_input(const jelly::grade::GeneratorDef& def, const jelly::TaskTable& tasks,
+                   const jelly::grade::Params& params) {
+  Json result = Json::object();
+  Json prepared = Json::object();
+  try {
+    if (def.prepare) def.prepare(tasks, params, prepared);
+    result["input"] = std::move(prepared);
+  } catch (const std::exception& e) {
+    result["error"] = std::string("preparing the input failed: ") + e.what();
+  }
+  return result;
+}
+
+/// Runs the case (in the sandbox unless `sandbox` is false) into `result`; false when the
+/// sandbox could not go up.
+bool run_case(const jelly::grade::GeneratorDef& def, const jelly::TaskTable& tasks,
+              const jelly::grade::Params& params, const Json& input, const Options& o,
+              Json& result) {
+#if JELLY_HAVE_SECCOMP
+  if (o.sandbox && !jelly::grade::install_sandbox(o.result_fd)) return false;
+#else
+  (void)o;  // no sandbox off Linux: the self-check runs the student's own code
+#endif
+  jelly::grade::Outputs out;
+  try {
+    def.run(tasks, params, input, out);
+    result["outputs"] = out.json();
+  } catch (const std::exception& e) {
+    result["error"] = std::string("an exception was thrown: ") + e.what();
+  } catch (...) {
+    result["error"] = "an exception of unknown type was thrown";
+  }
+  return true;
+}
+
+/// Writes the result as one JSON line to `fd`: exit code 0, or 4 when it cannot.
+int write_result(int fd, const Json& result) {
+  std::cout.flush();
+  std::fflush(nullptr);
+  // A message of student code (an exception's what()) may hold any bytes: never a crash here.
+  if (!write_all(fd, result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n")) return 4;
+  return 0;
+}
+
+/// The request's case, prepared or run, and its result written: the runner's exit code.
+int answer_request(const jelly::grade::Registry& registry, Json& request, const Options& o) {
   const std::string case_id = request.value("case", std::string("?"));
   const std::string generator = request.value("generator", std::string());
   const jelly::grade::GeneratorDef* def = registry.find(generator);
@@ -161,34 +217,23 @@ int main(int argc, char** argv) {
   const jelly::TaskTable tasks = jelly::grade::assignment_task_table();
 
   Json result = Json::object();
-  if (prepare) {
-    Json prepared = Json::object();
-    try {
-      if (def->prepare) def->prepare(tasks, params, prepared);
-      result["input"] = std::move(prepared);
-    } catch (const std::exception& e) {
-      result["error"] = std::string("preparing the input failed: ") + e.what();
-    }
-  } else {
-#if JELLY_HAVE_SECCOMP
-    if (sandbox && !jelly::grade::install_sandbox(result_fd)) return 3;
-#else
-    (void)sandbox;  // no sandbox off Linux: the self-check runs the student's own code
-#endif
-    jelly::grade::Outputs out;
-    try {
-      def->run(tasks, params, input, out);
-      result["outputs"] = out.json();
-    } catch (const std::exception& e) {
-      result["error"] = std::string("an exception was thrown: ") + e.what();
-    } catch (...) {
-      result["error"] = "an exception of unknown type was thrown";
-    }
-  }
-  std::cout.flush();
-  std::fflush(nullptr);
-  // A message of student code (an exception's what()) may hold any bytes: never a crash here.
-  if (!write_all(result_fd, result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n"))
-    return 4;
-  return 0;
+  if (o.prepare)
+    result = prepare_input(*def, tasks, params);
+  else if (!run_case(*def, tasks, params, input, o, result))
+    return 3;
+  return write_result(o.result_fd, result);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  jelly::grade::Registry registry;
+  jelly::grade::register_assignment_cases(registry);
+  Options o;
+  if (!parse_args(argc, argv, o)) return usage();
+  if (o.list) return list_generators(registry);
+  if (o.request_path.empty()) return usage();
+  Json request;
+  if (!read_request(o.request_path, request)) return 2;
+  return answer_request(registry, request, o);
 }

@@ -279,94 +279,121 @@ void ClothPhysics::acceleration(const State& s, Vec3Array& a) {
   }
 }
 
+/// What one apply_collisions pass's steps share.
+struct ClothPhysics::CollisionPass {
+  const ClothTasks& tasks;  // looked up once, not per pair
+  const Eigen::VectorXd& mass;
+  const Eigen::VectorXd& inv_mass;
+  EffectCounters& effects;
+  const ClothCollisionSettings& c;
+  bool friction;  // a friction impulse follows every applied impulse
+};
+
 void ClothPhysics::apply_collisions(State& s) {
   if (spheres_.empty()) return;  // an effect the scene does not name costs nothing
   World& w = world();
-  const ClothTasks& tasks = cloth_tasks(w.tasks());  // looked up once, not per pair
-  const Eigen::VectorXd& mass = w.masses();
-  const Eigen::VectorXd& inv_mass = w.inverse_masses();
-  EffectCounters& effects = counters(w);
+  const ClothTasks& tasks = cloth_tasks(w.tasks());
   const ClothCollisionSettings& c = collisions_;
   const bool friction = c.friction > 0.0 && tasks.friction_impulse != nullptr;
-  const std::size_t count = spheres_.size();
+  const CollisionPass pass{tasks, w.masses(), w.inverse_masses(), counters(w), c, friction};
   // 1. Every sphere–sphere pair i < j in scene order (decisions 1, 2).
-  if (tasks.collide_spheres && count > 1) {
-    const ImpulseSettings settings{c.sphere_restitution, c.tolerance};
-    for (std::size_t i = 0; i < count; ++i)
-      for (std::size_t j = i + 1; j < count; ++j) {
-        const bool ki = spheres_[i].particle < 0, kj = spheres_[j].particle < 0;
-        if (ki && kj) continue;  // two kinematic spheres pass through each other
-        ++effects.sphere_pair_tests;
-        SphereBody a = sphere_body(s, i), b = sphere_body(s, j);
-        // Work of a kinematic sphere: the kinetic-energy change of the dynamic one (decision 11).
-        const int dynamic = ki ? spheres_[j].particle : (kj ? spheres_[i].particle : -1);
-        const double before = dynamic >= 0 ? kinetic(mass[dynamic], s.v.col(dynamic)) : 0.0;
-        const Impulse imp = tasks.collide_spheres(a, b, settings);
-        if (imp.applied) {
-          ++effects.impulses;
-          if (friction) {
-            ++effects.friction_impulses;
-            tasks.friction_impulse(imp, c.friction, a.inverse_mass, b.inverse_mass, a.velocity,
-                                   b.velocity);
-          }
-        }
-        store_sphere_velocity(s, i, a.velocity);
-        store_sphere_velocity(s, j, b.velocity);
-        if (dynamic >= 0) kinematic_work_ += kinetic(mass[dynamic], s.v.col(dynamic)) - before;
-      }
-  }
+  if (tasks.collide_spheres && spheres_.size() > 1) collide_sphere_pairs(s, pass);
   // 2. For each sphere in scene order, every cloth particle in index order (then push-out).
-  const bool push_out = c.push_out > 0.0;
-  if (!tasks.collide_particle_sphere && !push_out) return;
-  const ImpulseSettings settings{c.cloth_restitution, c.tolerance};
-  for (std::size_t k = 0; k < count; ++k) {
-    const bool kinematic = spheres_[k].particle < 0;
-    SphereBody sphere = sphere_body(s, k);
-    // Broad phase: a pair can collide (φ < ε) or be pushed out (φ < 0) only when |x − c| < r + ε.
-    // Pairs farther by more than a relative 1e-9 (far beyond any rounding of φ) are not offered to
-    // the task: for a correct task that changes no bit, and it spares most of the calls.
-    const double reach = sphere.radius + std::max(c.tolerance, 0.0);
-    const double reach2 = reach * reach * (1.0 + 1e-9);
-    const Vec3 centre = sphere.center;
-    for (Eigen::Index i = 0; i < cloth_particles_; ++i) {
-      const double d0 = s.x(0, i) - centre[0], d1 = s.x(1, i) - centre[1],
-                   d2 = s.x(2, i) - centre[2];
-      if (!(d0 * d0 + d1 * d1 + d2 * d2 < reach2)) continue;
-      if (tasks.collide_particle_sphere) {
-        ++effects.particle_sphere_tests;
-        PointBody p{s.x.col(i), s.v.col(i), inv_mass[i]};
-        const double before = kinematic ? kinetic(mass[i], p.velocity) : 0.0;
-        const Impulse imp = tasks.collide_particle_sphere(p, sphere, settings);
-        if (imp.applied) {
-          ++effects.impulses;
-          if (friction) {
-            ++effects.friction_impulses;
-            tasks.friction_impulse(imp, c.friction, p.inverse_mass, sphere.inverse_mass, p.velocity,
-                                   sphere.velocity);
-          }
-        }
-        s.v.col(i) = p.velocity;
-        if (kinematic) {
-          kinematic_work_ += kinetic(mass[i], p.velocity) - before;
-          sphere.velocity = spheres_[k].velocity;  // prescribed: no impulse changes it
-        } else {
-          s.v.col(spheres_[k].particle) = sphere.velocity;
+  if (!tasks.collide_particle_sphere && !(c.push_out > 0.0)) return;
+  for (std::size_t k = 0; k < spheres_.size(); ++k) collide_cloth_with_sphere(s, k, pass);
+}
+
+void ClothPhysics::collide_sphere_pairs(State& s, const CollisionPass& pass) {
+  const ClothTasks& tasks = pass.tasks;
+  const Eigen::VectorXd& mass = pass.mass;
+  EffectCounters& effects = pass.effects;
+  const ClothCollisionSettings& c = pass.c;
+  const std::size_t count = spheres_.size();
+  const ImpulseSettings settings{c.sphere_restitution, c.tolerance};
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = i + 1; j < count; ++j) {
+      const bool ki = spheres_[i].particle < 0, kj = spheres_[j].particle < 0;
+      if (ki && kj) continue;  // two kinematic spheres pass through each other
+      ++effects.sphere_pair_tests;
+      SphereBody a = sphere_body(s, i), b = sphere_body(s, j);
+      // Work of a kinematic sphere: the kinetic-energy change of the dynamic one (decision 11).
+      const int dynamic = ki ? spheres_[j].particle : (kj ? spheres_[i].particle : -1);
+      const double before = dynamic >= 0 ? kinetic(mass[dynamic], s.v.col(dynamic)) : 0.0;
+      const Impulse imp = tasks.collide_spheres(a, b, settings);
+      if (imp.applied) {
+        ++effects.impulses;
+        if (pass.friction) {
+          ++effects.friction_impulses;
+          tasks.friction_impulse(imp, c.friction, a.inverse_mass, b.inverse_mass, a.velocity,
+                                 b.velocity);
         }
       }
-      // Push-out (decision 7): every examined pair with w > 0 and φ < 0; pins and spheres never
-      // move. φ and N are the framework's.
-      if (push_out && inv_mass[i] > 0.0) {
-        const Vec3 x = s.x.col(i);
-        const Vec3 d = x - sphere.center;
-        const double distance = d.norm();
-        if (distance < 1e-12 * sphere.radius) continue;  // at the centre: no normal
-        const double phi = distance - sphere.radius;
-        if (phi < 0.0) {
-          s.x.col(i) = x - (c.push_out * phi) * (d / distance);
-          ++effects.push_outs;
-        }
-      }
+      store_sphere_velocity(s, i, a.velocity);
+      store_sphere_velocity(s, j, b.velocity);
+      if (dynamic >= 0) kinematic_work_ += kinetic(mass[dynamic], s.v.col(dynamic)) - before;
     }
+}
+
+void ClothPhysics::collide_cloth_with_sphere(State& s, std::size_t k, const CollisionPass& pass) {
+  const ClothCollisionSettings& c = pass.c;
+  const bool push_out = c.push_out > 0.0;
+  const ImpulseSettings settings{c.cloth_restitution, c.tolerance};
+  SphereBody sphere = sphere_body(s, k);
+  // Broad phase: a pair can collide (φ < ε) or be pushed out (φ < 0) only when |x − c| < r + ε.
+  // Pairs farther by more than a relative 1e-9 (far beyond any rounding of φ) are not offered to
+  // the task: for a correct task that changes no bit, and it spares most of the calls.
+  const double reach = sphere.radius + std::max(c.tolerance, 0.0);
+  const double reach2 = reach * reach * (1.0 + 1e-9);
+  const Vec3 centre = sphere.center;
+  for (Eigen::Index i = 0; i < cloth_particles_; ++i) {
+    const double d0 = s.x(0, i) - centre[0], d1 = s.x(1, i) - centre[1], d2 = s.x(2, i) - centre[2];
+    if (!(d0 * d0 + d1 * d1 + d2 * d2 < reach2)) continue;
+    if (pass.tasks.collide_particle_sphere)
+      collide_particle_sphere(s, i, k, sphere, settings, pass);
+    // Push-out (decision 7): every examined pair with w > 0 and φ < 0; pins and spheres never
+    // move. φ and N are the framework's.
+    if (push_out && pass.inv_mass[i] > 0.0) push_out_particle(s, i, sphere, pass);
+  }
+}
+
+void ClothPhysics::collide_particle_sphere(State& s, Eigen::Index i, std::size_t k,
+                                           SphereBody& sphere, const ImpulseSettings& settings,
+                                           const CollisionPass& pass) {
+  const ClothTasks& tasks = pass.tasks;
+  const Eigen::VectorXd& mass = pass.mass;
+  EffectCounters& effects = pass.effects;
+  const bool kinematic = spheres_[k].particle < 0;
+  ++effects.particle_sphere_tests;
+  PointBody p{s.x.col(i), s.v.col(i), pass.inv_mass[i]};
+  const double before = kinematic ? kinetic(mass[i], p.velocity) : 0.0;
+  const Impulse imp = tasks.collide_particle_sphere(p, sphere, settings);
+  if (imp.applied) {
+    ++effects.impulses;
+    if (pass.friction) {
+      ++effects.friction_impulses;
+      tasks.friction_impulse(imp, pass.c.friction, p.inverse_mass, sphere.inverse_mass, p.velocity,
+                             sphere.velocity);
+    }
+  }
+  s.v.col(i) = p.velocity;
+  if (kinematic) {
+    kinematic_work_ += kinetic(mass[i], p.velocity) - before;
+    sphere.velocity = spheres_[k].velocity;  // prescribed: no impulse changes it
+  } else {
+    s.v.col(spheres_[k].particle) = sphere.velocity;
+  }
+}
+
+void ClothPhysics::push_out_particle(State& s, Eigen::Index i, const SphereBody& sphere,
+                                     const CollisionPass& pass) {
+  const Vec3 x = s.x.col(i);
+  const Vec3 d = x - sphere.center;
+  const double distance = d.norm();
+  if (distance < 1e-12 * sphere.radius) return;  // at the centre: no normal
+  const double phi = distance - sphere.radius;
+  if (phi < 0.0) {
+    s.x.col(i) = x - (pass.c.push_out * phi) * (d / distance);
+    ++pass.effects.push_outs;
   }
 }
 

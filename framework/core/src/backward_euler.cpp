@@ -74,15 +74,26 @@ void BackwardEulerSolver::build_pattern(JacobianSystem& system) {
 void BackwardEulerSolver::step(JacobianSystem& system, State& s, double h) {
   if (!built_ || jac_.dfdx_diag.size() != static_cast<std::size_t>(s.size())) build_pattern(system);
   const Eigen::Index n = s.size();
-  const Eigen::VectorXd& m = system.masses();
+  evaluate_forces(system, s);
+  fill_matrix(system.masses(), n, h);
+  fill_rhs(n, h);
+  pin_fixed(system, n);
+  solve(n);
+  advance(s, h);
+}
 
+void BackwardEulerSolver::evaluate_forces(JacobianSystem& system, const State& s) {
   // f_n (gravity, springs, dampers, contact) and its Jacobians at the current state.
+  const Eigen::Index n = s.size();
+  const Eigen::VectorXd& m = system.masses();
   system.acceleration(s, accel_);
   force_.resize(3, n);
   for (Eigen::Index i = 0; i < n; ++i) force_.col(i) = m[i] * accel_.col(i);
   system.force_jacobians(s, jac_);
   jac_.multiply_dfdx(s.v, dfdx_v_);
+}
 
+void BackwardEulerSolver::fill_matrix(const Eigen::VectorXd& m, Eigen::Index n, double h) {
   // A = M − h ∂f/∂v − h² ∂f/∂x, filled into the fixed pattern.
   double* values = A_.valuePtr();
   std::fill(values, values + A_.nonZeros(), 0.0);
@@ -106,36 +117,43 @@ void BackwardEulerSolver::step(JacobianSystem& system, State& s, double h) {
       }
     }
   }
+}
 
+void BackwardEulerSolver::fill_rhs(Eigen::Index n, double h) {
   // b = h (f_n + h ∂f/∂x v_n)
   for (Eigen::Index i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) b_[3 * i + d] = h * (force_(d, i) + h * dfdx_v_(d, i));
+}
 
+void BackwardEulerSolver::pin_fixed(JacobianSystem& system, Eigen::Index n) {
   // Fixed particles (pinned particles, w = 0) keep Δv = 0: their rows and columns become
   // the identity's and their right-hand side zero, so the free particles see them as walls.
   bool any_fixed = false;
   for (Eigen::Index i = 0; i < n && !any_fixed; ++i) any_fixed = system.is_fixed(i);
-  if (any_fixed) {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (!system.is_fixed(i)) continue;
-      for (int r = 0; r < 3; ++r) {
-        double* row = values + diag_offset_[static_cast<std::size_t>(3 * i + r)];
-        for (int c = 0; c < 3; ++c) row[c] = r == c ? 1.0 : 0.0;
-        b_[3 * i + r] = 0.0;
-      }
-    }
-    for (std::size_t p = 0; p < jac_.pairs.size(); ++p) {
-      const auto [i, j] = jac_.pairs[p];
-      if (!system.is_fixed(i) && !system.is_fixed(j)) continue;
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) {
-          values[off_ij_[3 * p + r] + c] = 0.0;
-          values[off_ji_[3 * p + r] + c] = 0.0;
-        }
+  if (!any_fixed) return;
+  double* values = A_.valuePtr();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!system.is_fixed(i)) continue;
+    for (int r = 0; r < 3; ++r) {
+      double* row = values + diag_offset_[static_cast<std::size_t>(3 * i + r)];
+      for (int c = 0; c < 3; ++c) row[c] = r == c ? 1.0 : 0.0;
+      b_[3 * i + r] = 0.0;
     }
   }
+  for (std::size_t p = 0; p < jac_.pairs.size(); ++p) {
+    const auto [i, j] = jac_.pairs[p];
+    if (!system.is_fixed(i) && !system.is_fixed(j)) continue;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        values[off_ij_[3 * p + r] + c] = 0.0;
+        values[off_ji_[3 * p + r] + c] = 0.0;
+      }
+  }
+}
 
+void BackwardEulerSolver::solve(Eigen::Index n) {
   // Jacobi-preconditioned conjugate gradient from Δv = 0.
+  const double* values = A_.valuePtr();
   for (Eigen::Index k = 0; k < 3 * n; ++k) {
     const double diag = values[diag_offset_[static_cast<std::size_t>(k)] + k % 3];
     inv_diag_[k] = diag != 0.0 ? 1.0 / diag : 1.0;
@@ -170,8 +188,11 @@ void BackwardEulerSolver::step(JacobianSystem& system, State& s, double h) {
   last_residual_ = residual;
   total_iterations_ += it;
   if (it >= options_.max_iterations) ++capped_steps_;
+}
 
+void BackwardEulerSolver::advance(State& s, double h) const {
   // v ← v + Δv, x ← x + h v
+  const Eigen::Index n = s.size();
   for (Eigen::Index i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) s.v(d, i) += dv_[3 * i + d];
   s.x += h * s.v;

@@ -1,6 +1,7 @@
 // Parameter values as text: what `--set` and `jelly params` read and write ("5000", "-5,11,0",
 // "x,y,z; x,y,z"), parsed by a declaration's kind, and the shortest text of a double.
 #include <charconv>
+#include <optional>
 #include <string>
 
 #include "jelly/number_text.hpp"
@@ -135,91 +136,111 @@ std::string expected_text(const Decl& d) {
   return "a value";
 }
 
-std::variant<Value, std::string> parse_text(const Decl& d, std::string_view raw) {
-  const std::string_view t = trim(raw);
-  const std::string bad = "must be " + expected_text(d) + ", got " + in_quotes(raw);
-  switch (d.kind) {
-    case ValueKind::Real: {
+namespace {
+
+// The list kinds: the value, or nothing when an item is not one.
+std::optional<Value> vec3_list(std::string_view t) {
+  std::vector<Vec3> out;
+  if (!t.empty())
+    for (std::string_view item : split(t, ';')) {
+      auto v = parse_vec3(item);
+      if (!v) return std::nullopt;
+      out.push_back(*v);
+    }
+  return Value{std::move(out)};
+}
+
+std::optional<Value> name_list(std::string_view t) {
+  std::vector<std::string> out;
+  const std::string_view inner = strip_brackets(t);
+  if (!inner.empty())
+    for (std::string_view item : split(inner, ',')) {
+      if (item.size() >= 2 && item.front() == '"' && item.back() == '"')
+        item = item.substr(1, item.size() - 2);
+      if (item.empty()) return std::nullopt;
+      out.emplace_back(item);
+    }
+  return Value{std::move(out)};
+}
+
+std::optional<Value> schedule(std::string_view t) {
+  std::vector<ScheduleEntry> out;
+  if (!t.empty())
+    for (std::string_view item : split(t, ';')) {
+      const std::size_t colon = item.find(':');
+      if (colon == std::string_view::npos) return std::nullopt;
+      const auto time = parse_double(item.substr(0, colon));
+      const auto velocity = parse_vec3(item.substr(colon + 1));
+      if (!time || !velocity) return std::nullopt;
+      out.push_back(ScheduleEntry{*time, *velocity});
+    }
+  return Value{std::move(out)};
+}
+
+std::optional<Value> index_pairs(std::string_view t) {
+  std::vector<IndexPair> out;
+  if (!t.empty())
+    for (std::string_view item : split(t, ';')) {
+      const auto ab = split(strip_brackets(item), ',');
+      if (ab.size() != 2) return std::nullopt;
+      const auto a = parse_integer(ab[0]);
+      const auto b = parse_integer(ab[1]);
+      if (!a || !b) return std::nullopt;
+      out.push_back({*a, *b});
+    }
+  return Value{std::move(out)};
+}
+
+std::optional<Value> real_list(std::string_view t) {
+  std::vector<double> out;
+  const std::string_view inner = strip_brackets(t);
+  if (!inner.empty())
+    for (std::string_view item : split(inner, ',')) {
+      auto v = parse_double(item);
+      if (!v) return std::nullopt;
+      out.push_back(*v);
+    }
+  return Value{std::move(out)};
+}
+
+/// A value of every kind but text from its trimmed text, or nothing when it is not one.
+std::optional<Value> parse_trimmed(ValueKind kind, std::string_view t) {
+  switch (kind) {
+    case ValueKind::Real:
       if (auto v = parse_double(t)) return Value{*v};
-      return bad;
-    }
-    case ValueKind::Integer: {
+      return std::nullopt;
+    case ValueKind::Integer:
       if (auto v = parse_integer(t)) return Value{*v};
-      return bad;
-    }
+      return std::nullopt;
     case ValueKind::Bool:
       if (t == "true") return Value{true};
       if (t == "false") return Value{false};
-      return bad;
-    case ValueKind::Vector3: {
+      return std::nullopt;
+    case ValueKind::Vector3:
       if (auto v = parse_vec3(t)) return Value{*v};
-      return bad;
-    }
+      return std::nullopt;
     case ValueKind::Choice: return Value{std::string(t)};
-    case ValueKind::Text:
-      if (!valid_utf8(raw)) return std::string("must be valid UTF-8 text");
-      return Value{std::string(raw)};
-    case ValueKind::Vec3List: {
-      std::vector<Vec3> out;
-      if (!t.empty())
-        for (std::string_view item : split(t, ';')) {
-          auto v = parse_vec3(item);
-          if (!v) return bad;
-          out.push_back(*v);
-        }
-      return Value{std::move(out)};
-    }
-    case ValueKind::NameList: {
-      std::vector<std::string> out;
-      const std::string_view inner = strip_brackets(t);
-      if (!inner.empty())
-        for (std::string_view item : split(inner, ',')) {
-          if (item.size() >= 2 && item.front() == '"' && item.back() == '"')
-            item = item.substr(1, item.size() - 2);
-          if (item.empty()) return bad;
-          out.emplace_back(item);
-        }
-      return Value{std::move(out)};
-    }
-    case ValueKind::Schedule: {
-      std::vector<ScheduleEntry> out;
-      if (!t.empty())
-        for (std::string_view item : split(t, ';')) {
-          const std::size_t colon = item.find(':');
-          if (colon == std::string_view::npos) return bad;
-          const auto time = parse_double(item.substr(0, colon));
-          const auto velocity = parse_vec3(item.substr(colon + 1));
-          if (!time || !velocity) return bad;
-          out.push_back(ScheduleEntry{*time, *velocity});
-        }
-      return Value{std::move(out)};
-    }
+    case ValueKind::Text: return std::nullopt;  // parse_text keeps text untrimmed
+    case ValueKind::Vec3List: return vec3_list(t);
+    case ValueKind::NameList: return name_list(t);
+    case ValueKind::Schedule: return schedule(t);
     case ValueKind::GridList:
-    case ValueKind::IndexPairList: {
-      std::vector<IndexPair> out;
-      if (!t.empty())
-        for (std::string_view item : split(t, ';')) {
-          const auto ab = split(strip_brackets(item), ',');
-          if (ab.size() != 2) return bad;
-          const auto a = parse_integer(ab[0]);
-          const auto b = parse_integer(ab[1]);
-          if (!a || !b) return bad;
-          out.push_back({*a, *b});
-        }
-      return Value{std::move(out)};
-    }
-    case ValueKind::RealList: {
-      std::vector<double> out;
-      const std::string_view inner = strip_brackets(t);
-      if (!inner.empty())
-        for (std::string_view item : split(inner, ',')) {
-          auto v = parse_double(item);
-          if (!v) return bad;
-          out.push_back(*v);
-        }
-      return Value{std::move(out)};
-    }
+    case ValueKind::IndexPairList: return index_pairs(t);
+    case ValueKind::RealList: return real_list(t);
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::variant<Value, std::string> parse_text(const Decl& d, std::string_view raw) {
+  const std::string_view t = trim(raw);
+  const std::string bad = "must be " + expected_text(d) + ", got " + in_quotes(raw);
+  if (d.kind == ValueKind::Text) {
+    if (!valid_utf8(raw)) return std::string("must be valid UTF-8 text");
+    return Value{std::string(raw)};
+  }
+  if (auto v = parse_trimmed(d.kind, t)) return std::move(*v);
   return bad;
 }
 

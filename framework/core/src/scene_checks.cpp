@@ -38,6 +38,81 @@ std::optional<std::string> check_finite(const Vec3& v, std::string_view where) {
          format_double(v.y()) + ',' + format_double(v.z());
 }
 
+// check_value's kinds, each against its declaration d.
+std::optional<std::string> check_vector3(const Decl& d, const Value& v) {
+  const Vec3& p = std::get<Vec3>(v);
+  if (auto e = check_finite(p, "")) return e;
+  if (d.nonzero && !(p.norm() > 0.0))
+    return "must have non-zero length, got " + format_text(d.kind, v);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_choice(const Decl& d, const std::string& s) {
+  for (std::string_view c : d.choices)
+    if (c == s) return std::nullopt;
+  std::vector<std::string> options(d.choices.begin(), d.choices.end());
+  std::string msg = "must be " + expected_text(d) + ", got " + in_quotes(s);
+  const std::string near = closest(s, options);
+  if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
+  return msg;
+}
+
+std::optional<std::string> check_points(const std::vector<Vec3>& list) {
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (auto e = check_finite(list[i], "point " + std::to_string(i) + ": ")) return e;
+  return std::nullopt;
+}
+
+std::optional<std::string> check_index_pairs(const std::vector<IndexPair>& list) {
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const IndexPair& p = list[i];
+    if (p[0] < 0 || p[1] < 0)
+      return "spring " + std::to_string(i) + ": indices must be ≥ 0, got " + std::to_string(p[0]) +
+             ',' + std::to_string(p[1]);
+    if (p[0] == p[1])
+      return "spring " + std::to_string(i) + ": must join two different particles, got " +
+             std::to_string(p[0]) + ',' + std::to_string(p[1]);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> check_numbers(const Decl& d, const std::vector<double>& list) {
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (auto e = check_number(d, list[i], "a number"))
+      return "element " + std::to_string(i) + ": " + *e;
+  return std::nullopt;
+}
+
+std::optional<std::string> check_names(const Decl& d, const std::vector<std::string>& list) {
+  std::vector<std::string> options(d.choices.begin(), d.choices.end());
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (std::find(options.begin(), options.end(), list[i]) != options.end()) {
+      if (std::find(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i), list[i]) !=
+          list.begin() + static_cast<std::ptrdiff_t>(i))
+        return "element " + std::to_string(i) + ": " + in_quotes(list[i]) + " is listed twice";
+      continue;
+    }
+    std::string msg = "element " + std::to_string(i) + ": must be one of ";
+    for (std::size_t k = 0; k < options.size(); ++k) msg += (k ? ", " : "") + options[k];
+    msg += ", got " + in_quotes(list[i]);
+    const std::string near = closest(list[i], options);
+    if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
+    return msg;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> check_schedule(const std::vector<ScheduleEntry>& list) {
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!std::isfinite(list[i].time))
+      return "entry " + std::to_string(i) + ": time must be a finite number, got " +
+             format_double(list[i].time);
+    if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": velocity "))
+      return e;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> check_value(const Decl& d, const Value& v) {
@@ -47,80 +122,14 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
       return check_number(d, static_cast<double>(std::get<long long>(v)), "an integer");
     case ValueKind::Bool:
     case ValueKind::Text: return std::nullopt;
-    case ValueKind::Vector3: {
-      const Vec3& p = std::get<Vec3>(v);
-      if (auto e = check_finite(p, "")) return e;
-      if (d.nonzero && !(p.norm() > 0.0))
-        return "must have non-zero length, got " + format_text(d.kind, v);
-      return std::nullopt;
-    }
-    case ValueKind::Choice: {
-      const std::string& s = std::get<std::string>(v);
-      for (std::string_view c : d.choices)
-        if (c == s) return std::nullopt;
-      std::vector<std::string> options(d.choices.begin(), d.choices.end());
-      std::string msg = "must be " + expected_text(d) + ", got " + in_quotes(s);
-      const std::string near = closest(s, options);
-      if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
-      return msg;
-    }
-    case ValueKind::Vec3List: {
-      const auto& list = std::get<std::vector<Vec3>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i)
-        if (auto e = check_finite(list[i], "point " + std::to_string(i) + ": ")) return e;
-      return std::nullopt;
-    }
-    case ValueKind::IndexPairList: {
-      const auto& list = std::get<std::vector<IndexPair>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        const IndexPair& p = list[i];
-        if (p[0] < 0 || p[1] < 0)
-          return "spring " + std::to_string(i) + ": indices must be ≥ 0, got " +
-                 std::to_string(p[0]) + ',' + std::to_string(p[1]);
-        if (p[0] == p[1])
-          return "spring " + std::to_string(i) + ": must join two different particles, got " +
-                 std::to_string(p[0]) + ',' + std::to_string(p[1]);
-      }
-      return std::nullopt;
-    }
-    case ValueKind::RealList: {
-      const auto& list = std::get<std::vector<double>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i)
-        if (auto e = check_number(d, list[i], "a number"))
-          return "element " + std::to_string(i) + ": " + *e;
-      return std::nullopt;
-    }
-    case ValueKind::NameList: {
-      const auto& list = std::get<std::vector<std::string>>(v);
-      std::vector<std::string> options(d.choices.begin(), d.choices.end());
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        if (std::find(options.begin(), options.end(), list[i]) != options.end()) {
-          if (std::find(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i), list[i]) !=
-              list.begin() + static_cast<std::ptrdiff_t>(i))
-            return "element " + std::to_string(i) + ": " + in_quotes(list[i]) + " is listed twice";
-          continue;
-        }
-        std::string msg = "element " + std::to_string(i) + ": must be one of ";
-        for (std::size_t k = 0; k < options.size(); ++k) msg += (k ? ", " : "") + options[k];
-        msg += ", got " + in_quotes(list[i]);
-        const std::string near = closest(list[i], options);
-        if (!near.empty()) msg += " (did you mean \"" + near + "\"?)";
-        return msg;
-      }
-      return std::nullopt;
-    }
+    case ValueKind::Vector3: return check_vector3(d, v);
+    case ValueKind::Choice: return check_choice(d, std::get<std::string>(v));
+    case ValueKind::Vec3List: return check_points(std::get<std::vector<Vec3>>(v));
+    case ValueKind::IndexPairList: return check_index_pairs(std::get<std::vector<IndexPair>>(v));
+    case ValueKind::RealList: return check_numbers(d, std::get<std::vector<double>>(v));
+    case ValueKind::NameList: return check_names(d, std::get<std::vector<std::string>>(v));
     case ValueKind::GridList: return std::nullopt;  // against the grid: check_pin_points
-    case ValueKind::Schedule: {
-      const auto& list = std::get<std::vector<ScheduleEntry>>(v);
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        if (!std::isfinite(list[i].time))
-          return "entry " + std::to_string(i) + ": time must be a finite number, got " +
-                 format_double(list[i].time);
-        if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": velocity "))
-          return e;
-      }
-      return std::nullopt;
-    }
+    case ValueKind::Schedule: return check_schedule(std::get<std::vector<ScheduleEntry>>(v));
   }
   return std::nullopt;
 }

@@ -586,83 +586,113 @@ class Loader {
     const auto type = string_key(t, "type", label);
     auto name = string_key(t, "name", label);
     if (errors_.size() != errors_before) return;
+    if (type && !known_terrain_type(t, label, *type)) return;
+    std::optional<Terrain> terrain = preset ? preset_terrain(t, label, *preset, type)
+                                            : default_terrain_of(label, entry_pos, type, name);
+    if (!terrain) return;
+    if (name && !rename_terrain(t, label, *name, *terrain)) return;
+    Terrain* added = add_terrain(t, entry_pos, std::move(*terrain));
+    if (!added) return;
+    const std::string prefix = "terrain." + added->name;
+    if (!read_hole(t, prefix, *added)) return;
+    const std::string type_name(terrain_type_name(*added));
+    apply_table(t, prefix, "for a " + type_name + " terrain", terrain_keys(prefix, *added),
+                {"preset", "name", "type"});
+  }
 
+  // read_terrain's steps; each returns false (or nothing) after an error.
+  bool known_terrain_type(const toml::table& t, const std::string& label, const std::string& type) {
     const Decl& type_decl = *find_decl("terrain.*.type");
-    if (type && !check_value(type_decl, Value{*type}).has_value()) {
-      // fine: a known type
-    } else if (type) {
-      error(label + ".type", pos_of(*t.get("type")), *check_value(type_decl, Value{*type}));
-      return;
-    }
+    if (!check_value(type_decl, Value{type}).has_value()) return true;  // a known type
+    error(label + ".type", pos_of(*t.get("type")), *check_value(type_decl, Value{type}));
+    return false;
+  }
 
-    Terrain terrain;
-    if (preset) {
-      auto p = terrain_preset(*preset);
-      if (!p) {
-        std::vector<std::string> names;
-        for (std::string_view n : terrain_preset_names()) names.emplace_back(n);
-        unknown_key(label + ".preset", *preset, pos_of(*t.get("preset")), names, "", "preset");
-        return;
-      }
-      terrain = std::move(*p);
-      if (type && *type != terrain_type_name(terrain)) {
-        error(label + ".type", pos_of(*t.get("type")),
-              "preset " + in_quotes(*preset) + " is a " + std::string(terrain_type_name(terrain)) +
-                  ", got type " + in_quotes(*type) + " (leave type out when using a preset)");
-        return;
-      }
-    } else {
-      if (!type) {
-        error(label, entry_pos,
-              "a terrain needs either preset = \"<name>\" or type = \"plane\", "
-              "\"bowl\" or \"sphere\" (with a name)");
-        return;
-      }
-      if (!name) {
-        error(label, entry_pos, "a terrain needs a name (used in keys: terrain.<name>.<key>)");
-        return;
-      }
-      terrain = default_terrain(*name, *type);
+  std::optional<Terrain> preset_terrain(const toml::table& t, const std::string& label,
+                                        const std::string& preset,
+                                        const std::optional<std::string>& type) {
+    auto p = terrain_preset(preset);
+    if (!p) {
+      std::vector<std::string> names;
+      for (std::string_view n : terrain_preset_names()) names.emplace_back(n);
+      unknown_key(label + ".preset", preset, pos_of(*t.get("preset")), names, "", "preset");
+      return std::nullopt;
     }
-    if (name) {
-      if (auto msg = check_terrain_name(*name)) {
-        error(label + ".name", pos_of(*t.get("name")), *msg);
-        return;
-      }
-      terrain.name = *name;
+    if (type && *type != terrain_type_name(*p)) {
+      error(label + ".type", pos_of(*t.get("type")),
+            "preset " + in_quotes(preset) + " is a " + std::string(terrain_type_name(*p)) +
+                ", got type " + in_quotes(*type) + " (leave type out when using a preset)");
+      return std::nullopt;
     }
+    return p;
+  }
+
+  std::optional<Terrain> default_terrain_of(const std::string& label, const Pos& entry_pos,
+                                            const std::optional<std::string>& type,
+                                            const std::optional<std::string>& name) {
+    if (!type) {
+      error(label, entry_pos,
+            "a terrain needs either preset = \"<name>\" or type = \"plane\", "
+            "\"bowl\" or \"sphere\" (with a name)");
+      return std::nullopt;
+    }
+    if (!name) {
+      error(label, entry_pos, "a terrain needs a name (used in keys: terrain.<name>.<key>)");
+      return std::nullopt;
+    }
+    return default_terrain(*name, *type);
+  }
+
+  bool rename_terrain(const toml::table& t, const std::string& label, const std::string& name,
+                      Terrain& terrain) {
+    if (auto msg = check_terrain_name(name)) {
+      error(label + ".name", pos_of(*t.get("name")), *msg);
+      return false;
+    }
+    terrain.name = name;
+    return true;
+  }
+
+  /// The terrain added to the scene, or null when another terrain has its name.
+  Terrain* add_terrain(const toml::table& t, const Pos& entry_pos, Terrain terrain) {
     const std::string prefix = "terrain." + terrain.name;
     const Pos name_pos = t.get("name") ? pos_of(*t.get("name")) : entry_pos;
     if (auto msg = check_unique_terrain_name(spec_, terrain.name, spec_.terrains.size())) {
       error(prefix, name_pos, *msg);
-      return;
+      return nullptr;
     }
     where_[prefix] = entry_pos;
     spec_.terrains.push_back(std::move(terrain));
-    Terrain& added = spec_.terrains.back();
+    return &spec_.terrains.back();
+  }
 
-    // A hole is given by both of its keys (a preset may already have one).
-    if (auto* plane = std::get_if<Plane>(&added.shape)) {
-      const toml::node* hc = t.get("hole_center");
-      const toml::node* hr = t.get("hole_radius");
-      if ((hc || hr) && !plane->has_hole) {
-        if (!hc || !hr) {
-          const std::string missing = hc ? "hole_radius" : "hole_center";
-          error(prefix + "." + (hc ? "hole_center" : "hole_radius"), pos_of(hc ? *hc : *hr),
-                "a hole needs both hole_center and hole_radius; " + missing + " is missing");
-          return;
-        }
-        plane->has_hole = true;
+  /// A hole is given by both of its keys (a preset may already have one).
+  bool read_hole(const toml::table& t, const std::string& prefix, Terrain& added) {
+    auto* plane = std::get_if<Plane>(&added.shape);
+    if (!plane) return true;
+    const toml::node* hc = t.get("hole_center");
+    const toml::node* hr = t.get("hole_radius");
+    if ((hc || hr) && !plane->has_hole) {
+      if (!hc || !hr) {
+        const std::string missing = hc ? "hole_radius" : "hole_center";
+        error(prefix + "." + (hc ? "hole_center" : "hole_radius"), pos_of(hc ? *hc : *hr),
+              "a hole needs both hole_center and hole_radius; " + missing + " is missing");
+        return false;
       }
+      plane->has_hole = true;
     }
-    const std::string type_name(terrain_type_name(added));
+    return true;
+  }
+
+  /// The keys a terrain's table may hold.
+  std::vector<std::string> terrain_keys(const std::string& prefix, const Terrain& added) {
     std::vector<std::string> keys = {"preset", "name"};
     for (std::string& k : local_keys(prefix)) keys.push_back(std::move(k));
     if (auto* plane = std::get_if<Plane>(&added.shape); plane && !plane->has_hole) {
       keys.emplace_back("hole_center");
       keys.emplace_back("hole_radius");
     }
-    apply_table(t, prefix, "for a " + type_name + " terrain", keys, {"preset", "name", "type"});
+    return keys;
   }
 
   std::string source_;

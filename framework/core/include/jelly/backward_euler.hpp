@@ -29,6 +29,15 @@ class BackwardEulerSolver {
 
  private:
   void build_pattern(JacobianSystem& system);
+  // The steps of step(), in order: f_n and its Jacobians (with ∂f/∂x v_n), the matrix A in its
+  // pattern, the right-hand side b, the fixed particles' rows (Δv = 0), Δv by preconditioned CG,
+  // then v ← v + Δv, x ← x + h v.
+  void evaluate_forces(JacobianSystem& system, const State& s);
+  void fill_matrix(const Eigen::VectorXd& m, Eigen::Index n, double h);
+  void fill_rhs(Eigen::Index n, double h);
+  void pin_fixed(JacobianSystem& system, Eigen::Index n);
+  void solve(Eigen::Index n);
+  void advance(State& s, double h) const;
 
   Options options_;
   bool built_ = false;

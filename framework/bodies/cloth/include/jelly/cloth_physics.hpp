@@ -95,6 +95,14 @@ class ClothPhysics : public BodyPhysics {
   };
   SphereBody sphere_body(const State& s, std::size_t i) const;
   void store_sphere_velocity(State& s, std::size_t i, const Vec3& velocity);
+  // apply_collisions' steps: sphere pairs, then each sphere against the cloth's particles.
+  struct CollisionPass;
+  void collide_sphere_pairs(State& s, const CollisionPass& pass);
+  void collide_cloth_with_sphere(State& s, std::size_t k, const CollisionPass& pass);
+  void collide_particle_sphere(State& s, Eigen::Index i, std::size_t k, SphereBody& sphere,
+                               const ImpulseSettings& settings, const CollisionPass& pass);
+  void push_out_particle(State& s, Eigen::Index i, const SphereBody& sphere,
+                         const CollisionPass& pass);
 
   std::vector<ClothGrid> cloths_;
   std::vector<SphereSlot> spheres_;
