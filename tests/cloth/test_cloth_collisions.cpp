@@ -42,7 +42,7 @@ TEST(SpherePairs, EqualSpheresHeadOnAtPlusMinusOneLeaveAtMinusPlusPointEight) {
   world->apply_collisions(world->state());
   EXPECT_NEAR(cloth_physics(*world).sphere(0).velocity.x(), -0.8, 1e-15);
   EXPECT_NEAR(cloth_physics(*world).sphere(1).velocity.x(), 0.8, 1e-15);
-  EXPECT_EQ(world->counters().sphere_pair_tests, 1);
+  EXPECT_EQ(cloth_physics(*world).cloth_counters().sphere_pair_tests, 1);
   EXPECT_EQ(world->counters().impulses, 1);
   // Leaving: a second pass does nothing.
   world->apply_collisions(world->state());
@@ -177,7 +177,7 @@ TEST(ClothCollisions, FrictionSlowsButNeverReversesTheSliding) {
     EXPECT_GE(v.x(), 0.0) << "μ = " << mu;
     EXPECT_LT(v.x(), 0.3) << "μ = " << mu;
     EXPECT_NEAR(v.x(), std::max(0.0, 0.3 - mu * 2.0), 1e-15) << "μ = " << mu;
-    EXPECT_EQ(w->counters().friction_impulses, 1);
+    EXPECT_EQ(cloth_physics(*w).cloth_counters().friction_impulses, 1);
   }
 }
 
@@ -215,7 +215,7 @@ TEST(ClothCollisions, PushOutMovesFreeParticlesOutAndNeverAPinOrASphere) {
       EXPECT_EQ(Vec3(w->state().x.col(i)), x0);
     }
   }
-  EXPECT_EQ(w->counters().push_outs, moved);
+  EXPECT_EQ(cloth_physics(*w).cloth_counters().push_outs, moved);
 }
 
 }  // namespace

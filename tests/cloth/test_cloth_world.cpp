@@ -67,7 +67,7 @@ TEST_P(EveryIntegrator, PinsStayBitwiseThroughTheSpheresImpactAndThePushOut) {
   EXPECT_GT(sim.world().counters().impulses, 0);
   // Multi-stage integrators let the cloth sink into the sphere (decision 6): push-out has work.
   if (kind != IntegratorKind::ExplicitEuler && kind != IntegratorKind::SymplecticEuler && !slow) {
-    EXPECT_GT(sim.world().counters().push_outs, 0);
+    EXPECT_GT(cloth_physics(sim.world()).cloth_counters().push_outs, 0);
   }
   for (int p : {0, 12, 24, 600, 624})
     EXPECT_EQ(Vec3(sim.state().x.col(p)), Vec3(start.x.col(p))) << "pin " << p;
@@ -119,7 +119,7 @@ TEST(ClothWorld, MomentumIsConservedToRoundingThroughImpulsesAndSprings) {
     scale += sim.world().masses()[i] * sim.state().v.col(i).norm();
   ASSERT_EQ(sim.run_until(0.4), StepResult::Ok);
   EXPECT_GT(sim.world().counters().impulses, 100);
-  EXPECT_GT(sim.world().counters().friction_impulses, 100);
+  EXPECT_GT(cloth_physics(sim.world()).cloth_counters().friction_impulses, 100);
   EXPECT_LT((momentum(sim.world(), sim.state()) - p0).norm(), 1e-11 * scale);
 }
 
@@ -158,25 +158,27 @@ TEST(ClothWorld, EffectsTheSceneDoesNotNameCostNothing) {
   Simulator sim(std::move(world), Simulator::Options(IntegratorKind::RK4, 1e-4));
   ASSERT_EQ(sim.run_until(0.01), StepResult::Ok);
   const EffectCounters& c = sim.world().counters();
+  const ClothCounters& cc = cloth_physics(sim.world()).cloth_counters();
   EXPECT_EQ(c.acceleration_evaluations, 400);
-  EXPECT_EQ(c.drag_applications, 0);
-  EXPECT_EQ(c.sphere_pair_tests, 0);
-  EXPECT_EQ(c.particle_sphere_tests, 0);
+  EXPECT_EQ(cc.drag_applications, 0);
+  EXPECT_EQ(cc.sphere_pair_tests, 0);
+  EXPECT_EQ(cc.particle_sphere_tests, 0);
   EXPECT_EQ(c.impulses, 0);
-  EXPECT_EQ(c.friction_impulses, 0);
-  EXPECT_EQ(c.push_outs, 0);
+  EXPECT_EQ(cc.friction_impulses, 0);
+  EXPECT_EQ(cc.push_outs, 0);
   EXPECT_EQ(c.collision_passes, 0);
   // With them named: counted.
   Simulator full(cloth_2022(), Simulator::Options(IntegratorKind::RK4, 1e-4));
   ASSERT_EQ(full.run_until(0.01), StepResult::Ok);
   const EffectCounters& d = full.world().counters();
-  EXPECT_EQ(d.drag_applications, 400);
-  EXPECT_EQ(d.sphere_pair_tests, 100 * 6);
+  const ClothCounters& dc = cloth_physics(full.world()).cloth_counters();
+  EXPECT_EQ(dc.drag_applications, 400);
+  EXPECT_EQ(dc.sphere_pair_tests, 100 * 6);
   // The spheres (r = 0.5 at y = 1) are far above the cloth: no particle is within r + ε of one,
   // so no pair reaches the task (the framework's broad phase).
-  EXPECT_EQ(d.particle_sphere_tests, 0);
-  EXPECT_EQ(d.friction_impulses, 0);  // μ = 0: the friction task is never called
-  EXPECT_EQ(d.push_outs, 0);          // β = 0
+  EXPECT_EQ(dc.particle_sphere_tests, 0);
+  EXPECT_EQ(dc.friction_impulses, 0);  // μ = 0: the friction task is never called
+  EXPECT_EQ(dc.push_outs, 0);          // β = 0
   EXPECT_EQ(d.springs_evaluated, 400 * 3502);
 }
 

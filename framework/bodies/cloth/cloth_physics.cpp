@@ -256,7 +256,7 @@ void ClothPhysics::acceleration(const State& s, Vec3Array& a) {
   const double* v = s.v.data();
   const double k = air_drag_;
   const Eigen::Index dragged = k > 0.0 ? cloth_particles_ : 0;
-  if (dragged > 0) ++effects.drag_applications;
+  if (dragged > 0) ++cloth_counters_.drag_applications;
   Vec3 g = Vec3::Zero();
   if (w.gravity()) {
     ++effects.gravity_applications;
@@ -285,6 +285,7 @@ struct ClothPhysics::CollisionPass {
   const Eigen::VectorXd& mass;
   const Eigen::VectorXd& inv_mass;
   EffectCounters& effects;
+  ClothCounters& own;  // the cloth's own effects
   const ClothCollisionSettings& c;
   bool friction;  // a friction impulse follows every applied impulse
 };
@@ -295,7 +296,8 @@ void ClothPhysics::apply_collisions(State& s) {
   const ClothTasks& tasks = cloth_tasks(w.tasks());
   const ClothCollisionSettings& c = collisions_;
   const bool friction = c.friction > 0.0 && tasks.friction_impulse != nullptr;
-  const CollisionPass pass{tasks, w.masses(), w.inverse_masses(), counters(w), c, friction};
+  const CollisionPass pass{tasks, w.masses(), w.inverse_masses(), counters(w), cloth_counters_,
+                           c,     friction};
   // 1. Every sphere–sphere pair i < j in scene order (decisions 1, 2).
   if (tasks.collide_spheres && spheres_.size() > 1) collide_sphere_pairs(s, pass);
   // 2. For each sphere in scene order, every cloth particle in index order (then push-out).
@@ -314,7 +316,7 @@ void ClothPhysics::collide_sphere_pairs(State& s, const CollisionPass& pass) {
     for (std::size_t j = i + 1; j < count; ++j) {
       const bool ki = spheres_[i].particle < 0, kj = spheres_[j].particle < 0;
       if (ki && kj) continue;  // two kinematic spheres pass through each other
-      ++effects.sphere_pair_tests;
+      ++pass.own.sphere_pair_tests;
       SphereBody a = sphere_body(s, i), b = sphere_body(s, j);
       // Work of a kinematic sphere: the kinetic-energy change of the dynamic one (decision 11).
       const int dynamic = ki ? spheres_[j].particle : (kj ? spheres_[i].particle : -1);
@@ -323,7 +325,7 @@ void ClothPhysics::collide_sphere_pairs(State& s, const CollisionPass& pass) {
       if (imp.applied) {
         ++effects.impulses;
         if (pass.friction) {
-          ++effects.friction_impulses;
+          ++pass.own.friction_impulses;
           tasks.friction_impulse(imp, c.friction, a.inverse_mass, b.inverse_mass, a.velocity,
                                  b.velocity);
         }
@@ -363,14 +365,14 @@ void ClothPhysics::collide_particle_sphere(State& s, Eigen::Index i, std::size_t
   const Eigen::VectorXd& mass = pass.mass;
   EffectCounters& effects = pass.effects;
   const bool kinematic = spheres_[k].particle < 0;
-  ++effects.particle_sphere_tests;
+  ++pass.own.particle_sphere_tests;
   PointBody p{s.x.col(i), s.v.col(i), pass.inv_mass[i]};
   const double before = kinematic ? kinetic(mass[i], p.velocity) : 0.0;
   const Impulse imp = tasks.collide_particle_sphere(p, sphere, settings);
   if (imp.applied) {
     ++effects.impulses;
     if (pass.friction) {
-      ++effects.friction_impulses;
+      ++pass.own.friction_impulses;
       tasks.friction_impulse(imp, pass.c.friction, p.inverse_mass, sphere.inverse_mass, p.velocity,
                              sphere.velocity);
     }
@@ -393,7 +395,7 @@ void ClothPhysics::push_out_particle(State& s, Eigen::Index i, const SphereBody&
   const double phi = distance - sphere.radius;
   if (phi < 0.0) {
     s.x.col(i) = x - (pass.c.push_out * phi) * (d / distance);
-    ++pass.effects.push_outs;
+    ++pass.own.push_outs;
   }
 }
 

@@ -109,6 +109,7 @@ void World::reset_counters() {
   counters_.collisions.assign(n, 0);
   counters_.contacts.assign(n, 0);
   counters_.broadphase_skips.assign(n, 0);
+  if (physics_) physics_->reset_counters();
 }
 
 void World::acceleration(const State& s, Vec3Array& a) { physics_->acceleration(s, a); }

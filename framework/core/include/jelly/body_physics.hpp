@@ -48,6 +48,8 @@ class BodyPhysics {
   virtual StabilityMonitor::Config detector_config(StabilityMonitor::Config config) const {
     return config;
   }
+  /// Zeroes the kind's own effect counters, when the World zeroes its EffectCounters.
+  virtual void reset_counters() {}
   /// Why the world may not get a terrain; nullptr when it may.
   virtual const char* refuses_terrain() const { return nullptr; }
   /// Whether this physics was made for `world`.

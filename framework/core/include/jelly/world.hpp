@@ -31,13 +31,9 @@ struct EffectCounters {
   std::vector<std::int64_t> contacts;           ///< per terrain: contact forces applied
   std::vector<std::int64_t>
       broadphase_skips;  ///< per terrain: passes skipped whole by the bounding box
-  // Effects of a kind's own physics (air drag, impulses with spheres); 0 in a scene without them.
-  std::int64_t drag_applications = 0;      ///< evaluations that added air drag
-  std::int64_t sphere_pair_tests = 0;      ///< sphere–sphere pairs examined
-  std::int64_t particle_sphere_tests = 0;  ///< particle–sphere pairs examined
-  std::int64_t impulses = 0;               ///< normal impulses applied (both kinds of pair)
-  std::int64_t friction_impulses = 0;      ///< calls of the friction task
-  std::int64_t push_outs = 0;              ///< particles moved by push-out
+  /// Impulses applied by a kind's own physics (the studies count them with the terrains'
+  /// responses); 0 in a scene without them. A kind counts the rest of its own effects itself.
+  std::int64_t impulses = 0;
 };
 
 /// Energy of a state (contract §8) [J].

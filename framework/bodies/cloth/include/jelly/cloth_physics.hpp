@@ -4,6 +4,7 @@
 // reaches it through cloth_physics(world).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "jelly/body_physics.hpp"
@@ -14,6 +15,16 @@
 namespace jelly {
 
 class World;
+
+/// How often each of the cloth's own effects ran (the World's EffectCounters count the rest, the
+/// impulses included): tests use them to prove that only what a scene calls for is simulated.
+struct ClothCounters {
+  std::int64_t drag_applications = 0;      ///< evaluations that added air drag
+  std::int64_t sphere_pair_tests = 0;      ///< sphere–sphere pairs examined
+  std::int64_t particle_sphere_tests = 0;  ///< particle–sphere pairs examined
+  std::int64_t friction_impulses = 0;      ///< calls of the friction task
+  std::int64_t push_outs = 0;              ///< particles moved by push-out
+};
 
 class ClothPhysics : public BodyPhysics {
  public:
@@ -63,6 +74,8 @@ class ClothPhysics : public BodyPhysics {
   /// impulses (decision 11) [J].
   double kinematic_work() const { return kinematic_work_; }
   const ClothCollisionSettings& cloth_collisions() const { return collisions_; }
+  /// The cloth's own effects since the world's counters were last zeroed.
+  const ClothCounters& cloth_counters() const { return cloth_counters_; }
 
   // ----- the BodyPhysics interface -----
   /// a = g + w·Σf, Σf the springs and the cloth's air drag; exactly 0 for w = 0 (decision 3).
@@ -84,6 +97,7 @@ class ClothPhysics : public BodyPhysics {
   StabilityMonitor::Config detector_config(StabilityMonitor::Config config) const override;
   /// A cloth world has no terrain (cloth contract §6).
   const char* refuses_terrain() const override;
+  void reset_counters() override { cloth_counters_ = ClothCounters{}; }
 
  private:
   struct SphereSlot {
@@ -110,6 +124,7 @@ class ClothPhysics : public BodyPhysics {
   Eigen::Index cloth_particles_ = 0;
   double air_drag_ = 0.0;
   double kinematic_work_ = 0.0;
+  ClothCounters cloth_counters_;
 };
 
 /// The cloth physics of `world`, installed in place of the default on a world that holds nothing
