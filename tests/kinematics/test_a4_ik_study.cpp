@@ -114,8 +114,8 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path
 TEST(A4IkStudy, TheStudyWritesOneRowPerSolveAndOnePerUpdate) {
   const IkStudyInputs in = hw3_ik();
   const std::vector<IkStudyRun> runs = bodies::study_ik(in, tasks(), 1);
-  // 5 steps, 5 epsilons, 2 × 6 solvers, 4 hard cases × 4 variants.
-  ASSERT_EQ(runs.size(), 5u + 5u + 12u + 16u);
+  // 5 steps, 5 epsilons, 2 steps × 6 variants, 4 hard cases × 6 variants.
+  ASSERT_EQ(runs.size(), 5u + 5u + 12u + 24u);
   const std::filesystem::path dir = testing::fresh_test_folder("ik-study");
   const std::string report = bodies::write_ik_study(runs, (dir / "s").string());
   EXPECT_NE(report.find("step=0.1"), std::string::npos);

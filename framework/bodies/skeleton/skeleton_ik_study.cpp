@@ -239,13 +239,11 @@ skeleton::IkSettings settings_of(double step, double epsilon, bool limits) {
   return s;
 }
 
-/// The variants the solver comparison and the hard cases run.
-std::vector<IkStudyVariant> variants(const IkStudyInputs& in, bool all_lambdas) {
+/// The variants the solver comparison and the hard cases run: the course's, damped least squares
+/// for each λ, the transpose and the exact Jacobian.
+std::vector<IkStudyVariant> variants(const IkStudyInputs& in) {
   std::vector<IkStudyVariant> v{{IkStudySolver::MinimumNorm, 0.0, false}};
-  for (double lambda : in.lambdas) {
-    v.push_back({IkStudySolver::Damped, lambda, false});
-    if (!all_lambdas) break;
-  }
+  for (double lambda : in.lambdas) v.push_back({IkStudySolver::Damped, lambda, false});
   v.push_back({IkStudySolver::Transpose, 0.0, false});
   v.push_back({IkStudySolver::MinimumNorm, 0.0, true});
   return v;
@@ -269,7 +267,7 @@ std::vector<IkStudyRun> study_ik(const IkStudyInputs& in, const SkeletonTasks& t
     add(in.problem, course, settings_of(0.1, eps, false), "epsilon",
         text_printf("epsilon=%g", eps));
   for (double step : {0.1, 1.0})
-    for (const IkStudyVariant& v : variants(in, true))
+    for (const IkStudyVariant& v : variants(in))
       add(in.problem, v, settings_of(step, 1e-3, false), "solver",
           text_printf("%s/step=%g", v.name().c_str(), step));
   IkStudyProblem unreachable = in.problem;
@@ -285,7 +283,7 @@ std::vector<IkStudyRun> study_ik(const IkStudyInputs& in, const SkeletonTasks& t
     const Vec3 s = f.start[in.straight_arm.chain.back()], p = f.end[in.straight_arm.chain.front()];
     off_line.target = s + 0.8 * (p - s) + Vec3(0.0, 0.01 * (p - s).norm(), 0.0);
   }
-  for (const IkStudyVariant& v : variants(in, false)) {
+  for (const IkStudyVariant& v : variants(in)) {
     add(unreachable, v, settings_of(0.1, 1e-3, false), "unreachable", "unreachable/" + v.name());
     add(in.straight_arm, v, settings_of(0.1, 1e-3, false), "straight", "straight/" + v.name());
     add(off_line, v, settings_of(0.1, 1e-3, false), "straight-off", "straight-off/" + v.name());

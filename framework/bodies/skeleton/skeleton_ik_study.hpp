@@ -91,7 +91,7 @@ IkStudyInputs read_ik_study_inputs(const std::string& asf, const std::string& am
 
 /// Every run of the study: the steps (minimum norm, ε = 1e-3), the epsilons (step 0.1), the
 /// solvers at step 0.1 and 1, and the hard cases (an unreachable target, a straight arm with the
-/// target on its line and just off it, hw3-ik with limits) for four variants each.
+/// target on its line and just off it, hw3-ik with limits) for the same six variants.
 std::vector<IkStudyRun> study_ik(const IkStudyInputs& in, const SkeletonTasks& tasks, int repeats);
 
 /// Writes PREFIX-runs.csv (one row per run) and PREFIX-trace.csv (one row per run and update
