@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "jelly/body_kind.hpp"
 #include "jelly/portable_math.hpp"
@@ -249,6 +250,31 @@ std::vector<IkStudyVariant> variants(const IkStudyInputs& in) {
   return v;
 }
 
+/// The problem with its target 40 units above the root (far above the head, out of every chain's
+/// reach), as A4's reference test has it.
+IkStudyProblem unreachable_problem(const IkStudyProblem& pr) {
+  IkStudyProblem out = pr;
+  out.target = pr.posture.root_translation + Vec3(0.0, 40.0, 0.0);
+  return out;
+}
+
+/// The chain's first joint (its last bone's start) and its effector at the problem's posture.
+std::pair<Vec3, Vec3> chain_span(const Skeleton& sk, const IkStudyProblem& pr,
+                                 const SkeletonTasks& tasks) {
+  BoneFrames f;
+  tasks.forward_kinematics(sk, pr.posture, f);
+  return {f.start[pr.chain.back()], f.end[pr.chain.front()]};
+}
+
+/// The straight arm with its target on the arm's line at 0.8 of its reach, moved up by 1 % of
+/// the reach when `off_line`.
+Vec3 straight_arm_target(const Skeleton& sk, const IkStudyProblem& pr, const SkeletonTasks& tasks,
+                         bool off_line) {
+  const auto [from, to] = chain_span(sk, pr, tasks);
+  const Vec3 on_line = from + 0.8 * (to - from);
+  return off_line ? on_line + Vec3(0.0, 0.01 * (to - from).norm(), 0.0) : on_line;
+}
+
 }  // namespace
 
 std::vector<IkStudyRun> study_ik(const IkStudyInputs& in, const SkeletonTasks& tasks, int repeats) {
@@ -270,19 +296,9 @@ std::vector<IkStudyRun> study_ik(const IkStudyInputs& in, const SkeletonTasks& t
     for (const IkStudyVariant& v : variants(in))
       add(in.problem, v, settings_of(step, 1e-3, false), "solver",
           text_printf("%s/step=%g", v.name().c_str(), step));
-  IkStudyProblem unreachable = in.problem;
-  {
-    BoneFrames f;
-    tasks.forward_kinematics(in.skeleton, in.problem.posture, f);
-    unreachable.target = f.end[0] + Vec3(0.0, 40.0, 0.0);  // far above the head
-  }
+  const IkStudyProblem unreachable = unreachable_problem(in.problem);
   IkStudyProblem off_line = in.straight_arm;
-  {
-    BoneFrames f;
-    tasks.forward_kinematics(in.skeleton, in.straight_arm.posture, f);
-    const Vec3 s = f.start[in.straight_arm.chain.back()], p = f.end[in.straight_arm.chain.front()];
-    off_line.target = s + 0.8 * (p - s) + Vec3(0.0, 0.01 * (p - s).norm(), 0.0);
-  }
+  off_line.target = straight_arm_target(in.skeleton, in.straight_arm, tasks, true);
   for (const IkStudyVariant& v : variants(in)) {
     add(unreachable, v, settings_of(0.1, 1e-3, false), "unreachable", "unreachable/" + v.name());
     add(in.straight_arm, v, settings_of(0.1, 1e-3, false), "straight", "straight/" + v.name());
@@ -319,10 +335,7 @@ IkStudyInputs read_ik_study_inputs(const std::string& asf, const std::string& am
   in.straight_arm.posture = Posture::zero(in.skeleton.bones.size());
   in.straight_arm.posture.root_translation = in.problem.posture.root_translation;
   in.straight_arm.chain = tasks.ik_chain(in.skeleton, bone("rhumerus"), bone("rfingers"));
-  BoneFrames f;
-  tasks.forward_kinematics(in.skeleton, in.straight_arm.posture, f);
-  const Vec3 from = f.start[in.straight_arm.chain.back()];
-  in.straight_arm.target = from + 0.8 * (f.end[in.straight_arm.chain.front()] - from);
+  in.straight_arm.target = straight_arm_target(in.skeleton, in.straight_arm, tasks, false);
   if (in.problem.chain.empty() || in.straight_arm.chain.empty())
     throw std::runtime_error("the task ik_chain returned an empty chain");
   return in;
