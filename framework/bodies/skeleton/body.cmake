@@ -7,6 +7,11 @@ set(_jelly_skeleton_study "")
 if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/skeleton_study.cpp)
   set(_jelly_skeleton_study skeleton_study.cpp)
 endif()
+# The IK study (docs/ik-studies.md) holds its own IK iteration and variants of A4's tasks: a
+# student release leaves it out too.
+if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/skeleton_ik_study.cpp)
+  list(APPEND _jelly_skeleton_study skeleton_ik_study.cpp)
+endif()
 jelly_body_kind(skeleton ORDER 40 MODULE skeleton_kind
                 SOURCES skeleton.cpp rotation.cpp skeleton_file_text.cpp asf_reader.cpp asf_bone_block.cpp
                         asf_hierarchy.cpp amc_reader.cpp skeleton_kind.cpp skeleton_inputs.cpp skeleton_play.cpp
