@@ -116,7 +116,8 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
         if (!std::isfinite(list[i].time))
           return "entry " + std::to_string(i) + ": time must be a finite number, got " +
                  format_double(list[i].time);
-        if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": velocity "))
+        if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": " +
+                                                        std::string(d.schedule_value) + " "))
           return e;
       }
       return std::nullopt;
