@@ -18,9 +18,11 @@
 # `add_library_slots(t)`, which the build generates for each task library: for the reference it
 # calls every module's add_<module>_slots, for the stubs and a submission it does nothing, so no
 # student-facing file names the reference.
-# The grader (grader/CMakeLists.txt) and the linked-assignment registry (jelly_finish_assignments)
-# read the global property JELLY_ASSIGNMENTS and the per-assignment properties set here. A draft
-# (`draft = true`) is in JELLY_DRAFT_ASSIGNMENTS instead: built, never graded, linked or released.
+# The grader (grader/CMakeLists.txt) reads the global property JELLY_ASSIGNMENTS and the
+# per-assignment properties set here. A draft (`draft = true`) is in JELLY_DRAFT_ASSIGNMENTS
+# instead: built and linked into the programs (so that its author can run its scenes), never
+# graded, platform-checked or released. The linked-assignment registry (_jelly_make_registry)
+# reads JELLY_LINKED_ASSIGNMENTS: both, in the order they were added.
 # The reference and student code never go into one binary.
 #
 # CMake takes only the manifest's top-level keys id, namespace, files, reference_files,
@@ -213,14 +215,16 @@ function(jelly_add_assignment dir)
 
   if(JELLY_MANIFEST_DRAFT)
     # A draft (`draft = true`, docs/new-assignment.md "A draft"): its task libraries are built and
-    # its own tests link them, but the grader, the programs' registry, the platform checks and the
-    # student release leave it out (they read JELLY_ASSIGNMENTS).
+    # its own tests link them and the programs' registry lists it (its author runs its scenes), but
+    # the grader, the platform checks and the student release leave it out (they read
+    # JELLY_ASSIGNMENTS).
     set_property(GLOBAL APPEND PROPERTY JELLY_DRAFT_ASSIGNMENTS ${id})
-    message(STATUS "Jelly Lab: assignment ${id} is a draft: built and its own tests run; not "
-                   "graded, linked into the programs or released")
+    message(STATUS "Jelly Lab: assignment ${id} is a draft: built, linked into the programs and "
+                   "its own tests run; not graded or released")
   else()
     set_property(GLOBAL APPEND PROPERTY JELLY_ASSIGNMENTS ${id})
   endif()
+  set_property(GLOBAL APPEND PROPERTY JELLY_LINKED_ASSIGNMENTS ${id})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_DIR ${dir})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_NAMESPACE ${ns})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_FILES "${files}")
@@ -287,9 +291,11 @@ function(_jelly_default_scene out name dir)
 endfunction()
 
 # The registry: a generated source that lists each assignment's id, its manifest (compiled in) and
-# its task table, linked with the task library JELLY_TASKS chooses.
+# its task table, linked with the task library JELLY_TASKS chooses, in the order the assignments
+# were added. The drafts are in it too (JELLY_LINKED_ASSIGNMENTS), so that an author can
+# `jelly run` a draft's scenes (docs/new-assignment.md, "A draft").
 function(_jelly_make_registry)
-  get_property(ids GLOBAL PROPERTY JELLY_ASSIGNMENTS)
+  get_property(ids GLOBAL PROPERTY JELLY_LINKED_ASSIGNMENTS)
   set(decls "")
   set(entries "")
   set(manifests "")

@@ -495,6 +495,75 @@ TEST_F(SkeletonPlay, ATaskThatReturnsAWrongAnswerIsAnErrorNamingIt) {
       << e;
 }
 
+// ----- inverse kinematics: what the stubs return, bones the skeleton lacks -----
+
+std::string check_with_ik(const std::string& key, const std::string& value);
+
+// A4's stubs (assignments/a4/): each returns nothing useful.
+std::vector<int> stub_chain(const Skeleton&, int, int) { return {}; }
+void stub_jacobian(const Skeleton&, const BoneFrames&, const std::vector<int>&,
+                   skeleton::Matrix3X&) {}
+void stub_least_squares(const skeleton::Matrix3X&, const Vec3&, skeleton::VectorX&) {}
+skeleton::IkResult stub_iterate(const Skeleton&, const std::vector<int>&, const Vec3&,
+                                const skeleton::IkSettings&, const skeleton::IkOps&, Posture&) {
+  return {};
+}
+void stub_clamp(const Skeleton&, const std::vector<int>&, Posture&) {}
+skeleton::IkResult stub_solve(const skeleton::IkSettings&, const skeleton::IkOps&, Posture&) {
+  return {};
+}
+std::vector<int> chain_of_the_hand(const Skeleton&, int, int end) { return {end}; }
+
+TaskTable stub_ik_table() {
+  TaskTable t = test_table();
+  SkeletonTasks& k = skeleton_tasks(t);
+  k.ik_chain = stub_chain;
+  k.ik_jacobian = stub_jacobian;
+  k.least_squares = stub_least_squares;
+  k.ik_iterate = stub_iterate;
+  k.clamp_to_limits = stub_clamp;
+  k.ik_solve = stub_solve;
+  return t;
+}
+
+TEST_F(SkeletonPlay, AnIkSceneWithTheStubsIsAnErrorNamingTheTaskNeverACrash) {
+  if (!fs::exists(kSource / "scenes" / "hw3-ik.toml")) GTEST_SKIP() << "no A4 scenes";
+  std::string e = play_error(course_scene("hw3-ik.toml"), test_table(), summary_path());
+  EXPECT_NE(e.find("needs the task ik_chain"), std::string::npos) << e;
+  TaskTable t = stub_ik_table();
+  e = play_error(course_scene("hw3-ik.toml"), t, summary_path());
+  EXPECT_NE(e.find("task ik_chain, output frame 0, chain 0 (lowerback -> rfingers): returned an "
+                   "empty chain"),
+            std::string::npos)
+      << e;
+  // A chain given, the stubs' ik_solve leaves the error unmeasured (∞) and the posture alone.
+  skeleton_tasks(t).ik_chain = chain_of_the_hand;
+  kind().play(course_scene("hw3-ik.toml"), t, {summary_path(), 1});
+  std::ifstream in(summary_path());
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first,
+            "# frame 0 chain 0 lowerback -> rfingers: target (-0.0692501, 3.85358, -1.63441), "
+            "updates 0, stable false, error inf");
+}
+
+TEST_F(SkeletonPlay, AnIkChainsBonesAndFrameAreCheckedAgainstTheFiles) {
+  if (!fs::exists(kSource / "scenes" / "hw3-ik.toml")) GTEST_SKIP() << "no A4 scenes";
+  std::string e = check_with_ik("chain.0.end", "rfinger");
+  EXPECT_NE(e.find("chain.0.end: no bone \"rfinger\" in "), std::string::npos) << e;
+  EXPECT_NE(e.find("(did you mean \"rfingers\"?)"), std::string::npos) << e;
+  EXPECT_NE(e.find("its bones: root, lhipjoint, "), std::string::npos) << e;
+  EXPECT_NE(e.find("hw3-ik.toml"), std::string::npos) << e;
+  e = check_with_ik("body.frame", "1");
+  EXPECT_NE(e.find("body.frame: must be a frame of the motion, 0 ≤ frame < 1"), std::string::npos)
+      << e;
+  e = check_with_ik("", "");
+  EXPECT_NE(e.find("chain 0 lowerback -> rfingers (bones 11 -> 29): target (-0.0692501, 3.85358, "
+                   "-1.63441)"),
+            std::string::npos)
+      << e;
+}
+
 // `jelly check`'s report, or its first error, of the scene with `key` set to `value`.
 std::string check_with(const std::string& scene_name, const std::string& key,
                        const std::string& value) {
@@ -508,6 +577,10 @@ std::string check_with(const std::string& scene_name, const std::string& key,
   } catch (const std::runtime_error& e) {
     return std::string("error: ") + e.what();
   }
+}
+
+std::string check_with_ik(const std::string& key, const std::string& value) {
+  return check_with("hw3-ik.toml", key, value);
 }
 
 TEST_F(SkeletonPlay, CheckReportsTheCountsOfTheCourseFiles) {

@@ -125,7 +125,10 @@ TEST(SkeletonScene, AKeyOfAnotherModeIsRefused) {
 }
 
 TEST(SkeletonScene, MisspeltKeysAndTablesItHasNoneOfAreRefused) {
-  expect_refused(with("frames = 450", "frame = 450"), "body.frame", 9, "frames");
+  expect_refused(with("frames = 450", "framez = 450"), "body.framez", 9, "frames");
+  // body.frame is inverse kinematics' start frame: in a warp, a slip for frames.
+  expect_refused(with("frames = 450", "frame = 450"), "body.frame", 0,
+                 "(did you mean \"frames\", a warp's output frames?)");
   expect_refused(kWarp + "\n[gravity]\nacceleration = [0, -9.8, 0]\n", "gravity", 0,
                  "a skeleton scene has no [gravity]");
   expect_refused(kWarp + "\n[[terrain]]\nname = \"floor\"\ntype = \"plane\"\n", "terrain", 0,
@@ -170,6 +173,119 @@ TEST(SkeletonScene, ParamsListTheKeysAndSetChangesThem) {
   const auto err = set_parameter(s, "body.frames", "1");
   ASSERT_TRUE(err.has_value());
   EXPECT_NE(err->text().find("must be ≥ 2"), std::string::npos) << err->text();
+}
+
+// ----- inverse kinematics (body.mode = "ik", [[chain]]) -----
+
+// A valid ik scene with one chain; line 13 is `start`, line 15 `target`.
+const std::string kIk = R"([scene]
+name = "ik"
+
+[body]
+type = "skeleton"
+asf = "skeleton.asf"
+amc = "IK.amc"
+mode = "ik"
+step = 0.2
+limits = true
+
+[[chain]]
+start = "lowerback"
+end = "rfingers"
+target = [-0.0692501, 3.85358, -1.63441]
+)";
+
+std::string ik_with(const std::string& from, const std::string& to) {
+  std::string s = kIk;
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+TEST(SkeletonScene, AnIkSceneReadsItsKeysAndChainsWithTheCoursesDefaults) {
+  const SceneResult r = parse_scene(kIk, "t.toml");
+  ASSERT_TRUE(r) << r.error->text();
+  const SkeletonSceneSpec& k = skeleton_scene(*r.scene);
+  EXPECT_EQ(k.mode, SkeletonMode::Ik);
+  EXPECT_EQ(k.frame, 0);
+  EXPECT_EQ(k.step, 0.2);
+  EXPECT_EQ(k.epsilon, 1e-3);
+  EXPECT_EQ(k.max_iterations, 1000);
+  EXPECT_TRUE(k.limits);
+  EXPECT_TRUE(k.restore);
+  ASSERT_EQ(ik_chain_specs(*r.scene).size(), 1u);
+  const IkChainSpec& c = ik_chain_specs(*r.scene)[0];
+  EXPECT_EQ(c.start, "lowerback");
+  EXPECT_EQ(c.end, "rfingers");
+  ASSERT_TRUE(c.target.has_value());
+  EXPECT_EQ(*c.target, Vec3(-0.0692501, 3.85358, -1.63441));
+  EXPECT_EQ(find_body_kind("skeleton")->scene_variant(*r.scene), "ik");
+}
+
+TEST(SkeletonScene, FourChainsAndASchedule) {
+  const std::string four = kIk +
+                           "\n[[chain]]\nstart = \"lclavicle\"\nend = \"lfingers\"\n"
+                           "target = [0.65, 3.55, -1.95]\n"
+                           "\n[[chain]]\nstart = \"rhipjoint\"\nend = \"rtoes\"\n"
+                           "schedule = [{ time = 0, target = [1, 2, 3] }, "
+                           "{ time = 1.5, target = [4, 5, 6] }]\n";
+  const SceneResult r = parse_scene(four, "t.toml");
+  ASSERT_TRUE(r) << r.error->text();
+  const std::vector<IkChainSpec>& c = ik_chain_specs(*r.scene);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[1].end, "lfingers");
+  EXPECT_FALSE(c[2].target.has_value());
+  ASSERT_EQ(c[2].schedule.size(), 2u);
+  EXPECT_EQ(c[2].schedule[1].time, 1.5);
+  EXPECT_EQ(c[2].schedule[1].velocity, Vec3(4, 5, 6));
+  // Written back and read again: the same scene.
+  const std::string written = to_toml(*r.scene);
+  const SceneResult again = parse_scene(written, "again.toml");
+  ASSERT_TRUE(again) << again.error->text() << "\n" << written;
+  EXPECT_EQ(to_toml(*again.scene), written);
+  EXPECT_NE(written.find("{ time = 1.5, target = [4.0, 5.0, 6.0] },"), std::string::npos)
+      << written;
+}
+
+TEST(SkeletonScene, AnIkScenesBadKeysAndChainsAreRefused) {
+  expect_refused(ik_with("step = 0.2", "step = 0"), "body.step", 9, "> 0");
+  expect_refused(ik_with("step = 0.2", "max_iterations = -1"), "body.max_iterations", 9, "≥ 0");
+  expect_refused(ik_with("step = 0.2", "frame = -2"), "body.frame", 9, "≥ 0");
+  expect_refused(ik_with("limits = true", "limits = 1"), "body.limits", 10, "true or false");
+  expect_refused(ik_with("[[chain]]\nstart = \"lowerback\"\nend = \"rfingers\"\n"
+                         "target = [-0.0692501, 3.85358, -1.63441]\n",
+                         ""),
+                 "chain", 0, "solves at least one chain");
+  expect_refused(ik_with("start = \"lowerback\"\n", ""), "chain.0.start", 0,
+                 "names its start bone");
+  expect_refused(ik_with("target = [-0.0692501, 3.85358, -1.63441]\n", ""), "chain.0.target", 0,
+                 "needs a target");
+  expect_refused(ik_with("target = [-0.0692501, 3.85358, -1.63441]",
+                         "target = [1, 2, 3]\nschedule = [{ time = 0, target = [1, 2, 3] }]"),
+                 "chain.0.target", 15,
+                 "unknown key \"target\" for a chain; expected one of: start, end, schedule");
+  expect_refused(ik_with("target = [-0.0692501, 3.85358, -1.63441]",
+                         "schedule = [{ time = 0, velocity = [1, 2, 3] }]"),
+                 "chain.0.schedule", 15, "unknown key \"velocity\"");
+  expect_refused(ik_with("target = [-0.0692501, 3.85358, -1.63441]",
+                         "schedule = [{ time = 1, target = [1, 2, 3] }, "
+                         "{ time = 1, target = [1, 2, 3] }]"),
+                 "chain.0.schedule", 15, "times must increase strictly");
+  expect_refused(ik_with("target = [-0.0692501, 3.85358, -1.63441]", "schedule = [{ time = 1 }]"),
+                 "chain.0.schedule", 15,
+                 "needs both time (s) and target [x, y, z]; target is missing");
+}
+
+TEST(SkeletonScene, IkKeysAndChainsInAnotherModeAreRefused) {
+  expect_refused(with("frames = 450", "frames = 450\nstep = 0.5"), "body.step", 0,
+                 "is a key of inverse kinematics (body.mode = \"ik\"); this scene's mode is "
+                 "\"warp\"");
+  expect_refused(kWarp + "\n[[chain]]\nstart = \"a\"\nend = \"b\"\ntarget = [0, 0, 0]\n", "chain",
+                 0, "[[chain]] is a chain of inverse kinematics");
+  const std::string cube =
+      "[scene]\nname = \"c\"\n\n[body]\ntype = \"cube\"\n\n[[chain]]\nstart = \"a\"\n";
+  expect_refused(cube, "chain", 0, "[[chain]] belongs to skeleton scenes of inverse kinematics");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "jelly/scene_spec.hpp"
 #include "jelly/skeleton/skeleton_files.hpp"
+#include "param_table.hpp"
 #include "skeleton_play.hpp"
 
 namespace jelly::bodies {
@@ -93,6 +94,42 @@ void check_blend(const SceneSpec& scene, const SkeletonInputs& in) {
   fits("b", k.b, k.amc_b, in.motion_b.frames.size());
 }
 
+/// `name`, a bone the scene's `key` names, is one of the skeleton's: else an error with the
+/// closest name and every name.
+void check_bone(const SceneSpec& scene, const SkeletonInputs& in, const std::string& key,
+                const std::string& name) {
+  if (in.skeleton.find(name)) return;
+  std::vector<std::string> names;
+  std::string all;
+  for (const skeleton::Bone& b : in.skeleton.bones) {
+    names.push_back(b.name);
+    all += (all.empty() ? "" : ", ") + b.name;
+  }
+  const std::string near = params_detail::closest(name, names);
+  scene_error(scene, key,
+              "no bone \"" + name + "\" in " + in.asf_file +
+                  (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
+                  " (bone names are case-sensitive); its bones: " + all);
+}
+
+// Contract §6, §7: body.frame is one of the motion's frames, and every chain's bones are in the
+// skeleton.
+void check_ik(const SceneSpec& scene, const SkeletonInputs& in) {
+  const SkeletonSceneSpec& k = skeleton_scene(scene);
+  if (k.frame >= static_cast<long long>(in.motion.frames.size()))
+    scene_error(scene, "body.frame",
+                "must be a frame of the motion, 0 ≤ frame < " +
+                    std::to_string(in.motion.frames.size()) + " (" +
+                    frames_of(k.amc, in.motion.frames.size()) + ", counted from 0), got " +
+                    std::to_string(k.frame));
+  const std::vector<IkChainSpec>& chains = ik_chain_specs(scene);
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const std::string key = "chain." + std::to_string(i) + ".";
+    check_bone(scene, in, key + "start", chains[i].start);
+    check_bone(scene, in, key + "end", chains[i].end);
+  }
+}
+
 }  // namespace
 
 SkeletonInputs read_skeleton_inputs(const SceneSpec& scene) {
@@ -110,6 +147,7 @@ SkeletonInputs read_skeleton_inputs(const SceneSpec& scene) {
     check_blend(scene, in);
   }
   if (k.mode == SkeletonMode::Warp) check_warp(scene, in);
+  if (k.mode == SkeletonMode::Ik) check_ik(scene, in);
   return in;
 }
 
@@ -120,6 +158,7 @@ int skeleton_output_frames(const SceneSpec& scene, const SkeletonInputs& in) {
     case SkeletonMode::Warp: return k.frames > 0 ? static_cast<int>(k.frames) : n;
     case SkeletonMode::Blend:
       return static_cast<int>(k.a + static_cast<long long>(in.motion_b.frames.size()) - k.b);
+    case SkeletonMode::Ik: return static_cast<int>(ik_solved_frames(scene));
     case SkeletonMode::Playback: break;
   }
   return n;
@@ -146,6 +185,7 @@ std::string check_skeleton_scene(const SceneSpec& scene) {
                : text_printf("  warp: %zu -> %d frames, uniform\n", in.motion.frames.size(), m);
   if (k.mode == SkeletonMode::Blend)
     out += text_printf("  blend: a %lld, b %lld, window %lld: %d frames\n", k.a, k.b, k.window, m);
+  if (k.mode == SkeletonMode::Ik) out += ik_check_lines(scene, in);
   out += text_printf("  %zu notes (skipped sections and keys)%s\n", in.notes.size(),
                      in.notes.empty() ? "" : ":");
   for (const std::string& n : in.notes) out += "    " + n + "\n";

@@ -22,8 +22,6 @@ using skeleton::BoneFrames;
 using skeleton::Motion;
 using skeleton::Posture;
 
-constexpr const char* kSummaryColumns = "frame,bone,name,start_x,start_y,start_z,end_x,end_y,end_z";
-
 /// Throws when `slot` is null: what the scene needs, which task slot, what it computes.
 template <class Slot>
 void require(Slot slot, const char* name, const char* what, const TaskTable& tasks,
@@ -49,11 +47,6 @@ void require_slots(const SceneSpec& scene, const TaskTable& tasks) {
   if (mode == SkeletonMode::Blend)
     require(t.blend_motions, "blend_motions", "the motion blend, kinematics contract §5", tasks,
             scene);
-}
-
-[[noreturn]] void task_error(const char* task, int frame, const std::string& what) {
-  throw std::runtime_error("task " + std::string(task) + ", output frame " + std::to_string(frame) +
-                           ": " + what);
 }
 
 void check_posture(const char* task, int frame, const Posture& p, std::size_t bones) {
@@ -114,8 +107,25 @@ class Postures {
   Posture warped_;
 };
 
-void forward_kinematics(const SkeletonTasks& tasks, const SkeletonInputs& in, const Posture& p,
-                        int frame, BoneFrames& out) {
+std::string what_plays(const SceneSpec& scene, const SkeletonInputs& in, int frames) {
+  const SkeletonSceneSpec& k = skeleton_scene(scene);
+  if (k.mode == SkeletonMode::Warp)
+    return text_printf("a warp of %s, %zu -> %d frames", in.amc_file.c_str(),
+                       in.motion.frames.size(), frames);
+  if (k.mode == SkeletonMode::Blend)
+    return text_printf("a blend of %s into %s", in.amc_file.c_str(), in.amc_b_file.c_str());
+  return "the motion " + in.amc_file;
+}
+
+}  // namespace
+
+void task_error(const char* task, int frame, const std::string& what) {
+  throw std::runtime_error("task " + std::string(task) + ", output frame " + std::to_string(frame) +
+                           ": " + what);
+}
+
+void checked_forward_kinematics(const SkeletonTasks& tasks, const SkeletonInputs& in,
+                                const Posture& p, int frame, BoneFrames& out) {
   tasks.forward_kinematics(in.skeleton, p, out);
   const std::size_t bones = in.skeleton.bones.size();
   if (out.rotation.size() != bones || out.start.size() != bones || out.end.size() != bones)
@@ -126,10 +136,8 @@ void forward_kinematics(const SkeletonTasks& tasks, const SkeletonInputs& in, co
                    std::to_string(bones) + " bones");
 }
 
-/// One row per bone: frame, bone, name, start, end, and (with quaternions) the quaternion of the
-/// bone's local angles, euler_to_quaternion's sign as computed.
-long write_frame(CsvWriter& out, int frame, const SkeletonInputs& in, const Posture& p,
-                 const BoneFrames& f, bool quaternions) {
+long write_skeleton_frame(CsvWriter& out, int frame, const SkeletonInputs& in, const Posture& p,
+                          const BoneFrames& f, bool quaternions) {
   std::vector<std::variant<double, std::string>> cells;
   for (std::size_t b = 0; b < in.skeleton.bones.size(); ++b) {
     cells.assign({static_cast<double>(frame), static_cast<double>(b), in.skeleton.bones[b].name});
@@ -144,37 +152,27 @@ long write_frame(CsvWriter& out, int frame, const SkeletonInputs& in, const Post
   return static_cast<long>(in.skeleton.bones.size());
 }
 
-std::string what_plays(const SceneSpec& scene, const SkeletonInputs& in, int frames) {
-  const SkeletonSceneSpec& k = skeleton_scene(scene);
-  if (k.mode == SkeletonMode::Warp)
-    return text_printf("a warp of %s, %zu -> %d frames", in.amc_file.c_str(),
-                       in.motion.frames.size(), frames);
-  if (k.mode == SkeletonMode::Blend)
-    return text_printf("a blend of %s into %s", in.amc_file.c_str(), in.amc_b_file.c_str());
-  return "the motion " + in.amc_file;
-}
-
-/// The --summary file with its header, or nullptr when none is asked for.
-std::unique_ptr<CsvWriter> open_summary(const std::string& path, bool quaternions) {
+std::unique_ptr<CsvWriter> open_skeleton_summary(const std::string& path,
+                                                 const std::string& header) {
   if (path.empty()) return nullptr;
   try {
-    return std::make_unique<CsvWriter>(
-        path, std::string(kSummaryColumns) + (quaternions ? ",qw,qx,qy,qz" : ""));
+    return std::make_unique<CsvWriter>(path, header);
   } catch (const std::runtime_error& e) {  // an output, not the input: BodyKindModule::play
     throw std::system_error(std::make_error_code(std::errc::io_error), e.what());
   }
 }
 
-}  // namespace
-
 std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
                                 const FramePlayOptions& options) {
+  if (skeleton_scene(scene).mode == SkeletonMode::Ik) return play_ik_scene(scene, tasks, options);
   require_slots(scene, tasks);
   const SkeletonInputs in = read_skeleton_inputs(scene);
   const SkeletonTasks& slots = skeleton_tasks(tasks);
   Postures postures(scene, in, slots);
   const bool quaternions = skeleton_scene(scene).mode != SkeletonMode::Playback;
-  const std::unique_ptr<CsvWriter> summary = open_summary(options.summary_path, quaternions);
+  const std::unique_ptr<CsvWriter> summary =
+      open_skeleton_summary(options.summary_path, std::string(kSkeletonSummaryColumns) +
+                                                      (quaternions ? ",qw,qx,qy,qz" : ""));
   const long every = std::max(1L, options.every);
   // simulation.duration: the frames i with i / fps ≤ duration (all of them by default).
   const double fps = skeleton_scene(scene).fps;
@@ -183,8 +181,9 @@ std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
   BoneFrames frames;
   for (int i = 0; i < postures.count() && static_cast<double>(i) <= scene.duration * fps; ++i) {
     const Posture& p = postures.at(i);
-    forward_kinematics(slots, in, p, i, frames);
-    if (summary && i % every == 0) rows += write_frame(*summary, i, in, p, frames, quaternions);
+    checked_forward_kinematics(slots, in, p, i, frames);
+    if (summary && i % every == 0)
+      rows += write_skeleton_frame(*summary, i, in, p, frames, quaternions);
     ++played;
   }
   std::string report =

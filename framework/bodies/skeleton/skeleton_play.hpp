@@ -4,12 +4,15 @@
 // slots.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "jelly/body_kind.hpp"
+#include "jelly/recorder.hpp"
 #include "jelly/skeleton/skeleton.hpp"
 #include "jelly/skeleton_scene.hpp"
+#include "jelly/skeleton_tasks.hpp"
 
 namespace jelly::bodies {
 
@@ -37,5 +40,44 @@ std::string check_skeleton_scene(const SceneSpec& scene);
 /// `jelly run` of a skeleton scene through `tasks` (BodyKindModule::play).
 std::string play_skeleton_scene(const SceneSpec& scene, const TaskTable& tasks,
                                 const FramePlayOptions& options);
+
+// ----- what a run's parts share (skeleton_play.cpp) -----
+
+/// The `--summary` columns of every mode; a warp and a blend add qw,qx,qy,qz.
+inline constexpr const char* kSkeletonSummaryColumns =
+    "frame,bone,name,start_x,start_y,start_z,end_x,end_y,end_z";
+
+/// Throws "task <task>, output frame <frame>: <what>".
+[[noreturn]] void task_error(const char* task, int frame, const std::string& what);
+
+/// Forward kinematics of `p` through the slot, its sizes checked (task_error otherwise).
+void checked_forward_kinematics(const SkeletonTasks& tasks, const SkeletonInputs& in,
+                                const skeleton::Posture& p, int frame, skeleton::BoneFrames& out);
+
+/// One row per bone: frame, bone, name, start, end, and (with quaternions) the quaternion of the
+/// bone's local angles, euler_to_quaternion's sign as computed. Returns the rows written.
+long write_skeleton_frame(CsvWriter& out, int frame, const SkeletonInputs& in,
+                          const skeleton::Posture& p, const skeleton::BoneFrames& f,
+                          bool quaternions);
+
+/// The --summary file with its header (lines, the last the columns), or nullptr when `path` is
+/// empty. A file that cannot be opened is a std::system_error (an output, not the input).
+std::unique_ptr<CsvWriter> open_skeleton_summary(const std::string& path,
+                                                 const std::string& header);
+
+// ----- inverse kinematics (skeleton_ik_play.cpp) -----
+
+/// The frames an ik scene solves: 1, or with a chain's schedule every i with i / fps ≤
+/// simulation.duration.
+long long ik_solved_frames(const SceneSpec& scene);
+/// `jelly check`'s lines about an ik scene's chains and settings.
+std::string ik_check_lines(const SceneSpec& scene, const SkeletonInputs& in);
+/// The posture after each solved frame of an ik scene (the viewer's output motion); throws
+/// std::runtime_error naming the task that is missing or answered wrongly.
+std::vector<skeleton::Posture> ik_solved_postures(const SceneSpec& scene, const SkeletonInputs& in,
+                                                  const SkeletonTasks& tasks);
+/// `jelly run` of an ik scene (body.mode = "ik").
+std::string play_ik_scene(const SceneSpec& scene, const TaskTable& tasks,
+                          const FramePlayOptions& options);
 
 }  // namespace jelly::bodies

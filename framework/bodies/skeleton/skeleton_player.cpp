@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "jelly/world.hpp"
 #include "skeleton_play.hpp"
@@ -55,6 +56,18 @@ std::string warp_refused(const TimeWarp& w) {
   return "";
 }
 
+/// An ik scene's output: the posture after each solved frame (bodies::ik_solved_postures); on an
+/// error the output is empty and `problem` says why.
+void solve_ik_output(const SceneSpec& scene, const bodies::SkeletonInputs& files,
+                     const SkeletonTasks& tasks, Motion& output, std::string& problem) {
+  try {
+    output.frames = bodies::ik_solved_postures(scene, files, tasks);
+  } catch (const std::runtime_error& e) {
+    problem = e.what();
+    output.frames.clear();
+  }
+}
+
 }  // namespace
 
 SkeletonPlayer::SkeletonPlayer(const SceneSpec& scene, const SkeletonTasks& tasks)
@@ -72,6 +85,7 @@ SkeletonPlayer::SkeletonPlayer(const SceneSpec& scene, const SkeletonTasks& task
   scene_warp_ = warp_;
   blend_ = {static_cast<int>(k.a), static_cast<int>(k.b), static_cast<int>(k.window)};
   compute_output();
+  if (mode_ == SkeletonMode::Ik) solve_ik_output(scene, in_->files, tasks_, output_, problem_);
 }
 
 SkeletonPlayer::~SkeletonPlayer() = default;
@@ -93,6 +107,8 @@ void SkeletonPlayer::compute_output() {
     problem_ = missing_slot("forward_kinematics", "forward kinematics, kinematics contract §4");
   if (mode_ == SkeletonMode::Playback) {
     output_ = input();
+  } else if (mode_ == SkeletonMode::Ik) {
+    return;  // solved once, by the constructor: it has the scene's chains (solve_ik_output)
   } else if (mode_ == SkeletonMode::Blend) {
     if (!tasks_.blend_motions) {
       problem_ += std::string(problem_.empty() ? "" : "; ") +

@@ -99,6 +99,9 @@ struct Decl {
   /// Where the rules of its value kind come from, for their messages (a Schedule's "times must
   /// increase strictly (<cites>)"); "" when nowhere in particular.
   std::string_view cites;
+  /// A Schedule's value key beside `time` in each entry ({ time = t, velocity = [x, y, z] }); its
+  /// unit is the part of `unit` after "s: " ("s: m/s"), none when `unit` is only "s".
+  std::string_view schedule_value = "velocity";
   /// Whether the writer writes the key (nullptr: always when it applies). A key whose value is
   /// derived from others unless given (sphere.<i>.mass: 1000·r³) is written only when given.
   bool (*written)(const SceneSpec&, const Ctx&) = nullptr;

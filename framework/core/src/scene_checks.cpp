@@ -102,12 +102,13 @@ std::optional<std::string> check_names(const Decl& d, const std::vector<std::str
   return std::nullopt;
 }
 
-std::optional<std::string> check_schedule(const std::vector<ScheduleEntry>& list) {
+std::optional<std::string> check_schedule(const Decl& d, const std::vector<ScheduleEntry>& list) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (!std::isfinite(list[i].time))
       return "entry " + std::to_string(i) + ": time must be a finite number, got " +
              format_double(list[i].time);
-    if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": velocity "))
+    if (auto e = check_finite(list[i].velocity, "entry " + std::to_string(i) + ": " +
+                                                    std::string(d.schedule_value) + " "))
       return e;
   }
   return std::nullopt;
@@ -129,7 +130,7 @@ std::optional<std::string> check_value(const Decl& d, const Value& v) {
     case ValueKind::RealList: return check_numbers(d, std::get<std::vector<double>>(v));
     case ValueKind::NameList: return check_names(d, std::get<std::vector<std::string>>(v));
     case ValueKind::GridList: return std::nullopt;  // against the grid: check_pin_points
-    case ValueKind::Schedule: return check_schedule(std::get<std::vector<ScheduleEntry>>(v));
+    case ValueKind::Schedule: return check_schedule(d, std::get<std::vector<ScheduleEntry>>(v));
   }
   return std::nullopt;
 }

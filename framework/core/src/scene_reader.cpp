@@ -68,7 +68,8 @@ std::string toml_expected(const Decl& d) {
     case ValueKind::NameList: return "an array of strings [\"name\", ...], " + expected_text(d);
     case ValueKind::GridList: return "an array of grid coordinates [[i, k], ...]";
     case ValueKind::Schedule:
-      return "an array of { time = t, velocity = [x, y, z] } tables, times in s";
+      return "an array of { time = t, " + std::string(d.schedule_value) +
+             " = [x, y, z] } tables, times in s";
   }
   return "a value";
 }
@@ -233,7 +234,8 @@ class Loader {
     return Value{std::move(out)};
   }
 
-  /// An array of { time = t, velocity = [x, y, z] } tables, times increasing.
+  /// An array of { time = t, <value> = [x, y, z] } tables (Decl::schedule_value), times
+  /// increasing.
   std::optional<Value> convert_schedule(const Decl& d, const std::string& key,
                                         const toml::node& n) {
     const toml::array* a = n.as_array();
@@ -252,15 +254,16 @@ class Loader {
                                               const toml::node& item, std::size_t i,
                                               const std::vector<ScheduleEntry>& before) {
     const std::string at = "entry " + std::to_string(i) + ": ";
+    const std::string name(d.schedule_value);
     const toml::table* e = item.as_table();
     if (!e) return wrong(d, key, item, at);
-    if (!only_time_and_velocity(key, *e, at)) return std::nullopt;
+    if (!only_time_and_value(key, name, *e, at)) return std::nullopt;
     const toml::node* time = e->get("time");
-    const toml::node* velocity = e->get("velocity");
-    if (!time || !velocity) {
+    const toml::node* value = e->get(name);
+    if (!time || !value) {
       error(key, pos_of(item),
-            at + "needs both time (s) and velocity [x, y, z] (m/s); " +
-                (time ? "velocity" : "time") + " is missing");
+            at + "needs both time (s) and " + name + " [x, y, z]" + schedule_unit(d) + "; " +
+                (time ? name : "time") + " is missing");
       return std::nullopt;
     }
     const auto t = number_of(*time);
@@ -268,10 +271,10 @@ class Loader {
       error(key, pos_of(*time), at + "time must be a number (s), got " + describe(*time));
       return std::nullopt;
     }
-    const auto u = vec3_of(*velocity);
+    const auto u = vec3_of(*value);
     if (!u) {
-      error(key, pos_of(*velocity),
-            at + "velocity must be an array of 3 numbers [x, y, z], got " + describe(*velocity));
+      error(key, pos_of(*value),
+            at + name + " must be an array of 3 numbers [x, y, z], got " + describe(*value));
       return std::nullopt;
     }
     if (!before.empty() && !(*t > before.back().time))
@@ -279,15 +282,23 @@ class Loader {
     return ScheduleEntry{*t, *u};
   }
 
-  /// Reports a schedule entry's first key that is neither time nor velocity.
-  bool only_time_and_velocity(const std::string& key, const toml::table& e, const std::string& at) {
+  /// " (m/s)": the unit of a schedule's value, from the row's unit "s: m/s"; "" when none.
+  static std::string schedule_unit(const Decl& d) {
+    const std::size_t colon = d.unit.find(": ");
+    if (colon == std::string_view::npos) return "";
+    return " (" + std::string(d.unit.substr(colon + 2)) + ")";
+  }
+
+  /// Reports a schedule entry's first key that is neither time nor the row's value key.
+  bool only_time_and_value(const std::string& key, const std::string& name, const toml::table& e,
+                           const std::string& at) {
     for (auto&& [k, v] : e) {
-      if (k.str() != "time" && k.str() != "velocity") {
-        const std::string near = closest(k.str(), {"time", "velocity"});
+      if (k.str() != "time" && k.str() != name) {
+        const std::string near = closest(k.str(), {"time", name});
         error(key, pos_of_key(k, v),
               at + "unknown key " + in_quotes(k.str()) +
                   (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
-                  "; expected time and velocity");
+                  "; expected time and " + name);
         return false;
       }
     }

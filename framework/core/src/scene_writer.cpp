@@ -63,7 +63,7 @@ std::string toml_vec3(const Vec3& v) {
   return "[" + toml_double(v.x()) + ", " + toml_double(v.y()) + ", " + toml_double(v.z()) + "]";
 }
 
-std::string toml_value(ValueKind kind, const Value& v) {
+std::string toml_value(const Decl& d, ValueKind kind, const Value& v) {
   switch (kind) {
     case ValueKind::Real: return toml_double(std::get<double>(v));
     case ValueKind::Integer: return std::to_string(std::get<long long>(v));
@@ -92,13 +92,13 @@ std::string toml_value(ValueKind kind, const Value& v) {
       for (std::size_t i = 0; i < list.size(); ++i) s += (i ? ", " : "") + toml_string(list[i]);
       return s + "]";
     }
-    case ValueKind::GridList: return toml_value(ValueKind::IndexPairList, v);
+    case ValueKind::GridList: return toml_value(d, ValueKind::IndexPairList, v);
     case ValueKind::Schedule: {
       const auto& list = std::get<std::vector<ScheduleEntry>>(v);
       std::string s = "[";
       for (const ScheduleEntry& e : list)
-        s +=
-            "\n  { time = " + toml_double(e.time) + ", velocity = " + toml_vec3(e.velocity) + " },";
+        s += "\n  { time = " + toml_double(e.time) + ", " + std::string(d.schedule_value) + " = " +
+             toml_vec3(e.velocity) + " },";
       return s + (list.empty() ? "]" : "\n]");
     }
     case ValueKind::RealList: {
@@ -135,7 +135,7 @@ std::string to_toml(const SceneSpec& scene) {
       out += "\n" + table_header(b);
     }
     out += std::string(key_local(b.key)) + " = " +
-           toml_value(b.decl->kind, b.decl->get(scene, b.ctx)) + "\n";
+           toml_value(*b.decl, b.decl->kind, b.decl->get(scene, b.ctx)) + "\n";
     return false;
   });
   return out;

@@ -1,13 +1,17 @@
 // A skeleton scene's data (body.type = "skeleton", kinematics contract §7): the files it names,
-// its scale and rate, and what it asks for (playback, a time warp or a blend), kept in the scene's
-// body_data (jelly/kind_parts.hpp). docs/skeleton-scenes.md lists the keys.
+// its scale and rate, and what it asks for (playback, a time warp, a blend or inverse kinematics
+// with its chains, [[chain]]), kept in the scene's body_data (jelly/kind_parts.hpp).
+// docs/skeleton-scenes.md lists the keys.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "jelly/scene_spec.hpp"
+#include "jelly/schedule.hpp"
+#include "jelly/skeleton/ik.hpp"
 
 namespace jelly {
 
@@ -15,7 +19,19 @@ namespace jelly {
 inline constexpr BodyKind kSkeletonKind{"skeleton"};
 
 /// What a skeleton scene plays (body.mode).
-enum class SkeletonMode { Playback, Warp, Blend };
+enum class SkeletonMode { Playback, Warp, Blend, Ik };
+
+/// One chain of an inverse-kinematics scene ([[chain]], kinematics contract §6, §11.16): its start
+/// and end bones by name, and its target, fixed or along a schedule.
+struct IkChainSpec {
+  std::string start;           ///< the start bone (its name in the ASF)
+  std::string end;             ///< the end bone, whose end reaches for the target
+  std::optional<Vec3> target;  ///< a fixed target [scene units]; none with a schedule
+  /// A moving target: from entry k's time on, linearly towards entry k + 1's (ScheduleEntry's
+  /// `velocity` holds the target); before the first time the first target, after the last the
+  /// last. Times strictly increasing.
+  std::vector<ScheduleEntry> schedule;
+};
 
 /// What a skeleton scene's [body] says. Paths are as written, relative to the scene file.
 struct SkeletonSceneSpec {
@@ -35,15 +51,38 @@ struct SkeletonSceneSpec {
   long long a = 0;
   long long b = 0;
   long long window = 20;  ///< the course's window
+  // Inverse kinematics (contract §6): the AMC frame (from 0) the posture starts from, and the
+  // solve's settings, the course's by default (IkSettings' defaults). The chains: ik_chain_specs.
+  long long frame = 0;
+  double step = skeleton::IkSettings{}.step;
+  double epsilon = skeleton::IkSettings{}.epsilon;
+  long long max_iterations = skeleton::IkSettings{}.max_iterations;
+  bool limits = skeleton::IkSettings{}.limits;
+  bool restore = skeleton::IkSettings{}.restore;
 };
 
-/// body.mode's text: "playback", "warp" or "blend".
+/// The scene's chains ([[chain]]) in scene order; none until one is added.
+inline std::vector<IkChainSpec>& ik_chain_specs(SceneSpec& scene) {
+  return scene.body_data.get<std::vector<IkChainSpec>>();
+}
+inline const std::vector<IkChainSpec>& ik_chain_specs(const SceneSpec& scene) {
+  return scene.body_data.get_or_default<std::vector<IkChainSpec>>();
+}
+
+/// body.mode's text: "playback", "warp", "blend" or "ik".
 inline std::string_view skeleton_mode_name(SkeletonMode mode) {
-  return mode == SkeletonMode::Warp ? "warp" : mode == SkeletonMode::Blend ? "blend" : "playback";
+  switch (mode) {
+    case SkeletonMode::Warp: return "warp";
+    case SkeletonMode::Blend: return "blend";
+    case SkeletonMode::Ik: return "ik";
+    case SkeletonMode::Playback: break;
+  }
+  return "playback";
 }
 /// The mode body.mode's text names, or nullopt.
 inline std::optional<SkeletonMode> skeleton_mode_from_name(std::string_view name) {
-  for (SkeletonMode m : {SkeletonMode::Playback, SkeletonMode::Warp, SkeletonMode::Blend})
+  for (SkeletonMode m :
+       {SkeletonMode::Playback, SkeletonMode::Warp, SkeletonMode::Blend, SkeletonMode::Ik})
     if (skeleton_mode_name(m) == name) return m;
   return std::nullopt;
 }
