@@ -126,6 +126,7 @@ GradeConfig load_config(const std::string& path) {
   if (j.contains("draft_assignments") && j["draft_assignments"].is_object())
     for (const auto& [id, o] : j["draft_assignments"].items())
       c.draft_assignments.push_back(read_assignment(p, "draft_assignments", id, o));
+  for (AssignmentConfig& a : c.draft_assignments) a.draft = true;
   const auto by_id = [](const AssignmentConfig& x, const AssignmentConfig& y) {
     return x.id < y.id;
   };

@@ -23,6 +23,9 @@ struct AssignmentConfig {
   std::vector<std::string> link_libraries;  ///< its cases, the harness, the core, seccomp
   fs::path reference_runner;                ///< empty in a student release
   fs::path student_runner;                  ///< the self-check's runner (jelly::<id>::tasks)
+  bool draft = false;                       ///< from "draft_assignments": graded only with --draft
+  /// " --draft" for a draft, else "": what a command that names this assignment adds.
+  std::string draft_option() const { return draft ? " --draft" : ""; }
 };
 
 /// The recipe CMake wrote (build/grader/grade-config.json) plus paths derived from it. The
