@@ -124,8 +124,9 @@ class Manifest:
 
     @property
     def draft(self):
-        """An assignment in preparation (`draft = true`): built and its own tests run, but not
-        graded, linked into the programs or released (docs/new-assignment.md, "A draft")."""
+        """An assignment in preparation (`draft = true`): built, its own tests run and its scenes
+        playable, but graded only on request (`--draft`) and never released (docs/new-assignment.md,
+        "A draft")."""
         return self.boolean("draft")
 
     def tasks(self):

@@ -17,6 +17,8 @@
 //                       [--visibility ...] [--timeout S]
 //   jelly-grade hints [--check | --check-digest] [--controls DIR] [--out FILE] [--work DIR]
 // Common: [--config grade-config.json] [--rubric rubric.toml]
+// (grade, mutants, hints, generate-reference) [--draft]: the --assignment is a draft
+//               (`draft = true`), graded only so that its author can try its grader.
 //
 // --runner FILE grades a runner CMake built from the student's tasks (target
 // jelly-grade-student-runner) instead of compiling SUBMISSION_DIR: the self-check on Windows and
@@ -79,6 +81,8 @@ constexpr const char* kUsage =
     "  common options: --config FILE (grade-config.json), --rubric FILE,\n"
     "    --assignment ID (which assignment; inferred from a submission's files, or the build's "
     "only one)\n"
+    "  grade, mutants, hints, generate-reference: --draft (the --assignment is a draft: its "
+    "author tries its grader)\n"
     "  sandbox (grade, batch, prairielearn, mutants): --isolation auto|bwrap|user|none (default "
     "auto),\n"
     "    --compile-memory MIB (default 2048, at least 64), --compile-cpu S (default 120)\n"
@@ -105,6 +109,7 @@ struct Options {
   bool similarity = false;  // batch --similarity: also the similarity report
   double threshold = SimilarityOptions{}.threshold;  // --threshold P (similarity)
   HintsArgs hints;                                   // jelly-grade hints
+  bool draft = false;  // --draft: grade the draft --assignment names (its author's try)
 };
 
 /// A percentage > 0 and ≤ 100.
@@ -126,6 +131,9 @@ void declare(const std::string& command, Command& cmd, Options& o) {
   cmd.add_option("--config", o.config_path)->type_name("FILE");
   cmd.add_option("--rubric", o.rubric_path)->type_name("FILE");
   cmd.add_option("--assignment", o.assignment)->type_name("ID");
+  if (command == "grade" || command == "mutants" || command == "hints" ||
+      command == "generate-reference")
+    cmd.add_flag("--draft", o.draft);
   const bool grades = command == "grade" || command == "batch" || command == "prairielearn" ||
                       command == "mutants" || command == "hints";
   if (grades) {
@@ -291,7 +299,7 @@ int run(const std::string& command, const Options& o, const Command& cmd) {
   select_assignment(
       config,
       command == "merge" && o.assignment.empty() ? batch_assignment(o.parts.front()) : o.assignment,
-      submission);
+      submission, o.draft);
   // Compares source text: no reference data, no sandbox.
   if (command == "similarity") return similarity_command(config, o.positional, o.out, o.threshold);
   // A rubric change reaches this grader at once, Gradescope and the self-check only when remade.

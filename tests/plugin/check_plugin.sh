@@ -11,7 +11,8 @@
 # the new assignment), makes a student release of projectile alone (when the release tool has
 # --assignments) and checks that not one tracked file of the tree changed. Last, the same
 # assignment made a draft (`draft = true`): its task libraries still build, but the grader, the
-# self-check's config and the release refuse it, each saying it is a draft; then the line goes again.
+# self-check's config and the release refuse it, each saying it is a draft (the grader grades it
+# with --draft, its author's try); then the line goes again.
 # The CMAKE_ARGs (the calling build's compiler, JELLY_WERROR, JELLY_DEPS, ...) go to the configure
 # step: with the same flags and ccache (CCACHE_BASEDIR set to the copy) the framework's objects come
 # from the cache.
@@ -220,8 +221,20 @@ cmake --build "$tree/build" --target "jelly_${id}_tasks_solutions" "jelly_${id}_
 status=0
 "$grade" grade "$tree/solutions/$id" --assignment "$id" --out "$work/draft-grade" >"$work/draft-grade.log" 2>&1 ||
   status=$?
-[[ $status == 2 ]] && grep -q -- "--assignment $id: $id is a draft in this build" "$work/draft-grade.log" ||
-  fail "grading the draft: status $status, expected 2 and 'is a draft' ($work/draft-grade.log)"
+[[ $status == 2 ]] && grep -q -- "--assignment $id: $id is a draft in this build" "$work/draft-grade.log" &&
+  grep -q -- "tries its grader with --draft" "$work/draft-grade.log" ||
+  fail "grading the draft: status $status, expected 2, 'is a draft' and --draft ($work/draft-grade.log)"
+# Its author grades it on request: the draft keeps its grader (grade-config.json's
+# draft_assignments), and --draft grades its reference with full marks.
+python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); sys.exit(sys.argv[2] not in c["draft_assignments"])' \
+  "$config" "$id" || fail "grade-config.json does not list $id among the draft_assignments"
+cmake --build "$tree/build" --target jelly-grade >"$work/draft-grader-build.log" 2>&1 ||
+  fail "the draft's grader did not build ($work/draft-grader-build.log)"
+"$grade" grade "$tree/solutions/$id" --assignment "$id" --draft --visibility all --format gradescope \
+  --out "$work/draft-on-request" >"$work/draft-on-request.log" 2>&1 || true
+read -r draft_score draft_max < <(score_of "$work/draft-on-request/results.json")
+[[ $draft_score == 20 && $draft_max == 20 ]] ||
+  fail "the draft's reference graded with --draft scores $draft_score / $draft_max, expected 20 / 20 ($work/draft-on-request.log)"
 status=0
 "$tree/tools/make-student-release" "$work/draft-release" --assignments "$id" --no-verify \
   >"$work/draft-release.log" 2>&1 || status=$?

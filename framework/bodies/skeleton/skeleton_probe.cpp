@@ -1,8 +1,11 @@
 // The smoke tests of the skeleton's TaskTable slots (jelly/task_probe.hpp). Each calls its slot on
 // a root and one bone `a` (direction +y, length 1, channels rx ry rz) made in code, and counts it
 // implemented when the answer differs from what a stub that fills nothing gives (the identity,
-// zeros, nothing). An answer of the wrong size counts as implemented (never read past it).
+// zeros, nothing, an error of ∞). An answer of the wrong size counts as implemented (never read
+// past it). The inverse-kinematics slots get their collaborators (IkOps) made here too.
 #include "skeleton_probe.hpp"
+
+#include <cmath>
 
 #include "jelly/skeleton_tasks.hpp"
 #include "param_table.hpp"
@@ -134,10 +137,105 @@ TaskStatus probe_blend(std::string id, std::string name, const SkeletonTasks& t)
           {}};
 }
 
+// ----- inverse kinematics -----
+
+TaskStatus probe_chain(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.ik_chain) return missing(std::move(id), std::move(name));
+  const std::vector<int> chain = t.ik_chain(probe_skeleton(), 0, 1);
+  return {std::move(id),
+          std::move(name),
+          !chain.empty(),
+          "the chain from the root to bone a has " + std::to_string(chain.size()) + " bones",
+          {}};
+}
+
+// Bone a's frames at rest: R = I, from the origin to (0, 1, 0).
+skeleton::BoneFrames rest_frames() {
+  skeleton::BoneFrames f;
+  f.rotation = {skeleton::Mat3::Identity(), skeleton::Mat3::Identity()};
+  f.start = {Vec3::Zero(), Vec3::Zero()};
+  f.end = {Vec3::Zero(), Vec3(0.0, 1.0, 0.0)};
+  return f;
+}
+
+TaskStatus probe_jacobian(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.ik_jacobian) return missing(std::move(id), std::move(name));
+  skeleton::Matrix3X J;
+  t.ik_jacobian(probe_skeleton(), rest_frames(), {1}, J);
+  const bool stub = J.size() > 0 && J.isZero(0.0);
+  return {std::move(id),
+          std::move(name),
+          !stub,
+          stub ? "J of bone a at rest is zero" : "J of bone a at rest is not zero",
+          {}};
+}
+
+TaskStatus probe_least_squares(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.least_squares) return missing(std::move(id), std::move(name));
+  skeleton::VectorX x;
+  t.least_squares(skeleton::Matrix3X::Identity(3, 3), Vec3(1.0, 2.0, 3.0), x);
+  const bool stub = x.size() > 0 && x.isZero(0.0);
+  return {std::move(id),
+          std::move(name),
+          !stub,
+          stub ? "x = 0 for J = I and e = (1, 2, 3)" : "x ≠ 0 for J = I and e = (1, 2, 3)",
+          {}};
+}
+
+// Collaborators that answer at once: the end effector 1 away from the target, J = I, x = e.
+skeleton::IkOps probe_ops() {
+  skeleton::IkOps ops;
+  ops.end_effector = [](const Posture&) { return Vec3(Vec3::Zero()); };
+  ops.jacobian = [](const Posture&, skeleton::Matrix3X& J) {
+    J = skeleton::Matrix3X::Identity(3, 3);
+  };
+  ops.solve = [](const skeleton::Matrix3X&, const Vec3& e, skeleton::VectorX& x) { x = e; };
+  ops.clamp = [](Posture&) {};
+  ops.iterate = [](Posture&) {
+    skeleton::IkResult r;
+    r.updates = 2;
+    r.error = 0.0;
+    return r;
+  };
+  return ops;
+}
+
+std::string result_text(const skeleton::IkResult& r) {
+  return std::to_string(r.updates) + " updates, error " + format_double(r.error);
+}
+
+TaskStatus probe_iterate(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.ik_iterate) return missing(std::move(id), std::move(name));
+  skeleton::IkSettings settings;
+  settings.max_iterations = 1;
+  Posture p = probe_posture(Vec3::Zero(), Vec3::Zero());
+  const skeleton::IkResult r =
+      t.ik_iterate(probe_skeleton(), {1}, Vec3(1.0, 0.0, 0.0), settings, probe_ops(), p);
+  return {std::move(id),
+          std::move(name),
+          r.updates != 0 || std::isfinite(r.error),
+          "one allowed update towards a target 1 away: " + result_text(r),
+          {}};
+}
+
+TaskStatus probe_solve(std::string id, std::string name, const SkeletonTasks& t) {
+  if (!t.ik_solve) return missing(std::move(id), std::move(name));
+  Posture p = probe_posture(Vec3::Zero(), Vec3::Zero());
+  const skeleton::IkResult r = t.ik_solve(skeleton::IkSettings{}, probe_ops(), p);
+  return {
+      std::move(id),
+      std::move(name),
+      r.stable || std::isfinite(r.error),
+      std::string(r.stable ? "stable" : "not stable") + " after an iteration of " + result_text(r),
+      {}};
+}
+
 }  // namespace
 
 std::vector<std::string_view> skeleton_probe_slots() {
-  return {"local_rotation", "forward_kinematics", "time_map", "warped_posture", "blend_motions"};
+  return {
+      "local_rotation", "forward_kinematics", "time_map",      "warped_posture", "blend_motions",
+      "ik_chain",       "ik_jacobian",        "least_squares", "ik_iterate",     "ik_solve"};
 }
 
 TaskStatus probe_skeleton_slot(std::string_view slot, std::string id, std::string name,
@@ -148,6 +246,11 @@ TaskStatus probe_skeleton_slot(std::string_view slot, std::string id, std::strin
     return probe_forward_kinematics(std::move(id), std::move(name), k);
   if (slot == "time_map") return probe_time_map(std::move(id), std::move(name), k);
   if (slot == "warped_posture") return probe_warped_posture(std::move(id), std::move(name), k);
+  if (slot == "ik_chain") return probe_chain(std::move(id), std::move(name), k);
+  if (slot == "ik_jacobian") return probe_jacobian(std::move(id), std::move(name), k);
+  if (slot == "least_squares") return probe_least_squares(std::move(id), std::move(name), k);
+  if (slot == "ik_iterate") return probe_iterate(std::move(id), std::move(name), k);
+  if (slot == "ik_solve") return probe_solve(std::move(id), std::move(name), k);
   return probe_blend(std::move(id), std::move(name), k);
 }
 

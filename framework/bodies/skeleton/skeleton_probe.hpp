@@ -10,7 +10,8 @@
 
 namespace jelly::bodies {
 
-/// local_rotation, forward_kinematics, time_map, warped_posture, blend_motions.
+/// local_rotation, forward_kinematics, time_map, warped_posture, blend_motions, and the
+/// inverse-kinematics ik_chain, ik_jacobian, least_squares, ik_iterate, ik_solve.
 std::vector<std::string_view> skeleton_probe_slots();
 
 /// Probes one of them, reporting it as task `id` named `name`.

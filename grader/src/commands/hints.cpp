@@ -66,7 +66,8 @@ std::string make_hints_json(const GradeConfig& config, const CaseBook& book,
       "Signatures of the mutation table's mistakes: each mutant's outputs on the public cases it "
       "fails. A failed public test whose outputs are within tolerance of a mutant's gets its "
       "description as a hint. Made by `jelly-grade hints --assignment " +
-      config.assignment().id + "` (docs/grader.md, Hints); do not edit.";
+      config.assignment().id + config.assignment().draft_option() +
+      "` (docs/grader.md, Hints); do not edit.";
   j["assignment"] = config.assignment().id;
   j["harness_digest"] = harness;
   j["sources_digest"] = sources_digest(config, book);
@@ -288,8 +289,8 @@ fs::path hints_file(const GradeConfig& config, const HintsArgs& args) {
 }
 
 std::string regenerate_command(const GradeConfig& config, const fs::path& file) {
-  return "run `jelly-grade hints --assignment " + config.assignment().id + "` and commit " +
-         file.string();
+  return "run `jelly-grade hints --assignment " + config.assignment().id +
+         config.assignment().draft_option() + "` and commit " + file.string();
 }
 
 fs::path work_root(const GradeConfig& config, const HintsArgs& args) {

@@ -64,10 +64,10 @@ std::vector<std::string> string_list(const nlohmann::json& array) {
   return out;
 }
 
-// One entry of "assignments" (`where`: "assignments.<id>." for the errors), with its manifest.
-AssignmentConfig read_assignment(const std::string& p, const std::string& id,
-                                 const nlohmann::json& o) {
-  const std::string where = "assignments." + id + ".";
+// One entry of "assignments" or "draft_assignments" (`table`, for the errors), with its manifest.
+AssignmentConfig read_assignment(const std::string& p, const std::string& table,
+                                 const std::string& id, const nlohmann::json& o) {
+  const std::string where = table + "." + id + ".";
   auto field = [&](const char* key) {
     if (!o.contains(key) || !o[key].is_string())
       throw std::runtime_error(p + ": " + where + key + ": expected a string");
@@ -122,23 +122,53 @@ GradeConfig load_config(const std::string& path) {
                              ": assignments: expected an object with one entry per assignment "
                              "(rebuild: this config predates assignments as plug-ins)");
   for (const auto& [id, o] : j["assignments"].items())
-    c.assignments.push_back(read_assignment(p, id, o));
-  std::sort(c.assignments.begin(), c.assignments.end(),
-            [](const AssignmentConfig& x, const AssignmentConfig& y) { return x.id < y.id; });
+    c.assignments.push_back(read_assignment(p, "assignments", id, o));
+  if (j.contains("draft_assignments") && j["draft_assignments"].is_object())
+    for (const auto& [id, o] : j["draft_assignments"].items())
+      c.draft_assignments.push_back(read_assignment(p, "draft_assignments", id, o));
+  for (AssignmentConfig& a : c.draft_assignments) a.draft = true;
+  const auto by_id = [](const AssignmentConfig& x, const AssignmentConfig& y) {
+    return x.id < y.id;
+  };
+  std::sort(c.assignments.begin(), c.assignments.end(), by_id);
+  std::sort(c.draft_assignments.begin(), c.draft_assignments.end(), by_id);
   return c;
 }
 
-void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission) {
+namespace {
+
+// The draft `id` that --draft asks for: one with a grader, else an error saying what it is.
+const AssignmentConfig& chosen_draft(const GradeConfig& config, const std::string& id,
+                                     const std::string& known) {
+  for (const AssignmentConfig& a : config.draft_assignments)
+    if (a.id == id) return a;
+  if (std::find(config.drafts.begin(), config.drafts.end(), id) != config.drafts.end())
+    throw std::runtime_error("--assignment " + id + " --draft: " + id +
+                             " is a draft without a grader yet (no case generators in "
+                             "assignments/" +
+                             id + "/grader/runner/; docs/new-assignment.md, \"A draft\")");
+  throw std::runtime_error("--assignment " + id + " --draft: " + id +
+                           " is not a draft in this build (it has: " + known + ")");
+}
+
+}  // namespace
+
+void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission,
+                       bool draft) {
   std::string known;
   for (const AssignmentConfig& a : config.assignments) known += (known.empty() ? "" : ", ") + a.id;
   const AssignmentConfig* chosen = nullptr;
-  if (!id.empty()) {
+  if (draft) {
+    if (id.empty()) throw std::runtime_error("--draft: say which draft with --assignment ID");
+    chosen = &chosen_draft(config, id, known);
+  } else if (!id.empty()) {
     for (const AssignmentConfig& a : config.assignments)
       if (a.id == id) chosen = &a;
     if (!chosen && std::find(config.drafts.begin(), config.drafts.end(), id) != config.drafts.end())
       throw std::runtime_error("--assignment " + id + ": " + id +
                                " is a draft in this build (its assignment.toml says draft = true): "
-                               "it is built but not graded until that line is gone (it has: " +
+                               "it is built but not graded until that line is gone; its author "
+                               "tries its grader with --draft (it has: " +
                                known + ")");
     if (!chosen)
       throw std::runtime_error("--assignment " + id +

@@ -23,6 +23,9 @@ struct AssignmentConfig {
   std::vector<std::string> link_libraries;  ///< its cases, the harness, the core, seccomp
   fs::path reference_runner;                ///< empty in a student release
   fs::path student_runner;                  ///< the self-check's runner (jelly::<id>::tasks)
+  bool draft = false;                       ///< from "draft_assignments": graded only with --draft
+  /// " --draft" for a draft, else "": what a command that names this assignment adds.
+  std::string draft_option() const { return draft ? " --draft" : ""; }
 };
 
 /// The recipe CMake wrote (build/grader/grade-config.json) plus paths derived from it. The
@@ -45,9 +48,12 @@ struct GradeConfig {
   fs::path config_path;
   /// Every assignment of the build, sorted by id.
   std::vector<AssignmentConfig> assignments;
-  /// The build's drafts (`draft = true` in their manifests): built, never graded. Named only so
-  /// that --assignment of one says why it cannot be graded.
+  /// The build's drafts (`draft = true` in their manifests): built, not graded unless asked for
+  /// with --draft. Named so that --assignment of one says why it is not graded without it.
   std::vector<std::string> drafts;
+  /// The drafts that have a grader (grade-config.json's "draft_assignments"), sorted by id: graded
+  /// only by their author's request (select_assignment's `draft`).
+  std::vector<AssignmentConfig> draft_assignments;
   /// The one the command works on (select_assignment); nullptr before.
   const AssignmentConfig* selected = nullptr;
 
@@ -77,9 +83,11 @@ struct GradeConfig {
 GradeConfig load_config(const std::string& path);
 
 /// Selects the assignment a command works on: `id` if given; else the one whose files a
-/// submission folder holds (`submission`, may be empty); else the only one of the build. Throws
-/// std::runtime_error naming the choices when it cannot tell.
-void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission);
+/// submission folder holds (`submission`, may be empty); else the only one of the build. With
+/// `draft` (--draft), `id` must name a draft that has a grader: its author tries that grader.
+/// Throws std::runtime_error naming the choices when it cannot tell.
+void select_assignment(GradeConfig& config, const std::string& id, const fs::path& submission,
+                       bool draft = false);
 
 /// A file name as a learning-management system's bulk download gives it: Canvas prefixes the
 /// student and two numbers (`dave_12345_67890_forces.cpp`, `dave_LATE_12345_67890_…`) and numbers

@@ -137,8 +137,8 @@ bool bwrap_works(const std::string& bwrap, std::string& why) {
 // The files only the grader may read, known by name: hidden even inside folders a sandbox may see
 // (bwrap covers them; in user mode they are closed on top of the deny-by-default walk below).
 std::vector<fs::path> secrets_of(const GradeConfig& config) {
-  // Every assignment's hidden data, cases, reference, mutants and reference runner: a sandbox
-  // grading one assignment sees no other assignment's secrets either.
+  // Every assignment's hidden data, cases, reference, mutants and reference runner (a draft's
+  // too): a sandbox grading one assignment sees no other assignment's secrets either.
   std::vector<fs::path> s = {config.grader_dir() / "data",
                              config.source_dir / "solutions",
                              config.cache_dir(),
@@ -146,12 +146,13 @@ std::vector<fs::path> secrets_of(const GradeConfig& config) {
                              config.binary_dir / "grader" / "generate",
                              config.binary_dir / "grader" / "gradescope-zip",
                              config.source_dir / ".git"};
-  for (const AssignmentConfig& a : config.assignments) {
-    s.push_back(a.dir / "grader" / "cases");
-    s.push_back(a.dir / "grader" / "mutants");
-    s.push_back(a.solutions_dir);
-    if (!a.reference_runner.empty()) s.push_back(a.reference_runner);
-  }
+  for (const std::vector<AssignmentConfig>* list : {&config.assignments, &config.draft_assignments})
+    for (const AssignmentConfig& a : *list) {
+      s.push_back(a.dir / "grader" / "cases");
+      s.push_back(a.dir / "grader" / "mutants");
+      s.push_back(a.solutions_dir);
+      if (!a.reference_runner.empty()) s.push_back(a.reference_runner);
+    }
   std::vector<fs::path> out;
   for (const fs::path& p : s) out.push_back(absolute_clean(p));
   return out;
@@ -916,13 +917,14 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
   // A student's copy of the grader (a release) has no hidden data and no solutions/: nothing to
   // warn about.
   bool secrets = false;
-  for (const AssignmentConfig& a : config.assignments) {
-    secrets = secrets || fs::exists(a.solutions_dir) || fs::exists(a.reference_runner);
-    std::error_code ec;
-    for (fs::directory_iterator it(config.grader_dir() / "data" / a.id / "hidden", ec), end;
-         !ec && it != end; it.increment(ec))
-      secrets = true;
-  }
+  for (const std::vector<AssignmentConfig>* list : {&config.assignments, &config.draft_assignments})
+    for (const AssignmentConfig& a : *list) {
+      secrets = secrets || fs::exists(a.solutions_dir) || fs::exists(a.reference_runner);
+      std::error_code ec;
+      for (fs::directory_iterator it(config.grader_dir() / "data" / a.id / "hidden", ec), end;
+           !ec && it != end; it.increment(ec))
+        secrets = true;
+    }
   if (!secrets) {
     iso.description = "none (this copy of the grader holds no hidden data and no solutions)";
     return finish(iso.kind);

@@ -1646,13 +1646,22 @@ TEST(GraderAssignment, UnknownIdNamesTheKnownOnesAndExitsTwo) {
       << two.out;
 }
 
-// A draft (draft = true in its manifest: built, never graded) is not in "assignments"; the build
-// names it in "drafts" so that --assignment of it says why, not only that it is unknown. This
-// build's own config lists its drafts (none, or the tree's).
+// A draft (draft = true in its manifest: built, not graded without --draft) is not in
+// "assignments"; the build names it in "drafts" so that --assignment of it says why, not only that
+// it is unknown, and how its author grades it all the same. This build's own config lists its
+// drafts (none, or the tree's) and, in "draft_assignments", those that have a grader.
 TEST(GraderAssignment, ADraftIsNamedAsOneAndNotGraded) {
   const Json built = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
   ASSERT_TRUE(built.contains("drafts") && built["drafts"].is_array())
       << built.dump(1).substr(0, 400);
+  ASSERT_TRUE(built.contains("draft_assignments") && built["draft_assignments"].is_object())
+      << built.dump(1).substr(0, 400);
+  for (const auto& item : built["draft_assignments"].items()) {
+    EXPECT_FALSE(built["assignments"].contains(item.key())) << item.key();
+    EXPECT_NE(std::find(built["drafts"].begin(), built["drafts"].end(), item.key()),
+              built["drafts"].end())
+        << item.key();
+  }
   const fs::path cfg = config_with("draft", [](Json& c) { c["drafts"] = Json::array({"zz"}); });
   const fs::path out = kWork / "out" / "draft";
   const Cmd r = run("grade " + submission("draft").string() + " --assignment zz --config " +
@@ -1660,11 +1669,58 @@ TEST(GraderAssignment, ADraftIsNamedAsOneAndNotGraded) {
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(
       r.out.find("--assignment zz: zz is a draft in this build (its assignment.toml says "
-                 "draft = true): it is built but not graded until that line is gone (it has: " +
+                 "draft = true): it is built but not graded until that line is gone; its author "
+                 "tries its grader with --draft (it has: " +
                  build_ids() + ")"),
       std::string::npos)
       << r.out;
   EXPECT_FALSE(fs::exists(out / "results.json"));
+  // --draft of a draft without a grader yet, of an assignment that is no draft, and without
+  // --assignment: each says what it is.
+  const Cmd none =
+      run("grade " + submission("draft").string() + " --assignment zz --draft --config " +
+          cfg.string() + " --out " + out.string());
+  EXPECT_EQ(none.status, 2) << none.out;
+  EXPECT_NE(none.out.find("--assignment zz --draft: zz is a draft without a grader yet"),
+            std::string::npos)
+      << none.out;
+  const Cmd a1 =
+      run("grade " + submission("draft").string() + " --assignment a1 --draft --config " +
+          cfg.string() + " --out " + out.string());
+  EXPECT_EQ(a1.status, 2) << a1.out;
+  EXPECT_NE(a1.out.find("--assignment a1 --draft: a1 is not a draft in this build (it has: " +
+                        build_ids() + ")"),
+            std::string::npos)
+      << a1.out;
+  const Cmd bare = run("generate-reference --draft --config " + cfg.string());
+  EXPECT_EQ(bare.status, 2) << bare.out;
+  EXPECT_NE(bare.out.find("--draft: say which draft with --assignment ID"), std::string::npos)
+      << bare.out;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+}
+
+// Its author grades a draft that has a grader on request: A1's entry made a draft of a copy of
+// this build's config ("draft_assignments") is refused without --draft and graded with it, full
+// marks for its reference.
+TEST(GraderAssignment, ADraftIsGradedOnRequest) {
+  const Json built = read_json(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json");
+  if (built["assignments"].size() < 2) GTEST_SKIP() << "this build links A1 alone";
+  const fs::path cfg = config_with("draft-a1", [](Json& c) {
+    c["drafts"] = Json::array({"a1"});
+    c["draft_assignments"] = Json::object({{"a1", c["assignments"]["a1"]}});
+    c["assignments"].erase("a1");
+  });
+  const fs::path out = kWork / "out" / "draft-a1";
+  fs::remove_all(out);
+  const Cmd refused = run("grade " + submission("draft-a1").string() +
+                          " --assignment a1 --config " + cfg.string() + " --out " + out.string());
+  EXPECT_EQ(refused.status, 2) << refused.out;
+  EXPECT_NE(refused.out.find("its author tries its grader with --draft"), std::string::npos)
+      << refused.out;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+  const Json r =
+      grade(submission("draft-a1"), "draft-a1", "--assignment a1 --draft --config " + cfg.string());
+  EXPECT_DOUBLE_EQ(r["score"].get<double>(), 80.0);
 }
 
 // With two assignments and no --assignment, a submission's files choose: A1's five files (in a
