@@ -3,6 +3,9 @@
 #pragma once
 
 #include "jelly/skeleton_tasks.hpp"
+// Eigen::JacobiSVD<Eigen::MatrixXd> compiled once by the framework: use that type and your file
+// compiles in about a second instead of five.
+#include "jelly/skeleton/svd.hpp"
 
 namespace jelly::a4 {
 
