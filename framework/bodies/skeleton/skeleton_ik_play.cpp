@@ -185,10 +185,14 @@ std::string play_ik_scene(const SceneSpec& scene, const TaskTable& tasks,
       rows += write_skeleton_frame(*summary, frame, in, run.postures[i], frames, false);
   }
   const SkeletonSceneSpec& k = skeleton_scene(scene);
-  std::string report = text_printf(
-      "%s: solved %zu chains over %zu frames from frame %lld of %s (%zu bones) at %g fps\n",
-      scene.name.c_str(), ik_chain_specs(scene).size(), run.postures.size(), k.frame,
-      in.amc_file.c_str(), in.skeleton.bones.size(), k.fps);
+  const auto counted = [](std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  std::string report =
+      text_printf("%s: solved %s over %s from frame %lld of %s (%zu bones) at %g fps\n",
+                  scene.name.c_str(), counted(ik_chain_specs(scene).size(), "chain").c_str(),
+                  counted(run.postures.size(), "frame").c_str(), k.frame, in.amc_file.c_str(),
+                  in.skeleton.bones.size(), k.fps);
   for (std::size_t c = 0; c < ik_chain_specs(scene).size(); ++c)
     report += chain_line(scene, run, c);
   if (summary) {
