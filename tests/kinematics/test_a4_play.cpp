@@ -13,6 +13,10 @@
 #include <vector>
 
 #include "course_mocap.hpp"
+#include "jelly/a4/ik.hpp"
+#include "jelly/a4/jacobian.hpp"
+#include "jelly/a4/kinematics.hpp"
+#include "jelly/a4/least_squares.hpp"
 #include "jelly/a4/task_table.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/scene.hpp"
@@ -149,6 +153,67 @@ TEST_F(A4Play, ASolveThroughTheSlotsChangesOnlyTheChainsChannels) {
   EXPECT_FALSE(far.stable);
   for (std::size_t b = 0; b < s.bones.size(); ++b)
     EXPECT_TRUE((q.angles[b].array() == m.frames[0].angles[b].array()).all()) << s.bones[b].name;
+}
+
+// The iteration asks for the end effector and the Jacobian at the same posture: the ops run the
+// forward kinematics once for both, so a solve of U updates runs it U + 1 times (each update's
+// posture, and the last one's), not 2U + 1, with the same 73 updates and the same final posture.
+int forward_kinematics_calls = 0;
+
+/// IkOps from A4's reference whose end_effector and jacobian each run the forward kinematics.
+skeleton::IkOps fresh_frames_ops(const skeleton::Skeleton& s, const std::vector<int>& chain,
+                                 const IkSolveRequest& request) {
+  skeleton::IkOps ops;
+  const skeleton::Skeleton* sk = &s;
+  const int end = chain.front();
+  ops.end_effector = [sk, end](const skeleton::Posture& p) {
+    skeleton::BoneFrames f;
+    a4::forward_kinematics(*sk, p, f);
+    return Vec3(f.end[end]);
+  };
+  ops.jacobian = [sk, chain](const skeleton::Posture& p, skeleton::Matrix3X& J) {
+    skeleton::BoneFrames f;
+    a4::forward_kinematics(*sk, p, f);
+    a4::ik_jacobian(*sk, f, chain, J);
+  };
+  ops.solve = [](const skeleton::Matrix3X& J, const Vec3& e, skeleton::VectorX& x) {
+    a4::least_squares(J, e, x);
+  };
+  ops.clamp = [sk, chain](skeleton::Posture& p) { a4::clamp_to_limits(*sk, chain, p); };
+  ops.iterate = [sk, chain, request, inner = ops](skeleton::Posture& p) {
+    return a4::ik_iterate(*sk, chain, request.target, request.settings, inner, p);
+  };
+  return ops;
+}
+void counted_forward_kinematics(const skeleton::Skeleton& s, const skeleton::Posture& p,
+                                skeleton::BoneFrames& out) {
+  ++forward_kinematics_calls;
+  skeleton_tasks(a4::task_table()).forward_kinematics(s, p, out);
+}
+
+TEST_F(A4Play, EachUpdateRunsTheForwardKinematicsOnce) {
+  const skeleton::Skeleton s = testing::course_skeleton();
+  const skeleton::Motion m = testing::course_motion(s, "IK.amc");
+  IkSolveRequest request;
+  request.start_bone = *s.find("lowerback");
+  request.end_bone = *s.find("rfingers");
+  request.target = Vec3(-0.0692501, 3.85358, -1.63441);
+  TaskTable counting = a4::task_table();
+  skeleton_tasks(counting).forward_kinematics = &counted_forward_kinematics;
+  skeleton::Posture p = m.frames[0], q = m.frames[0];
+  forward_kinematics_calls = 0;
+  const skeleton::IkResult r = solve_ik(s, skeleton_tasks(counting), request, p);
+  EXPECT_EQ(r.updates, 73);
+  EXPECT_EQ(forward_kinematics_calls, 74);
+  // The same solve through ops that run the forward kinematics for every call (as the reference's
+  // tests built them by hand): the same posture and error, bit for bit.
+  const std::vector<int> chain = ik_chain_of(s, skeleton_tasks(table_), request);
+  const skeleton::IkOps fresh = fresh_frames_ops(s, chain, request);
+  const skeleton::IkResult plain = a4::ik_solve(request.settings, fresh, q);
+  EXPECT_EQ(plain.updates, 73);
+  EXPECT_EQ(plain.error, r.error);
+  for (std::size_t b = 0; b < s.bones.size(); ++b)
+    EXPECT_TRUE((p.angles[b].array() == q.angles[b].array()).all()) << s.bones[b].name;
 }
 
 }  // namespace

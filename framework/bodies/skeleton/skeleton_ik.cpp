@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace jelly {
@@ -69,6 +70,34 @@ std::string foreign_change(const Skeleton& s, const std::vector<int>& chain, con
   return "";
 }
 
+/// The frames of the last posture the ops took forward, shared by end_effector and jacobian: the
+/// iteration asks for both at the same posture (§6.4), so the second reuses the first's forward
+/// kinematics (the same frames, so the same bits) instead of running it again.
+struct LastFrames {
+  Posture posture;
+  BoneFrames frames;
+  bool valid = false;
+
+  bool is(const Posture& p) const {
+    if (!valid || p.angles.size() != posture.angles.size() ||
+        !(p.root_translation.array() == posture.root_translation.array()).all())
+      return false;
+    for (std::size_t b = 0; b < p.angles.size(); ++b)
+      if (!(p.angles[b].array() == posture.angles[b].array()).all()) return false;
+    return true;
+  }
+  /// The frames of `p`: the last ones when `p` is the last posture, bit for bit, else new ones.
+  const BoneFrames& of(const Skeleton& s, const SkeletonTasks& t, const std::string& where,
+                       const Posture& p) {
+    if (is(p)) return frames;
+    valid = false;
+    frames_of(s, t, where, p, frames);
+    posture = p;
+    valid = true;
+    return frames;
+  }
+};
+
 }  // namespace
 
 std::string missing_ik_slot(const SkeletonTasks& t) {
@@ -89,18 +118,16 @@ IkOps make_ik_ops(const Skeleton& skeleton, const SkeletonTasks& tasks,
   const SkeletonTasks* t = &tasks;
   const std::string where = request.where;
   const int end = chain.front();
-  ops.end_effector = [s, t, where, end](const Posture& p) {
-    BoneFrames f;
-    frames_of(*s, *t, where, p, f);
+  const auto last = std::make_shared<LastFrames>();
+  ops.end_effector = [s, t, where, end, last](const Posture& p) {
+    const BoneFrames& f = last->of(*s, *t, where, p);
     if (!finite(f.end[end]))
       task_error("forward_kinematics", where,
                  "returned a non-finite end of bone " + s->bones[end].name + ", the end effector");
     return Vec3(f.end[end]);
   };
-  ops.jacobian = [s, t, where, chain](const Posture& p, Matrix3X& J) {
-    BoneFrames f;
-    frames_of(*s, *t, where, p, f);
-    t->ik_jacobian(*s, f, chain, J);
+  ops.jacobian = [s, t, where, chain, last](const Posture& p, Matrix3X& J) {
+    t->ik_jacobian(*s, last->of(*s, *t, where, p), chain, J);
     const auto cols = static_cast<Eigen::Index>(3 * chain.size());
     if (J.cols() != cols)
       task_error("ik_jacobian", where,
