@@ -7,6 +7,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "skeleton_play.hpp"
+
 namespace jelly {
 
 namespace {
@@ -24,9 +26,7 @@ using skeleton::VectorX;
                            ": " + what);
 }
 
-std::string count(std::size_t n, const char* noun) {
-  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
+using bodies::counted;
 
 bool finite(const Vec3& v) { return v.allFinite(); }
 
@@ -34,8 +34,8 @@ void check_posture(const char* task, const std::string& where, const Skeleton& s
                    const Posture& p) {
   if (p.angles.size() != s.bones.size())
     task_error(task, where,
-               "left a posture of " + count(p.angles.size(), "angle triple") +
-                   "; the skeleton has " + count(s.bones.size(), "bone"));
+               "left a posture of " + counted(p.angles.size(), "angle triple") +
+                   "; the skeleton has " + counted(s.bones.size(), "bone"));
   for (std::size_t b = 0; b < p.angles.size(); ++b)
     if (!finite(p.angles[b]))
       task_error(task, where, "left a non-finite angle on bone " + s.bones[b].name);
@@ -48,9 +48,9 @@ void frames_of(const Skeleton& s, const SkeletonTasks& t, const std::string& whe
   const std::size_t n = s.bones.size();
   if (f.rotation.size() != n || f.start.size() != n || f.end.size() != n)
     task_error("forward_kinematics", where,
-               "returned " + count(f.start.size(), "start") + ", " + count(f.end.size(), "end") +
-                   " and " + count(f.rotation.size(), "rotation") + "; the skeleton has " +
-                   count(n, "bone"));
+               "returned " + counted(f.start.size(), "start") + ", " +
+                   counted(f.end.size(), "end") + " and " + counted(f.rotation.size(), "rotation") +
+                   "; the skeleton has " + counted(n, "bone"));
 }
 
 /// Every bone's angles and the root translation of `after` equal `before`'s, bit for bit, but the
@@ -133,7 +133,7 @@ IkOps make_ik_ops(const Skeleton& skeleton, const SkeletonTasks& tasks,
       task_error("ik_jacobian", where,
                  "returned J of 3 × " + std::to_string(J.cols()) + "; expected 3 × " +
                      std::to_string(cols) + " (3 columns per bone of a chain of " +
-                     count(chain.size(), "bone") + ", kinematics contract §6.2)");
+                     counted(chain.size(), "bone") + ", kinematics contract §6.2)");
     if (!J.allFinite()) task_error("ik_jacobian", where, "returned a J with a non-finite entry");
   };
   ops.solve = [t, where](const Matrix3X& J, const Vec3& e, VectorX& x) {
@@ -171,7 +171,7 @@ std::vector<int> ik_chain_of(const Skeleton& skeleton, const SkeletonTasks& task
     if (b < 0 || b >= static_cast<int>(skeleton.bones.size()))
       task_error("ik_chain", request.where,
                  "returned bone " + std::to_string(b) + "; the skeleton has " +
-                     count(skeleton.bones.size(), "bone"));
+                     counted(skeleton.bones.size(), "bone"));
   if (chain.front() != request.end_bone)
     task_error("ik_chain", request.where,
                "returned a chain that starts at bone " + skeleton.bones[chain.front()].name +

@@ -185,9 +185,6 @@ std::string play_ik_scene(const SceneSpec& scene, const TaskTable& tasks,
       rows += write_skeleton_frame(*summary, frame, in, run.postures[i], frames, false);
   }
   const SkeletonSceneSpec& k = skeleton_scene(scene);
-  const auto counted = [](std::size_t n, const char* what) {
-    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
-  };
   std::string report =
       text_printf("%s: solved %s over %s from frame %lld of %s (%zu bones) at %g fps\n",
                   scene.name.c_str(), counted(ik_chain_specs(scene).size(), "chain").c_str(),

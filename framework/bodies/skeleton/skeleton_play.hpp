@@ -16,6 +16,11 @@
 
 namespace jelly::bodies {
 
+/// "1 chain", "4 chains": a count with its noun, plural unless the count is 1 (messages, reports).
+inline std::string counted(std::size_t n, const char* noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 /// The files of a skeleton scene, read, with their names as messages give them.
 struct SkeletonInputs {
   skeleton::Skeleton skeleton;
