@@ -101,9 +101,10 @@ render::ViewerContext AppState::viewer_context() const {
     c.viewport = frame_viewports(std::max<int>(1, static_cast<int>(runs.size())), window_width,
                                  window_height, frame)
                      .front();
-  if (ImGui::GetCurrentContext()) {
-    const ImVec2 m = ImGui::GetIO().MousePos;
-    c.mouse = Eigen::Vector2d(m.x, m.y);
+  if (ImGui::GetCurrentContext()) {  // ImGui's mouse is in window units, the viewport in pixels
+    const ImGuiIO& io = ImGui::GetIO();
+    c.mouse = Eigen::Vector2d(io.MousePos.x * io.DisplayFramebufferScale.x,
+                              io.MousePos.y * io.DisplayFramebufferScale.y);
   }
   return c;
 }

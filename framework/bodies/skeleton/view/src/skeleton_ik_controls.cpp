@@ -191,6 +191,34 @@ void IkControls::draw_panel(const ViewerContext&, const std::vector<SkeletonPlay
   error_plot(p);
 }
 
+/// A press on chain 0's target and a drag of (30, −20) pixels, as the viewer's mouse would: the
+/// target ends under the mouse, in the plane it was in facing the camera.
+int IkControls::smoke_drag(const ViewerContext& c, SkeletonPlayer& p) {
+  if (c.viewport.width <= 0 || c.viewport.height <= 0) return 0;
+  const auto at = c.camera->project(p.ik_target(0), c.viewport.width, c.viewport.height);
+  if (!at) return 0;
+  ViewerContext mouse = c;
+  mouse.mouse = *at + Eigen::Vector2d(c.viewport.x, c.viewport.y);
+  const Vec3 before = p.ik_target(0);
+  if (!mouse_down(mouse, p) || dragged_ != 0) {
+    std::printf("smoke: scene %s: a press on the target did not take it\n", c.scene_name.c_str());
+    return 1;
+  }
+  mouse.mouse += Eigen::Vector2d(30.0, -20.0);
+  mouse_drag(mouse, {&p});
+  mouse_up();
+  p.ik_update();
+  const auto now = c.camera->project(p.ik_target(0), c.viewport.width, c.viewport.height);
+  const double off_plane = (p.ik_target(0) - before).dot(camera_axis(*c.camera, 2));
+  if (!now || (*now - (*at + Eigen::Vector2d(30.0, -20.0))).norm() > 0.5 ||
+      std::abs(off_plane) > 1e-6 * (1.0 + before.norm())) {
+    std::printf("smoke: scene %s: the dragged target is not under the mouse\n",
+                c.scene_name.c_str());
+    return 1;
+  }
+  return 0;
+}
+
 int IkControls::smoke_check(const ViewerContext& c, SkeletonPlayer& p) {
   int failures = 0;
   const auto fail = [&](const std::string& what) {
@@ -218,10 +246,13 @@ int IkControls::smoke_check(const ViewerContext& c, SkeletonPlayer& p) {
     fail("an unstable solve did not put the posture back");
   if (p.ik_update() || p.ik_solve_count() != solves + static_cast<long>(p.ik_chain_count()))
     fail("an idle frame solved again");
-  std::printf("smoke: scene %-35s target moved %.3g, %d updates, %s, error %.3g -> %.3g\n",
-              c.scene_name.c_str(), (p.ik_target(0) - target).norm(), r.result.updates,
-              r.result.stable ? "stable" : "unstable", r.errors.empty() ? 0.0 : r.errors.front(),
-              r.result.error);
+  failures += smoke_drag(c, p);
+  std::printf(
+      "smoke: scene %-35s Right x3 and a drag moved the target %.3g; the last solve: "
+      "%d updates, %s, error %.3g -> %.3g\n",
+      c.scene_name.c_str(), (p.ik_target(0) - target).norm(), r.result.updates,
+      r.result.stable ? "stable" : "unstable", r.errors.empty() ? 0.0 : r.errors.front(),
+      r.result.error);
   p.ik_reset();
   return failures;
 }

@@ -34,10 +34,12 @@ class IkControls {
   void mouse_drag(const render::ViewerContext& c, const std::vector<SkeletonPlayer*>& players);
   void mouse_up() { dragged_ = -1; }
   /// --smoke-test: three presses of the Right arrow move the target, the solve moves the
-  /// skeleton and shrinks the error, and an idle frame does not solve. Returns the failures.
+  /// skeleton and shrinks the error, an idle frame does not solve, and a press on the target and
+  /// a drag put it under the mouse. Returns the failures.
   int smoke_check(const render::ViewerContext& c, SkeletonPlayer& p);
 
  private:
+  int smoke_drag(const render::ViewerContext& c, SkeletonPlayer& p);
   void chain_section(const std::vector<SkeletonPlayer*>& players, SkeletonPlayer& p, std::size_t c);
   void settings_section(const std::vector<SkeletonPlayer*>& players, SkeletonPlayer& p);
   void error_plot(SkeletonPlayer& p);
