@@ -13,6 +13,12 @@
 //   BM_WarmSolve/<move>         the viewer's frame: from the solved hw3-ik posture, a solve to the
 //                               target moved by <move>/1000 scene units (16 directions in turn),
 //                               µs
+//   BM_ViewerDrag/<step>        the viewer's drag: the player of scenes/hw3-ik.toml with A4's
+//                               reference task table (jelly run's path: solve_ik through
+//                               make_ik_ops), the target moved by <step>/1000 units along a circle
+//                               of radius 0.3 around the course's ball each solve, N solves in a
+//                               row, each warm-started from the posture the one before left
+//                               (SkeletonPlayer::set_ik_target, then ik_update), µs per solve
 //   BM_Part<...>                one update's parts at hw3-ik's first posture, ns: forward
 //                               kinematics (31 bones), the Jacobian (from frames), the
 //                               least-squares solve (JacobiSVD of the 3 × 27 J), the clamp
@@ -29,7 +35,10 @@
 #include "jelly/a4/jacobian.hpp"
 #include "jelly/a4/kinematics.hpp"
 #include "jelly/a4/least_squares.hpp"
+#include "jelly/a4/task_table.hpp"
+#include "jelly/scene.hpp"
 #include "jelly/skeleton/skeleton_files.hpp"
+#include "jelly/skeleton_player.hpp"
 
 namespace {
 
@@ -260,6 +269,39 @@ void BM_WarmSolve(benchmark::State& state) {
   state.counters["unstable"] = static_cast<double>(unstable);
 }
 BENCHMARK(BM_WarmSolve)->Arg(5)->Arg(20)->Arg(100)->Unit(benchmark::kMicrosecond);
+
+// ---- the viewer's drag: a warm-started solve each frame, through the player ---------------------
+
+// The target moves range(0)/1000 units a solve along a circle of radius 0.3 units around the ball
+// (in the x-y plane), and never comes back to where a solve started: each solve is warm-started
+// from the posture the one before left, as while the mouse drags the ball.
+void BM_ViewerDrag(benchmark::State& state) {
+  const SceneResult scene = load_scene(std::string(JELLY_SOURCE_DIR) + "/scenes/hw3-ik.toml");
+  if (!scene) {
+    state.SkipWithError("cannot read scenes/hw3-ik.toml");
+    return;
+  }
+  const TaskTable table = a4::task_table();
+  SkeletonPlayer player(*scene.scene, skeleton_tasks(table));
+  if (!player.problem().empty() || player.ik_record(0).result.updates != 73) {
+    state.SkipWithError(("the scene's solve: " + player.problem()).c_str());
+    return;
+  }
+  const double radius = 0.3, angle_step = static_cast<double>(state.range(0)) / 1000.0 / radius;
+  const Vec3 centre = player.ik_target(0) - Vec3(radius, 0.0, 0.0);
+  long updates = 0, unstable = 0, solves = 0;
+  for (auto _ : state) {
+    const double a = angle_step * static_cast<double>(++solves);
+    player.set_ik_target(0, centre + radius * Vec3(std::cos(a), std::sin(a), 0.0));
+    player.ik_update();
+    const IkSolveRecord& r = player.ik_record(0);
+    updates += r.result.updates;
+    unstable += r.solved && r.result.stable ? 0 : 1;
+  }
+  state.counters["updates"] = static_cast<double>(updates) / static_cast<double>(solves);
+  state.counters["unstable"] = static_cast<double>(unstable);
+}
+BENCHMARK(BM_ViewerDrag)->Arg(5)->Arg(20)->Unit(benchmark::kMicrosecond);
 
 // ---- one update's parts ----------------------------------------------------------------------
 

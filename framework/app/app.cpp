@@ -92,7 +92,21 @@ void rebuild_runs(AppState& s) {
 }
 
 render::ViewerContext AppState::viewer_context() const {
-  return {run_pointers(), camera.yaw_degrees, edited.name};
+  render::ViewerContext c;
+  c.runs = run_pointers();
+  c.camera_yaw_degrees = camera.yaw_degrees;
+  c.scene_name = edited.name;
+  c.camera = &camera;
+  if (window_width > 0 && window_height > 0)
+    c.viewport = frame_viewports(std::max<int>(1, static_cast<int>(runs.size())), window_width,
+                                 window_height, frame)
+                     .front();
+  if (ImGui::GetCurrentContext()) {  // ImGui's mouse is in window units, the viewport in pixels
+    const ImGuiIO& io = ImGui::GetIO();
+    c.mouse = Eigen::Vector2d(io.MousePos.x * io.DisplayFramebufferScale.x,
+                              io.MousePos.y * io.DisplayFramebufferScale.y);
+  }
+  return c;
 }
 
 void add_body_controls(AppState& s) {
@@ -178,6 +192,8 @@ class FrameLoop {
       s_.reset_requested = false;
     }
     const int w = window_.width(), h = window_.height();
+    s_.window_width = w;
+    s_.window_height = h;
     if (advance_runs(s_, opt_, script_, wall_dt, frame_number_)) close();
     apply_single_step(s_);
     draw(w, h);
@@ -187,6 +203,8 @@ class FrameLoop {
   void draw(int w, int h) {
     prepare_view(s_, renderer_, w, h);
     draw_panels(s_, fps_);
+    const render::ViewerContext context = s_.viewer_context();
+    for (auto& [view, controls] : s_.body_controls) controls->update(context);
     ImGui::Render();
     bench_.start();
     draw_frame(renderer_, s_.run_pointers(), s_.camera, s_.frame, w, h);

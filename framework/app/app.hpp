@@ -95,11 +95,13 @@ struct AppState {
   bool screenshot_requested = false;
   std::string screenshot_message;
   int panel_width = 400;
-  std::vector<std::string> open_panels;  ///< headers to open on the first frame
+  int window_width = 0, window_height = 0;  ///< the last frame's [pixels]
+  std::vector<std::string> open_panels;     ///< headers to open on the first frame
   bool scripted = false;  ///< --smoke-test / --shot-at: time is not driven by the clock
 
   std::vector<session::SimulationRun*> run_pointers() const;
-  /// What the body kinds' controls act on: the runs, the camera's yaw, the scene's name.
+  /// What the body kinds' controls act on: the runs, the camera's yaw, the scene's name, the
+  /// camera, the first run's viewport and the mouse.
   render::ViewerContext viewer_context() const;
 };
 

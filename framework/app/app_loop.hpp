@@ -34,6 +34,8 @@ class ViewInput {
  private:
   bool dragging_ = false;
   double drag_x_ = 0.0, drag_y_ = 0.0;
+  /// The body kind's controls that took the drag (BodyControls::mouse_down), null: the camera's.
+  render::BodyControls* drag_owner_ = nullptr;
 };
 
 // ---- the smoke test (smoke_script.cpp) ----

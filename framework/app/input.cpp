@@ -26,11 +26,21 @@ bool ViewInput::handle(AppState& s) {
       dragging_ = true;
       drag_x_ = io.MousePos.x;
       drag_y_ = io.MousePos.y;
+      // A body kind may take the drag (e.g. a target under the mouse); else the camera orbits.
+      const render::ViewerContext context = s.viewer_context();
+      for (auto& [view, controls] : s.body_controls)
+        if (!drag_owner_ && controls->mouse_down(context)) drag_owner_ = controls.get();
     }
     if (io.MouseWheel != 0.0f) s.camera.zoom(io.MouseWheel);
   }
-  if (!ImGui::IsMouseDown(0)) dragging_ = false;
-  if (dragging_) {
+  if (!ImGui::IsMouseDown(0)) {
+    if (drag_owner_) drag_owner_->mouse_up(s.viewer_context());
+    drag_owner_ = nullptr;
+    dragging_ = false;
+  }
+  if (dragging_ && drag_owner_) {
+    drag_owner_->mouse_drag(s.viewer_context());
+  } else if (dragging_) {
     s.camera.orbit(io.MousePos.x - drag_x_, io.MousePos.y - drag_y_);
     drag_x_ = io.MousePos.x;
     drag_y_ = io.MousePos.y;

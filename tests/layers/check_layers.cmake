@@ -62,12 +62,15 @@ set(_may_app     manifest core session render movie app cli_common)
 # A body kind's view module (framework/bodies/<kind>/view/, headers jelly/bodies/<kind>/view/):
 # the kind's GL side, on top of the renderer, whose registered list the renderer walks.
 set(_may_body_view manifest core session render body_view)
+# A body kind's grader cases (framework/bodies/<kind>/grader/: the slot-level cases of the kind's
+# own slots, on the grader's harness, `harness.hpp` by its folder): the core and the grader.
+set(_may_body_grader manifest core body_grader grader)
 set(_may_grader  manifest core grader cli_common process)
 set(_may_bench   manifest core assignment)
 # General code: it names no assignment, so it includes no assignment's header.
 set(_general manifest core session cli_common process render movie cli app grader)
 # Layers that must stay free of GL (and of windowing and GUI libraries).
-set(_no_gl manifest core assignment assignment_grader task_module session cli_common process movie cli grader bench)
+set(_no_gl manifest core assignment assignment_grader task_module body_grader session cli_common process movie cli grader bench)
 set(_gl_regex "^(GL|GLFW|KHR|EGL|OpenGL)/|^imgui|osmesa")
 # Layer 0 includes, besides its own headers, only the standard library (<vector>, <cstdio>) and
 # toml++ (<toml++/toml.h>).
@@ -138,6 +141,9 @@ function(_file_layer f out own)
   endif()
   if(f MATCHES "^framework/bodies/[^/]+/view/")
     set(${out} body_view PARENT_SCOPE)
+    return()
+  elseif(f MATCHES "^framework/bodies/[^/]+/grader/")
+    set(${out} body_grader PARENT_SCOPE)
     return()
   endif()
   list(LENGTH _folders n)

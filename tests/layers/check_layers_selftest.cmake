@@ -2,8 +2,9 @@
 # layer including a higher one, a header in no layer, GL in a GL-free layer, the manifest library
 # reaching past the standard library and toml++, general code including an assignment's header, an
 # assignment including another's, by its header or by a relative path to its file, a task module
-# naming an assignment, a framework folder with no layer) must fail naming each file and line, and
-# the same tree without them, including every allowed kind, must pass.
+# naming an assignment, a body kind's grader cases naming an assignment or GL, a framework folder
+# with no layer) must fail naming each file and line, and the same tree without them, including
+# every allowed kind, must pass.
 #
 #   cmake -DCHECK=<check_layers.cmake> -DWORK=<scratch folder> -P check_layers_selftest.cmake
 cmake_minimum_required(VERSION 3.16)
@@ -34,6 +35,7 @@ set(_good
   "framework/cli/a.cpp|#include \"jelly/movie/render_command.hpp\"\n#include \"jelly/cli/x.hpp\""
   "framework/app/a.cpp|#include <imgui.h>\n#include \"jelly/render/y.hpp\"\n#include \"jelly/movie/mp4.hpp\""
   "grader/src/a.cpp|#include \"jelly/scene.hpp\"\n#include \"jelly/manifest.hpp\"\n#include \"process.hpp\""
+  "framework/bodies/kind/grader/kind_cases.cpp|#include \"harness.hpp\"\n#include \"jelly/world.hpp\""
   "grader/tests/hostile/x/forces.cpp|#include \"jelly/render/renderer.hpp\""
   "framework/movie/CMakeLists.txt|add_library(jelly_movie a.cpp)\ntarget_link_libraries(jelly_movie PUBLIC jelly::render jelly::session)"
   "framework/cli/CMakeLists.txt|add_executable(jelly main.cpp)\n# the `jelly-lab` viewer\nif(TARGET jelly_movie)\n  target_link_libraries(jelly PRIVATE jelly::movie)\nendif()"
@@ -50,6 +52,8 @@ set(_bad
   "framework/session/src/a1.cpp|#include \"jelly/a2/cloth.hpp\"|framework/session/src/a1.cpp:1:"
   "grader/src/a1.cpp|#include \"jelly/manifest.hpp\"\n#include \"jelly/a1/forces.hpp\"|grader/src/a1.cpp:2:"
   "grader/runner/a1.cpp|#include \"harness.hpp\"\n#include \"jelly/a1/forces.hpp\"|grader/runner/a1.cpp:2:"
+  "framework/bodies/kind/grader/a1.cpp|#include \"harness.hpp\"\n#include \"jelly/a1/forces.hpp\"|framework/bodies/kind/grader/a1.cpp:2:"
+  "framework/bodies/kind/grader/gl.cpp|#include <GL/glcorearb.h>|framework/bodies/kind/grader/gl.cpp:1:"
   "assignments/a2/bindings/bad.cpp|#include \"jelly/a1/forces.hpp\"|assignments/a2/bindings/bad.cpp:1:"
   "assignments/a2/include/jelly/a2/bad.hpp|#pragma once\n#include \"jelly/a1/forces.hpp\"|assignments/a2/include/jelly/a2/bad.hpp:2:"
   "solutions/a2/cloth.cpp|#include \"jelly/a2/cloth.hpp\"\n#include \"jelly/a1/forces.hpp\"|solutions/a2/cloth.cpp:2:"

@@ -16,4 +16,4 @@ jelly_body_kind(skeleton ORDER 40 MODULE skeleton_kind
                 SOURCES skeleton.cpp rotation.cpp skeleton_file_text.cpp asf_reader.cpp asf_bone_block.cpp
                         asf_hierarchy.cpp amc_reader.cpp skeleton_kind.cpp skeleton_inputs.cpp skeleton_play.cpp
                         skeleton_ik.cpp skeleton_ik_play.cpp svd_instance.cpp
-                        skeleton_player.cpp skeleton_probe.cpp ${_jelly_skeleton_study})
+                        skeleton_player.cpp skeleton_player_ik.cpp skeleton_probe.cpp ${_jelly_skeleton_study})

@@ -119,11 +119,13 @@ IkOps make_ik_ops(const Skeleton& skeleton, const SkeletonTasks& tasks,
   const std::string where = request.where;
   const int end = chain.front();
   const auto last = std::make_shared<LastFrames>();
-  ops.end_effector = [s, t, where, end, last](const Posture& p) {
+  ops.end_effector = [s, t, where, end, last, target = request.target,
+                      errors = request.errors](const Posture& p) {
     const BoneFrames& f = last->of(*s, *t, where, p);
     if (!finite(f.end[end]))
       task_error("forward_kinematics", where,
                  "returned a non-finite end of bone " + s->bones[end].name + ", the end effector");
+    if (errors) errors->push_back((target - f.end[end]).norm());
     return Vec3(f.end[end]);
   };
   ops.jacobian = [s, t, where, chain, last](const Posture& p, Matrix3X& J) {

@@ -24,8 +24,9 @@ bool has_schedule(const SceneSpec& scene) {
   return false;
 }
 
-/// The target of `chain` at time t: its fixed target, or its schedule's, linear between entries.
-Vec3 target_at(const IkChainSpec& chain, double t) {
+}  // namespace
+
+Vec3 ik_target_at(const IkChainSpec& chain, double t) {
   if (chain.target) return *chain.target;
   const std::vector<ScheduleEntry>& s = chain.schedule;
   if (t <= s.front().time) return s.front().velocity;
@@ -37,7 +38,7 @@ Vec3 target_at(const IkChainSpec& chain, double t) {
   return s.back().velocity;
 }
 
-skeleton::IkSettings settings_of(const SkeletonSceneSpec& k) {
+skeleton::IkSettings ik_settings_of(const SkeletonSceneSpec& k) {
   skeleton::IkSettings s;
   s.step = k.step;
   s.epsilon = k.epsilon;
@@ -47,6 +48,8 @@ skeleton::IkSettings settings_of(const SkeletonSceneSpec& k) {
   return s;
 }
 
+namespace {
+
 std::string vec_text(const Vec3& v) {
   return "(" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) +
          ")";
@@ -54,61 +57,25 @@ std::string vec_text(const Vec3& v) {
 
 std::string chain_name(const IkChainSpec& c) { return c.start + " -> " + c.end; }
 
-/// One solve's outcome, for the summary's comments and the report.
-struct Solve {
-  int frame = 0;
-  std::size_t chain = 0;
-  Vec3 target = Vec3::Zero();
-  IkResult result;
-};
-
-std::string solve_comment(const SceneSpec& scene, const Solve& s) {
+std::string solve_comment(const SceneSpec& scene, const IkSceneSolve& s) {
   return text_printf("# frame %d chain %zu %s: target %s, updates %d, stable %s, error %s", s.frame,
                      s.chain, chain_name(ik_chain_specs(scene)[s.chain]).c_str(),
                      vec_text(s.target).c_str(), s.result.updates,
                      s.result.stable ? "true" : "false", format_double(s.result.error).c_str());
 }
 
-/// Every solve of the scene, and the posture after each output frame.
-struct IkRun {
-  std::vector<Solve> solves;
-  std::vector<Posture> postures;
-};
-
-IkRun run_solves(const SceneSpec& scene, const SkeletonInputs& in, const SkeletonTasks& tasks) {
-  const SkeletonSceneSpec& k = skeleton_scene(scene);
-  const std::vector<IkChainSpec>& chains = ik_chain_specs(scene);
-  IkRun run;
-  Posture posture = in.motion.frames[static_cast<std::size_t>(k.frame)];
-  const long long frames = ik_solved_frames(scene);
-  for (int i = 0; i < frames; ++i) {
-    for (std::size_t c = 0; c < chains.size(); ++c) {
-      IkSolveRequest request;
-      request.start_bone = *in.skeleton.find(chains[c].start);
-      request.end_bone = *in.skeleton.find(chains[c].end);
-      request.target = target_at(chains[c], static_cast<double>(i) / k.fps);
-      request.settings = settings_of(k);
-      request.where =
-          text_printf("output frame %d, chain %zu (%s)", i, c, chain_name(chains[c]).c_str());
-      run.solves.push_back({i, c, request.target, solve_ik(in.skeleton, tasks, request, posture)});
-    }
-    run.postures.push_back(posture);
-  }
-  return run;
-}
-
-std::string summary_header(const SceneSpec& scene, const IkRun& run) {
+std::string summary_header(const SceneSpec& scene, const IkSceneRun& run) {
   std::string header;
-  for (const Solve& s : run.solves) header += solve_comment(scene, s) + "\n";
+  for (const IkSceneSolve& s : run.solves) header += solve_comment(scene, s) + "\n";
   return header + kSkeletonSummaryColumns;
 }
 
 /// The report's line of chain `c`: its one solve, or its solves over the schedule's frames.
-std::string chain_line(const SceneSpec& scene, const IkRun& run, std::size_t c) {
+std::string chain_line(const SceneSpec& scene, const IkSceneRun& run, std::size_t c) {
   int solves = 0, stable = 0;
   long updates = 0;
-  const Solve* last = nullptr;
-  for (const Solve& s : run.solves) {
+  const IkSceneSolve* last = nullptr;
+  for (const IkSceneSolve& s : run.solves) {
     if (s.chain != c) continue;
     ++solves;
     stable += s.result.stable ? 1 : 0;
@@ -126,13 +93,42 @@ std::string chain_line(const SceneSpec& scene, const IkRun& run, std::size_t c) 
 
 }  // namespace
 
-std::vector<Posture> ik_solved_postures(const SceneSpec& scene, const SkeletonInputs& in,
-                                        const SkeletonTasks& tasks) {
+std::string ik_solve_where(int frame, std::size_t c, const IkChainSpec& chain) {
+  return text_printf("output frame %d, chain %zu (%s)", frame, c, chain_name(chain).c_str());
+}
+
+IkSceneRun run_ik_scene(const SceneSpec& scene, const SkeletonInputs& in,
+                        const SkeletonTasks& tasks, bool record_errors) {
+  const SkeletonSceneSpec& k = skeleton_scene(scene);
+  const std::vector<IkChainSpec>& chains = ik_chain_specs(scene);
+  IkSceneRun run;
+  Posture posture = in.motion.frames[static_cast<std::size_t>(k.frame)];
+  const long long frames = ik_solved_frames(scene);
+  for (int i = 0; i < frames; ++i) {
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      IkSolveRequest request;
+      request.start_bone = *in.skeleton.find(chains[c].start);
+      request.end_bone = *in.skeleton.find(chains[c].end);
+      request.target = ik_target_at(chains[c], static_cast<double>(i) / k.fps);
+      request.settings = ik_settings_of(k);
+      request.where = ik_solve_where(i, c, chains[c]);
+      IkSceneSolve solve{i, c, request.target, {}, {}};
+      if (record_errors) request.errors = &solve.errors;
+      solve.result = solve_ik(in.skeleton, tasks, request, posture);
+      run.solves.push_back(std::move(solve));
+    }
+    run.postures.push_back(posture);
+  }
+  return run;
+}
+
+IkSceneRun ik_solved_run(const SceneSpec& scene, const SkeletonInputs& in,
+                         const SkeletonTasks& tasks) {
   const std::string slot = missing_ik_slot(tasks);
   if (!slot.empty())
     throw std::runtime_error("skeleton inverse kinematics needs the task " + slot +
                              " (kinematics contract §6): SkeletonTasks::" + slot + " is null");
-  return run_solves(scene, in, tasks).postures;
+  return run_ik_scene(scene, in, tasks, true);
 }
 
 long long ik_solved_frames(const SceneSpec& scene) {
@@ -172,7 +168,7 @@ std::string play_ik_scene(const SceneSpec& scene, const TaskTable& tasks,
                              ") do not fill it: SkeletonTasks::" + slot + " is null");
   }
   const SkeletonInputs in = read_skeleton_inputs(scene);
-  const IkRun run = run_solves(scene, in, slots);
+  const IkSceneRun run = run_ik_scene(scene, in, slots, false);
   const std::unique_ptr<CsvWriter> summary =
       open_skeleton_summary(options.summary_path, summary_header(scene, run));
   const long every = std::max(1L, options.every);

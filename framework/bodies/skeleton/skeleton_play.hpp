@@ -77,10 +77,36 @@ std::unique_ptr<CsvWriter> open_skeleton_summary(const std::string& path,
 long long ik_solved_frames(const SceneSpec& scene);
 /// `jelly check`'s lines about an ik scene's chains and settings.
 std::string ik_check_lines(const SceneSpec& scene, const SkeletonInputs& in);
-/// The posture after each solved frame of an ik scene (the viewer's output motion); throws
-/// std::runtime_error naming the task that is missing or answered wrongly.
-std::vector<skeleton::Posture> ik_solved_postures(const SceneSpec& scene, const SkeletonInputs& in,
-                                                  const SkeletonTasks& tasks);
+/// The target of `chain` at time t: its fixed target, or its schedule's, linear between entries.
+Vec3 ik_target_at(const IkChainSpec& chain, double t);
+/// The settings of every solve of the scene (body.step, epsilon, ...).
+skeleton::IkSettings ik_settings_of(const SkeletonSceneSpec& k);
+/// Where solve (frame, chain c) is, as its messages say: "output frame 0, chain 1 (a -> b)".
+std::string ik_solve_where(int frame, std::size_t c, const IkChainSpec& chain);
+
+/// One solve of an ik scene: where, its target, its outcome, and (when recorded) |x* − p| at each
+/// end-effector evaluation it asked for.
+struct IkSceneSolve {
+  int frame = 0;
+  std::size_t chain = 0;
+  Vec3 target = Vec3::Zero();
+  skeleton::IkResult result;
+  std::vector<double> errors;
+};
+/// Every solve of an ik scene, in order, and the posture after each solved frame.
+struct IkSceneRun {
+  std::vector<IkSceneSolve> solves;
+  std::vector<skeleton::Posture> postures;
+};
+/// The scene's solves (contract §6, §11.16): from the posture of AMC frame `frame`, each chain in
+/// order at each solved frame, warm-started; throws std::runtime_error naming the task that
+/// answered wrongly. The slots must all be filled (missing_ik_slot).
+IkSceneRun run_ik_scene(const SceneSpec& scene, const SkeletonInputs& in,
+                        const SkeletonTasks& tasks, bool record_errors);
+/// run_ik_scene with the errors recorded, after checking every slot is filled (the viewer's
+/// output motion); throws std::runtime_error naming the task that is missing or answered wrongly.
+IkSceneRun ik_solved_run(const SceneSpec& scene, const SkeletonInputs& in,
+                         const SkeletonTasks& tasks);
 /// `jelly run` of an ik scene (body.mode = "ik").
 std::string play_ik_scene(const SceneSpec& scene, const TaskTable& tasks,
                           const FramePlayOptions& options);

@@ -9,6 +9,7 @@
 
 #include "jelly/world.hpp"
 #include "skeleton_play.hpp"
+#include "skeleton_player_parts.hpp"
 
 namespace jelly {
 
@@ -16,17 +17,6 @@ using skeleton::BoneFrames;
 using skeleton::Motion;
 using skeleton::Posture;
 using skeleton::TimeWarp;
-
-struct SkeletonPlayer::Inputs {
-  bodies::SkeletonInputs files;
-};
-
-/// The bone frames of one frame, kept until another frame is asked for.
-struct SkeletonPlayer::Cache {
-  int key = -1;
-  bool ok = false;
-  BoneFrames frames;
-};
 
 namespace {
 
@@ -56,18 +46,6 @@ std::string warp_refused(const TimeWarp& w) {
   return "";
 }
 
-/// An ik scene's output: the posture after each solved frame (bodies::ik_solved_postures); on an
-/// error the output is empty and `problem` says why.
-void solve_ik_output(const SceneSpec& scene, const bodies::SkeletonInputs& files,
-                     const SkeletonTasks& tasks, Motion& output, std::string& problem) {
-  try {
-    output.frames = bodies::ik_solved_postures(scene, files, tasks);
-  } catch (const std::runtime_error& e) {
-    problem = e.what();
-    output.frames.clear();
-  }
-}
-
 }  // namespace
 
 SkeletonPlayer::SkeletonPlayer(const SceneSpec& scene, const SkeletonTasks& tasks)
@@ -85,7 +63,7 @@ SkeletonPlayer::SkeletonPlayer(const SceneSpec& scene, const SkeletonTasks& task
   scene_warp_ = warp_;
   blend_ = {static_cast<int>(k.a), static_cast<int>(k.b), static_cast<int>(k.window)};
   compute_output();
-  if (mode_ == SkeletonMode::Ik) solve_ik_output(scene, in_->files, tasks_, output_, problem_);
+  if (mode_ == SkeletonMode::Ik) start_ik(scene);
 }
 
 SkeletonPlayer::~SkeletonPlayer() = default;
@@ -108,7 +86,7 @@ void SkeletonPlayer::compute_output() {
   if (mode_ == SkeletonMode::Playback) {
     output_ = input();
   } else if (mode_ == SkeletonMode::Ik) {
-    return;  // solved once, by the constructor: it has the scene's chains (solve_ik_output)
+    return;  // solved by the constructor and Reset: the scene's chains (solve_ik_scene)
   } else if (mode_ == SkeletonMode::Blend) {
     if (!tasks_.blend_motions) {
       problem_ += std::string(problem_.empty() ? "" : "; ") +

@@ -4,8 +4,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -342,13 +345,31 @@ std::string fnv_hex(const std::string& text) {
   return buf;
 }
 
+namespace {
+
+// The folders of the code that computes the selected assignment's cases: the general harness
+// (grader/runner/), the slot-level cases of every body kind its manifest claims
+// (framework/bodies/<kind>/grader/, when the kind has them) and the assignment's own generators.
+std::vector<fs::path> generator_folders(const GradeConfig& config) {
+  std::vector<fs::path> out = {config.grader_dir() / "runner"};
+  std::set<std::string> kinds;
+  for (const BodyClaim& claim : config.assignment().manifest.bodies) kinds.insert(claim.kind);
+  for (const std::string& kind : kinds) {
+    const fs::path dir = config.source_dir / "framework" / "bodies" / kind / "grader";
+    if (fs::is_directory(dir)) out.push_back(dir);
+  }
+  out.push_back(config.runner_dir());
+  return out;
+}
+
+}  // namespace
+
 std::string harness_digest(const GradeConfig& config) {
   std::vector<fs::path> files;
   // The process around a case (its main() and its seccomp sandbox) does not change what a case
   // computes: changing how the runner is confined must not invalidate the reference data.
-  // The general harness (grader/runner/) and the assignment's own generators.
   static const char* const not_generator_code[] = {"main.cpp", "sandbox.cpp", "sandbox.hpp"};
-  for (const fs::path& dir : {config.grader_dir() / "runner", config.runner_dir()})
+  for (const fs::path& dir : generator_folders(config))
     for (const auto& e : fs::directory_iterator(dir)) {
       const std::string name = e.path().filename().string();
       if (e.is_regular_file() &&

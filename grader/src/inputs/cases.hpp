@@ -99,9 +99,11 @@ inline constexpr int kReferenceFormat = 1;
 /// 64-bit FNV-1a (jelly/fnv1a.hpp, with the grader's own offset basis) as 16 hex digits.
 std::string fnv_hex(const std::string& text);
 /// Digest of the runner's generator code (the files directly in grader/runner/ except the runner's
-/// main.cpp and its seccomp sandbox.{hpp,cpp}, which do not change any output): the reference data
-/// records it, and grading refuses data generated from different generator code. It holds no case
-/// parameters, so a student release (public cases only) computes the same digest.
+/// main.cpp and its seccomp sandbox.{hpp,cpp}, which do not change any output; those in
+/// framework/bodies/<kind>/grader/ of each kind the manifest's `bodies` claim; those in the
+/// assignment's grader/runner/): the reference data records it, and grading refuses data
+/// generated from different generator code. It holds no case parameters, so a student release
+/// (public cases only) computes the same digest.
 std::string harness_digest(const GradeConfig& config);
 /// Hash identifying one case: its id, generator, its own parameters and the harness digest. Grading
 /// refuses reference data whose case_hash differs (the case's parameters changed).

@@ -1,5 +1,6 @@
 // The grader's runner code (grader/runner/, shipped in the student release so that students can
-// run the public tests) and each assignment's case generators (assignments/<id>/grader/runner/)
+// run the public tests), the body kinds' slot-level cases (framework/bodies/<kind>/grader/) and
+// each assignment's case generators (assignments/<id>/grader/runner/)
 // must not say what the hidden tests feed the student's code: a hidden case is a generator name
 // plus parameters in assignments/<id>/grader/cases/*.toml, and the release tool drops hidden
 // [[case]] entries. For every assignment of the build (grade-config.json), this test builds the
@@ -41,9 +42,12 @@ std::map<std::string, fs::path> assignments() {
   return out;
 }
 
-// The runner code shipped to students: the general harness and every assignment's generators.
+// The runner code shipped to students: the general harness, the body kinds' slot-level cases and
+// every assignment's generators.
 std::vector<fs::path> runner_folders() {
   std::vector<fs::path> out = {kSource / "grader" / "runner"};
+  for (const auto& kind : fs::directory_iterator(kSource / "framework" / "bodies"))
+    if (fs::is_directory(kind.path() / "grader")) out.push_back(kind.path() / "grader");
   for (const auto& [id, dir] : assignments()) out.push_back(dir / "grader" / "runner");
   return out;
 }

@@ -57,7 +57,9 @@ void register_blend_cases(Registry& r) {
   r.add({"blend",
          "blend_motions of two course motions (params.course) or two random ones "
          "(params.random), with params.a, b and window",
-         [](const TaskTable&, const Params& p, Json& input) { prepare_skeleton_input(p, input); },
+         [](const TaskTable&, const Params& p, Json& input) {
+           prepare_skeleton_input(p, input, kLimitsInInput);
+         },
          [](const TaskTable& t, const Params& p, const Json& input, Outputs& o) {
            run_blend(t, p, input, o);
          }});

@@ -154,7 +154,9 @@ void register_warp_cases(Registry& r) {
   r.add({"warped_posture",
          "warped_posture of the course's motion (params.course) or a random one (params.random) "
          "at given times (params.times) or every frame of a warp (params.warp)",
-         [](const TaskTable&, const Params& p, Json& input) { prepare_skeleton_input(p, input); },
+         [](const TaskTable&, const Params& p, Json& input) {
+           prepare_skeleton_input(p, input, kLimitsInInput);
+         },
          [](const TaskTable& t, const Params& p, const Json& input, Outputs& o) {
            run_warped_posture(t, p, input, o);
          }});

@@ -1,7 +1,8 @@
-// A4's case generators (grader/runner/harness.hpp) and the skeletons, postures and recorded
-// answers they feed the tasks: the course's files (read by the reference when the data is
-// generated, stored as the case's input) or random ones made from the case's parameters. The
-// iteration and the solve run through scripted IkOps (ik_script.cpp): answers recorded from the
+// A4's case generators (grader/runner/harness.hpp): its own (T1–T5) and the skeleton module's
+// forward kinematics (kinematics_cases.hpp, its T0), which A4 registers with its case files. The
+// skeletons and postures they play on are the skeleton module's case inputs
+// (skeleton_case_inputs.hpp): the course's files or random ones made from the case's parameters.
+// The iteration and the solve run through scripted IkOps (ik_script.cpp): answers recorded from the
 // reference when the data was generated, or a toy the case describes; never the reference itself,
 // which is not linked with a submission.
 #pragma once
@@ -13,61 +14,24 @@
 #include "jelly/skeleton/ik.hpp"
 #include "jelly/skeleton/skeleton.hpp"
 #include "jelly/skeleton_tasks.hpp"
+#include "kinematics_cases.hpp"
+#include "skeleton_case_inputs.hpp"
 
 namespace jelly::grade {
 
-void register_kinematics_cases(Registry& r);     // A4.T0
 void register_chain_cases(Registry& r);          // A4.T1
 void register_jacobian_cases(Registry& r);       // A4.T2
 void register_least_squares_cases(Registry& r);  // A4.T3
 void register_iterate_cases(Registry& r);        // A4.T4
 void register_limits_cases(Registry& r);         // A4.T5
 
-// ----- inputs (skeleton_inputs.cpp) -----
+/// A4's clamp reads the course skeleton's joint limits: its cases' inputs record them.
+inline constexpr LimitsInInput kLimitsInInput = LimitsInInput::Recorded;
 
-/// What a case plays on: a skeleton and its postures.
-struct SkeletonInput {
-  skeleton::Skeleton skeleton;
-  skeleton::Motion motion;  ///< the postures
-  std::string words;        ///< what it is, for the outputs' notes
-};
+// ----- chains (chains.cpp) -----
 
-/// At generate-reference time: params.course = { asf, amc?, from?, to? } (files of data/mocap/,
-/// frames [from, to) of the motion, none without amc; scale from params.scale, default 0.2) read
-/// into `input`; nothing for a random case.
-void prepare_skeleton_input(const Params& params, Json& input);
-
-/// The case's skeleton and postures: the prepared course files, or params.random = { seed, bones,
-/// frames, scale, angle, translation, limits } (a random tree, random axes, directions, lengths
-/// and dof orders; random postures; with limits = 1 random limits on about two bones in three, 2:
-/// the root's too).
-SkeletonInput skeleton_input(const Params& params, const Json& input);
-
-/// A bone's index by name ("lowerback") or as a number in a string ("7"); throws naming `key`.
-int bone_index(const skeleton::Skeleton& s, const std::string& name, const std::string& key);
-
-/// A posture as [tx, ty, tz, rx0, ry0, rz0, rx1, …] and back.
-Json posture_json(const skeleton::Posture& p);
-skeleton::Posture json_posture(const Json& j, std::size_t bones);
-Json vec_json(const Vec3& v);
-Vec3 json_vec(const Json& j);
-
-/// Forward kinematics as recorded in an input: { rotation: [[9 numbers, column by column]…],
-/// start: [[x, y, z]…], end: […] }.
-Json frames_json(const skeleton::BoneFrames& f);
-skeleton::BoneFrames json_frames(const Json& j);
-
-/// Every bone's angles (3×n, column b = (rx, ry, rz) of bone b) and the chain's angles alone.
-Vec3Array posture_angles(const skeleton::Posture& p);
+/// The chain's angles (3×n, column b = (rx, ry, rz) of the chain's bone b).
 Vec3Array chain_angles(const skeleton::Posture& p, const std::vector<int>& chain);
-
-/// The angles' rotations E(θ) (the framework's), one per bone.
-std::vector<skeleton::Mat3> posture_rotations(const std::vector<Vec3>& angles);
-/// Emits `prefix`_axis_x, _axis_y, _axis_z: every bone's rotated axes (the rotations' columns).
-void emit_rotations(Outputs& out, const std::string& prefix,
-                    const std::vector<skeleton::Mat3>& rotations, const std::string& what);
-/// "0 root, 1 lhipjoint, …" (bones in file order, at most 40) for notes.
-std::string bone_list(const skeleton::Skeleton& s);
 /// "rfingers ← rwrist ← … ← lowerback" for notes.
 std::string chain_text(const skeleton::Skeleton& s, const std::vector<int>& chain);
 

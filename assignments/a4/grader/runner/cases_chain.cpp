@@ -68,7 +68,9 @@ void register_chain_cases(Registry& r) {
   r.add({"ik_chain",
          "ik_chain between named (params.pairs) or random (params.random.pairs) bones of the "
          "course's skeleton (params.course) or of a random tree (params.random)",
-         [](const TaskTable&, const Params& p, Json& input) { prepare_skeleton_input(p, input); },
+         [](const TaskTable&, const Params& p, Json& input) {
+           prepare_skeleton_input(p, input, kLimitsInInput);
+         },
          [](const TaskTable& t, const Params& p, const Json& input, Outputs& o) {
            run_chain(t, p, input, o);
          }});

@@ -46,7 +46,7 @@ IkScript toy_script(const Params& toy, const Vec3& target, std::size_t chain_siz
 // At generate-reference time: the skeleton, the chain, the target and the script (recorded from
 // the reference's own solve, or the toy).
 void prepare_iterate(const TaskTable& t, const Params& params, Json& input) {
-  prepare_skeleton_input(params, input);
+  prepare_skeleton_input(params, input, kLimitsInInput);
   const SkeletonInput in = skeleton_input(params, input);
   const SkeletonTasks& k = skeleton_tasks(t);
   const std::vector<int> chain =

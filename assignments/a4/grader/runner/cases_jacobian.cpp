@@ -44,7 +44,7 @@ std::vector<std::vector<int>> case_chains(const TaskTable& t, const skeleton::Sk
 // At generate-reference time: the skeleton, and with the reference's tasks every posture's
 // forward kinematics and every chain.
 void prepare_jacobian(const TaskTable& t, const Params& params, Json& input) {
-  prepare_skeleton_input(params, input);
+  prepare_skeleton_input(params, input, kLimitsInInput);
   const SkeletonInput in = skeleton_input(params, input);
   input["fk"] = Json::array();
   for (const skeleton::Posture& p : in.motion.frames) {

@@ -30,7 +30,7 @@ std::vector<skeleton::Posture> pushed(const SkeletonInput& in, const Params& par
 
 // The chains of params.pairs = [{ start, end }], prepared with the reference's ik_chain.
 void prepare_chains(const TaskTable& t, const Params& params, Json& input) {
-  prepare_skeleton_input(params, input);
+  prepare_skeleton_input(params, input, kLimitsInInput);
   const SkeletonInput in = skeleton_input(params, input);
   input["chains"] = Json::array();
   for (const Params& p : params.list("pairs"))
@@ -121,7 +121,9 @@ void register_limits_cases(Registry& r) {
          prepare_chains, run_clamp});
   r.add({"ik_solve",
          "ik_solve around a scripted ops.iterate reporting the outcomes of params.outcomes",
-         [](const TaskTable&, const Params& p, Json& input) { prepare_skeleton_input(p, input); },
+         [](const TaskTable&, const Params& p, Json& input) {
+           prepare_skeleton_input(p, input, kLimitsInInput);
+         },
          run_solve});
 }
 

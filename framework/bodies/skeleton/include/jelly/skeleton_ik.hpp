@@ -19,6 +19,9 @@ struct IkSolveRequest {
   Vec3 target = Vec3::Zero();
   skeleton::IkSettings settings;
   std::string where;
+  /// When set, |target − p| of each end-effector evaluation the solve asks for is appended (the
+  /// viewer's plot of the error against the update); the solve's answers do not change.
+  std::vector<double>* errors = nullptr;
 };
 
 /// The slot of `tasks` a solve needs that is null ("ik_jacobian"), or "" when all are filled:

@@ -21,6 +21,27 @@ namespace jelly {
 
 class World;
 
+/// One chain of an ik scene as the viewer edits it: its bones and, once the viewer moved it, its
+/// own target.
+struct IkChainState {
+  int start = 0;               ///< the start bone
+  int end = 0;                 ///< the end bone, whose end reaches for the target
+  std::vector<int> bones;      ///< the chain ik_chain gives, end bone first; empty when it failed
+  std::string chain_error;     ///< why ik_chain gave no chain (the task's message), or ""
+  bool moved = false;          ///< the target is the viewer's (else the scene's at the shown frame)
+  Vec3 target = Vec3::Zero();  ///< the viewer's target [scene units] (when moved)
+};
+
+/// The last solve of one chain at one frame: what it returned, |x* − p| at each end-effector
+/// evaluation it asked for (the first before any update, the last after the last), or why it
+/// failed.
+struct IkSolveRecord {
+  bool solved = false;  ///< false: failed (error says why) or never solved
+  skeleton::IkResult result;
+  std::vector<double> errors;
+  std::string error;
+};
+
 /// The playback of a skeleton scene: its output motion, a position in it, and the bone frames of
 /// the shown frame. A task that is missing or answers wrongly never throws here: problem() says
 /// what is wrong, and the frames it could not compute are null. The read-outs are const (the
@@ -72,6 +93,33 @@ class SkeletonPlayer {
   /// While playing: `seconds` of simulated time × speed × fps frames further, wrapping at the end.
   void advance(double seconds);
 
+  // ----- inverse kinematics (mode ik): the viewer's live solves -----
+  /// The scene's chains (none outside mode ik), as the viewer edits them.
+  std::size_t ik_chain_count() const;
+  const IkChainState& ik_chain(std::size_t c) const;
+  /// Chain c's target at the shown frame: the viewer's once moved, else the scene's (its schedule's
+  /// at the frame's time).
+  Vec3 ik_target(std::size_t c) const;
+  /// Chain c's last solve at the shown frame (the scene's solve until the viewer solves again).
+  const IkSolveRecord& ik_record(std::size_t c) const;
+  /// The viewer's target for chain c; pauses, and the next ik_update solves.
+  void set_ik_target(std::size_t c, const Vec3& target);
+  /// New start and end bones for chain c (ik_chain's answer checked: chain_error says why it is
+  /// refused); the next ik_update solves.
+  void set_ik_bones(std::size_t c, int start, int end);
+  const skeleton::IkSettings& ik_settings() const;
+  /// New settings (step, epsilon, max_iterations, limits); the next ik_update solves.
+  void set_ik_settings(const skeleton::IkSettings& settings);
+  /// The scene's chains, targets and settings again, and the scene's solves from its frame.
+  void ik_reset();
+  /// When a target, a chain or the settings changed since the last solve: solves every chain in
+  /// order at the shown frame, each warm-started from the posture the one before left (contract
+  /// §11.16), through solve_ik (as `jelly run`); a chain whose task fails keeps the posture and
+  /// its record says why. Returns whether it solved; without a change it does nothing.
+  bool ik_update();
+  /// The live solves ik_update made (each chain's solve counts one).
+  long ik_solve_count() const;
+
   // ----- what is shown -----
   /// The bone frames of output frame `i` (the played posture's forward kinematics), or null
   /// when the tasks cannot give them (problem() says why). Cached for the last frame asked.
@@ -93,7 +141,11 @@ class SkeletonPlayer {
                                  int key) const;
 
   struct Inputs;
+  struct Ik;
+  void start_ik(const SceneSpec& scene);
+  void solve_ik_scene();
   std::unique_ptr<Inputs> in_;
+  std::unique_ptr<Ik> ik_;  // mode ik only
   SkeletonTasks tasks_;
   SkeletonMode mode_;
   double fps_;

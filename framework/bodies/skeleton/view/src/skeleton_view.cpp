@@ -30,7 +30,8 @@ class SkeletonView final : public render::BodyView {
   std::string_view panel_id() const override { return "skeleton"; }
   std::string_view keys_help() const override {
     return "skeleton scenes: left/right step a frame back/forward, K play/pause the motion, "
-           "Home stop";
+           "Home stop; ik scenes: drag a ball with the mouse, arrows move the selected target "
+           "along the view's right and up, PgUp/PgDn away/toward, Tab the next chain";
   }
 };
 
@@ -43,6 +44,7 @@ bool SkeletonView::frame(const World& world, const std::function<void(const Vec3
   for (const Vec3& e : ends) grow(e);
   if (ends.empty())
     for (const skeleton::Posture& p : player->input().frames) grow(p.root_translation);
+  for (std::size_t c = 0; c < player->ik_chain_count(); ++c) grow(player->ik_target(c));
   if (player->mode() == SkeletonMode::Warp && view_settings().side_by_side) {
     const Vec3 offset = original_offset(*player);
     for (const Vec3& e : ends) grow(e + offset);

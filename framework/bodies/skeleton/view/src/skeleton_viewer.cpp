@@ -2,7 +2,8 @@
 // and forward, the frame slider, the speed; in a warp the keyframe and frame-count sliders that
 // re-warp through the tasks, and the original beside or over the warped motion; the bone picker
 // with the bone's angles and position and a plot of its angle or height over time, original
-// against warped), the keys, and the smoke test's check. They act on every run.
+// against warped; an ik scene's section, skeleton_ik_controls.cpp), the keys, the ik target's
+// drag, and the smoke test's check. They act on every run.
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
@@ -15,6 +16,7 @@
 
 #include "jelly/bodies/skeleton/view/skeleton_view.hpp"
 #include "jelly/session/simulation_run.hpp"
+#include "skeleton_ik_controls.hpp"
 
 namespace jelly::skeleton_view {
 
@@ -43,10 +45,21 @@ class SkeletonControls final : public render::BodyControls {
   void reset() override {
     original_key_.clear();
     shown_key_.clear();
+    ik_.reset();
   }
   void handle_keys(const ViewerContext& c) override;
   void draw_panel(const ViewerContext& c) override;
   int smoke_check(const ViewerContext& c) override;
+  /// An ik scene's live solves: what the keys, the mouse and the panel moved is solved once.
+  void update(const ViewerContext& c) override {
+    for (SkeletonPlayer* p : players(c)) p->ik_update();
+  }
+  bool mouse_down(const ViewerContext& c) override {
+    const std::vector<SkeletonPlayer*> all = players(c);
+    return !all.empty() && ik_.mouse_down(c, *all.front());
+  }
+  void mouse_drag(const ViewerContext& c) override { ik_.mouse_drag(c, players(c)); }
+  void mouse_up(const ViewerContext&) override { ik_.mouse_up(); }
 
  private:
   void playback(const ViewerContext& c, SkeletonPlayer& p);
@@ -54,6 +67,7 @@ class SkeletonControls final : public render::BodyControls {
   void bone_picker(SkeletonPlayer& p);
   void plot(SkeletonPlayer& p);
 
+  IkControls ik_;
   BoneQuantity quantity_ = BoneQuantity::Rx;
   std::string warp_error_;
   // What the cached series were made of: the original's does not change while a warp slider
@@ -63,9 +77,12 @@ class SkeletonControls final : public render::BodyControls {
 };
 
 void SkeletonControls::handle_keys(const ViewerContext& c) {
-  for (SkeletonPlayer* p : players(c)) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) p->step(+1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) p->step(-1);
+  const std::vector<SkeletonPlayer*> all = players(c);
+  const bool ik = !all.empty() && all.front()->mode() == SkeletonMode::Ik;
+  if (ik) ik_.handle_keys(c, all);  // the arrows move the target (the panel's - and + step)
+  for (SkeletonPlayer* p : all) {
+    if (!ik && ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) p->step(+1);
+    if (!ik && ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) p->step(-1);
     if (ImGui::IsKeyPressed(GLFW_KEY_K, false)) p->set_playing(!p->playing());
     if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) p->stop();
   }
@@ -220,6 +237,10 @@ void SkeletonControls::draw_panel(const ViewerContext& c) {
     ImGui::Separator();
     warp_sliders(c, p);
   }
+  if (p.mode() == SkeletonMode::Ik) {
+    ImGui::Separator();
+    ik_.draw_panel(c, all);
+  }
   ImGui::Separator();
   bone_picker(p);
 }
@@ -236,6 +257,7 @@ int SkeletonControls::smoke_check(const ViewerContext& c) {
     ++failures;
   };
   if (!p.problem().empty()) fail("the skeleton is not drawn: " + p.problem());
+  if (p.mode() == SkeletonMode::Ik && p.problem().empty()) failures += ik_.smoke_check(c, p);
   if (p.frame_count() < 3) return failures;
   p.seek(1);
   p.step(+1);

@@ -56,6 +56,13 @@ struct ViewerContext {
   std::vector<session::SimulationRun*> runs;
   double camera_yaw_degrees = 0.0;
   std::string scene_name;
+  /// The camera of the view (null when there is none, e.g. in a test without one).
+  const OrbitCamera* camera = nullptr;
+  /// Where the first run is drawn [window pixels, x right, y down from the window's top-left];
+  /// project through `camera` with its width and height.
+  Viewport viewport;
+  /// The mouse [window pixels, as the viewport].
+  Eigen::Vector2d mouse = Eigen::Vector2d::Zero();
 };
 
 /// A kind's live controls in the viewer: its keys, its panel section and the smoke test's check of
@@ -69,6 +76,16 @@ class BodyControls {
   virtual void handle_keys(const ViewerContext&) {}
   /// The contents of its panel section (BodyView::panel_title()).
   virtual void draw_panel(const ViewerContext&) {}
+  /// Once a frame, after the keys, the mouse and the panel and before drawing: what they changed
+  /// takes effect (e.g. a solve the kind runs when something it shows was moved).
+  virtual void update(const ViewerContext&) {}
+  /// The left button went down at `mouse` over the view, outside ImGui's windows: true when the
+  /// kind takes this drag (then the camera does not orbit, and mouse_drag follows it).
+  virtual bool mouse_down(const ViewerContext&) { return false; }
+  /// The drag the kind took moved to `mouse` (each frame the button is held).
+  virtual void mouse_drag(const ViewerContext&) {}
+  /// The button of the drag it took went up.
+  virtual void mouse_up(const ViewerContext&) {}
   /// --smoke-test, on a scene of this kind: presses its keys and checks what they did; prints a
   /// line, and each failure; returns the number of failures.
   virtual int smoke_check(const ViewerContext&) { return 0; }

@@ -2,9 +2,9 @@
 // drawn lit from its player's forward kinematics (jelly/skeleton_player.hpp), bones as capsules
 // (a cylinder between the joints) and joints as spheres, on the ground the kind's build adds; in
 // a warp the original motion beside the warped one in its own colour; the picked bone
-// highlighted. Its viewer controls (play, pause, stop, step, frame slider, speed; the warp's
-// sliders; the bone picker and its plot) are skeleton_controls.hpp and the panel in
-// jelly_skeleton_view_controls.
+// highlighted; in an ik scene each chain's bones, target ball and end effector. Its viewer controls
+// (play, pause, stop, step, frame slider, speed; the warp's sliders; the bone picker and its plot)
+// are skeleton_controls.hpp and the panel in jelly_skeleton_view_controls.
 #pragma once
 
 #include <memory>
@@ -25,6 +25,11 @@ inline const Eigen::Vector3f kBone{0.22f, 0.50f, 0.95f};
 inline const Eigen::Vector3f kJoint{0.95f, 0.80f, 0.25f};
 inline const Eigen::Vector3f kOriginalBone{0.90f, 0.30f, 0.28f};
 inline const Eigen::Vector3f kPickedBone{0.25f, 0.88f, 0.35f};
+/// An ik scene's: each chain's target (the ball), its bones, and its end effector (the end of the
+/// end bone).
+inline const Eigen::Vector3f kTarget{0.92f, 0.22f, 0.78f};
+inline const Eigen::Vector3f kChainBone{0.15f, 0.82f, 0.85f};
+inline const Eigen::Vector3f kEffector{1.0f, 0.55f, 0.05f};
 inline constexpr render::Material kBoneMaterial{0.35f, 32.0f};
 
 /// What the view shows besides the played motion (the Skeleton panel edits it; one for the
@@ -57,10 +62,11 @@ class SkeletonFigure {
   const render::Mesh& picked() const { return picked_; }
   double bone_radius() const { return bone_radius_; }
   double joint_radius() const { return joint_radius_; }
-
- private:
+  /// A cylinder of `radius` from a to b (open ends), and a sphere, added to `mesh`.
   void add_cylinder(render::Mesh& mesh, const Vec3& a, const Vec3& b, double radius) const;
   void add_sphere(render::Mesh& mesh, const Vec3& center, double radius) const;
+
+ private:
   int segments_;
   double bone_radius_, joint_radius_;
   std::vector<Eigen::Vector3f> sphere_dirs_;
@@ -68,13 +74,28 @@ class SkeletonFigure {
   render::Mesh bones_, joints_, picked_;
 };
 
-/// The draw proxies of a skeleton world: the shown frame's figure and, in a warp, the original's.
+/// An ik scene's marks over the figure: each chain's bones (thicker), its target (a small ball
+/// with three arms along the axes) and its end effector's ball (larger than the target's: on a
+/// reached target the arms stick out of it).
+struct IkMarks {
+  render::Mesh chain, targets, effectors;
+  /// Radii [scene units]: the target's ball, the end effector's ball, a chain bone.
+  double target_radius = 0.0, effector_radius = 0.0, chain_radius = 0.0;
+  /// The marks of `player`'s chains at the shown frame (`frames`: its forward kinematics); the
+  /// picked bone keeps its own highlight.
+  void update(const SkeletonPlayer& player, const skeleton::BoneFrames& frames,
+              const SkeletonFigure& figure, int picked);
+};
+
+/// The draw proxies of a skeleton world: the shown frame's figure and, in a warp, the original's;
+/// in an ik scene the chains, targets and end effectors.
 class SkeletonDrawable : public render::BodyDrawable {
  public:
   explicit SkeletonDrawable(const World& world);
   /// The figure of the shown frame (empty meshes when the tasks cannot give it).
   const SkeletonFigure& shown() const { return *shown_; }
   const SkeletonFigure& original() const { return *original_; }
+  const IkMarks& ik_marks() const { return ik_; }
   /// Whether the last update drew the original too.
   bool original_shown() const { return original_shown_; }
   /// Why the skeleton is not (fully) drawn: the player's problem(), "" when all is well.
@@ -88,10 +109,11 @@ class SkeletonDrawable : public render::BodyDrawable {
 
  private:
   std::unique_ptr<SkeletonFigure> shown_, original_;
+  IkMarks ik_;
   bool original_shown_ = false;
   std::string message_;
   const render::Gl* gl_ = nullptr;    // from create_gpu
-  std::vector<render::GpuMesh> gpu_;  // shown bones, joints, picked; original bones, joints
+  std::vector<render::GpuMesh> gpu_;  // shown bones, joints, picked; original's; ik marks
 };
 
 /// The registered view of the skeleton kind.

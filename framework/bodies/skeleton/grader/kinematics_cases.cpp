@@ -1,13 +1,14 @@
-// A3.T1 and A3.T2 cases: local_rotation on hand-made and random angles (gimbal lock included),
-// and forward_kinematics on the course's skeleton and postures and on random skeletons (random
-// trees, axes, directions, lengths, dof orders) and postures. Rotations are compared as
-// matrices, never as Euler triples.
+// The slot-level cases of the skeleton's forward kinematics (kinematics_cases.hpp): local_rotation
+// on hand-made and random angles (gimbal lock included), and forward_kinematics on the course's
+// skeleton and postures and on random skeletons (random trees, axes, directions, lengths, dof
+// orders) and postures. Each assignment that has these tasks registers them and runs them with its
+// own case files.
+#include "kinematics_cases.hpp"
+
 #include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
-
-#include "cases.hpp"
 
 namespace jelly::grade {
 
@@ -78,11 +79,7 @@ void run_forward_kinematics(const TaskTable& t, const Params& params, const Json
 
 }  // namespace
 
-// local_rotation: params.angles = [{ degrees }] and/or params.random; outputs eNN_x, eNN_y, eNN_z
-// (E's columns).
-// forward_kinematics: params.course (prepared) or params.random; outputs pNN_end, pNN_start,
-// pNN_rotation for every posture.
-void register_kinematics_cases(Registry& r) {
+void register_kinematics_cases(Registry& r, LimitsInInput limits) {
   r.add({"local_rotation",
          "local_rotation on hand-made (params.angles) or random (params.random) Euler angles",
          nullptr, [](const TaskTable& t, const Params& p, const Json&, Outputs& o) {
@@ -91,7 +88,9 @@ void register_kinematics_cases(Registry& r) {
   r.add({"forward_kinematics",
          "forward_kinematics of every posture of the course's files (params.course) or of a random "
          "skeleton and motion (params.random)",
-         [](const TaskTable&, const Params& p, Json& input) { prepare_skeleton_input(p, input); },
+         [limits](const TaskTable&, const Params& p, Json& input) {
+           prepare_skeleton_input(p, input, limits);
+         },
          [](const TaskTable& t, const Params& p, const Json& input, Outputs& o) {
            run_forward_kinematics(t, p, input, o);
          }});
