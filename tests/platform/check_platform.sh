@@ -188,7 +188,7 @@ corner="%S/scenes/hard/corner-first.toml"
 # run must end with that status, 0 unless given: two runs that fail alike prove nothing). A1's are
 # the same as before A2 existed (its implicit Euler run blows up at t = 1.5 s by design: 3); A2's run the course's cloth scenes with every course integrator (explicit
 # Euler on cloth-2022 is chaotic at the collisions, decision 14: the same bits there are the
-# strictest test), the kinematic sphere's schedule of cloth-2024, and `jelly check`. A3's are below.
+# strictest test), the kinematic sphere's schedule of cloth-2024, and `jelly check`. A3's and A4's are below.
 runs_a1=(
   "course-summary|run $scene --summary @/course-summary.csv"
   "course-rk4-trajectory|run $scene --integrator rk4 --duration 2 --every 250 --out @/course-rk4.csv"
@@ -215,6 +215,18 @@ runs_a3=(
   "hw2-blend-2022-summary|run %S/scenes/hw2-blend-2022.toml --summary @/hw2-blend-2022.csv"
   "hw2-retime-2023-summary|run %S/scenes/hw2-retime-2023.toml --summary @/hw2-retime-2023.csv"
   "hw2-warp-2022-check|check %S/scenes/hw2-warp-2022.toml"
+)
+# A4's: every ik scene solved through the tasks (the chain, the Jacobian, the minimum-norm solve,
+# the iteration, limits): the solved posture's every bone and each solve's updates, stable and
+# error (the summary's comment lines), and `jelly check` of the course's.
+runs_a4=(
+  "hw3-ik-summary|run %S/scenes/hw3-ik.toml --summary @/hw3-ik.csv"
+  "hw3-ik-limits-summary|run %S/scenes/hw3-ik-limits.toml --summary @/hw3-ik-limits.csv"
+  "ik-unreachable-summary|run %S/scenes/ik-unreachable.toml --summary @/ik-unreachable.csv"
+  "ik-straight-arm-summary|run %S/scenes/ik-straight-arm.toml --summary @/ik-straight-arm.csv"
+  "hw3-ik-2024-summary|run %S/scenes/hw3-ik-2024.toml --summary @/hw3-ik-2024.csv"
+  "ik-moving-target-summary|run %S/scenes/ik-moving-target.toml --summary @/ik-moving-target.csv"
+  "hw3-ik-check|check %S/scenes/hw3-ik.toml"
 )
 runs=()
 for id in "${ids[@]}"; do

@@ -31,6 +31,15 @@ def _run(command, log, cwd=None, env=None):
                               env=env).returncode
 
 
+def _stopped_at_a_task(status, output):
+    """The line of a run that stopped cleanly at a task's unusable answer (status 2, "jelly run: task
+    NAME ..."), or None: any other failure, a crash included, is not that."""
+    if status != 2:
+        return None
+    lines = [line for line in output.splitlines() if line.startswith("jelly run: task ")]
+    return lines[-1] if lines else None
+
+
 def _text(path):
     return Path(path).read_text(encoding="utf-8", errors="replace")
 
@@ -178,8 +187,14 @@ class Verifier:
                 raise Die(f"verify {name}: assignments/{i}/assignment.toml: default_scene: scenes/{scene}.toml is "
                           "not in the release")
             log = Path(f"{b}.run-{i}.log")
-            if _run([cli, "run", self.fresh / "scenes" / f"{scene}.toml", "--duration", "0.2", "--summary",
-                     f"{b}.summary-{i}.csv"], log, cwd=self.tmp):
+            status = _run([cli, "run", self.fresh / "scenes" / f"{scene}.toml", "--duration", "0.2", "--summary",
+                           f"{b}.summary-{i}.csv"], log, cwd=self.tmp)
+            stopped = _stopped_at_a_task(status, _text(log))
+            if stopped:
+                # A scene whose first step needs an answer the stubs do not give (an IK chain) stops
+                # there with status 2 and the task's name, as docs/skeleton-scenes.md says: no crash.
+                print(f"  the stubs stop {scene} at its first task, as documented: {stopped}")
+            elif status:
                 warn(_text(log).rstrip("\n"))
                 raise Die(f"verify {name}: jelly run on scenes/{scene}.toml crashed or failed with the stubs of {i}")
 

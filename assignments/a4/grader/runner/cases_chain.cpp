@@ -28,7 +28,7 @@ std::vector<std::pair<int, int>> chain_pairs(const skeleton::Skeleton& s, const 
                        bone_index(s, p.text("end"), "params.pairs.end"));
   if (params.has("random") && params.table("random").has("pairs")) {
     const Params r = params.table("random");
-    Sequence q(static_cast<std::uint64_t>(r.integer("seed")) + 1000);
+    Sequence q(static_cast<std::uint64_t>(r.integer("seed")) + 64);
     const long n = static_cast<long>(s.bones.size());
     for (long i = 0; i < r.integer("pairs"); ++i) {
       const int end = static_cast<int>(below(q, n));
