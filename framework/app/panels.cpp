@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "app.hpp"
+#include "jelly/body_kind.hpp"
 #include "jelly/params.hpp"
 
 namespace jelly::app {
@@ -309,7 +310,13 @@ void simulation_section(AppState& s, const std::vector<SimulationRun*>& runs, do
   if (!header(s, "Simulation", "simulation", true)) return;
   SimulationRun* main_run = runs.empty() ? nullptr : runs.front();
   time_controls(s, main_run, fps);
-  if (!s.comparing) integrator_controls(s, main_run);
+  // A kind that plays recorded frames integrates nothing (as in the caption): no integrator, step
+  // or stable-step estimate to offer.
+  const BodyKindModule* kind = find_body_kind(s.edited.body_kind.name);
+  if (kind && kind->plays_frames())
+    ImGui::TextDisabled("played frame by frame: no integrator or step");
+  else if (!s.comparing)
+    integrator_controls(s, main_run);
   run_problems(s, runs);
 }
 
