@@ -6,9 +6,9 @@
 //   BM_EulerToQuaternion, BM_QuaternionToEuler, BM_Slerp           one call, ns
 //   BM_PostureRotations    E(angles) of every bone of one posture of punch_kick.amc, ns
 //   BM_ForwardKinematics/<impl>   forward kinematics of the course's 31-bone skeleton, one posture
-//       of punch_kick.amc per iteration (all 450 in turn), ns. impl: reference (A3's,
-//       solutions/a3/kinematics.cpp, portable sines), plain (the same tree walk with Eigen's
-//       AngleAxisd products: the C library's sin and cos)
+//       of punch_kick.amc per iteration (all 450 in turn), ns. impl: reference (A3's, from
+//       solutions/tasks/kinematics/kinematics.cpp, portable sines), plain (the same tree walk with
+//       Eigen's AngleAxisd products: the C library's sin and cos)
 //   BM_ReadAmc/<impl>      data/mocap/punch_kick.amc read into a Motion (skeleton read once), ms.
 //       impl: reference (skeleton::read_amc: tokens, checks, errors), plain (std::ifstream and
 //       operator>>, no checks)

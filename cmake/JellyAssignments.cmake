@@ -2,22 +2,36 @@
 # assignments/<id>/assignment.toml; jelly_add_assignment(<folder>) reads it and makes, for
 # assignment <id> with C++ namespace <ns> (jelly::<ns>):
 #   jelly_<id>_tasks_assignments  its student stubs + its bindings (always)
-#   jelly_<id>_tasks_solutions    its reference + bindings (only when solutions/<id>/ exists: never in
-#                                 a student release)
+#   jelly_<id>_tasks_solutions    its reference + bindings (only when the tree holds the reference
+#                                 of every file: never in a student release)
 #   jelly_<id>_tasks              the one JELLY_TASKS chooses (or JELLY_TASKS_DIR, for the assignment
 #                                 named by JELLY_TASKS_ASSIGNMENT): what the viewer and the CLI link
 # with aliases jelly::<id>::tasks_assignments, jelly::<id>::tasks_solutions and jelly::<id>::tasks.
 #
 # Task modules: tasks that several assignments share (same signatures, same contract section) have
-# one reference, solutions/tasks/<module>/*.cpp, named by no assignment. An assignment whose
-# manifest lists the module (`task_modules = ["<module>"]`) compiles that reference into its own
-# reference library, in its own namespace (JELLY_TASKS_NAMESPACE=<ns>). Each assignment keeps its
-# own student files, headers and bindings, so that a release of one assignment is complete alone.
-# A module's reference defines `void add_<module>_slots(TaskTable&)` in that namespace: the
-# TaskTable slots it fills besides the tasks (mass_spring: its spring engine). The bindings call
-# `add_library_slots(t)`, which the build generates for each task library: for the reference it
-# calls every module's add_<module>_slots, for the stubs and a submission it does nothing, so no
-# student-facing file names the reference.
+# one reference, solutions/tasks/<module>/*.cpp, named by no assignment (mass_spring: forces.cpp,
+# integrators.cpp and the spring engine, for A1 and A2; kinematics: kinematics.cpp, for A3 and A4).
+# An assignment whose manifest lists the module (`task_modules = ["<module>"]`) builds that
+# reference into its own reference library, in its own namespace. Each assignment keeps its own
+# student files, headers and bindings, so that a release of one assignment is complete alone.
+# The reference of each file of `files` is explicit (_jelly_reference_sources): either
+# solutions/<id>/<file> or the file of one listed module, never both; CMake stops naming the file
+# otherwise.
+#   - A module's task file (named like a student file) is written with the word
+#     JELLY_TASKS_NAMESPACE where the assignment's namespace goes (its include of the assignment's
+#     header, "jelly/JELLY_TASKS_NAMESPACE/<file>.hpp", and its namespace). For each assignment the
+#     build writes it out with <ns> there (_jelly_module_task_file), into
+#     build/assignments/<id>/reference/: the file the assignment would hold itself. It includes the
+#     assignment's own header, so a signature drift is a compile error (no previous declaration).
+#   - A module's other files (its machinery) are compiled as they are, with
+#     JELLY_TASKS_NAMESPACE=<ns> defined, and define `void add_<module>_slots(TaskTable&)` in that
+#     namespace: the TaskTable slots the module fills besides the tasks (mass_spring: the engine).
+#   - build/assignments/<id>/reference/ also gets a copy of solutions/<id>/'s files of `files`: the
+#     reference as a submission (property JELLY_ASSIGNMENT_<id>_REFERENCE_DIR), which the grader
+#     grades and mutates as the reference (grade-config.json's reference_dir).
+# The bindings call `add_library_slots(t)`, which the build generates for each task library: for
+# the reference it calls the add_<module>_slots of every module with machinery, for the stubs and a
+# submission it does nothing, so no student-facing file names the reference.
 # The grader (grader/CMakeLists.txt) reads the global property JELLY_ASSIGNMENTS and the
 # per-assignment properties set here. A draft (`draft = true`) is in JELLY_DRAFT_ASSIGNMENTS
 # instead: built and linked into the programs (so that its author can run its scenes), never
@@ -106,6 +120,143 @@ function(_jelly_add_task_library target dir origin slots)
   jelly_target_defaults(${target})
 endfunction()
 
+# _jelly_module_task_file(<out> <module file> <id> <ns>): a task module's task file written out for
+# assignment <id> in the build tree (build/assignments/<id>/reference/<file>): the module's text
+# with the word JELLY_TASKS_NAMESPACE replaced by <ns> everywhere, so that it includes the
+# assignment's own header (jelly/<ns>/<file's stem>.hpp) and defines the tasks in the assignment's
+# namespace: exactly the file the assignment would hold itself. Rewritten only when it changes;
+# an edit of the module's file reconfigures (CMAKE_CONFIGURE_DEPENDS).
+function(_jelly_module_task_file out module_file id ns)
+  get_filename_component(name ${module_file} NAME)
+  file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${module_file})
+  file(READ ${module_file} text)
+  string(REPLACE "JELLY_TASKS_NAMESPACE" "${ns}" text "${text}")
+  set(file ${CMAKE_BINARY_DIR}/assignments/${id}/reference/${name})
+  file(WRITE ${file}.tmp "// Generated by cmake/JellyAssignments.cmake for ${id} from ${rel}:\n// edit that file.\n${text}")
+  configure_file(${file}.tmp ${file} COPYONLY)
+  file(REMOVE ${file}.tmp)
+  set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${module_file})
+  # A task whose signature drifted from the assignment's header is a compile error here (a
+  # definition with no previous declaration), not a link error in the bindings.
+  set_source_files_properties(${file} PROPERTIES COMPILE_OPTIONS
+    "$<$<CXX_COMPILER_ID:GNU>:-Werror=missing-declarations>;$<$<CXX_COMPILER_ID:Clang,AppleClang>:-Werror=missing-prototypes>")
+  set(${out} ${file} PARENT_SCOPE)
+endfunction()
+
+# _jelly_reference_of(<out> <manifest> <id> <file> <modules>): the reference of the student file
+# <file> of assignment <id>: solutions/<id>/<file>, or solutions/tasks/<module>/<file> of the one
+# module of <modules> that holds it (a module's task file), never both; "" when the tree has
+# neither and no solutions/<id>/ (a student release). Two references, or none where solutions/<id>/
+# exists, stop the configuration naming the file.
+function(_jelly_reference_of out manifest id f modules)
+  set(solutions_dir ${JELLY_SOLUTIONS_ROOT}/${id})
+  set(holders)
+  if(EXISTS ${solutions_dir}/${f})
+    list(APPEND holders ${solutions_dir}/${f})
+  endif()
+  set(where "")
+  foreach(m IN LISTS modules)
+    string(APPEND where " or solutions/tasks/${m}/${f}")
+    if(EXISTS ${JELLY_TASK_MODULES_ROOT}/${m}/${f})
+      list(APPEND holders ${JELLY_TASK_MODULES_ROOT}/${m}/${f})
+    endif()
+  endforeach()
+  list(LENGTH holders n)
+  if(n GREATER 1)
+    set(names "")
+    foreach(h IN LISTS holders)
+      file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${h})
+      list(APPEND names ${rel})
+    endforeach()
+    string(REPLACE ";" " and " names "${names}")
+    message(FATAL_ERROR "${manifest}: files: ${f} has two references, ${names}: a student file has "
+                        "one (keep the task module's, or drop the module from task_modules)")
+  elseif(n EQUAL 0 AND IS_DIRECTORY ${solutions_dir})
+    message(FATAL_ERROR "${manifest}: files: ${f} has no reference: expected "
+                        "solutions/${id}/${f}${where}")
+  endif()
+  set(${out} "${holders}" PARENT_SCOPE)
+endfunction()
+
+# _jelly_module_machinery(<out> <manifest> <files> <module>): the module's files that are not the
+# reference of a file of `files` (its machinery, e.g. the spring engine), compiled as they are. A
+# task file (one that includes the assignment's header by the placeholder word) that `files` does
+# not list stops the configuration.
+function(_jelly_module_machinery out manifest files m)
+  file(GLOB module_sources CONFIGURE_DEPENDS ${JELLY_TASK_MODULES_ROOT}/${m}/*.cpp)
+  set(machinery)
+  foreach(src IN LISTS module_sources)
+    get_filename_component(name ${src} NAME)
+    if(name IN_LIST files)
+      continue()
+    endif()
+    file(STRINGS ${src} task_file REGEX "#include \"jelly/JELLY_TASKS_NAMESPACE/")
+    if(task_file)
+      file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${src})
+      message(FATAL_ERROR "${manifest}: task_modules: ${rel} is the reference of a student file (it "
+                          "includes the assignment's header), but files does not list ${name}")
+    endif()
+    list(APPEND machinery ${src})
+  endforeach()
+  set(${out} "${machinery}" PARENT_SCOPE)
+endfunction()
+
+# _jelly_reference_sources(<id> <ns> <manifest> <files> <reference_files> <modules>): the reference
+# of assignment <id>. Each file of `files` has one reference (_jelly_reference_of): a module's task
+# file is written out for the assignment (_jelly_module_task_file), a file of solutions/<id>/ is
+# compiled as it is and copied. A module's machinery is compiled as it is, with
+# JELLY_TASKS_NAMESPACE defined, and defines add_<module>_slots. Sets in the caller's scope:
+#   ref_have          whether the tree holds the whole reference (a student release has none)
+#   ref_sources       the reference library's sources but the bindings and the generated slots
+#   ref_slot_modules  the modules with machinery (whose add_<module>_slots the reference calls)
+#   ref_dir           build/assignments/<id>/reference/: every file of `files` as a student would
+#                     hand it in, which the grader grades and mutates as "the reference"
+function(_jelly_reference_sources id ns manifest files reference_files modules)
+  set(solutions_dir ${JELLY_SOLUTIONS_ROOT}/${id})
+  set(ref_dir ${CMAKE_BINARY_DIR}/assignments/${id}/reference)
+  set(have ON)
+  set(sources)
+  set(slot_modules)
+  foreach(m IN LISTS modules)
+    if(NOT m MATCHES "^[a-z][a-z0-9_]*$")
+      message(FATAL_ERROR "${manifest}: task_modules: expected module names (lower-case letters, "
+                          "digits, '_'), not \"${m}\"")
+    endif()
+  endforeach()
+  foreach(f IN LISTS files)
+    _jelly_reference_of(reference ${manifest} ${id} ${f} "${modules}")
+    if(NOT reference)
+      set(have OFF)
+    elseif(reference STREQUAL "${solutions_dir}/${f}")
+      list(APPEND sources ${reference})
+      configure_file(${reference} ${ref_dir}/${f} COPYONLY)
+    else()
+      _jelly_module_task_file(written ${reference} ${id} ${ns})
+      list(APPEND sources ${written})
+    endif()
+  endforeach()
+  foreach(f IN LISTS reference_files)
+    if(NOT EXISTS ${solutions_dir}/${f})
+      set(have OFF)
+    endif()
+    list(APPEND sources ${solutions_dir}/${f})
+  endforeach()
+  foreach(m IN LISTS modules)
+    if(NOT IS_DIRECTORY ${JELLY_TASK_MODULES_ROOT}/${m})
+      set(have OFF)
+    endif()
+    _jelly_module_machinery(machinery ${manifest} "${files}" ${m})
+    if(machinery)
+      list(APPEND sources ${machinery})
+      list(APPEND slot_modules ${m})
+    endif()
+  endforeach()
+  set(ref_have ${have} PARENT_SCOPE)
+  set(ref_sources "${sources}" PARENT_SCOPE)
+  set(ref_slot_modules "${slot_modules}" PARENT_SCOPE)
+  set(ref_dir ${ref_dir} PARENT_SCOPE)
+endfunction()
+
 # jelly_add_assignment(<folder>): the folder holds assignment.toml.
 function(jelly_add_assignment dir)
   get_filename_component(dir "${dir}" ABSOLUTE)
@@ -144,34 +295,17 @@ function(jelly_add_assignment dir)
   _jelly_add_task_library(jelly_${id}_tasks_assignments ${dir} assignments ${stub_slots} ${stub_sources})
   add_library(jelly::${id}::tasks_assignments ALIAS jelly_${id}_tasks_assignments)
 
-  # The reference: solutions/<id>/ with every file of the manifest, and the reference of every task
-  # module the manifest uses (absent in a student release).
-  set(solutions_dir ${JELLY_SOLUTIONS_ROOT}/${id})
-  set(have_solutions ON)
-  set(ref_sources)
-  foreach(f IN LISTS files reference_files)
-    if(NOT EXISTS ${solutions_dir}/${f})
-      set(have_solutions OFF)
-    endif()
-    list(APPEND ref_sources ${solutions_dir}/${f})
-  endforeach()
-  foreach(m IN LISTS modules)
-    if(NOT m MATCHES "^[a-z][a-z0-9_]*$")
-      message(FATAL_ERROR "${manifest}: task_modules: expected module names (lower-case letters, "
-                          "digits, '_'), not \"${m}\"")
-    endif()
-    file(GLOB module_sources CONFIGURE_DEPENDS ${JELLY_TASK_MODULES_ROOT}/${m}/*.cpp)
-    if(NOT module_sources)
-      set(have_solutions OFF)
-    endif()
-    list(APPEND ref_sources ${module_sources})
-  endforeach()
+  # The reference: each file of `files` from solutions/<id>/ or from a task module the manifest
+  # uses, the manifest's reference_files, and every module's sources (absent in a student release).
   if(id STREQUAL "tasks")
     message(FATAL_ERROR "${manifest}: id: \"tasks\" is the folder of the task modules "
                         "(solutions/tasks/); choose another id")
   endif()
+  set(solutions_dir ${JELLY_SOLUTIONS_ROOT}/${id})
+  _jelly_reference_sources(${id} ${ns} ${manifest} "${files}" "${reference_files}" "${modules}")
+  set(have_solutions ${ref_have})
   if(have_solutions)
-    _jelly_task_slots(ref_slots ${id} ${ns} solutions ${modules})
+    _jelly_task_slots(ref_slots ${id} ${ns} solutions ${ref_slot_modules})
     list(APPEND ref_sources ${ref_slots})
     _jelly_add_task_library(jelly_${id}_tasks_solutions ${dir} solutions "" ${ref_sources})
     # A task module's reference is compiled in the assignment's namespace.
@@ -197,20 +331,23 @@ function(jelly_add_assignment dir)
     _jelly_add_task_library(jelly_${id}_tasks_custom ${dir} submission ${custom_slots} ${custom})
     target_link_libraries(jelly_${id}_tasks INTERFACE jelly_${id}_tasks_custom)
     set(chosen ${JELLY_TASKS_DIR})
+    set(chosen_label ${chosen})
   elseif(JELLY_TASKS STREQUAL "solutions")
     if(NOT have_solutions)
       message(FATAL_ERROR "JELLY_TASKS=solutions, but ${solutions_dir} does not hold the reference of "
                           "${id} (a student release has no solutions/). Use JELLY_TASKS=assignments.")
     endif()
     target_link_libraries(jelly_${id}_tasks INTERFACE jelly_${id}_tasks_solutions)
-    set(chosen ${solutions_dir})
+    set(chosen ${ref_dir})  # solutions/<id>/ and the modules' files, as one folder
+    set(chosen_label ${solutions_dir})
   elseif(JELLY_TASKS STREQUAL "assignments")
     target_link_libraries(jelly_${id}_tasks INTERFACE jelly_${id}_tasks_assignments)
     set(chosen ${dir})
+    set(chosen_label ${chosen})
   else()
     message(FATAL_ERROR "JELLY_TASKS must be 'assignments' or 'solutions', not '${JELLY_TASKS}'")
   endif()
-  file(RELATIVE_PATH chosen_rel ${PROJECT_SOURCE_DIR} ${chosen})
+  file(RELATIVE_PATH chosen_rel ${PROJECT_SOURCE_DIR} ${chosen_label})
   message(STATUS "Jelly Lab: assignment ${id}, student tasks from ${chosen_rel}")
 
   if(JELLY_MANIFEST_DRAFT)
@@ -241,6 +378,8 @@ function(jelly_add_assignment dir)
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_SUBMISSION_SLOTS ${submission_slots})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_HAVE_SOLUTIONS ${have_solutions})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_SOLUTIONS_DIR ${solutions_dir})
+  # The reference as a submission (every file of `files`; whole only when have_solutions).
+  set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_REFERENCE_DIR ${ref_dir})
   set_property(GLOBAL PROPERTY JELLY_ASSIGNMENT_${id}_CHOSEN_DIR ${chosen})
 endfunction()
 

@@ -18,7 +18,9 @@
 # library (framework/manifest) is layer 0: its own headers, the standard library and toml++ only.
 # A task module's reference (solutions/tasks/<module>/: tasks that several assignments share,
 # compiled for each assignment that uses it) is layer `task_module`: it names no assignment, so it
-# includes the core only.
+# includes the core and, in a task file, the assignment's own header by the word that stands for
+# the assignment's namespace (`jelly/JELLY_TASKS_NAMESPACE/<file>.hpp`, layer
+# `task_header`: the build writes the file out for each assignment with that word replaced).
 #
 # A quoted include the compiler finds next to the including file (`#include "../a1/x.cpp"`,
 # `#include "detail.hpp"`) is checked by the file it reaches: that file's layer must be one the
@@ -51,7 +53,7 @@ set(_may_manifest manifest)
 set(_may_core    manifest core)
 set(_may_assignment core assignment)
 set(_may_assignment_grader core assignment)
-set(_may_task_module core)
+set(_may_task_module core task_header)
 set(_may_session manifest core session)
 set(_may_cli_common cli_common)
 set(_may_process process)
@@ -107,6 +109,8 @@ function(_header_layer header out owner)
   set(${owner} "" PARENT_SCOPE)
   if(header IN_LIST _manifest_headers)
     set(${out} manifest PARENT_SCOPE)
+  elseif(header MATCHES "^jelly/JELLY_TASKS_NAMESPACE/[^/]+$")
+    set(${out} task_header PARENT_SCOPE)
   elseif(header MATCHES "^jelly/bodies/[^/]+/view/")
     set(${out} body_view PARENT_SCOPE)
   elseif(header MATCHES "^jelly/[^/]+$")

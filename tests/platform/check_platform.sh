@@ -16,7 +16,7 @@
 #                     render on the null backend, the process launcher) under wine,
 #                     and the self-check of every assignment (the `selfcheck-ID` target students
 #                     use, on TASKS/ID; jelly-grade.exe --runner on the other folder): 0 points for assignments/ID/'s stubs, full public marks
-#                     for solutions/ID/, and the same report lines as
+#                     for the reference (solutions/ID/ and its task modules), and the same report lines as
 #                     HOST_JELLY_GRADE (the Linux grader compiling the same code) when given
 #             libcxx  clang++ -stdlib=libc++ (the nearest stand-in here for Apple's toolchain)
 #             aarch64 ARM64 Linux: g++-aarch64-linux-gnu cross-build (cmake/toolchains/aarch64-linux-gnu.cmake),
@@ -335,7 +335,7 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
 fi
 # ---- the self-check under wine or qemu ------------------------------------------------------------
 # The grader's case book, points and messages on runners CMake built for the target, per assignment:
-# the stubs must score 0, solutions/ID/ full public marks, and each report must read as the Linux grader's on the
+# the stubs must score 0, the reference (solutions/ID/ and its task modules) full public marks, and each report must read as the Linux grader's on the
 # same code (sandbox line and timings aside). On Windows the `selfcheck` target itself is run too
 # (wine is the toolchain's CMAKE_CROSSCOMPILING_EMULATOR): its exit status is pass/fail. On
 # aarch64, jelly-grade runs under qemu and starts each runner through a two-line script that runs
@@ -411,11 +411,13 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
         selfcheck_case "$id-stubs" "$id" "$src/assignments/$id" "$stub_runner" zero
       fi
       [ -d "$src/solutions/$id" ] || continue
+      # The reference as a submission: solutions/ID/ and its task modules' files, as the build puts
+      # them together (BUILD/assignments/ID/reference/).
       if [ "$platform" = mingw ] && [ "$tasks" = solutions ]; then
-        selfcheck_target "$id-solutions" "$id" "$src/solutions/$id" full
+        selfcheck_target "$id-solutions" "$id" "$build/assignments/$id/reference" full
       else
         ref_runner="$(through_qemu "$(find "$build" -name "jelly-grade-$id-reference-runner$exe" -type f | head -1)" "$id-reference-runner")"
-        selfcheck_case "$id-solutions" "$id" "$src/solutions/$id" "$ref_runner" full
+        selfcheck_case "$id-solutions" "$id" "$build/assignments/$id/reference" "$ref_runner" full
       fi
     done
   fi

@@ -170,7 +170,8 @@ cmake --build "$tree/build" --target "selfcheck-$id" >"$work/selfcheck.log" 2>&1
 }
 
 step "A1 beside it: its reference still 80/80"
-"$grade" grade "$tree/solutions/a1" --assignment a1 --visibility all --format gradescope \
+# A1's reference as a submission: solutions/a1/ and its task module's files, as the build puts them.
+"$grade" grade "$tree/build/assignments/a1/reference" --assignment a1 --visibility all --format gradescope \
   --jobs "$jobs" --out "$work/a1" >"$work/a1.log" 2>&1 || true
 read -r a1_score a1_max < <(score_of "$work/a1/results.json")
 [[ $a1_score == 80 && $a1_max == 80 ]] ||

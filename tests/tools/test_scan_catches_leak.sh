@@ -134,8 +134,9 @@ done
 check "found a reference line to plant" '[ -n "$line" ]'
 plant "one solution line pasted into a stub" \
   'printf "%s\n" "$line" >>"$copy/$asg/$stub"' "$asg/$stub"
-# 2. A whole solution file under another name, with different indentation.
-last="$(printf '%s\n' $files | tail -1)"
+# 2. A whole solution file under another name, with different indentation (the last of the
+# manifest's files that solutions/ID/ holds: a shared task's is in a task module, solutions/tasks/).
+last="$(for f in $files; do [ -f "$src/solutions/$id/$f" ] && printf '%s\n' "$f"; done | tail -1)"
 plant "a re-indented solution file under another name" \
   'sed "s/^  /\t/" "$src/solutions/$id/$last" >"$copy/docs/notes.txt"' "docs/notes.txt"
 # 3. A solutions/ folder.

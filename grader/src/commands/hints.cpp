@@ -25,7 +25,7 @@ std::string sources_digest(const GradeConfig& config, const CaseBook& book) {
   for (const CaseSpec& c : book.cases)
     if (!c.hidden) all += "case " + c.id + " " + case_hash(c, harness) + "\n";
   for (const std::string& f : config.task_files())
-    all += "file " + f + "\n" + read_file(config.solutions_dir() / f) + "\n" +
+    all += "file " + f + "\n" + read_file(config.reference_dir() / f) + "\n" +
            read_file(config.assignments_dir() / f) + "\n";
   std::vector<fs::path> mutants;
   for (const auto& e : fs::directory_iterator(config.mutants_dir()))
@@ -142,7 +142,7 @@ int check_digest(const GradeConfig& config, const CaseBook& book, const HintsArg
 std::vector<Graded> hint_list(const GradeConfig& config, const HintsArgs& args,
                               const fs::path& root, std::size_t& n_mutants) {
   std::vector<Graded> list;
-  list.push_back({"reference", "", "", config.solutions_dir(), {}, {}});
+  list.push_back({"reference", "", "", config.reference_dir(), {}, {}});
   list.push_back({"stubs", "", "", config.assignments_dir(), {}, {}});
   for (const MutantSpec& m : make_mutant_folders(config, config.mutants_dir(), root / "mutants"))
     list.push_back({m.name, m.task, m.description, m.dir, {}, {}});

@@ -58,7 +58,7 @@ std::vector<MutantSpec> make_mutant_folders(const GradeConfig& config, const fs:
     m.dir = root / m.name / "submission";
     fs::create_directories(m.dir);
     for (const std::string& name : config.task_files())
-      fs::copy_file(config.solutions_dir() / name, m.dir / name,
+      fs::copy_file(config.reference_dir() / name, m.dir / name,
                     fs::copy_options::overwrite_existing);
     std::string text = read_file(m.dir / m.file);
     for (const auto& [find, with, nth] : m.replacements) {
@@ -98,7 +98,7 @@ std::vector<Mutant> mutant_list(const GradeConfig& config, const fs::path& root)
                   in_tree(config, config.solutions_dir()) + "/ unchanged",
                   false,
                   {},
-                  config.solutions_dir(),
+                  config.reference_dir(),
                   {},
                   {}});
   list.push_back({"stubs",

@@ -82,6 +82,7 @@ AssignmentConfig read_assignment(const std::string& p, const std::string& table,
   a.id = id;
   a.dir = field("dir");
   a.solutions_dir = field("solutions_dir");
+  a.reference_dir = o.value("reference_dir", a.solutions_dir.string());
   a.include_dirs = list("include_dirs");
   a.link_objects = list("link_objects");
   a.link_libraries = list("link_libraries");

@@ -18,6 +18,10 @@ struct AssignmentConfig {
   AssignmentManifest manifest;
   fs::path dir;            ///< assignments/<id>/ (stubs, manifest, public grader data)
   fs::path solutions_dir;  ///< solutions/<id>/ (absent in a student release)
+  /// The reference as a submission: every file of the manifest's `files`, from solutions/<id>/ or
+  /// from a task module, in one folder the build makes (absent in a student release). Graded and
+  /// mutated as "the reference"; solutions_dir is what reports call it.
+  fs::path reference_dir;
   std::vector<std::string> include_dirs;    ///< for a submission's files
   std::vector<std::string> link_objects;    ///< runner main + the assignment's bindings
   std::vector<std::string> link_libraries;  ///< its cases, the harness, the core, seccomp
@@ -72,6 +76,7 @@ struct GradeConfig {
   fs::path rubric_path() const { return assignment().dir / "assignment.toml"; }
   fs::path assignments_dir() const { return assignment().dir; }
   fs::path solutions_dir() const { return assignment().solutions_dir; }
+  fs::path reference_dir() const { return assignment().reference_dir; }
   /// The files a student edits, in build order (the manifest's `files`).
   const std::vector<std::string>& task_files() const { return assignment().manifest.files; }
   /// Compiled-object cache (content-addressed), so a mutant recompiles only the file it changes.

@@ -151,6 +151,7 @@ std::vector<fs::path> secrets_of(const GradeConfig& config) {
       s.push_back(a.dir / "grader" / "cases");
       s.push_back(a.dir / "grader" / "mutants");
       s.push_back(a.solutions_dir);
+      s.push_back(a.reference_dir);
       if (!a.reference_runner.empty()) s.push_back(a.reference_runner);
     }
   std::vector<fs::path> out;
@@ -919,7 +920,8 @@ Isolation choose_isolation(const GradeConfig& config, const std::string& mode) {
   bool secrets = false;
   for (const std::vector<AssignmentConfig>* list : {&config.assignments, &config.draft_assignments})
     for (const AssignmentConfig& a : *list) {
-      secrets = secrets || fs::exists(a.solutions_dir) || fs::exists(a.reference_runner);
+      secrets = secrets || fs::exists(a.solutions_dir) || fs::exists(a.reference_dir) ||
+                fs::exists(a.reference_runner);
       std::error_code ec;
       for (fs::directory_iterator it(config.grader_dir() / "data" / a.id / "hidden", ec), end;
            !ec && it != end; it.increment(ec))

@@ -7,12 +7,14 @@
 # differently and a folder that is not a batch's, naming the part; and grader/tools/slurm-batch.sh
 # run as a Slurm array would run it (its environment set by hand) gives the same class files too.
 #
-#   batch_parts.sh JELLY_GRADE SOURCE WORK
+#   batch_parts.sh JELLY_GRADE SOURCE WORK REFERENCE
+#
+# REFERENCE is A1's reference as a submission (the build's build/assignments/a1/reference/).
 #
 # Exit 0 when everything holds.
 set -uo pipefail
 grade="$(realpath "${1:?jelly-grade}")"; source="$(realpath "${2:?source tree}")"
-work="$(realpath -m "${3:?work folder}")"
+work="$(realpath -m "${3:?work folder}")"; reference="$(realpath "${4:?reference folder}")"
 fail() { echo "batch_parts: FAILED: $*"; exit 1; }
 rm -rf "$work"
 mkdir -p "$work/in"
@@ -24,15 +26,15 @@ opts=(--assignment a1 --no-frames --timeout 3)
 # The class: alice the reference, ben the reference with one endless case (spring_force loops for
 # ks = 1e6, which only a1.t4.spring_force.values uses: one time-out), bob the stubs, carol a flipped
 # spring sign, dave no task file at all.
-cp -r "$source/solutions/a1" "$in/alice"
-cp -r "$source/solutions/a1" "$in/ben"
+cp -r "$reference" "$in/alice"
+cp -r "$reference" "$in/ben"
 sed -i '0,/  const Vec3 d = xa - xb;/s||  if (ks == 1e6) {\n    volatile bool spin = true;\n    while (spin) {\n    }\n  }\n  const Vec3 d = xa - xb;|' \
   "$in/ben/forces.cpp"
-grep -q 'volatile bool spin' "$in/ben/forces.cpp" || fail "solutions/a1/forces.cpp changed: update ben"
+grep -q 'volatile bool spin' "$in/ben/forces.cpp" || fail "the reference forces.cpp changed: update ben"
 cp -r "$source/assignments/a1" "$in/bob"
-cp -r "$source/solutions/a1" "$in/carol"
+cp -r "$reference" "$in/carol"
 sed -i 's|return (-ks \* (length - rest_length)) \* u;|return (ks * (length - rest_length)) * u;|' "$in/carol/forces.cpp"
-grep -q 'return (ks \*' "$in/carol/forces.cpp" || fail "solutions/a1/forces.cpp changed: update carol"
+grep -q 'return (ks \*' "$in/carol/forces.cpp" || fail "the reference forces.cpp changed: update carol"
 mkdir -p "$in/dave"
 echo "I ran out of time" >"$in/dave/notes.txt"
 students=(alice ben bob carol dave)

@@ -30,6 +30,11 @@ namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
 const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader" / "similarity";
+// An assignment's reference as a submission: every file of its `files`, from solutions/<id>/ or
+// from a task module, in the folder the build makes (build/assignments/<id>/reference/).
+fs::path reference_dir(const std::string& id) {
+  return fs::path(JELLY_BINARY_DIR) / "assignments" / id / "reference";
+}
 const char* const kTaskFiles[] = {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp",
                                   "integrators.cpp"};
 
@@ -122,7 +127,7 @@ std::string disguised(const std::string& text) {
 // hostile text in it.
 void make_class(const fs::path& root) {
   fs::remove_all(root);
-  const fs::path ref = kSource / "solutions" / "a1";
+  const fs::path ref = reference_dir("a1");
   for (const char* f : kTaskFiles) {
     write(root / "ref" / f, read(ref / f));
     const std::string name = std::string(f) == "forces.cpp" ? "copy_LATE_12345_67890_forces-1.cpp"
@@ -253,7 +258,7 @@ TEST(Similarity, ClearErrors) {
   // One submission is nothing to compare.
   const fs::path one = kWork / "class-one";
   fs::remove_all(one);
-  write(one / "ref" / "forces.cpp", read(kSource / "solutions" / "a1" / "forces.cpp"));
+  write(one / "ref" / "forces.cpp", read(reference_dir("a1") / "forces.cpp"));
   r = run("similarity " + q(one) + " --out " + q(out) + " --assignment a1");
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(r.out.find("at least two"), std::string::npos) << r.out;
@@ -266,7 +271,7 @@ TEST(Similarity, LinksAndHugeFilesAreNotRead) {
   const fs::path cls = kWork / "class-links", out = kWork / "out-links";
   fs::remove_all(cls);
   fs::remove_all(out);
-  const fs::path ref = kSource / "solutions" / "a1";
+  const fs::path ref = reference_dir("a1");
   for (const char* f : kTaskFiles) write(cls / "ref" / f, read(ref / f));
   fs::create_directories(cls / "linker");
   fs::create_symlink(ref / "springs.cpp", cls / "linker" / "springs.cpp");
@@ -296,7 +301,7 @@ TEST(Similarity, HandoutCodeDoesNotCount) {
   fs::remove_all(cls);
   fs::remove_all(a1);
   fs::create_directories(a1.parent_path());
-  const std::string forces = read(kSource / "solutions" / "a1" / "forces.cpp");
+  const std::string forces = read(reference_dir("a1") / "forces.cpp");
   for (const char* who : {"alice", "bob"}) write(cls / who / "forces.cpp", forces);
   fs::copy(kSource / "assignments" / "a1", a1, fs::copy_options::recursive);
   Json config = Json::parse(read(fs::path(JELLY_BINARY_DIR) / "grader" / "grade-config.json"));
@@ -346,7 +351,7 @@ TEST(Similarity, BatchWritesTheReportToo) {
   fs::remove_all(cls);
   fs::remove_all(out);
   for (const char* who : {"alice", "bob"})
-    for (const char* f : kTaskFiles) write(cls / who / f, read(kSource / "solutions" / "a1" / f));
+    for (const char* f : kTaskFiles) write(cls / who / f, read(reference_dir("a1") / f));
   const Cmd r = run("batch " + q(cls) + " --out " + q(out) +
                     " --no-frames --visibility public --similarity --threshold 80");
   ASSERT_EQ(r.status, 0) << r.out;

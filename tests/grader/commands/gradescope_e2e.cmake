@@ -7,7 +7,9 @@
 # unprivileged-user sandbox (Gradescope's image most likely has no user namespaces; needs root)
 # and with bubblewrap (where it works): it must score its failures and leak no hidden text.
 # apt-get is the step not exercised (the "user" sandbox makes its users jelly-sandbox-N with useradd).
-#   cmake -DGRADE=jelly-grade -DSOURCE=<repo> -DWORK=<dir> -P gradescope_e2e.cmake
+#   cmake -DGRADE=jelly-grade -DSOURCE=<repo> -DREFERENCE=<A1's reference folder> -DWORK=<dir> -P gradescope_e2e.cmake
+#
+# REFERENCE: A1's reference as a submission, the build's build/assignments/a1/reference/.
 # The zip of assignment A1 (its files from its manifest; the hostile part below is A1's forces.cpp
 # and one of its hidden data files).
 set(id a1)
@@ -87,7 +89,7 @@ endif()
 set(grade "${src}/build/grader/jelly-grade")
 file(MAKE_DIRECTORY "${WORK}/reference-submission")
 foreach(f IN LISTS task_files)
-  file(COPY "${SOURCE}/solutions/${id}/${f}" DESTINATION "${WORK}/reference-submission")
+  file(COPY "${REFERENCE}/${f}" DESTINATION "${WORK}/reference-submission")
 endforeach()
 foreach(case reference stubs)
   if(case STREQUAL "reference")
@@ -123,9 +125,9 @@ endif()
 set(hostile "${WORK}/hostile-submission")
 file(MAKE_DIRECTORY "${hostile}")
 foreach(f IN LISTS other_files)
-  file(COPY "${SOURCE}/solutions/${id}/${f}" DESTINATION "${hostile}")
+  file(COPY "${REFERENCE}/${f}" DESTINATION "${hostile}")
 endforeach()
-file(READ "${SOURCE}/solutions/${id}/forces.cpp" forces)
+file(READ "${REFERENCE}/forces.cpp" forces)
 file(WRITE "${hostile}/forces.cpp" "#include <cstdio>
 static int jelly_ctor = [] { if (std::FILE* f = std::fopen(\"${hidden}\", \"r\")) { char b[4096];
   while (std::fgets(b, sizeof b, f)) std::fputs(b, stdout); } else { std::puts(\"jelly: no hidden file\"); } return 0; }();
@@ -133,7 +135,7 @@ ${forces}")
 file(WRITE "${WORK}/hostile-incbin/forces.cpp" "asm(\".section .rodata\\n.incbin \\\"${hidden}\\\"\\n.text\\n\");
 ${forces}")
 foreach(f IN LISTS other_files)
-  file(COPY "${SOURCE}/solutions/${id}/${f}" DESTINATION "${WORK}/hostile-incbin")
+  file(COPY "${REFERENCE}/${f}" DESTINATION "${WORK}/hostile-incbin")
 endforeach()
 set(mechanisms "")
 execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)

@@ -31,6 +31,11 @@ namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
 const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader";
+// An assignment's reference as a submission: every file of its `files`, from solutions/<id>/ or
+// from a task module, in the folder the build makes (build/assignments/<id>/reference/).
+fs::path reference_dir(const std::string& id) {
+  return fs::path(JELLY_BINARY_DIR) / "assignments" / id / "reference";
+}
 // A1's hostile submissions (one folder each: the files laid over the reference).
 const fs::path kHostile = kSource / "grader" / "tests" / "hostile" / "a1";
 
@@ -65,7 +70,7 @@ fs::path submission(const std::string& name, const fs::path& overlay = {}) {
   fs::create_directories(dir / "nested" / "src");
   for (const char* f :
        {"springs.cpp", "forces.cpp", "collision.cpp", "contact.cpp", "integrators.cpp"})
-    fs::copy_file(kSource / "solutions" / "a1" / f, dir / "nested" / "src" / f);
+    fs::copy_file(reference_dir("a1") / f, dir / "nested" / "src" / f);
   if (!overlay.empty())
     for (const auto& e : fs::directory_iterator(overlay))
       fs::copy_file(e.path(), dir / "nested" / "src" / e.path().filename(),
@@ -414,7 +419,7 @@ TEST(Grader, FilesThatDoNotLinkTogetherAreEachGradedWithTheOtherStubs) {
   forces.insert(forces.find(ns) + ns.size(), "double jelly_shared_scale();\n");
   const std::string ret = "return (-ks * (length - rest_length)) * u;";
   ASSERT_NE(forces.find(ret), std::string::npos)
-      << "solutions/a1/forces.cpp changed: update this test";
+      << "the reference forces.cpp (solutions/tasks/mass_spring/) changed: update this test";
   forces.replace(forces.find(ret), ret.size(),
                  "return (-ks * jelly_shared_scale() * (length - rest_length)) * u;");
   std::ofstream(src / "springs.cpp", std::ios::binary) << springs;
@@ -582,7 +587,7 @@ TEST(GraderFrames, A2ReportShowsTheClothFramesBesideTheReferences) {
 #if !JELLY_GRADE_HAS_RENDER
   GTEST_SKIP() << "built without the viewer: the report has no frames";
 #endif
-  const Json r = grade(kSource / "solutions" / "a2", "frames-a2", "--assignment a2");
+  const Json r = grade(reference_dir("a2"), "frames-a2", "--assignment a2");
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 85.0) << "80 and the bonus's 5";
   EXPECT_EQ(r.dump().find("frame_"), std::string::npos) << "frames in results.json";
   // assignments/a2/grader/cases/course.toml: 0.25, 0.5, 0.75, 1, 1.25 and 1.6 s, both sides.
@@ -626,11 +631,11 @@ TEST(Grader, BatchGradesEveryFolderAndWritesScoresCsv) {
                                           "contact.cpp", "integrators.cpp"};
   fs::create_directories(dir / "in" / "carol");
   for (const std::string& f : files)
-    fs::copy_file(kSource / "solutions" / "a1" / f, dir / "in" / "carol" / ("carol_123_456_" + f));
+    fs::copy_file(reference_dir("a1") / f, dir / "in" / "carol" / ("carol_123_456_" + f));
   fs::copy_file(kSource / "assignments" / "a1" / "forces.cpp",
                 dir / "in" / "carol" / "carol_123_456_forces.cpp",
                 fs::copy_options::overwrite_existing);
-  fs::copy_file(kSource / "solutions" / "a1" / "forces.cpp",
+  fs::copy_file(reference_dir("a1") / "forces.cpp",
                 dir / "in" / "carol" / "carol_123_456_forces-1.cpp");
   // A resubmission number too long for any integer is not an LMS name: no grader error.
   std::ofstream(dir / "in" / "carol" / "carol_123_456_forces-99999999999999999999.cpp") << "x\n";
@@ -935,7 +940,7 @@ submission_106:
   :submitters: []
 )"});
   for (const std::string& f : kTaskFiles) {
-    std::ifstream src(kSource / "solutions" / "a1" / f, std::ios::binary);
+    std::ifstream src(reference_dir("a1") / f, std::ios::binary);
     std::stringstream text;
     text << src.rdbuf();
     entries.push_back({root + "submission_101/src/" + f, text.str()});
@@ -1074,7 +1079,7 @@ namespace {
 std::map<std::string, std::string> a1_files(const std::string& stub = "") {
   std::map<std::string, std::string> out;
   for (const std::string& f : kTaskFiles)
-    out[f] = read_text(kSource / (f == stub ? "assignments" : "solutions") / "a1" / f);
+    out[f] = read_text((f == stub ? kSource / "assignments" / "a1" : reference_dir("a1")) / f);
   return out;
 }
 
@@ -1221,7 +1226,7 @@ TEST(Grader, ScoresCsvTotalCarriesTheBonus) {
       const std::string file = f.value_or(std::string());
       const bool stub = std::string(who) == "without-friction" && file == "friction.cpp";
       fs::create_directories(dir / "in" / who);
-      fs::copy_file(kSource / (stub ? "assignments" : "solutions") / "a2" / file,
+      fs::copy_file((stub ? kSource / "assignments" / "a2" : reference_dir("a2")) / file,
                     dir / "in" / who / file);
     }
   const Cmd r = run("batch " + (dir / "in").string() + " --assignment a2 --out " +
@@ -1263,7 +1268,7 @@ TEST(Grader, ClassReportCountsWhatTheClassGotWrong) {
                                           "contact.cpp", "integrators.cpp"};
   auto reference = [&](const std::string& id) {
     fs::create_directories(in / id);
-    for (const std::string& f : files) fs::copy_file(kSource / "solutions" / "a1" / f, in / id / f);
+    for (const std::string& f : files) fs::copy_file(reference_dir("a1") / f, in / id / f);
     return in / id;
   };
   // A mutant applied as `jelly-grade mutants` applies it (each [[replace]] once).

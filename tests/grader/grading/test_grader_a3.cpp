@@ -24,6 +24,11 @@ namespace {
 
 const fs::path kSource = JELLY_SOURCE_DIR;
 const fs::path kWork = fs::path(JELLY_BINARY_DIR) / "tests-grader" / "a3";
+// An assignment's reference as a submission: every file of its `files`, from solutions/<id>/ or
+// from a task module, in the folder the build makes (build/assignments/<id>/reference/).
+fs::path reference_dir(const std::string& id) {
+  return fs::path(JELLY_BINARY_DIR) / "assignments" / id / "reference";
+}
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -35,7 +40,8 @@ std::string read_text(const fs::path& p) {
 // Replaces the one occurrence of `find` in `text` (a failure when it is not there).
 std::string replaced(std::string text, const std::string& find, const std::string& with) {
   const auto at = text.find(find);
-  EXPECT_NE(at, std::string::npos) << "solutions/a3/kinematics.cpp no longer has: " << find;
+  EXPECT_NE(at, std::string::npos)
+      << "the reference kinematics.cpp (solutions/tasks/kinematics/) no longer has: " << find;
   if (at != std::string::npos) text.replace(at, find.size(), with);
   return text;
 }
@@ -58,8 +64,8 @@ TEST(GraderA3, ALoopingOrNanForwardKinematicsFailsItsTestsWithAMessage) {
   fs::remove_all(sub);
   fs::create_directories(sub);
   for (const char* f : {"time_warp.cpp", "blend.cpp"})
-    fs::copy_file(kSource / "solutions" / "a3" / f, sub / f);
-  std::string fk = read_text(kSource / "solutions" / "a3" / "kinematics.cpp");
+    fs::copy_file(reference_dir("a3") / f, sub / f);
+  std::string fk = read_text(reference_dir("a3") / "kinematics.cpp");
   fk = replaced(fk, "  if (skeleton.bones.empty()) return;\n",
                 "  if (skeleton.bones.empty()) return;\n"
                 "  for (volatile int spin = 0; n == 31; spin = spin + 1) {\n  }\n");

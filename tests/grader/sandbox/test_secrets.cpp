@@ -55,7 +55,7 @@ std::vector<fs::path> secrets_grading(const std::string& path, const std::string
 std::vector<fs::path> secrets_of_assignment(const GradeConfig& config, const AssignmentConfig& a) {
   std::vector<fs::path> v = {config.source_dir / "grader" / "data" / a.id / "hidden",
                              a.dir / "grader" / "cases", a.dir / "grader" / "mutants",
-                             a.solutions_dir};
+                             a.solutions_dir, a.reference_dir};
   if (!a.reference_runner.empty()) v.push_back(a.reference_runner);
   return v;
 }
@@ -105,6 +105,7 @@ TEST(GraderSecrets, ASubmissionOfOneAssignmentCannotReadAnothersSecrets) {
   Json zz = cfg["assignments"]["a1"];
   zz["dir"] = other.string();
   zz["solutions_dir"] = (kWork / "solutions" / "zz").string();
+  zz["reference_dir"] = (kWork / "reference" / "zz").string();
   zz["reference_runner"] = (kWork / "bin" / "jelly-grade-zz-reference-runner").string();
   cfg["assignments"]["zz"] = zz;
   const fs::path two = kWork / "grade-config.json";

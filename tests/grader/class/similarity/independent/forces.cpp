@@ -1,5 +1,5 @@
 // An independent correct A1.T4–A1.T5 (the similarity test's second honest student, written from
-// the handout without looking at solutions/a1/forces.cpp): it must not be flagged as a copy.
+// the handout without looking at the reference's forces.cpp): it must not be flagged as a copy.
 #include "jelly/a1/forces.hpp"
 
 namespace jelly::a1 {

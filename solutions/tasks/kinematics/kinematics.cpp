@@ -1,15 +1,23 @@
-// Reference: task A4.T0 (forward kinematics, the student's A3 code), exactly the kinematics
-// contract §3 and §4: the same code as A3's reference (solutions/a3/kinematics.cpp), in A4's
-// namespace, so that A4 builds and ships alone (docs/a4-decisions.md).
-// Read assignments/a4/handout/T0-forward-kinematics.md first.
-#include "jelly/a4/kinematics.hpp"
+// Reference: a bone's local rotation and forward kinematics, exactly the kinematics contract §3
+// and §4. Not shipped to students.
+//
+// Part of the task module kinematics (solutions/tasks/kinematics/), named by no assignment: the one
+// reference of tasks that several assignments share (same signatures, same contract section). The
+// build writes this file out once for each assignment whose manifest lists the module in
+// `task_modules` and this file in `files` (cmake/JellyAssignments.cmake, _jelly_module_task_file):
+// into build/assignments/<id>/reference/, with the assignment's namespace in place of the word
+// below that names it. The copy includes the assignment's own header (a signature that drifted from
+// it is a compile error there) and is exactly the file the assignment would hold itself: the
+// assignment's reference library compiles it, and the grader grades and mutates it as the
+// reference. Each assignment keeps its own stub, header and bindings.
+#include "jelly/JELLY_TASKS_NAMESPACE/kinematics.hpp"
 
 #include <vector>
 
 #include "jelly/portable_math.hpp"
 #include "jelly/skeleton/rotation.hpp"
 
-namespace jelly::a4 {
+namespace jelly::JELLY_TASKS_NAMESPACE {
 
 namespace {
 
@@ -71,4 +79,4 @@ void forward_kinematics(const skeleton::Skeleton& skeleton, const skeleton::Post
   }
 }
 
-}  // namespace jelly::a4
+}  // namespace jelly::JELLY_TASKS_NAMESPACE

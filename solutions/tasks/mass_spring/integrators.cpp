@@ -1,7 +1,17 @@
-// Reference solution of A1.T10–A1.T13 (the course integrators). Not shipped to students.
-#include "jelly/a1/integrators.hpp"
+// Reference: the four course integrators (physics contract §6). Not shipped to students.
+//
+// Part of the task module mass_spring (solutions/tasks/mass_spring/), named by no assignment: the
+// one reference of tasks that several assignments share (same signatures, same contract section).
+// The build writes this file out once for each assignment whose manifest lists the module in
+// `task_modules` and this file in `files` (cmake/JellyAssignments.cmake, _jelly_module_task_file):
+// into build/assignments/<id>/reference/, with the assignment's namespace in place of the word
+// below that names it. The copy includes the assignment's own header (a signature that drifted from
+// it is a compile error there) and is exactly the file the assignment would hold itself: the
+// assignment's reference library compiles it, and the grader grades and mutates it as the
+// reference. Each assignment keeps its own stub, header and bindings.
+#include "jelly/JELLY_TASKS_NAMESPACE/integrators.hpp"
 
-namespace jelly::a1 {
+namespace jelly::JELLY_TASKS_NAMESPACE {
 
 void explicit_euler_step(System& system, State& s, double h, Workspace& w) {
   Vec3Array& a = w.accel[0];
@@ -56,4 +66,4 @@ void rk4_step(System& system, State& s, double h, Workspace& w) {
   s.v += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
 }
 
-}  // namespace jelly::a1
+}  // namespace jelly::JELLY_TASKS_NAMESPACE
