@@ -183,6 +183,9 @@ class Verifier:
                     print(f"  {line}")
             # The assignment's default scene runs with the stubs (the manifest's default_scene, in scenes/).
             scene = self.manifests[i].string("default_scene", required=False)
+            if not scene:
+                raise Die(f"verify {name}: assignments/{i}/assignment.toml has no default_scene: the verification "
+                          "runs each assignment's default scene with the stubs (name one of its scenes in scenes/)")
             if not (self.fresh / "scenes" / f"{scene}.toml").is_file():
                 raise Die(f"verify {name}: assignments/{i}/assignment.toml: default_scene: scenes/{scene}.toml is "
                           "not in the release")
