@@ -57,7 +57,9 @@ std::string read_text(const fs::path& p) {
 struct Target {
   std::string id;
   jelly::AssignmentManifest manifest;
-  fs::path dir, solutions, hidden_dir, public_dir;
+  fs::path dir, hidden_dir, public_dir;
+  fs::path solutions;        // the reference as a submission: every student file (grade-config's
+                             // reference_dir)
   fs::path hidden;           // one of its hidden reference files (the routes' canary)
   std::string compile_file;  // compile-time routes go at its top
   std::string run_file, run_signature, run_case;  // run-time routes: start of this function
@@ -82,7 +84,7 @@ const std::vector<Target>& targets() {
       Target t;
       t.id = id;
       t.dir = a.at("dir").get<std::string>();
-      t.solutions = a.at("solutions_dir").get<std::string>();
+      t.solutions = a.value("reference_dir", a.at("solutions_dir").get<std::string>());
       t.hidden_dir = kSource / "grader" / "data" / id / "hidden";
       t.public_dir = t.dir / "grader" / "data" / "public";
       const fs::path hooks = kSource / "grader" / "tests" / "hostile" / id / "redteam.toml";
@@ -908,6 +910,11 @@ Clone make_clone(const std::string& tag) {
     if (name == "gradescope-zip" || name == "object-cache") continue;
     EXPECT_EQ(sh("cp -a '" + e.path().string() + "' '" + (c.build / "grader").string() + "/'"), 0);
   }
+  // The references as submissions (build/assignments/<id>/reference: the assignment's own reference
+  // files and its task modules' copies), which grade-config's reference_dir names.
+  if (fs::exists(bin / "assignments")) {
+    EXPECT_EQ(sh("cp -a '" + (bin / "assignments").string() + "' '" + c.build.string() + "/'"), 0);
+  }
   // The assignments' task libraries (libjelly_<id>_tasks_solutions.a, ...) sit at the top.
   EXPECT_EQ(sh("cp -a '" + bin.string() + "'/libjelly_*.a '" + c.build.string() + "/'"), 0);
   fs::remove_all(c.build / "grader" / "object-cache");
@@ -933,8 +940,9 @@ Clone make_clone(const std::string& tag) {
 
 // A path of the source tree, in the clone.
 fs::path in_clone(const Clone& c, const fs::path& p) {
-  const std::string s = p.string();
-  EXPECT_EQ(s.rfind(kSource.string(), 0), 0u) << p << " is not in the source tree";
+  const std::string s = p.string(), bin = fs::path(JELLY_BINARY_DIR).string();
+  if (s.rfind(bin, 0) == 0) return fs::path(c.build.string() + s.substr(bin.size()));
+  EXPECT_EQ(s.rfind(kSource.string(), 0), 0u) << p << " is not in the source or build tree";
   return fs::path(c.src.string() + s.substr(kSource.string().size()));
 }
 
