@@ -1,15 +1,19 @@
 // `jelly study`: dispatch and command line of the numerical studies.
 #include "study_command.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <initializer_list>
+#include <iterator>
+#include <sstream>
 #include <string>
 #include <string_view>
 
 #include "commands.hpp"
 #include "jelly/body_kind.hpp"
 #include "jelly/cli_common/command_line.hpp"
+#include "jelly/linked_assignments.hpp"
 #include "jelly/session/assignments.hpp"
 #include "study_accuracy.hpp"
 #include "study_effects.hpp"
@@ -83,10 +87,7 @@ constexpr const char* kEffectsHelpRun =
   cost         wall time of the steps per simulated second (median of --repeats runs), force
                (acceleration) evaluations and backward Euler's CG iterations
   Measures needing a contact are nan (CSV) or – (table) when nothing touched a terrain)";
-constexpr const char* kEffectsHelpTail = R"(.
-  Which of these are measured and written is the scene's assignment's choice: its manifest's
-  [studies] measures (impact, bounce, cave_in, rest, energy, sag, swing, sink; A1 lists the
-  first five, A2 sag, swing, sink and energy).
+constexpr const char* kEffectsHelpTail = R"(
 
 options:
   --param KEY         the parameter to sweep, as `jelly params SCENE` lists it; '*' stands for
@@ -210,19 +211,68 @@ std::vector<std::string> split_values(const std::string& text) {
   return out;
 }
 
+/// `names` as a sentence lists them ("a, b and c").
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
+}
+
+/// What each linked assignment's manifest lists under [studies] measures ("A1 lists the first
+/// five, A2 ..."); `known` is the known measures' list.
+std::string assignments_measures(const std::vector<std::string>& known) {
+  static const char* const kCount[] = {"", "one", "two", "three", "four", "five", "six", "seven"};
+  std::string out;
+  for (const LinkedAssignment& a : linked_assignments()) {
+    const std::vector<std::string>& names = session::manifest_of(a).study_measures;
+    if (names.empty()) continue;
+    std::string id(a.id);
+    for (char& c : id) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const bool first = names.size() > 2 && names.size() < std::size(kCount) &&
+                       names.size() <= known.size() &&
+                       std::equal(names.begin(), names.end(), known.begin());
+    out += (out.empty() ? "" : ", ") + id + (out.empty() ? " lists " : " ") +
+           (first ? std::string("the first ") + kCount[names.size()] : listed(names));
+  }
+  return out;
+}
+
+/// `text` in lines of at most 92 characters, each indented by two spaces.
+std::string wrapped(const std::string& text) {
+  std::istringstream words(text);
+  std::string out, line;
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > 92) {
+      out += line + '\n';
+      line.clear();
+    }
+    line += (line.empty() ? "  " : " ") + word;
+  }
+  return out + line;
+}
+
 /// `jelly study effects --help`: the general measures, and each linked body kind's lines for the
-/// measures it takes, in the order of the measures.
+/// measures it takes (the landing ones with the bounce, the others after the energy).
 std::string effects_help() {
-  const auto kinds_lines = [](std::initializer_list<std::string_view> measures) {
+  const auto kinds_lines = [](MeasurePlace place) {
     std::string out;
-    for (std::string_view measure : measures)
-      for (const BodyKindModule* kind : body_kinds()) out += kind->measure_help(measure);
+    for (const study::KindMeasure& k : study::kind_measures())
+      if (k.measure->place == place) out += k.measure->help;
     return out;
   };
   std::string contact;
   for (const BodyKindModule* kind : body_kinds()) contact += kind->contact_help();
-  return kEffectsHelpHead + kinds_lines({"cave_in"}) + kEffectsHelpRest +
-         kinds_lines({"sag", "swing", "sink"}) + kEffectsHelpRun + contact + kEffectsHelpTail;
+  const std::vector<std::string> known = study::known_measures();
+  std::string names;
+  for (const std::string& name : known) names += (names.empty() ? "" : ", ") + name;
+  const std::string which =
+      "Which of these are measured and written is the scene's assignment's choice: its "
+      "manifest's [studies] measures (" +
+      names + "; " + assignments_measures(known) + ").";
+  return kEffectsHelpHead + kinds_lines(MeasurePlace::kLanding) + kEffectsHelpRest +
+         kinds_lines(MeasurePlace::kMotion) + kEffectsHelpRun + contact + ".\n" + wrapped(which) +
+         kEffectsHelpTail;
 }
 
 int effects(int argc, char** argv) {

@@ -1,6 +1,6 @@
 // The sweep of `jelly study effects`: applies each value of one declared parameter (or each
-// integrator), runs the scene, and measures the impact, bounce, cave-in, rest and energy of the run
-// and its cost. Definitions: docs/parameters.md ("What is measured").
+// integrator), runs the scene, and measures the impact, bounce, rest and energy of the run, its
+// body kind's measures, and its cost. Definitions: docs/parameters.md ("What is measured").
 #include "study_effects.hpp"
 
 #include <algorithm>
@@ -77,11 +77,11 @@ std::string set_one(SceneSpec& scene, const std::string& key, const std::string&
 
 /// The names of the measures `m` turns on, as a manifest lists them.
 std::vector<std::string> measure_names(const Measures& m) {
-  const bool on[] = {m.impact, m.bounce, m.cave_in, m.rest, m.energy, m.sag, m.swing, m.sink};
-  static_assert(sizeof on / sizeof *on == kKnownMeasures.size(), "one flag per known measure");
   std::vector<std::string> names;
-  for (std::size_t i = 0; i < kKnownMeasures.size(); ++i)
-    if (on[i]) names.emplace_back(kKnownMeasures[i]);
+  for (const std::string& name : known_measures())
+    if ((name == "impact" && m.impact) || (name == "bounce" && m.bounce) ||
+        (name == "rest" && m.rest) || (name == "energy" && m.energy) || m.has(name))
+      names.push_back(name);
   return names;
 }
 
@@ -218,14 +218,7 @@ void finish_row(const Simulator& sim, const BounceWatch& bounce, double rest_sin
   row.rest_time = !std::isnan(rest_since) && row.sim_time - rest_since >= o.rest_hold - 1e-9
                       ? rest_since
                       : kNaN;
-  row.rest_volume = v.rest_volume;
-  row.cave_in = v.cave_in;
-  row.cave_in_final = v.cave_in_final;
-  row.sag = v.sag;
-  row.sag_final = v.sag_final;
-  row.swing = v.swing;
-  row.sink = v.sink;
-  row.sink_final = v.sink_final;
+  row.kind_values = v.values;
   row.energy_end = sim.energy().total();
   row.wall = wall;
   row.evaluations = sim.evaluations();
@@ -249,9 +242,10 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   row.particles = static_cast<long>(world.particle_count());
   row.springs = static_cast<long>(world.spring_count());
   const BodyKindModule& body_kind = body_kind_of(scene);
+  row.kind = &body_kind;
   const MeasuredBody body = measured_body(world, body_kind);
   Look before = look_at(body, sim.state());
-  // What the body's kind measures on it (the cave-in, the sag, ...); NaN for what it does not.
+  // What the body's kind measures on it (a kind's measures); NaN for what it does not.
   const std::unique_ptr<BodyStudy> kind_study = body_kind.study(
       world, sim.state(), StudyLook{before.com, before.height, body.up}, measure_names(o.measures));
   const BodyStudyValues no_values;
@@ -263,7 +257,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
   BounceWatch bounce;
   double rest_since = 0.0;
   Sampler sampler{series, o.series_dt};
-  sampler.take(sim, before, kind_values.volume_ratio);
+  sampler.take(sim, before, kind_values.over_time);
   double wall = 0.0;
   for (long step = 1; step <= total; ++step) {
     const double t_before = sim.time();
@@ -281,7 +275,7 @@ EffectsRow measure(const SceneSpec& scene, IntegratorKind kind, const EffectsOpt
     const bool fired = detector_fired(monitor, sim, step, row);
     const bool last = fired || step == total;
     if (sim.time() >= sampler.next - 1e-9 * scene.dt || last)
-      sampler.take(sim, now, kind_values.volume_ratio);
+      sampler.take(sim, now, kind_values.over_time);
     if (last) break;  // the detector fired: what follows would measure a broken run
     before = now;
   }
@@ -299,21 +293,66 @@ double time_again(const SceneSpec& scene, IntegratorKind kind, long steps) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// The progress line's part of the kinds' measures placed at `place` that `m` turns on.
+std::string kinds_seen(const Measures& m, const EffectsRow& row, MeasurePlace place) {
+  std::string seen;
+  for (const KindMeasure& k : kind_measures()) {
+    const BodyMeasureColumn& c = k.measure->progress;
+    if (k.measure->place == place && m.has(k.measure->name))
+      seen += " " + std::string(c.header) + " " + fmt(c.format, row.shown(k, c)) + " " +
+              std::string(c.unit) + ",";
+  }
+  return seen;
+}
+
 }  // namespace
 
+std::vector<KindMeasure> kind_measures() {
+  std::vector<KindMeasure> all;
+  for (const BodyKindModule* kind : body_kinds())
+    for (const BodyMeasure& measure : kind->measures()) all.push_back({kind, &measure});
+  return all;
+}
+
+std::vector<std::string> known_measures() {
+  const auto placed = [](std::vector<std::string>& names, MeasurePlace place) {
+    for (const KindMeasure& k : kind_measures())
+      if (k.measure->place == place) names.emplace_back(k.measure->name);
+  };
+  std::vector<std::string> names = {"impact", "bounce"};
+  placed(names, MeasurePlace::kLanding);
+  names.insert(names.end(), {"rest", "energy"});
+  placed(names, MeasurePlace::kMotion);
+  return names;
+}
+
+bool Measures::has(std::string_view name) const {
+  return std::find(kinds.begin(), kinds.end(), name) != kinds.end();
+}
+
+double EffectsRow::shown(const KindMeasure& m, const BodyMeasureColumn& c) const {
+  const auto i = static_cast<std::size_t>(c.value);
+  if (m.kind != kind || i >= kind_values.size()) return kNaN;
+  return c.scale * kind_values[i];
+}
+
 Measures measures_from(const std::vector<std::string>& names, const std::string& manifest) {
-  Measures m{false, false, false, false, false, false, false, false};
-  bool* flags[] = {&m.impact, &m.bounce, &m.cave_in, &m.rest, &m.energy, &m.sag, &m.swing, &m.sink};
+  Measures m{false, false, false, false, {}};
+  bool* flags[] = {&m.impact, &m.bounce, &m.rest, &m.energy};
+  const char* own[] = {"impact", "bounce", "rest", "energy"};
+  const std::vector<std::string> known = known_measures();
   for (const std::string& name : names) {
-    const auto it = std::find(kKnownMeasures.begin(), kKnownMeasures.end(), name);
-    if (it == kKnownMeasures.end()) {
-      std::string known;
-      for (std::string_view k : kKnownMeasures)
-        known += (known.empty() ? "" : ", ") + std::string(k);
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       throw std::invalid_argument(manifest + ": studies.measures: unknown measure \"" + name +
-                                  "\" (the framework measures: " + known + ")");
+                                  "\" (the framework measures: " + list + ")");
     }
-    *flags[it - kKnownMeasures.begin()] = true;
+    const auto it = std::find(std::begin(own), std::end(own), name);
+    if (it != std::end(own))
+      *flags[it - std::begin(own)] = true;
+    else if (!m.has(name))
+      m.kinds.push_back(name);
   }
   return m;
 }
@@ -401,11 +440,9 @@ EffectsResult run_effects(const SceneSpec& scene, const EffectsOptions& o, std::
       if (progress) {
         // The measures the scene's assignment reports, then the cost.
         std::string seen = row.stable ? "stable," : "UNSTABLE,";
-        if (o.measures.cave_in) seen += " cave-in " + fmt("%.3g", 100.0 * row.cave_in) + " %,";
+        seen += kinds_seen(o.measures, row, MeasurePlace::kLanding);
         if (o.measures.bounce) seen += " bounce " + fmt("%.3g", row.bounce) + " m,";
-        if (o.measures.sag) seen += " sag " + fmt("%.3g", row.sag) + " m,";
-        if (o.measures.swing) seen += " swing " + fmt("%.3g", row.swing) + " m,";
-        if (o.measures.sink) seen += " sink " + fmt("%.3g", 100.0 * row.sink) + " cm,";
+        seen += kinds_seen(o.measures, row, MeasurePlace::kMotion);
         if (o.measures.rest)
           seen += " rest " +
                   (std::isnan(row.rest_time) ? "never" : fmt("%.3g", row.rest_time) + " s") + ",";

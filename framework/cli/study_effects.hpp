@@ -3,36 +3,44 @@
 // the bounce, the cave-in, when it comes to rest, the energy lost — and what the run cost.
 #pragma once
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "jelly/body_kind.hpp"
 #include "jelly/integrator.hpp"
 #include "jelly/scene.hpp"
 
 namespace jelly::cli::study {
 
+/// A linked body kind's measure (BodyKindModule::measures), with the kind that takes it.
+struct KindMeasure {
+  const BodyKindModule* kind;
+  const BodyMeasure* measure;
+};
+
+/// Every linked kind's measures, in the order of the kinds and of their lists.
+std::vector<KindMeasure> kind_measures();
+
 /// The measures the framework knows, by the names an assignment's manifest lists under
-/// [studies] measures (docs/parameters.md, "What is measured"). The cost and the stability of
-/// every run are always reported.
-inline constexpr std::array<std::string_view, 8> kKnownMeasures = {
-    "impact", "bounce", "cave_in", "rest", "energy", "sag", "swing", "sink"};
+/// [studies] measures (docs/parameters.md, "What is measured"): its own (impact, bounce, rest,
+/// energy) and every linked kind's, the landing ones after the bounce and the others after the
+/// energy. The cost and the stability of every run are always reported.
+std::vector<std::string> known_measures();
 
 /// Which measures a study computes and reports.
 struct Measures {
-  bool impact = true;   ///< first contact and the centre-of-mass speed just before it
-  bool bounce = true;   ///< the turn, the peak speed and the bounce after it
-  bool cave_in = true;  ///< the volume inside the body's outer surface, against its rest volume
-  bool rest = true;     ///< when the body comes to rest
-  bool energy = true;   ///< energy at start and end, and what was lost
-  // The body kinds' own measures (BodyKindModule::study); NaN in a scene whose kind does not
-  // take them (cave_in, sag, swing, sink).
-  bool sag = false;    ///< how far the body's centre of mass drops below its start
-  bool swing = false;  ///< how far it moves sideways (across g) from its start
-  bool sink = false;   ///< how deep the body's particles get inside the spheres
+  bool impact = true;  ///< first contact and the centre-of-mass speed just before it
+  bool bounce = true;  ///< the turn, the peak speed and the bounce after it
+  bool rest = true;    ///< when the body comes to rest
+  bool energy = true;  ///< energy at start and end, and what was lost
+  /// The body kinds' own measures that are on, by name (BodyKindModule::measures); NaN in a
+  /// scene whose kind does not take them.
+  std::vector<std::string> kinds;
+  /// Whether the kind's measure `name` is on.
+  bool has(std::string_view name) const;
 };
 
 /// The measures `names` lists (a manifest's [studies] measures; `manifest` names the file in
@@ -65,23 +73,17 @@ struct EffectsRow {
   long springs = 0;
   double contact_time =
       -1.0;  ///< first step with a collision response or contact force [s]; NaN: none
-  double impact_speed = 0.0;   ///< centre-of-mass speed just before it [m/s]
-  double turn_time = 0.0;      ///< first time after contact the centre of mass stops descending [s]
-  double peak_speed = 0.0;     ///< largest centre-of-mass speed from turn_time on [m/s]
-  double com_apex = 0.0;       ///< highest centre of mass (along −g) from turn_time on [m]
-  double bounce = 0.0;         ///< com_apex − centre-of-mass height at turn_time [m]
-  double rest_volume = 0.0;    ///< volume inside the body's outer surface at t = 0 [m³]
-  double cave_in = 0.0;        ///< largest 1 − V(t)/V(0) over the run (fraction)
-  double cave_in_final = 0.0;  ///< 1 − V(T)/V(0)
+  double impact_speed = 0.0;  ///< centre-of-mass speed just before it [m/s]
+  double turn_time = 0.0;     ///< first time after contact the centre of mass stops descending [s]
+  double peak_speed = 0.0;    ///< largest centre-of-mass speed from turn_time on [m/s]
+  double com_apex = 0.0;      ///< highest centre of mass (along −g) from turn_time on [m]
+  double bounce = 0.0;        ///< com_apex − centre-of-mass height at turn_time [m]
   double rest_time =
-      0.0;           ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
-  double sag = 0.0;  ///< largest drop of the centre of mass below t = 0 [m]
-  double sag_final = 0.0;     ///< the drop at the end [m]
-  double swing = 0.0;         ///< largest distance of the centre of mass across g [m]
-  double sink = 0.0;          ///< largest depth of an unpinned particle in a sphere [m]
-  double sink_final = 0.0;    ///< the same at the end [m]
-  double energy_start = 0.0;  ///< kinetic + gravitational + spring at t = 0 [J]
-  double energy_end = 0.0;    ///< the same at the end [J]
+      0.0;  ///< start of the final stretch of rest (rest_speed, rest_hold) [s]; NaN: never
+  const BodyKindModule* kind = nullptr;  ///< the scene's body kind
+  std::vector<double> kind_values;       ///< what its study measured (BodyStudyValues::values)
+  double energy_start = 0.0;             ///< kinetic + gravitational + spring at t = 0 [J]
+  double energy_end = 0.0;               ///< the same at the end [J]
   bool stable = true;         ///< the §8 detector never fired (the run stops when it does)
   bool finite = true;         ///< the state stayed finite
   double detected_at = -1.0;  ///< when the detector fired [s]; −1 when it did not
@@ -92,6 +94,9 @@ struct EffectsRow {
   long cg_iterations = 0;     ///< backward Euler's CG iterations
   double dissipated() const { return energy_start - energy_end; }
   double wall_per_sim() const { return sim_time > 0.0 ? wall / sim_time : 0.0; }
+  /// Column `c` of the kind's measure `m` as shown: its scaled value, NaN when the scene's kind
+  /// is another or did not measure it.
+  double shown(const KindMeasure& m, const BodyMeasureColumn& c) const;
 };
 
 /// Samples of one run over time, every series_dt (for the time plots).

@@ -1,10 +1,12 @@
 // Outputs of `jelly study effects`: CSV, a Markdown table, a plot of every measure against the
 // swept value and a plot of each run over time, both drawn by gnuplot (study_files.hpp).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "jelly/body_kind.hpp"
 #include "study_effects.hpp"
@@ -49,13 +51,12 @@ std::string multiplot_layout(int panels, const std::string& title) {
   return multiplot_line(rows, columns, title);
 }
 
-/// The plot's label of a body kind's measure: the first linked kind's that takes it, else its
-/// name.
-std::string plot_label(std::string_view measure) {
-  for (const BodyKindModule* kind : body_kinds())
-    if (const std::string_view label = kind->measure_plot_label(measure); !label.empty())
-      return std::string(label);
-  return std::string(measure);
+/// The kinds' measures that `m` turns on (every one when `all`), in their order.
+std::vector<KindMeasure> kinds_on(const Measures& m, bool all = false) {
+  std::vector<KindMeasure> on;
+  for (const KindMeasure& k : kind_measures())
+    if (all || m.has(k.measure->name)) on.push_back(k);
+  return on;
 }
 
 /// The CSV: one row per run, with the columns of the measures the scene's assignment reports.
@@ -65,10 +66,11 @@ std::string effects_csv(const EffectsResult& r) {
   std::ostringstream csv;
   csv << "scene,key,value,integrator,h,particles,springs,stable,finite,detected_at,"
       << (m.impact ? "contact_time,impact_speed," : "")
-      << (m.bounce ? "turn_time,peak_speed_after_impact,com_apex,bounce_height," : "")
-      << (m.cave_in ? "rest_volume,cave_in_max,cave_in_final," : "")
-      << (m.sag ? "sag_max,sag_final," : "") << (m.swing ? "swing_max," : "")
-      << (m.sink ? "sink_max,sink_final," : "") << (m.rest ? "rest_time," : "")
+      << (m.bounce ? "turn_time,peak_speed_after_impact,com_apex,bounce_height," : "");
+  const std::vector<KindMeasure> kinds = kinds_on(m);
+  for (const KindMeasure& k : kinds)
+    for (const BodyMeasureColumn& c : k.measure->csv) csv << c.header << ',';
+  csv << (m.rest ? "rest_time," : "")
       << (m.energy ? "energy_start,energy_end,energy_dissipated,dissipated_fraction," : "")
       << "sim_s,force_evaluations,cg_iterations,wall_s,wall_s_per_sim_s,reason\n";
   for (const EffectsRow& row : r.rows) {
@@ -80,12 +82,8 @@ std::string effects_csv(const EffectsResult& r) {
     if (m.bounce)
       csv << num(row.turn_time) << ',' << num(row.peak_speed) << ',' << num(row.com_apex) << ','
           << num(row.bounce) << ',';
-    if (m.cave_in)
-      csv << num(row.rest_volume) << ',' << num(row.cave_in) << ',' << num(row.cave_in_final)
-          << ',';
-    if (m.sag) csv << num(row.sag) << ',' << num(row.sag_final) << ',';
-    if (m.swing) csv << num(row.swing) << ',';
-    if (m.sink) csv << num(row.sink) << ',' << num(row.sink_final) << ',';
+    for (const KindMeasure& k : kinds)
+      for (const BodyMeasureColumn& c : k.measure->csv) csv << num(row.shown(k, c)) << ',';
     if (m.rest) csv << num(row.rest_time) << ',';
     if (m.energy)
       csv << num(row.energy_start) << ',' << num(row.energy_end) << ',' << num(row.dissipated())
@@ -119,15 +117,18 @@ std::string effects_markdown(const EffectsResult& r, const std::string& title) {
      << r.load_after << " after (a shared machine). Definitions: docs/parameters.md.\n\n";
   md << "| integrator |" << (o.key.empty() ? "" : " value |") << " h [s] | stable |"
      << (m.impact ? " impact speed [m/s] |" : "")
-     << (m.bounce ? " peak speed after [m/s] | bounce [m] |" : "")
-     << (m.cave_in ? " cave-in max | cave-in at end |" : "")
-     << (m.sag ? " sag max [m] | sag at end [m] |" : "") << (m.swing ? " swing [m] |" : "")
-     << (m.sink ? " sink max [cm] | sink at end [cm] |" : "")
-     << (m.rest ? " at rest from [s] |" : "") << (m.energy ? " energy lost |" : "")
+     << (m.bounce ? " peak speed after [m/s] | bounce [m] |" : "");
+  const std::vector<KindMeasure> kinds = kinds_on(m);
+  std::string kinds_rule;
+  for (const KindMeasure& k : kinds)
+    for (const BodyMeasureColumn& c : k.measure->table) {
+      md << ' ' << c.header << " |";
+      kinds_rule += "---|";
+    }
+  md << (m.rest ? " at rest from [s] |" : "") << (m.energy ? " energy lost |" : "")
      << " wall s / sim s | force evals / sim s |\n";
   md << "|---|" << (o.key.empty() ? "" : "---|") << "---|---|" << (m.impact ? "---|" : "")
-     << (m.bounce ? "---|---|" : "") << (m.cave_in ? "---|---|" : "") << (m.sag ? "---|---|" : "")
-     << (m.swing ? "---|" : "") << (m.sink ? "---|---|" : "") << (m.rest ? "---|" : "")
+     << (m.bounce ? "---|---|" : "") << kinds_rule << (m.rest ? "---|" : "")
      << (m.energy ? "---|" : "") << "---|---|\n";
   for (const EffectsRow& row : r.rows) {
     std::string stable = row.stable ? "yes" : "**no**";
@@ -138,13 +139,9 @@ std::string effects_markdown(const EffectsResult& r, const std::string& title) {
        << " " << num(row.h) << " | " << stable << " | ";
     if (m.impact) md << fmt("%.2f", row.impact_speed) << " | ";
     if (m.bounce) md << fmt("%.2f", row.peak_speed) << " | " << fmt("%.3f", row.bounce) << " | ";
-    if (m.cave_in)
-      md << fmt("%.1f %%", 100.0 * row.cave_in) << " | "
-         << fmt("%.1f %%", 100.0 * row.cave_in_final) << " | ";
-    if (m.sag) md << fmt("%.4f", row.sag) << " | " << fmt("%.4f", row.sag_final) << " | ";
-    if (m.swing) md << fmt("%.4f", row.swing) << " | ";
-    if (m.sink)
-      md << fmt("%.2f", 100.0 * row.sink) << " | " << fmt("%.2f", 100.0 * row.sink_final) << " | ";
+    for (const KindMeasure& k : kinds)
+      for (const BodyMeasureColumn& c : k.measure->table)
+        md << fmt(c.format, row.shown(k, c)) << " | ";
     if (m.rest)
       md << (std::isnan(row.rest_time) ? std::string("never") : fmt("%.2f", row.rest_time))
          << " | ";
@@ -168,6 +165,22 @@ struct SweepLayout {
   bool logx = false;
   std::size_t per_block = 0;
   std::size_t blocks = 0;
+  /// The kinds' measures in the data: the landing ones always (before the rest time), the
+  /// others after the label when any of them is on (a study without them keeps the file it had).
+  std::vector<KindMeasure> landing, motion;
+  /// The data's column of the label (the x tics when the values are not numbers).
+  int label_column() const { return 8 + static_cast<int>(landing.size()); }
+  /// The data's column of a kind's measure.
+  int column(const KindMeasure& k) const {
+    const auto at = [&](const std::vector<KindMeasure>& list) {
+      return static_cast<int>(
+          std::find_if(list.begin(), list.end(),
+                       [&](const KindMeasure& l) { return l.measure == k.measure; }) -
+          list.begin());
+    };
+    return k.measure->place == MeasurePlace::kLanding ? 5 + at(landing)
+                                                      : label_column() + 1 + at(motion);
+  }
 };
 
 SweepLayout sweep_layout(const EffectsResult& r) {
@@ -180,21 +193,35 @@ SweepLayout sweep_layout(const EffectsResult& r) {
                20.0 * *std::min_element(l.xs.begin(), l.xs.end());
   l.per_block = o.key.empty() ? r.rows.size() : o.values.size();
   l.blocks = l.per_block ? r.rows.size() / l.per_block : 0;
+  bool motion_on = false;
+  for (const KindMeasure& k : kinds_on(o.measures, true))
+    if (k.measure->place == MeasurePlace::kLanding) {
+      l.landing.push_back(k);
+    } else {
+      l.motion.push_back(k);
+      motion_on = motion_on || o.measures.has(k.measure->name);
+    }
+  if (!motion_on) l.motion.clear();
   return l;
 }
 
 /// The measures against the swept value, one block per integrator (gnuplot's data file).
 std::string effects_sweep_dat(const EffectsResult& r, const SweepLayout& l) {
   const EffectsOptions& o = r.options;
-  const Measures& m = o.measures;
   const std::vector<double>& xs = l.xs;
   const bool numeric = l.numeric;
   const std::size_t per_block = l.per_block, blocks = l.blocks;
   std::ostringstream dat;
-  // The sag, swing and sink follow the label (a study without them keeps the file it had).
-  const bool moving_columns = m.sag || m.swing || m.sink;
-  dat << "# x stable peak_speed bounce cave_in_% rest_time dissipated_% wall_per_sim label"
-      << (moving_columns ? " sag swing sink_cm" : "") << '\n';
+  const auto columns = [&](const std::vector<KindMeasure>& kinds, const EffectsRow* row) {
+    for (const KindMeasure& k : kinds)
+      dat << ' '
+          << (row ? num(row->shown(k, k.measure->plot)) : std::string(k.measure->plot.header));
+  };
+  dat << "# x stable peak_speed bounce";
+  columns(l.landing, nullptr);
+  dat << " rest_time dissipated_% wall_per_sim label";
+  columns(l.motion, nullptr);
+  dat << '\n';
   for (std::size_t b = 0; b < blocks; ++b) {
     if (b) dat << "\n\n";
     dat << "# "
@@ -204,40 +231,46 @@ std::string effects_sweep_dat(const EffectsResult& r, const SweepLayout& l) {
       const EffectsRow& row = r.rows[b * per_block + i];
       const std::string label = o.key.empty() ? std::string(to_string(row.integrator)) : row.value;
       dat << num(numeric ? xs[i] : static_cast<double>(i + 1)) << ' ' << (row.stable ? 1 : 0) << ' '
-          << num(row.peak_speed) << ' ' << num(row.bounce) << ' ' << num(100.0 * row.cave_in) << ' '
-          << num(row.rest_time) << ' '
+          << num(row.peak_speed) << ' ' << num(row.bounce);
+      columns(l.landing, &row);
+      dat << ' ' << num(row.rest_time) << ' '
           << num(row.energy_start != 0.0 ? 100.0 * row.dissipated() / row.energy_start : 0.0) << ' '
           << num(row.wall_per_sim()) << " \"" << label << "\"";
-      if (moving_columns)
-        dat << ' ' << num(row.sag) << ' ' << num(row.swing) << ' ' << num(100.0 * row.sink);
+      columns(l.motion, &row);
       dat << '\n';
     }
   }
   return dat.str();
 }
 
-/// The sweep plot's panels: the measures the scene's assignment reports, then the cost. Each is
-/// its data column in effects_sweep_dat's file and its y label.
-constexpr int kPanels = 9;
-using PanelTable = std::array<std::array<std::string, 2>, kPanels>;
-PanelTable sweep_panels() {
-  return {{{"3", "peak centre-of-mass speed after the impact [m/s]"},
-           {"4", "bounce height of the centre of mass [m]"},
-           {"5", plot_label("cave_in")},
-           {"10", plot_label("sag")},
-           {"11", plot_label("swing")},
-           {"12", plot_label("sink")},
-           {"6", "at rest from [s] (none: never)"},
-           {"7", "energy dissipated [% of the start]"},
-           {"8", "wall time per simulated second [s]"}}};
-}
+/// One panel of the sweep plot: its data column in effects_sweep_dat's file, its y label,
+/// whether the study shows it, and its measure of a row (to find a panel without any finite
+/// value: gnuplot refuses it).
+struct Panel {
+  std::string column;
+  std::string label;
+  bool shown;
+  std::function<double(const EffectsRow&)> measure;
+};
 
-/// Panel p's measure of a row (to find a panel without any finite value: gnuplot refuses it).
-double panel_measure(const EffectsRow& row, int p) {
-  const double v[kPanels] = {row.peak_speed, row.bounce,       row.cave_in,
-                             row.sag,        row.swing,        100.0 * row.sink,
-                             row.rest_time,  row.dissipated(), row.wall_per_sim()};
-  return v[p];
+/// The sweep plot's panels: the measures the scene's assignment reports, then the cost (the
+/// last, on a log scale).
+std::vector<Panel> sweep_panels(const Measures& m, const SweepLayout& l) {
+  std::vector<Panel> panels = {{"3", "peak centre-of-mass speed after the impact [m/s]", m.bounce,
+                                [](const EffectsRow& row) { return row.peak_speed; }},
+                               {"4", "bounce height of the centre of mass [m]", m.bounce,
+                                [](const EffectsRow& row) { return row.bounce; }}};
+  for (const KindMeasure& k : kinds_on(m, true))
+    panels.push_back({std::to_string(l.column(k)), std::string(k.measure->plot_label),
+                      m.has(k.measure->name),
+                      [k](const EffectsRow& row) { return row.shown(k, k.measure->plot); }});
+  panels.push_back({std::to_string(l.label_column() - 3), "at rest from [s] (none: never)", m.rest,
+                    [](const EffectsRow& row) { return row.rest_time; }});
+  panels.push_back({std::to_string(l.label_column() - 2), "energy dissipated [% of the start]",
+                    m.energy, [](const EffectsRow& row) { return row.dissipated(); }});
+  panels.push_back({std::to_string(l.label_column() - 1), "wall time per simulated second [s]",
+                    true, [](const EffectsRow& row) { return row.wall_per_sim(); }});
+  return panels;
 }
 
 /// One sweep plot's panels written into `body` (the gnuplot commands).
@@ -247,11 +280,11 @@ class SweepPanels {
               std::ostringstream& body)
       : r_(r), l_(l), dat_name_(dat.filename().string()), body_(body) {}
 
-  void write(int p, const std::array<std::string, 2>& panel) {
-    body_ << "set ylabel '" << panel[1] << "' font ',9'\n";
-    body_ << (p == kPanels - 1 ? "set logscale y\n" : "unset logscale y\n");
+  void write(const Panel& panel, bool last) {
+    body_ << "set ylabel '" << panel.label << "' font ',9'\n";
+    body_ << (last ? "set logscale y\n" : "unset logscale y\n");
     const bool any = std::any_of(r_.rows.begin(), r_.rows.end(), [&](const EffectsRow& row) {
-      return std::isfinite(panel_measure(row, p));
+      return std::isfinite(panel.measure(row));
     });
     if (!any) {
       body_ << "set yrange [0:1]\nset label 1 'no run has this measure' at graph 0.5, graph 0.5 "
@@ -261,7 +294,7 @@ class SweepPanels {
     }
     body_ << "plot ";
     bool cross_titled = false;
-    for (std::size_t b = 0; b < l_.blocks; ++b) plot_block(panel[0], b, cross_titled);
+    for (std::size_t b = 0; b < l_.blocks; ++b) plot_block(panel.column, b, cross_titled);
     body_ << "\n";
   }
 
@@ -274,7 +307,8 @@ class SweepPanels {
         o.key.empty() ? "runs" : std::string(to_string(r_.rows[b * per_block].integrator));
     const char* colour = kColours[b % (sizeof kColours / sizeof *kColours)];
     body_ << (b ? ", \\\n     " : "") << "'" << dat_name_ << "' index " << b
-          << " using 1:" << column << (l_.numeric ? "" : ":xtic(9)")
+          << " using 1:" << column
+          << (l_.numeric ? "" : ":xtic(" + std::to_string(l_.label_column()) + ")")
           << " with linespoints pt 7 ps 0.7 lw 1.5 lc rgb '" << colour << "' title '" << name
           << "' noenhanced";
     const bool unstable = std::any_of(r_.rows.begin() + static_cast<long>(b * per_block),
@@ -317,15 +351,14 @@ std::string effects_sweep_plot(const EffectsResult& r, const SweepLayout& l,
                                const std::string& title, const std::filesystem::path& gp,
                                const std::filesystem::path& dat, const std::filesystem::path& svg,
                                const std::filesystem::path& png) {
-  const Measures& m = r.options.measures;
-  const PanelTable panels = sweep_panels();
-  const bool shown[kPanels] = {m.bounce, m.bounce, m.cave_in, m.sag, m.swing,
-                               m.sink,   m.rest,   m.energy,  true};
+  const std::vector<Panel> panels = sweep_panels(r.options.measures, l);
   std::ostringstream body;
-  body << multiplot_layout(static_cast<int>(std::count(shown, shown + kPanels, true)), title);
+  body << multiplot_layout(static_cast<int>(std::count_if(panels.begin(), panels.end(),
+                                                          [](const Panel& p) { return p.shown; })),
+                           title);
   SweepPanels writer(r, l, dat, body);
-  for (int p = 0; p < kPanels; ++p)
-    if (shown[p]) writer.write(p, panels[static_cast<std::size_t>(p)]);
+  for (std::size_t p = 0; p < panels.size(); ++p)
+    if (panels[p].shown) writer.write(panels[p], p + 1 == panels.size());
   body << "unset multiplot\n";
   return plot_script(sweep_plot_header(r, l, gp), svg.filename().string(), png.filename().string(),
                      body.str(), 1500, 800);
@@ -353,11 +386,15 @@ std::string effects_time_plot(const EffectsResult& r, const std::string& title,
                               const std::filesystem::path& svg, const std::filesystem::path& png) {
   const Measures& m = r.options.measures;
   const std::string tdat_name = dat.filename().string();
-  const char* tpanels[4][2] = {{"2", "centre-of-mass height [m]"},
-                               {"4", "volume / rest volume"},
-                               {"3", "centre-of-mass speed [m/s]"},
-                               {"6", "total energy [J]"}};
-  const bool tshown[4] = {true, m.cave_in, true, m.energy};
+  // The kinds' series over time (column 4) has the label of the first measure on that has one.
+  std::string series_label;
+  for (const KindMeasure& k : kinds_on(m))
+    if (series_label.empty()) series_label = std::string(k.measure->time_label);
+  const std::string tpanels[4][2] = {{"2", "centre-of-mass height [m]"},
+                                     {"4", series_label},
+                                     {"3", "centre-of-mass speed [m/s]"},
+                                     {"6", "total energy [J]"}};
+  const bool tshown[4] = {true, !series_label.empty(), true, m.energy};
   std::ostringstream tbody;
   tbody << multiplot_layout(static_cast<int>(std::count(tshown, tshown + 4, true)), title);
   for (int p = 0; p < 4; ++p) {

@@ -454,12 +454,7 @@ class ClothKind final : public BodyKindModule {
                                    const std::vector<std::string>& measures) const override {
     return make_cloth_study(world, start, look, measures);
   }
-  std::string_view measure_help(std::string_view measure) const override {
-    return cloth_measure_help(measure);
-  }
-  std::string_view measure_plot_label(std::string_view measure) const override {
-    return cloth_measure_plot_label(measure);
-  }
+  const std::vector<BodyMeasure>& measures() const override { return cloth_measures(); }
   std::string_view contact_help() const override { return cloth_contact_help(); }
 
   /// Cloth contract §1, §3: the pinned particles and the spheres, in scene order.

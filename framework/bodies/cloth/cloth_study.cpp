@@ -11,21 +11,27 @@ namespace jelly::bodies {
 
 namespace {
 
+/// The cloth's values of a study (BodyStudyValues::values).
+enum ClothValue { kSag, kSagFinal, kSwing, kSink, kSinkFinal, kClothValues };
+
 class ClothStudy final : public BodyStudy {
  public:
   ClothStudy(const ClothPhysics& cloth, const State& start, const StudyLook& look, bool sinks)
       : cloth_(cloth), start_(look), sinks_(sinks) {
-    v_.sag = v_.sag_final = v_.swing = 0.0;
-    if (sinks_) v_.sink = v_.sink_final = sink_depth(start);
+    std::vector<double>& v = v_.values;
+    v.assign(kClothValues, BodyStudyValues::kNone);
+    v[kSag] = v[kSagFinal] = v[kSwing] = 0.0;
+    if (sinks_) v[kSink] = v[kSinkFinal] = sink_depth(start);
   }
   void observe(const State& s, const StudyLook& now) override {
-    v_.sag_final = start_.height - now.height;
-    v_.sag = std::max(v_.sag, v_.sag_final);
+    std::vector<double>& v = v_.values;
+    v[kSagFinal] = start_.height - now.height;
+    v[kSag] = std::max(v[kSag], v[kSagFinal]);
     const Vec3 d = now.com - start_.com;
-    v_.swing = std::max(v_.swing, (d - now.up.dot(d) * now.up).norm());
+    v[kSwing] = std::max(v[kSwing], (d - now.up.dot(d) * now.up).norm());
     if (sinks_) {
-      v_.sink_final = sink_depth(s);
-      v_.sink = std::max(v_.sink, v_.sink_final);
+      v[kSinkFinal] = sink_depth(s);
+      v[kSink] = std::max(v[kSink], v[kSinkFinal]);
     }
   }
   const BodyStudyValues& values() const override { return v_; }
@@ -63,28 +69,40 @@ std::unique_ptr<BodyStudy> make_cloth_study(const World& world, const State& sta
   return std::make_unique<ClothStudy>(*cloth, start, look, sinks);
 }
 
-std::string_view cloth_measure_help(std::string_view measure) {
-  if (measure == "sag")
-    return "  sag          a cloth: largest drop of its centre of mass (pins included) below its "
-           "start [m];\n"
-           "               sag at end: the drop at T. In a cloth scene the centre of mass, speeds "
-           "and rest\n"
-           "               are the cloth's (the spheres are not part of them)\n";
-  if (measure == "swing")
-    return "  swing        a cloth: largest distance of its centre of mass across g from its start "
-           "[m]\n";
-  if (measure == "sink")
-    return "  sink         a cloth: largest depth r - |x - c| of an unpinned particle inside a "
-           "sphere [cm];\n"
-           "               sink at end: the same at T\n";
-  return "";
-}
-
-std::string_view cloth_measure_plot_label(std::string_view measure) {
-  if (measure == "sag") return "sag: largest drop of the cloth [m]";
-  if (measure == "swing") return "swing: largest sideways move of the cloth [m]";
-  if (measure == "sink") return "sink: deepest particle in a sphere [cm]";
-  return "";
+const std::vector<BodyMeasure>& cloth_measures() {
+  static const std::vector<BodyMeasure> measures = {
+      {"sag",
+       MeasurePlace::kMotion,
+       "  sag          a cloth: largest drop of its centre of mass (pins included) below its "
+       "start [m];\n"
+       "               sag at end: the drop at T. In a cloth scene the centre of mass, speeds "
+       "and rest\n"
+       "               are the cloth's (the spheres are not part of them)\n",
+       {{"sag_max", kSag}, {"sag_final", kSagFinal}},
+       {{"sag max [m]", kSag, 1.0, "%.4f"}, {"sag at end [m]", kSagFinal, 1.0, "%.4f"}},
+       {"sag", kSag, 1.0, "%.3g", "m"},
+       {"sag", kSag},
+       "sag: largest drop of the cloth [m]"},
+      {"swing",
+       MeasurePlace::kMotion,
+       "  swing        a cloth: largest distance of its centre of mass across g from its start "
+       "[m]\n",
+       {{"swing_max", kSwing}},
+       {{"swing [m]", kSwing, 1.0, "%.4f"}},
+       {"swing", kSwing, 1.0, "%.3g", "m"},
+       {"swing", kSwing},
+       "swing: largest sideways move of the cloth [m]"},
+      {"sink",
+       MeasurePlace::kMotion,
+       "  sink         a cloth: largest depth r - |x - c| of an unpinned particle inside a "
+       "sphere [cm];\n"
+       "               sink at end: the same at T\n",
+       {{"sink_max", kSink}, {"sink_final", kSinkFinal}},
+       {{"sink max [cm]", kSink, 100.0, "%.2f"}, {"sink at end [cm]", kSinkFinal, 100.0, "%.2f"}},
+       {"sink", kSink, 100.0, "%.3g", "cm"},
+       {"sink_cm", kSink, 100.0},
+       "sink: deepest particle in a sphere [cm]"}};
+  return measures;
 }
 
 std::string_view cloth_contact_help() { return " (or, in a\n  cloth scene, no impulse acted)"; }

@@ -18,10 +18,8 @@ std::unique_ptr<BodyStudy> make_cloth_study(const World& world, const State& sta
                                             const StudyLook& look,
                                             const std::vector<std::string>& measures);
 
-/// `jelly study effects --help`'s lines for the cloth's measures.
-std::string_view cloth_measure_help(std::string_view measure);
-/// The plot labels of the cloth's measures.
-std::string_view cloth_measure_plot_label(std::string_view measure);
+/// The cloth's measures (BodyKindModule::measures): the sag, the swing and the sink.
+const std::vector<BodyMeasure>& cloth_measures();
 
 /// What the help adds to its note on measures needing a contact.
 std::string_view cloth_contact_help();

@@ -93,12 +93,7 @@ class CubeKind final : public BodyKindModule {
                                    const std::vector<std::string>& measures) const override {
     return make_cube_study(world, start, measures);
   }
-  std::string_view measure_help(std::string_view measure) const override {
-    return cube_measure_help(measure);
-  }
-  std::string_view measure_plot_label(std::string_view measure) const override {
-    return cube_measure_plot_label(measure);
-  }
+  const std::vector<BodyMeasure>& measures() const override { return cube_measures(); }
 
   void build(const SceneSpec& scene, World& world) const override {
     CubePhysics& physics = cube_physics(world);  // the cube's lattices, the default physics' rest

@@ -12,6 +12,9 @@ namespace jelly::bodies {
 
 namespace {
 
+/// The cube's values of a study (BodyStudyValues::values).
+enum CubeValue { kRestVolume, kCaveIn, kCaveInFinal, kCubeValues };
+
 /// Volume inside the outer surface of cube `c` (its six faces, each grid quad cut into four
 /// triangles at its mean point), by the divergence theorem: Σ m·(a×b)/6. Exact for a cube at rest
 /// in any orientation; any closed shape it bends into gets its enclosed (signed) volume.
@@ -51,22 +54,24 @@ double cube_volume(const CubeLattice& c, const Vec3Array& x) {
 class CubeStudy final : public BodyStudy {
  public:
   CubeStudy(const CubeLattice& cube, const State& start) : cube_(cube) {
-    v_.rest_volume = cube_volume(cube_, start.x);
-    volume_ = v_.rest_volume;
-    v_.cave_in = 0.0;
+    v_.values.assign(kCubeValues, BodyStudyValues::kNone);
+    rest_volume() = cube_volume(cube_, start.x);
+    volume_ = rest_volume();
+    v_.values[kCaveIn] = 0.0;
     update();
   }
   void observe(const State& s, const StudyLook&) override {
     volume_ = cube_volume(cube_, s.x);
-    v_.cave_in = std::max(v_.cave_in, 1.0 - volume_ / v_.rest_volume);
+    v_.values[kCaveIn] = std::max(v_.values[kCaveIn], 1.0 - volume_ / rest_volume());
     update();
   }
   const BodyStudyValues& values() const override { return v_; }
 
  private:
+  double& rest_volume() { return v_.values[kRestVolume]; }
   void update() {
-    v_.volume_ratio = volume_ / v_.rest_volume;
-    v_.cave_in_final = 1.0 - volume_ / v_.rest_volume;
+    v_.over_time = volume_ / rest_volume();
+    v_.values[kCaveInFinal] = 1.0 - volume_ / rest_volume();
   }
   const CubeLattice& cube_;
   double volume_ = 0.0;
@@ -83,17 +88,22 @@ std::unique_ptr<BodyStudy> make_cube_study(const World& world, const State& star
   return std::make_unique<CubeStudy>(cubes_of(world).front(), start);
 }
 
-std::string_view cube_measure_help(std::string_view measure) {
-  if (measure == "cave_in")
-    return "  cave-in      largest 1 - V(t)/V(0) over the run, V = volume inside the cube's outer "
-           "surface\n"
-           "               (its six faces as triangles); cave-in at end = 1 - V(T)/V(0). Cube "
-           "bodies only.\n";
-  return "";
-}
-
-std::string_view cube_measure_plot_label(std::string_view measure) {
-  return measure == "cave_in" ? "cave-in: largest volume loss [%]" : "";
+const std::vector<BodyMeasure>& cube_measures() {
+  static const std::vector<BodyMeasure> measures = {
+      {"cave_in",
+       MeasurePlace::kLanding,
+       "  cave-in      largest 1 - V(t)/V(0) over the run, V = volume inside the cube's outer "
+       "surface\n"
+       "               (its six faces as triangles); cave-in at end = 1 - V(T)/V(0). Cube "
+       "bodies only.\n",
+       {{"rest_volume", kRestVolume}, {"cave_in_max", kCaveIn}, {"cave_in_final", kCaveInFinal}},
+       {{"cave-in max", kCaveIn, 100.0, "%.1f %%"},
+        {"cave-in at end", kCaveInFinal, 100.0, "%.1f %%"}},
+       {"cave-in", kCaveIn, 100.0, "%.3g", "%"},
+       {"cave_in_%", kCaveIn, 100.0},
+       "cave-in: largest volume loss [%]",
+       "volume / rest volume"}};
+  return measures;
 }
 
 }  // namespace jelly::bodies

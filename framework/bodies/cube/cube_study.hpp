@@ -15,9 +15,7 @@ namespace jelly::bodies {
 std::unique_ptr<BodyStudy> make_cube_study(const World& world, const State& start,
                                            const std::vector<std::string>& measures);
 
-/// `jelly study effects --help`'s lines for the cube's measures.
-std::string_view cube_measure_help(std::string_view measure);
-/// The plot labels of the cube's measures.
-std::string_view cube_measure_plot_label(std::string_view measure);
+/// The cube's measures (BodyKindModule::measures): the cave-in.
+const std::vector<BodyMeasure>& cube_measures();
 
 }  // namespace jelly::bodies

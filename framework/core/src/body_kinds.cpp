@@ -114,9 +114,10 @@ std::unique_ptr<BodyStudy> BodyKindModule::study(const World&, const State&, con
   return nullptr;
 }
 
-std::string_view BodyKindModule::measure_help(std::string_view) const { return ""; }
-
-std::string_view BodyKindModule::measure_plot_label(std::string_view) const { return ""; }
+const std::vector<BodyMeasure>& BodyKindModule::measures() const {
+  static const std::vector<BodyMeasure> none;
+  return none;
+}
 
 std::string_view BodyKindModule::contact_help() const { return ""; }
 

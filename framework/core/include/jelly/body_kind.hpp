@@ -32,20 +32,50 @@ struct Collection;
 struct CrossError;
 }  // namespace params_detail
 
-/// The values of one `jelly study effects` run that its body's kind measures, by the framework's
-/// measure names (docs/parameters.md, "What is measured"); NaN where the kind does not take the
-/// measure.
+/// One value a kind's measure shows in an output of `jelly study effects` (BodyMeasure): which of
+/// its kind's BodyStudyValues it is, scaled and formatted how.
+struct BodyMeasureColumn {
+  std::string_view header;      ///< the CSV's or table's column header, the progress line's label
+  int value = 0;                ///< its index in BodyStudyValues::values
+  double scale = 1.0;           ///< shown as scale × the value (100: a fraction in %, m in cm)
+  const char* format = "%.3g";  ///< the table's or progress line's printf format
+  std::string_view unit = "";   ///< the progress line's unit after the number
+};
+
+/// Where a kind's measure is listed among the framework's own (impact, bounce, rest, energy).
+enum class MeasurePlace {
+  /// With the landing: after the bounce in the names and the help, first on the progress line,
+  /// and always a column of the plot data before the rest time.
+  kLanding,
+  /// After the energy in the names and the help, after the bounce on the progress line, and a
+  /// column of the plot data after the label when any such measure is on.
+  kMotion,
+};
+
+/// A measure a body kind takes in `jelly study effects` (BodyKindModule::measures): its name as a
+/// manifest's [studies] measures lists it, and how each output shows its values. General code
+/// lists the kinds' measures after the bounce in the CSV, the table and the plot, in the order of
+/// the linked kinds and of their lists.
+struct BodyMeasure {
+  std::string_view name;  ///< as a manifest lists it
+  MeasurePlace place = MeasurePlace::kMotion;
+  std::string_view help;                 ///< its lines of `jelly study effects --help`
+  std::vector<BodyMeasureColumn> csv;    ///< its CSV columns (headers without the comma)
+  std::vector<BodyMeasureColumn> table;  ///< its Markdown table columns (format: the cell's)
+  BodyMeasureColumn progress;            ///< its part of the progress line of a run
+  BodyMeasureColumn plot;                ///< its column of the plot data (header: the column's)
+  std::string_view plot_label;           ///< its y label in the plot against the swept value
+  /// The y label of BodyStudyValues::over_time in the plot over time when the measure is on; ""
+  /// when the measure has none.
+  std::string_view time_label = "";
+};
+
+/// The values of one `jelly study effects` run that its body's kind measures, by the indices its
+/// measures' columns give (BodyMeasureColumn::value); NaN where the kind does not take a measure.
 struct BodyStudyValues {
   static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-  double rest_volume = kNone;    ///< cave_in: the volume inside the body's surface at t = 0 [m³]
-  double cave_in = kNone;        ///< cave_in: largest 1 − V(t)/V(0) so far
-  double cave_in_final = kNone;  ///< cave_in: 1 − V(t)/V(0) now
-  double volume_ratio = kNone;   ///< V(t)/V(0) now (the time series)
-  double sag = kNone;            ///< sag: largest drop of the centre of mass below t = 0 [m]
-  double sag_final = kNone;      ///< sag: the drop now [m]
-  double swing = kNone;          ///< swing: largest distance of the centre of mass across g [m]
-  double sink = kNone;           ///< sink: largest depth of a free particle in a sphere [m]
-  double sink_final = kNone;     ///< sink: the same now [m]
+  std::vector<double> values;  ///< by the kind's own indices
+  double over_time = kNone;    ///< what the plot over time follows now (BodyMeasure::time_label)
 };
 
 /// Where a study's body is: the centre of mass of the measured particles
@@ -179,16 +209,12 @@ class BodyKindModule {
   virtual Eigen::Index measured_particles(const World& world) const;
   /// The measuring of one run from its start state `start` (`look`: where the body is), for the
   /// measures named in `measures` (a manifest's [studies] measures); nullptr (the default) when
-  /// the kind measures none of them, so that every BodyStudyValues measure is NaN.
+  /// the kind measures none of them, so that every value of its measures is NaN.
   virtual std::unique_ptr<BodyStudy> study(const World& world, const State& start,
                                            const StudyLook& look,
                                            const std::vector<std::string>& measures) const;
-  /// The lines `jelly study effects --help` gives for `measure` when this kind takes it; "" (the
-  /// default) otherwise.
-  virtual std::string_view measure_help(std::string_view measure) const;
-  /// The y label of `measure`'s plot against the swept value when this kind takes it; "" (the
-  /// default) otherwise.
-  virtual std::string_view measure_plot_label(std::string_view measure) const;
+  /// The measures this kind takes, in the order the outputs list them; none by default.
+  virtual const std::vector<BodyMeasure>& measures() const;
   /// What the help adds to "measures needing a contact are nan when nothing touched a terrain"
   /// for this kind; "" by default.
   virtual std::string_view contact_help() const;
