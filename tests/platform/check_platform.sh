@@ -392,12 +392,15 @@ if [ "$platform" = mingw ] || [ "$platform" = aarch64 ]; then
     esac || { cat "$out/selfcheck-$name.txt"; say "FAILED: self-check on $name: $total (exit $rc), expected $expect"; failed=1; return; }
     say "self-check $where on $name: $total (exit $rc), as expected ($expect)"
     if [ -n "$host_grade" ]; then
+      # The report only (stdout): the grader's notices to the instructor go to stderr (a Gradescope
+      # zip older than the manifest, say) and are no part of what the student sees.
       "$host_grade" grade "$dir" --assignment "$id" --visibility public --format terminal --out "$out/grader-$name" \
-        >"$out/grader-$name.txt" 2>&1
+        >"$out/grader-$name.txt" 2>"$out/grader-$name.err"
       if bash "$src/tests/grader/grading/same_report.sh" "$out/grader-$name.txt" "$out/selfcheck-$name.txt" >"$out/same-$name.txt"; then
         say "$(cat "$out/same-$name.txt") — Linux grader vs the self-check $where on $name"
       else
-        cat "$out/same-$name.txt"; say "FAILED: the self-check's report on $name differs from the Linux grader's"; failed=1
+        cat "$out/same-$name.txt" "$out/grader-$name.err"
+        say "FAILED: the self-check's report on $name differs from the Linux grader's"; failed=1
       fi
     fi
   }
