@@ -27,6 +27,7 @@
 #include "jelly/session/assignments.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
+#include "offscreen.hpp"
 
 namespace jelly::render {
 namespace {
@@ -243,16 +244,7 @@ bool hidden_by_a_sphere(const World& w, const Vec3& p, const Vec3& eye, double m
 
 class HeadlessCloth : public ::testing::Test {
  protected:
-  void SetUp() override {
-    BackendOptions o;
-    o.name = "offscreen";
-    o.width = kW;
-    o.height = kH;
-    auto created = create_backend(o);
-    ASSERT_TRUE(created.backend) << created.error;
-    backend_ = std::move(created.backend);
-    renderer_ = std::make_unique<Renderer>(backend_->gl());
-  }
+  void SetUp() override { ASSERT_TRUE(open_offscreen(kW, kH, backend_, renderer_)); }
   void TearDown() override {
     drawable_.reset();
     renderer_.reset();

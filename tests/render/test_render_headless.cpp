@@ -19,6 +19,7 @@
 #include "jelly/scene.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
+#include "offscreen.hpp"
 
 namespace jelly::render {
 namespace {
@@ -80,14 +81,7 @@ PixelClass class_at(const Image& img, const OrbitCamera& cam, const Vec3& x) {
 class HeadlessCourse : public ::testing::Test {
  protected:
   void SetUp() override {
-    BackendOptions o;
-    o.name = "offscreen";
-    o.width = kW;
-    o.height = kH;
-    auto created = create_backend(o);
-    ASSERT_TRUE(created.backend) << created.error;
-    backend_ = std::move(created.backend);
-    renderer_ = std::make_unique<Renderer>(backend_->gl());
+    ASSERT_TRUE(open_offscreen(kW, kH, backend_, renderer_));
     SceneResult scene = resolve_scene("course-2023", default_scenes_dir());
     ASSERT_TRUE(scene) << scene.error->text();
     run_ = std::make_unique<SimulationRun>(RunSetup::from_scene(*scene.scene), a1::task_table());

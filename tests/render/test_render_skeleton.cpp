@@ -19,6 +19,7 @@
 #include "jelly/session/assignments.hpp"
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
+#include "offscreen.hpp"
 
 namespace jelly::render {
 namespace {
@@ -146,34 +147,9 @@ TEST(SkeletonControls, TheWarpSlidersReWarpThroughTheTasks) {
 // ---------------------------------------------------------------------------------------------
 // Pictures (OSMesa).
 
-/// Pixels whose chromaticity is within 0.05 of `color`'s after the lit shader's gamma.
-int pixels_of(const Image& img, const Eigen::Vector3f& color) {
-  const Eigen::Vector3d g(std::pow(color.x(), 1 / 1.1), std::pow(color.y(), 1 / 1.1),
-                          std::pow(color.z(), 1 / 1.1));
-  int n = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const auto p = img.at(x, y);
-      const double sum = double(p[0]) + p[1] + p[2];
-      if (sum < 45.0) continue;
-      const Eigen::Vector3d c = Eigen::Vector3d(p[0], p[1], p[2]) / sum;
-      n += (c - g / g.sum()).norm() < 0.05;
-    }
-  return n;
-}
-
 class HeadlessSkeleton : public ::testing::Test {
  protected:
-  void SetUp() override {
-    BackendOptions o;
-    o.name = "offscreen";
-    o.width = kW;
-    o.height = kH;
-    auto created = create_backend(o);
-    ASSERT_TRUE(created.backend) << created.error;
-    backend_ = std::move(created.backend);
-    renderer_ = std::make_unique<Renderer>(backend_->gl());
-  }
+  void SetUp() override { ASSERT_TRUE(open_offscreen(kW, kH, backend_, renderer_)); }
   void TearDown() override {
     skeleton_view::view_settings() = {};
     run_.reset();

@@ -20,6 +20,7 @@
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
 #include "jelly/skeleton_tasks.hpp"
+#include "offscreen.hpp"
 
 namespace jelly::render {
 namespace {
@@ -221,37 +222,9 @@ TEST(SkeletonIk, AScheduleShowsEachFramesTargetAndSolvesTheShownFrame) {
 // ---- pictures (OSMesa)
 // ---------------------------------------------------------------------------
 
-/// Pixels within `radius` of `at` whose chromaticity is within 0.05 of `color`'s after the lit
-/// shader's gamma (as test_render_skeleton.cpp's).
-int pixels_near(const Image& img, const Eigen::Vector3f& color, const Eigen::Vector2d& at,
-                double radius) {
-  const Eigen::Vector3d g(std::pow(color.x(), 1 / 1.1), std::pow(color.y(), 1 / 1.1),
-                          std::pow(color.z(), 1 / 1.1));
-  int n = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      if ((Eigen::Vector2d(x, y) - at).norm() > radius) continue;
-      const auto p = img.at(x, y);
-      const double sum = double(p[0]) + p[1] + p[2];
-      if (sum < 45.0) continue;
-      const Eigen::Vector3d c = Eigen::Vector3d(p[0], p[1], p[2]) / sum;
-      n += (c - g / g.sum()).norm() < 0.05;
-    }
-  return n;
-}
-
 class HeadlessSkeletonIk : public ::testing::Test {
  protected:
-  void SetUp() override {
-    BackendOptions o;
-    o.name = "offscreen";
-    o.width = kW;
-    o.height = kH;
-    auto created = create_backend(o);
-    ASSERT_TRUE(created.backend) << created.error;
-    backend_ = std::move(created.backend);
-    renderer_ = std::make_unique<Renderer>(backend_->gl());
-  }
+  void SetUp() override { ASSERT_TRUE(open_offscreen(kW, kH, backend_, renderer_)); }
   void TearDown() override {
     run_.reset();
     renderer_.reset();
@@ -284,9 +257,9 @@ TEST_F(HeadlessSkeletonIk, TheTargetTheChainAndTheEndEffectorAreWhereTheCameraPr
   ASSERT_NE(f, nullptr);
   const IkChainState& chain = p.ik_chain(0);
   // Apart: the target's arms around its projection, the end effector's ball on the hand.
-  EXPECT_GT(pixels_near(img, skeleton_view::kTarget, at(p.ik_target(0)), 12.0), 20);
-  EXPECT_GT(pixels_near(img, skeleton_view::kEffector,
-                        at(f->end[static_cast<std::size_t>(chain.end)]), 6.0),
+  EXPECT_GT(pixels_of(img, skeleton_view::kTarget, at(p.ik_target(0)), 12.0), 20);
+  EXPECT_GT(pixels_of(img, skeleton_view::kEffector,
+                      at(f->end[static_cast<std::size_t>(chain.end)]), 6.0),
             10);
   // Each chain bone's middle is drawn in the chain's colour (a bone long enough to see).
   int seen = 0, long_bones = 0;
@@ -294,16 +267,15 @@ TEST_F(HeadlessSkeletonIk, TheTargetTheChainAndTheEndEffectorAreWhereTheCameraPr
     const auto i = static_cast<std::size_t>(b);
     if ((at(f->start[i]) - at(f->end[i])).norm() < 12.0) continue;
     ++long_bones;
-    seen +=
-        pixels_near(img, skeleton_view::kChainBone, at(0.5 * (f->start[i] + f->end[i])), 4.0) > 0;
+    seen += pixels_of(img, skeleton_view::kChainBone, at(0.5 * (f->start[i] + f->end[i])), 4.0) > 0;
   }
   EXPECT_GT(long_bones, 2);
   EXPECT_EQ(seen, long_bones);
   // A bone off the chain is not: the left femur.
   const auto lfemur = static_cast<std::size_t>(*p.skeleton().find("lfemur"));
-  EXPECT_EQ(pixels_near(img, skeleton_view::kChainBone,
-                        at(0.5 * (f->start[lfemur] + f->end[lfemur])), 3.0),
-            0);
+  EXPECT_EQ(
+      pixels_of(img, skeleton_view::kChainBone, at(0.5 * (f->start[lfemur] + f->end[lfemur])), 3.0),
+      0);
 }
 
 TEST_F(HeadlessSkeletonIk, OnAReachedTargetTheArmsStickOutOfTheEndEffector) {
@@ -312,8 +284,8 @@ TEST_F(HeadlessSkeletonIk, OnAReachedTargetTheArmsStickOutOfTheEndEffector) {
   const SkeletonPlayer& p = player_of(*run_);
   const Image img = render("skeleton-ik-hw3.png");
   const Eigen::Vector2d ball = at(p.ik_target(0));
-  EXPECT_GT(pixels_near(img, skeleton_view::kEffector, ball, 5.0), 10);
-  EXPECT_GT(pixels_near(img, skeleton_view::kTarget, ball, 14.0), 10);
+  EXPECT_GT(pixels_of(img, skeleton_view::kEffector, ball, 5.0), 10);
+  EXPECT_GT(pixels_of(img, skeleton_view::kTarget, ball, 14.0), 10);
 }
 
 TEST_F(HeadlessSkeletonIk, FourChainsFourTargets) {
@@ -323,7 +295,7 @@ TEST_F(HeadlessSkeletonIk, FourChainsFourTargets) {
   ASSERT_EQ(p.ik_chain_count(), 4u);
   const Image img = render("skeleton-ik-2024.png");
   for (std::size_t c = 0; c < 4; ++c)
-    EXPECT_GT(pixels_near(img, skeleton_view::kTarget, at(p.ik_target(c)), 14.0), 5) << c;
+    EXPECT_GT(pixels_of(img, skeleton_view::kTarget, at(p.ik_target(c)), 14.0), 5) << c;
 }
 
 #endif  // JELLY_RENDER_WITH_SOLUTIONS
