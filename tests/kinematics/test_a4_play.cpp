@@ -32,6 +32,15 @@ namespace fs = std::filesystem;
 
 const fs::path kScenes = fs::path(JELLY_SOURCE_DIR) / "scenes";
 
+/// hw3-ik's solve: lowerback -> rfingers to the course's ball, the course's settings.
+IkSolveRequest hw3_ik_request(const skeleton::Skeleton& s) {
+  IkSolveRequest request;
+  request.start_bone = *s.find("lowerback");
+  request.end_bone = *s.find("rfingers");
+  request.target = Vec3(-0.0692501, 3.85358, -1.63441);
+  return request;
+}
+
 class A4Play : public ::testing::Test {
  protected:
   /// `jelly run scenes/<name>.toml --summary` with A4's reference: the report.
@@ -131,10 +140,7 @@ TEST_F(A4Play, AScheduleIsSolvedOncePerFrameWarmStarted) {
 TEST_F(A4Play, ASolveThroughTheSlotsChangesOnlyTheChainsChannels) {
   const skeleton::Skeleton s = testing::course_skeleton();
   const skeleton::Motion m = testing::course_motion(s, "IK.amc");
-  IkSolveRequest request;
-  request.start_bone = *s.find("lowerback");
-  request.end_bone = *s.find("rfingers");
-  request.target = Vec3(-0.0692501, 3.85358, -1.63441);
+  IkSolveRequest request = hw3_ik_request(s);
   skeleton::Posture p = m.frames[0];
   const skeleton::IkResult r = solve_ik(s, skeleton_tasks(table_), request, p);
   EXPECT_EQ(r.updates, 73);
@@ -194,10 +200,7 @@ void counted_forward_kinematics(const skeleton::Skeleton& s, const skeleton::Pos
 TEST_F(A4Play, EachUpdateRunsTheForwardKinematicsOnce) {
   const skeleton::Skeleton s = testing::course_skeleton();
   const skeleton::Motion m = testing::course_motion(s, "IK.amc");
-  IkSolveRequest request;
-  request.start_bone = *s.find("lowerback");
-  request.end_bone = *s.find("rfingers");
-  request.target = Vec3(-0.0692501, 3.85358, -1.63441);
+  const IkSolveRequest request = hw3_ik_request(s);
   TaskTable counting = a4::task_table();
   skeleton_tasks(counting).forward_kinematics = &counted_forward_kinematics;
   skeleton::Posture p = m.frames[0], q = m.frames[0];

@@ -20,6 +20,7 @@
 #include "jelly/session/scene_catalog.hpp"
 #include "jelly/session/simulation_run.hpp"
 #include "offscreen.hpp"
+#include "skeleton_runs.hpp"
 
 namespace jelly::render {
 namespace {
@@ -30,21 +31,6 @@ using session::SimulationRun;
 using skeleton_view::SkeletonDrawable;
 const fs::path kArtifacts = fs::path(JELLY_BINARY_DIR) / "artifacts" / "render";
 constexpr int kW = 960, kH = 540;
-
-/// A run of the course scene `name` with `tasks`.
-std::unique_ptr<SimulationRun> run_of(const std::string& name, const TaskTable* tasks = nullptr) {
-  SceneResult scene = session::resolve_scene(name, session::default_scenes_dir());
-  EXPECT_TRUE(scene) << scene.error->text();
-  if (!scene) return nullptr;
-  const RunSetup setup = RunSetup::from_scene(*scene.scene);
-  return std::make_unique<SimulationRun>(setup, tasks ? *tasks : session::tasks_for(setup.scene));
-}
-
-SkeletonPlayer& player_of(SimulationRun& run) {
-  SkeletonPlayer* p = find_skeleton_player(run.simulator()->world());
-  EXPECT_NE(p, nullptr);
-  return *p;
-}
 
 TEST(SkeletonView, AMissingTaskIsAMessageNotACrash) {
   const TaskTable none;  // no skeleton slot filled

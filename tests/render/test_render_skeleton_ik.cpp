@@ -21,6 +21,7 @@
 #include "jelly/session/simulation_run.hpp"
 #include "jelly/skeleton_tasks.hpp"
 #include "offscreen.hpp"
+#include "skeleton_runs.hpp"
 
 namespace jelly::render {
 namespace {
@@ -84,20 +85,6 @@ TEST(SkeletonIkDrag, APressTakesTheNearestBallWithinItsRadius) {
 // ---- the player's live solves ------------------------------------------------------------------
 
 #if JELLY_RENDER_WITH_SOLUTIONS
-
-std::unique_ptr<SimulationRun> run_of(const std::string& name, const TaskTable* tasks = nullptr) {
-  SceneResult scene = session::resolve_scene(name, session::default_scenes_dir());
-  EXPECT_TRUE(scene) << scene.error->text();
-  if (!scene) return nullptr;
-  const RunSetup setup = RunSetup::from_scene(*scene.scene);
-  return std::make_unique<SimulationRun>(setup, tasks ? *tasks : session::tasks_for(setup.scene));
-}
-
-SkeletonPlayer& player_of(SimulationRun& run) {
-  SkeletonPlayer* p = find_skeleton_player(run.simulator()->world());
-  EXPECT_NE(p, nullptr);
-  return *p;
-}
 
 const skeleton::Posture& shown(const SkeletonPlayer& p) {
   return p.output().frames[static_cast<std::size_t>(p.frame())];
